@@ -1,0 +1,46 @@
+#include "core/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/scene.h"
+
+namespace luz {
+
+glm::vec3 Camera::position() const { return glm::vec3(to_world[3]); }
+
+glm::vec3 Camera::forward() const { return glm::normalize(-glm::vec3(to_world[2])); }
+
+glm::mat4 Camera::view() const { return glm::inverse(to_world); }
+
+glm::mat4 Camera::projection(float image_aspect, float fallback_far) const {
+  const float far = zfar > znear ? zfar : fallback_far;
+  return glm::perspective(yfov, image_aspect, znear, far);
+}
+
+std::string Camera::to_string() const {
+  const glm::vec3 p = position(), f = forward();
+  return fmt::format("Camera \"{}\" [at ({:.3g}, {:.3g}, {:.3g}) looking ({:.3g}, {:.3g}, {:.3g}) "
+                     "yfov {:.3g} rad]", name, p.x, p.y, p.z, f.x, f.y, f.z, yfov);
+}
+
+Camera Camera::framing(const Bounds& bounds) {
+  Camera camera;
+  camera.name = "framing";
+  const glm::vec3 centre = bounds.centre();
+  const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
+  // Far enough back that the bounding sphere fits the vertical field of view.
+  const float distance = radius / std::sin(0.5f * camera.yfov);
+  camera.to_world = glm::translate(glm::mat4(1.0f), centre + glm::vec3(0, 0, distance));
+  camera.znear = std::max(distance - radius, distance * 1e-3f) * 0.5f;
+  camera.zfar = distance + 2.0f * radius;
+  return camera;
+}
+
+}  // namespace luz

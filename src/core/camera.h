@@ -1,0 +1,32 @@
+#pragma once
+// A perspective camera as glTF describes it: it looks down its node's -Z, +Y up.
+#include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace luz {
+
+struct Bounds;
+
+struct Camera {
+  std::string name = "camera";
+  glm::mat4 to_world{1.0f};  // the camera node's world transform (rigid)
+  float yfov = 0.8f;         // vertical field of view, radians
+  float aspect = 0.0f;       // width / height from the file; 0 = none given
+  float znear = 0.01f;
+  float zfar = 0.0f;         // 0 = infinite (glTF allows it); renderers pick a finite one
+
+  glm::vec3 position() const;
+  glm::vec3 forward() const;  // unit -Z of the node
+  glm::mat4 view() const;     // world -> camera
+  // OpenGL clip matrix for an image of the given aspect (width / height); zfar 0 becomes
+  // `fallback_far` so that depth buffers keep their precision.
+  glm::mat4 projection(float image_aspect, float fallback_far) const;
+  std::string to_string() const;
+
+  // SCENES.md: a scene without a camera gets one framing its bounding box from +Z.
+  static Camera framing(const Bounds& bounds);
+};
+
+}  // namespace luz

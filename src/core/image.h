@@ -1,0 +1,25 @@
+#pragma once
+// A float RGB image of linear radiance, row 0 at the top.
+#include <vector>
+
+#include "core/color.h"
+
+namespace luz {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<Rgb> pixels;
+
+  Image() = default;
+  Image(int w, int h, Rgb fill = Rgb(0.0f)) : width(w), height(h), pixels(size_t(w) * h, fill) {}
+
+  Rgb& at(int x, int y) { return pixels[size_t(y) * width + x]; }
+  const Rgb& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+
+// PNG encoding of SCENES.md: radiance x 2^exposure, then the sRGB transfer curve, clamped.
+float srgb_encode(float linear);
+float srgb_decode(float encoded);
+
+}  // namespace luz

@@ -1,0 +1,71 @@
+#include "core/scene.h"
+
+#include <charconv>
+
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace luz {
+
+void Bounds::grow(const glm::vec3& p) {
+  min = glm::min(min, p);
+  max = glm::max(max, p);
+}
+
+Bounds Scene::bounds() const {
+  Bounds b;
+  for (const Mesh& mesh : meshes)
+    for (const glm::vec3& p : mesh.positions) b.grow(p);
+  return b;
+}
+
+size_t Scene::triangle_count() const {
+  size_t n = 0;
+  for (const Mesh& mesh : meshes) n += mesh.triangle_count();
+  return n;
+}
+
+void Scene::find_area_lights() {
+  area_lights.clear();
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    const Mesh& mesh = meshes[m];
+    const Material& material = materials[mesh.material];
+    if (!material.is_emissive()) continue;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+      const glm::vec3& a = mesh.positions[mesh.indices[3 * t]];
+      const glm::vec3& b = mesh.positions[mesh.indices[3 * t + 1]];
+      const glm::vec3& c = mesh.positions[mesh.indices[3 * t + 2]];
+      const glm::vec3 cross = glm::cross(b - a, c - a);
+      const float twice_area = glm::length(cross);
+      if (twice_area <= 0.0f) continue;
+      AreaLight light;
+      light.mesh = int(m);
+      light.triangle = int(t);
+      light.centroid = (a + b + c) / 3.0f;
+      light.normal = cross / twice_area;  // counter-clockwise front face, as glTF
+      light.area = 0.5f * twice_area;
+      light.radiance = material.emission;
+      area_lights.push_back(light);
+    }
+  }
+}
+
+int Scene::find_camera(const std::string& name_or_index) const {
+  for (size_t i = 0; i < cameras.size(); ++i)
+    if (cameras[i].name == name_or_index) return int(i);
+  int index = -1;
+  const char* end = name_or_index.data() + name_or_index.size();
+  auto [ptr, ec] = std::from_chars(name_or_index.data(), end, index);
+  if (ec == std::errc() && ptr == end && index >= 0 && size_t(index) < cameras.size()) return index;
+  return -1;
+}
+
+std::string Scene::to_string() const {
+  return fmt::format("Scene \"{}\" [{} meshes, {} triangles, {} materials, {} textures, {} lights, "
+                     "{} emissive triangles, {} cameras]", path, meshes.size(), triangle_count(),
+                     materials.size(), textures.size(), lights.size(), area_lights.size(),
+                     cameras.size());
+}
+
+}  // namespace luz

@@ -1,0 +1,81 @@
+#pragma once
+// The scene every model reads (SCENES.md): world-space triangle meshes, materials, textures,
+// punctual lights, emissive triangles as area lights, cameras and the scene-wide settings.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/light.h"
+#include "core/material.h"
+
+namespace luz {
+
+struct Bounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  void grow(const glm::vec3& p);
+  bool empty() const { return min.x > max.x; }
+  glm::vec3 centre() const { return 0.5f * (min + max); }
+  glm::vec3 extent() const { return max - min; }
+};
+
+// Linear RGB texels (sRGB-decoded on load), row 0 at the top of the image as glTF's UVs expect
+// (u right, v down).
+struct Texture {
+  std::string name;
+  int width = 1;
+  int height = 1;
+  std::vector<Rgb> texels{Rgb(1.0f)};
+  Rgb texel(int x, int y) const { return texels[size_t(y) * width + x]; }
+};
+
+// One glTF primitive, flattened to world space. Every vertex has a normal: the file's, or the
+// face normal when the file has none (vertices are then not shared between faces).
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> uvs;       // empty when the primitive has no TEXCOORD_0
+  std::vector<uint32_t> indices;    // three per triangle
+  int material = 0;                 // index into Scene::materials
+
+  size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// An emissive triangle seen as a light (SCENES.md "Emissive triangles are area lights").
+struct AreaLight {
+  int mesh = 0;
+  int triangle = 0;
+  glm::vec3 centroid{0.0f};
+  glm::vec3 normal{0, 1, 0};  // unit, the side it emits from
+  float area = 0.0f;
+  Rgb radiance{0.0f};         // Le
+};
+
+struct Scene {
+  std::string path;                  // the file it came from, for messages
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;   // at least one: meshes without material use the default
+  std::vector<Texture> textures;
+  std::vector<Light> lights;
+  std::vector<AreaLight> area_lights;
+  std::vector<Camera> cameras;       // never empty after loading (a framing camera is added)
+  Rgb ambient{0.0f};                 // I_a
+  Rgb background{0.0f};              // radiance of rays that hit nothing
+  float exposure = 0.0f;             // EV of the scene's pictures
+
+  Bounds bounds() const;
+  size_t triangle_count() const;
+  // Collects the emissive triangles into area_lights (called by the loader).
+  void find_area_lights();
+  // The camera called `name_or_index` (a name, or its index in node order); -1 when none.
+  int find_camera(const std::string& name_or_index) const;
+  std::string to_string() const;
+};
+
+}  // namespace luz

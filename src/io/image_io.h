@@ -1,0 +1,29 @@
+#pragma once
+// Image files through OpenImageIO.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/scene.h"
+
+namespace luz::io {
+
+// Writes `.exr` as linear float radiance, `.png` as radiance x 2^exposure through the sRGB
+// curve, 8 bit (SCENES.md "Image output"). The file appears whole or not at all: the image is
+// written beside it under a temporary name, then renamed. Throws luz::Error (kind output).
+void write_image(const Image& image, const std::filesystem::path& path, float exposure);
+
+// Reads any image OpenImageIO knows as linear RGB: 8-bit files are sRGB-decoded, float files
+// taken as they are. Throws luz::Error (file_missing / bad_value).
+Image read_image(const std::filesystem::path& path);
+
+// Decodes an encoded image (PNG, JPEG, ... bytes as glTF embeds them) into a texture of linear
+// texels, sRGB-decoded; std::nullopt with `error` set when the bytes are not an image.
+std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
+                                      const std::string& name, std::string& error);
+
+bool is_supported_output(const std::filesystem::path& path);  // .png or .exr
+
+}  // namespace luz::io
