@@ -1,0 +1,124 @@
+// Core formulas worked by hand: sRGB, attenuation, spot cones, the roughness mapping, cameras.
+#include <cmath>
+
+#include <glm/ext/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/light.h"
+#include "core/material.h"
+#include "core/scene.h"
+
+namespace luz {
+namespace {
+
+TEST(Srgb, KnownPointsOfTheCurve) {
+  EXPECT_FLOAT_EQ(srgb_encode(0.0f), 0.0f);
+  EXPECT_FLOAT_EQ(srgb_encode(1.0f), 1.0f);
+  EXPECT_NEAR(srgb_encode(0.18f), 0.4613f, 1e-4f);  // middle grey
+  EXPECT_NEAR(srgb_encode(0.002f), 12.92f * 0.002f, 1e-7f);  // linear toe
+  EXPECT_FLOAT_EQ(srgb_encode(std::nanf("")), 0.0f);
+  for (float x : {0.001f, 0.01f, 0.2f, 0.5f, 0.9f}) EXPECT_NEAR(srgb_decode(srgb_encode(x)), x, 1e-5f);
+}
+
+TEST(Attenuation, PhysicalIsInverseSquare) {
+  Attenuation physical;
+  EXPECT_FLOAT_EQ(physical.factor(2.0f), 0.25f);
+}
+
+TEST(Attenuation, ClassroomForm) {
+  Attenuation classroom{true, {1.0f, 0.5f, 0.25f}};
+  EXPECT_FLOAT_EQ(classroom.factor(2.0f), 1.0f / (1.0f + 1.0f + 1.0f));
+}
+
+TEST(Light, SmoothSpotConeFollowsKhrLightsPunctual) {
+  Light spot;
+  spot.type = LightType::spot;
+  spot.direction = {0, 0, -1};
+  spot.inner_cone = 0.2f;
+  spot.outer_cone = 0.4f;
+  EXPECT_FLOAT_EQ(spot.spot_factor({0, 0, -1}), 1.0f);
+  const float angle = 0.3f;  // between the cones: ((cos a - cos o) / (cos i - cos o))^2
+  const float t = (std::cos(angle) - std::cos(0.4f)) / (std::cos(0.2f) - std::cos(0.4f));
+  EXPECT_NEAR(spot.spot_factor({std::sin(angle), 0, -std::cos(angle)}), t * t, 1e-5f);
+  EXPECT_FLOAT_EQ(spot.spot_factor({std::sin(0.5f), 0, -std::cos(0.5f)}), 0.0f);
+}
+
+TEST(Light, WarnSpotIsCosineToThePInsideTheOuterCone) {
+  Light spot;
+  spot.type = LightType::spot;
+  spot.direction = {0, -1, 0};
+  spot.outer_cone = 1.0f;
+  spot.warn_exponent = 8.0f;
+  const float angle = 0.5f;
+  EXPECT_NEAR(spot.spot_factor({std::sin(angle), -std::cos(angle), 0}), std::pow(std::cos(angle), 8.0f), 1e-6f);
+  EXPECT_FLOAT_EQ(spot.spot_factor({std::sin(1.2f), -std::cos(1.2f), 0}), 0.0f);
+}
+
+TEST(Material, ShininessFromRoughness) {
+  EXPECT_FLOAT_EQ(shininess_from_roughness(0.5f), 2.0f / 0.0625f - 2.0f);  // 30
+  EXPECT_FLOAT_EQ(shininess_from_roughness(1.0f), 1.0f);                 // 0 clamped up to 1
+  EXPECT_FLOAT_EQ(shininess_from_roughness(0.0f), 10000.0f);
+  EXPECT_FLOAT_EQ(shininess_from_roughness(0.05f), 10000.0f);            // 319998 clamped
+}
+
+TEST(Camera, LooksDownMinusZOfItsNode) {
+  Camera camera;
+  camera.to_world = glm::rotate(glm::translate(glm::mat4(1.0f), {1, 2, 3}), glm::radians(90.0f), {0, 1, 0});
+  EXPECT_NEAR(camera.position().x, 1.0f, 1e-6f);
+  EXPECT_NEAR(camera.forward().x, -1.0f, 1e-6f);  // -Z turned 90 degrees about +Y is -X
+  const glm::vec4 eye = camera.view() * glm::vec4(camera.position(), 1.0f);
+  EXPECT_NEAR(glm::length(glm::vec3(eye)), 0.0f, 1e-5f);
+}
+
+TEST(Camera, FramingSeesTheWholeBoundingBox) {
+  Bounds bounds;
+  bounds.grow({-1, -1, -1});
+  bounds.grow({1, 1, 1});
+  const Camera camera = Camera::framing(bounds);
+  const glm::mat4 clip = camera.projection(1.0f, 100.0f) * camera.view();
+  for (float x : {-1.0f, 1.0f})
+    for (float y : {-1.0f, 1.0f})
+      for (float z : {-1.0f, 1.0f}) {
+        const glm::vec4 p = clip * glm::vec4(x, y, z, 1.0f);
+        EXPECT_LE(std::abs(p.x / p.w), 1.0f);
+        EXPECT_LE(std::abs(p.y / p.w), 1.0f);
+        EXPECT_GT(p.w, 0.0f);
+      }
+}
+
+TEST(Scene, AreaLightsAreTheEmissiveTriangles) {
+  Scene scene;
+  scene.materials = {Material{}, Material{}};
+  scene.materials[1].emission = Rgb(2.0f);
+  Mesh quad;  // 2 x 1 m in the plane y = 1, facing down
+  quad.positions = {{0, 1, 0}, {2, 1, 0}, {2, 1, 1}, {0, 1, 1}};
+  quad.normals.assign(4, {0, -1, 0});
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  quad.material = 1;
+  Mesh plain = quad;
+  plain.material = 0;
+  scene.meshes = {plain, quad};
+  scene.find_area_lights();
+  ASSERT_EQ(scene.area_lights.size(), 2u);
+  EXPECT_EQ(scene.area_lights[0].mesh, 1);
+  EXPECT_FLOAT_EQ(scene.area_lights[0].area + scene.area_lights[1].area, 2.0f);
+  EXPECT_NEAR(scene.area_lights[0].normal.y, -1.0f, 1e-6f);  // counter-clockwise seen from below
+  EXPECT_EQ(scene.area_lights[1].radiance, Rgb(2.0f));
+}
+
+TEST(Scene, FindCameraByNameOrIndex) {
+  Scene scene;
+  scene.cameras.resize(2);
+  scene.cameras[0].name = "front";
+  scene.cameras[1].name = "top";
+  EXPECT_EQ(scene.find_camera("top"), 1);
+  EXPECT_EQ(scene.find_camera("0"), 0);
+  EXPECT_EQ(scene.find_camera("2"), -1);
+  EXPECT_EQ(scene.find_camera("side"), -1);
+  EXPECT_EQ(scene.find_camera("1x"), -1);
+}
+
+}  // namespace
+}  // namespace luz

@@ -1,1 +1,83 @@
-int main() { return 0; }
+// luz: the single command. `luz [SCENE]` opens the viewer; `luz render` makes one picture
+// headless. Exit codes: 0 success, 1 bad input, 2 usage error.
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/render_command.h"
+#include "app/resources.h"
+#include "app/viewer.h"
+
+namespace {
+
+using luz::app::RenderSettings;
+
+void add_render_flags(CLI::App& render, RenderSettings& settings) {
+  render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+  render.add_option("--model", settings.model, "Illumination model")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kModels), std::end(luz::app::kModels))))
+      ->capture_default_str();
+  render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
+      ->required();
+  render.add_option_function<std::string>(
+      "--size",
+      [&settings](const std::string& text) {
+        if (!luz::app::parse_size(text, settings.width, settings.height))
+          throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, e.g. 800x600");
+      },
+      "Image size WxH (default: 600 pixels high, the camera's aspect ratio)");
+  render.add_option("--camera", settings.camera, "Scene camera by name or index (default: the first)");
+  render.add_option("--exposure", settings.exposure, "Exposure in EV for PNG output (default: the scene's)");
+  render.add_flag("--no-ambient{false}", settings.local.ambient, "Switch off the ambient term I_A = Ia*ka");
+  render.add_flag("--no-diffuse{false}", settings.local.diffuse, "Switch off the diffuse term I_D = IL*kd*cos(theta)");
+  render.add_flag("--no-specular{false}", settings.local.specular, "Switch off the specular term I_S = IL*ks*cos^n(alpha)");
+  render.add_flag("--no-emission{false}", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
+  render.add_flag("--no-textures{false}", settings.local.textures, "Ignore baseColorTexture");
+  render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
+  render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+}
+
+// No display: say so and do what the viewer would have shown, as a file.
+int render_without_display(const std::string& scene) {
+  const std::string out = std::filesystem::path(scene).stem().string() + ".png";
+  fmt::print(stderr, "luz: no display, so no window; rendering {} headless to {} instead "
+                     "(see `luz render --help`)\n", scene, out);
+  RenderSettings settings;
+  settings.scene = scene;
+  settings.out = out;
+  return luz::app::run_render(settings);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Luz: an interactive lab for realistic image synthesis (\"Síntesis realista de imágenes\").\n"
+               "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships)."};
+  app.require_subcommand(0, 1);
+  std::string viewer_scene;
+  app.add_option("SCENE", viewer_scene, "glTF scene for the viewer");
+
+  RenderSettings settings;
+  CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
+  add_render_flags(*render, settings);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);  // prints the message
+    return 2;
+  }
+
+  if (render->parsed()) return luz::app::run_render(settings);
+
+  const std::string scene = viewer_scene.empty() ? luz::app::default_scene().string() : viewer_scene;
+  if (!luz::app::display_available()) return render_without_display(scene);
+  return luz::app::run_viewer(scene);
+}

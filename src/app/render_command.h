@@ -1,0 +1,32 @@
+#pragma once
+// `luz render`: one picture of a scene, headless through OSMesa.
+#include <optional>
+#include <string>
+
+#include "local/local_options.h"
+
+namespace luz::app {
+
+struct RenderSettings {
+  std::string scene;
+  std::string model = "phong";   // flat | gouraud | phong
+  std::string out;
+  int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
+  int height = 0;
+  std::string camera;            // name or index; empty = the scene's first
+  std::optional<float> exposure; // overrides the scene's
+  LocalOptions local;
+  bool quiet = false;
+};
+
+// The models `--model` accepts today.
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
+
+// Parses "WxH"; false when malformed or out of range.
+bool parse_size(const std::string& text, int& width, int& height);
+
+// Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
+// any message to stderr.
+int run_render(const RenderSettings& settings);
+
+}  // namespace luz::app
