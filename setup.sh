@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Luz on a fresh Debian (bookworm or later): installs the Debian packages that are missing,
+# builds (Release) into build/, then
+#   ./setup.sh [SCENE]   runs luz (the viewer; with no display it renders headless to a PNG)
+#   ./setup.sh test      runs the whole test suite with ctest
+set -euo pipefail
+cd "$(dirname "$0")"
+
+packages=(
+  cmake ninja-build g++ pkg-config python3
+  libgl-dev libosmesa6-dev libglfw3-dev libglm-dev
+  libtinygltf-dev libopenimageio-dev libimgui-dev libstb-dev
+  libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libgtest-dev xvfb xauth
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel "$(nproc)"
+
+if [ "${1:-}" = test ]; then
+  ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600
+else
+  ./build/luz "$@"
+fi
