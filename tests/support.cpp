@@ -28,8 +28,11 @@ static std::string shell_quote(const std::string& s) {
   return quoted + "'";
 }
 
-CommandResult run_luz(const std::vector<std::string>& args) {
-  std::string command = shell_quote(luz_binary().string());
+CommandResult run_luz(const std::vector<std::string>& args, const CommandOptions& options) {
+  std::string command;
+  if (!options.cwd.empty()) command += "cd " + shell_quote(options.cwd.string()) + " && ";
+  if (options.no_display) command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
+  command += shell_quote(luz_binary().string());
   for (const std::string& arg : args) command += " " + shell_quote(arg);
   command += " 2>&1 </dev/null";
   CommandResult result;

@@ -23,7 +23,12 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
+struct CommandOptions {
+  std::filesystem::path cwd;  // empty: the test's own
+  bool no_display = false;    // unset DISPLAY and WAYLAND_DISPLAY, as on a headless machine
+};
+
 // Runs `luz ARGS...` (each argument shell-quoted) and collects its exit code and output.
-CommandResult run_luz(const std::vector<std::string>& args);
+CommandResult run_luz(const std::vector<std::string>& args, const CommandOptions& options = {});
 
 }  // namespace luz::test

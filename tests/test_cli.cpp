@@ -1,0 +1,147 @@
+// The `luz` command as teachers' scripts call it: flags, exit codes (0 / 1 bad input /
+// 2 usage), messages that name the file, and output files that appear whole or not at all.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_luz;
+
+std::string cornell() { return (test::scene_dir() / "cornell_box.gltf").string(); }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+double mean(const Image& image) {
+  double sum = 0;
+  for (const Rgb& p : image.pixels) sum += double(p.r + p.g + p.b);
+  return sum / (3.0 * double(image.pixels.size()));
+}
+
+TEST(Cli, HelpListsTheRenderCommandAndItsFlags) {
+  const auto top = run_luz({"--help"});
+  EXPECT_EQ(top.exit_code, 0);
+  EXPECT_TRUE(contains(top.output, "render"));
+  const auto render = run_luz({"render", "--help"});
+  EXPECT_EQ(render.exit_code, 0);
+  for (const char* flag : {"--model", "--out", "--size", "--camera", "--exposure", "--no-ambient",
+                           "--no-diffuse", "--no-specular", "--blinn", "flat", "gouraud", "phong"})
+    EXPECT_TRUE(contains(render.output, flag)) << flag;
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "x.png").string();
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--bogus"}).exit_code, 2);
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--model", "cartoon"}).exit_code, 2);
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--size", "12"}).exit_code, 2);
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--size", "0x10"}).exit_code, 2);
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--exposure", "bright"}).exit_code, 2);
+  EXPECT_EQ(run_luz({"render", cornell()}).exit_code, 2);  // no --out
+  const auto jpg = run_luz({"render", cornell(), "--out", (dir / "x.jpg").string()});
+  EXPECT_EQ(jpg.exit_code, 2);
+  EXPECT_TRUE(contains(jpg.output, "x.jpg"));
+  const auto camera = run_luz({"render", cornell(), "--out", out, "--camera", "nowhere"});
+  EXPECT_EQ(camera.exit_code, 2);
+  EXPECT_TRUE(contains(camera.output, "nowhere"));
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(Cli, MissingSceneIsBadInputNamingTheFile) {
+  test::ScratchDir dir;
+  const auto result = run_luz({"render", (dir / "nope.gltf").string(), "--out", (dir / "x.png").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.output, "nope.gltf"));
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST(Cli, BrokenSceneLeavesAnExistingOutputUntouched) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "broken.gltf") << "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ {";
+  std::ofstream(dir / "keep.png") << "previous picture";
+  const auto result = run_luz({"render", (dir / "broken.gltf").string(), "--out", (dir / "keep.png").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.output, "broken.gltf"));
+  std::ifstream kept(dir / "keep.png");
+  std::string content((std::istreambuf_iterator<char>(kept)), {});
+  EXPECT_EQ(content, "previous picture");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), {}), 2);  // no temporary left
+}
+
+TEST(Cli, UnwritableOutputIsBadInputAndLeavesNothing) {
+  test::ScratchDir dir;
+  const auto result = run_luz({"render", cornell(), "--out", (dir / "no" / "x.png").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.output, "x.png"));
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(Cli, RendersThePngAtTheRequestedSize) {
+  test::ScratchDir dir;
+  for (const char* model : {"flat", "gouraud", "phong"}) {
+    const fs::path out = dir / (std::string(model) + ".png");
+    const auto result = run_luz({"render", cornell(), "--model", model, "--size", "64x48", "--out", out.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Image image = io::read_image(out);
+    EXPECT_EQ(image.width, 64);
+    EXPECT_EQ(image.height, 48);
+    EXPECT_GT(mean(image), 0.01) << model;
+  }
+}
+
+TEST(Cli, PngIsTheExrExposedAndSrgbEncoded) {
+  test::ScratchDir dir;
+  const auto exr = dir / "a.exr", png = dir / "a.png";
+  ASSERT_EQ(run_luz({"render", cornell(), "--size", "40x40", "--out", exr.string()}).exit_code, 0);
+  ASSERT_EQ(run_luz({"render", cornell(), "--size", "40x40", "--exposure", "1.5", "--out", png.string()}).exit_code, 0);
+  const Image linear = io::read_image(exr);
+  const Image encoded = io::read_image(png);  // read back through the sRGB decode
+  const float scale = std::exp2(1.5f);
+  for (size_t i = 0; i < linear.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const float expected = srgb_encode(linear.pixels[i][c] * scale);
+      EXPECT_NEAR(srgb_encode(encoded.pixels[i][c]), expected, 1.0f / 255.0f) << "pixel " << i;
+    }
+}
+
+TEST(Cli, EachTermSwitchesOff) {
+  test::ScratchDir dir;
+  auto render = [&](std::vector<std::string> flags) {
+    const fs::path out = dir / "t.exr";
+    std::vector<std::string> args = {"render", cornell(), "--size", "48x48", "--out", out.string()};
+    args.insert(args.end(), flags.begin(), flags.end());
+    const auto result = run_luz(args);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return mean(io::read_image(out));
+  };
+  const double all = render({});
+  const double no_diffuse = render({"--no-diffuse"});
+  EXPECT_LT(no_diffuse, 0.5 * all);  // the Cornell box is lit almost only by diffuse light
+  const double nothing = render({"--no-ambient", "--no-diffuse", "--no-specular", "--no-emission"});
+  EXPECT_EQ(nothing, 0.0);  // black background, no term left
+}
+
+TEST(Cli, CameraByIndex) {
+  test::ScratchDir dir;
+  const auto result = run_luz({"render", cornell(), "--camera", "0", "--size", "16x16", "--out", (dir / "c.png").string()});
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+}
+
+TEST(Cli, WithoutADisplayTheViewerRendersTheDefaultSceneHeadless) {
+  test::ScratchDir dir;
+  const auto result = run_luz({}, {.cwd = dir.path, .no_display = true});
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "no display"));
+  EXPECT_TRUE(fs::exists(dir / "cornell_box.png"));
+}
+
+}  // namespace
+}  // namespace luz
