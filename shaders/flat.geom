@@ -15,14 +15,15 @@ flat out vec3 g_specular;
 flat out vec2 g_uv;
 
 void main() {
-  vec3 centroid = (v_position[0] + v_position[1] + v_position[2]) / 3.0;
+  // The centroid (named `middle`: "centroid" is a GLSL keyword).
+  vec3 middle = (v_position[0] + v_position[1] + v_position[2]) / 3.0;
   vec3 face = cross(v_position[1] - v_position[0], v_position[2] - v_position[0]);
   float twice_area = length(face);
   if (twice_area <= 0.0) return;  // degenerate: it would cover no pixel anyway
   vec3 N = face / twice_area;
-  if (dot(N, u_eye - centroid) < 0.0) N = -N;  // two-sided lighting: face the viewer
+  if (dot(N, u_eye - middle) < 0.0) N = -N;  // two-sided lighting: face the viewer
 
-  Terms terms = local_model(centroid, N);
+  Terms terms = local_model(middle, N);
   vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
 
   for (int i = 0; i < 3; ++i) {

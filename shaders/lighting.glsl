@@ -36,7 +36,7 @@ struct PunctualLight {
 
 // An emissive triangle as a point light at its centroid (SCENES.md): I = Le * A * cos(theta_e).
 struct AreaLight {
-  vec3 centroid;
+  vec3 position;  // the triangle's centroid ("centroid" is a GLSL keyword)
   vec3 normal;  // unit, the side it emits from
   vec3 power;   // Le * A
 };
@@ -100,9 +100,9 @@ vec3 punctual_IL(int i, vec3 P, out vec3 L) {
 // IL and L for emissive triangle i: a point light of intensity Le * A * cos(theta_e), 1/d^2.
 vec3 area_IL(int i, vec3 P, out vec3 L) {
   AreaLight light = u_area_lights[i];
-  vec3 to_light = light.centroid - P;
+  vec3 to_light = light.position - P;
   float d = length(to_light);
-  if (d < 1e-6) { L = vec3(0.0); return vec3(0.0); }  // P is the centroid itself
+  if (d < 1e-6) { L = vec3(0.0); return vec3(0.0); }  // P is the light's own centroid
   L = to_light / d;
   float cos_theta_e = max(dot(light.normal, -L), 0.0);  // dark behind the emitter
   return light.power * cos_theta_e / (d * d) / PI;

@@ -176,7 +176,7 @@ void LocalRenderer::Impl::set_lights(gl::Program& p) {
 
   for (size_t i = 0; i < area_lights.size(); ++i) {
     const std::string at = fmt::format("u_area_lights[{}].", i);
-    p.set(at + "centroid", area_lights[i].centroid);
+    p.set(at + "position", area_lights[i].centroid);
     p.set(at + "normal", area_lights[i].normal);
     p.set(at + "power", glm::vec3(area_lights[i].radiance * area_lights[i].area));  // Le * A
   }
