@@ -16,6 +16,7 @@
 // the one test_local_models.cpp uses.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <string>
@@ -29,6 +30,8 @@
 #include "core/error.h"
 #include "core/scene.h"
 #include "gl/offscreen_context.h"
+#include "gl/shader.h"
+#include "gl/window_context.h"
 #include "local/local_renderer.h"
 
 namespace luz {
@@ -639,6 +642,28 @@ TEST(LocalFormula, ManyAreaLightsKeepTheirTotalPower) {
 }
 
 // ---- Scaffolding checks -----------------------------------------------------------------------
+TEST(LocalGl, ShaderErrorsNameTheFile) {
+  try {
+    gl::Program program({"no_such_stage.frag"}, {"lighting.glsl"});
+    FAIL() << "a missing shader file must throw";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind, ErrorKind::gl);
+    EXPECT_NE(std::string(e.what()).find("no_such_stage.frag"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LocalGl, NoDisplayMeansNoWindow) {
+  if (std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY"))
+    GTEST_SKIP() << "a display is set; this checks the headless case";
+  EXPECT_FALSE(gl::WindowContext::display_available());
+  try {
+    gl::WindowContext window(64, 64, "test");
+    FAIL() << "a window without a display must throw";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind, ErrorKind::gl);
+  }
+}
+
 TEST(LocalFormula, ShadingNames) {
   EXPECT_STREQ(to_string(Shading::flat), "flat");
   EXPECT_STREQ(to_string(Shading::gouraud), "gouraud");

@@ -131,7 +131,16 @@ struct LocalRenderer::Impl {
   float far_plane(const Camera& camera) const;
 };
 
-LocalRenderer::LocalRenderer(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {
+// Checks before any GL call: with no context ever made current the table is all null pointers.
+static const Scene& with_gl_loaded(const Scene& scene) {
+  if (!glCreateProgram)
+    throw Error(ErrorKind::gl, "the local renderer needs a current OpenGL context (an "
+                               "OffscreenContext or a WindowContext) made before it");
+  return scene;
+}
+
+LocalRenderer::LocalRenderer(const Scene& scene)
+    : impl_(std::make_unique<Impl>(with_gl_loaded(scene))) {
   for (const Mesh& mesh : scene.meshes) impl_->meshes.emplace_back(mesh);
   for (const Texture& texture : scene.textures) impl_->textures.push_back(upload_texture(texture));
 
