@@ -5,6 +5,8 @@
 // and each emissive triangle lighting the scene as a point light at its centroid of intensity
 // Le * A * cos(theta_e) (SCENES.md).
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
@@ -17,6 +19,8 @@ class LocalRenderer {
 public:
   // Uploads the scene's meshes and textures to the current GL context (which must stay current
   // on this thread for the renderer's lifetime). Throws luz::Error (kind gl) on shader failure.
+  // The scene must outlive the renderer: lights, materials and the ambient term are read at
+  // every draw, so a panel can edit them live; a change of geometry needs a new renderer.
   explicit LocalRenderer(const Scene& scene);
   ~LocalRenderer();
   LocalRenderer(const LocalRenderer&) = delete;
@@ -27,6 +31,10 @@ public:
 
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
   Image render(const Camera& camera, int width, int height, const LocalOptions& options);
+
+  // What the renderer had to simplify, one sentence each (more lights than its uniform arrays
+  // hold, see local_renderer.cpp); the caller prints or shows them. Each is reported once.
+  const std::vector<std::string>& warnings() const;
 
 private:
   struct Impl;

@@ -1,0 +1,38 @@
+#version 330 core
+// Flat shading: one colour per triangle, the formula evaluated once at the triangle's centroid
+// with its face (geometric) normal and the uv of the centroid. A geometry shader sees the whole
+// triangle, which is what GL 3.3 offers for this.
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in vec3 v_position[];
+in vec3 v_normal[];
+in vec2 v_uv[];
+
+flat out vec3 g_ambient;
+flat out vec3 g_diffuse;
+flat out vec3 g_specular;
+flat out vec2 g_uv;
+
+void main() {
+  // The centroid (named `middle`: "centroid" is a GLSL keyword).
+  vec3 middle = (v_position[0] + v_position[1] + v_position[2]) / 3.0;
+  vec3 face = cross(v_position[1] - v_position[0], v_position[2] - v_position[0]);
+  float twice_area = length(face);
+  if (twice_area <= 0.0) return;  // degenerate: it would cover no pixel anyway
+  vec3 N = face / twice_area;
+  if (dot(N, u_eye - middle) < 0.0) N = -N;  // two-sided lighting: face the viewer
+
+  Terms terms = local_model(middle, N);
+  vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
+
+  for (int i = 0; i < 3; ++i) {
+    gl_Position = gl_in[i].gl_Position;
+    g_ambient = terms.ambient;
+    g_diffuse = terms.diffuse;
+    g_specular = terms.specular;
+    g_uv = uv;
+    EmitVertex();
+  }
+  EndPrimitive();
+}

@@ -1,0 +1,34 @@
+#version 330 core
+// Gouraud shading: the formula per vertex, with the vertex normal; the rasteriser interpolates
+// the resulting colours. Both sides of the surface are lit here (with N and -N) because only the
+// fragment knows which side of its triangle the viewer sees (two-sided lighting).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+
+uniform mat4 u_view_projection;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+out vec3 v_ambient;        // I_A
+out vec3 v_front_diffuse;  // I_D, I_S on the side the normal points to
+out vec3 v_front_specular;
+out vec3 v_back_diffuse;   // I_D, I_S on the other side
+out vec3 v_back_specular;
+
+void main() {
+  vec3 N = normalize(a_normal);
+  Terms front = local_model(a_position, N);
+  Terms back = local_model(a_position, -N);
+  v_ambient = front.ambient;
+  v_front_diffuse = front.diffuse;
+  v_front_specular = front.specular;
+  v_back_diffuse = back.diffuse;
+  v_back_specular = back.specular;
+
+  v_position = a_position;
+  v_normal = a_normal;
+  v_uv = a_uv;
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+}
