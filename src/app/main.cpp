@@ -10,6 +10,7 @@
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/viewer.h"
+#include "gl/window_context.h"
 
 namespace {
 
@@ -78,6 +79,6 @@ int main(int argc, char** argv) {
   if (render->parsed()) return luz::app::run_render(settings);
 
   const std::string scene = viewer_scene.empty() ? luz::app::default_scene().string() : viewer_scene;
-  if (!luz::app::display_available()) return render_without_display(scene);
+  if (!luz::gl::WindowContext::display_available()) return render_without_display(scene);
   return luz::app::run_viewer(scene);
 }

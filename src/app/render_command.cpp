@@ -80,6 +80,7 @@ int run_render(const RenderSettings& settings) {
     options.shading = shading_of(settings.model);
     LocalRenderer renderer(scene);
     const Image image = renderer.render(camera, width, height, options);
+    for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
     const float exposure = settings.exposure.value_or(scene.exposure);
     io::write_image(image, settings.out, exposure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Regenerates the golden images of the snapshot tests. Run it only on purpose, after looking at
+# the new pictures (a failing snapshot test never rewrites them):
+#   cmake --build build --target update-goldens
+# Usage: tests/update_goldens.sh LUZ_BINARY
+set -euo pipefail
+luz=${1:?usage: $0 LUZ_BINARY}
+root=$(cd "$(dirname "$0")/.." && pwd)
+golden="$root/tests/data/golden"
+mkdir -p "$golden"
+# Keep this list in step with kScenes and kModels in tests/test_snapshots.cpp.
+for scene in cornell_box phong_spheres whitted; do
+  for model in flat gouraud phong; do
+    "$luz" render "$root/scenes/$scene.gltf" --model "$model" --size 160x120 -q \
+      --out "$golden/$scene-$model.png"
+  done
+done
+echo "goldens written to $golden"
