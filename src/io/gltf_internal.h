@@ -13,6 +13,13 @@
 
 namespace luz::io::gltf {
 
+// Messages are one line: control characters (a newline in a material's name, say) become '?'.
+inline std::string one_line(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';
+  return text;
+}
+
 // The file being loaded, the parsed model and where warnings go. Every message starts with the
 // file as the user gave it, so that each one reads "FILE: problem" (STYLE.md 7).
 struct Context {
@@ -24,9 +31,9 @@ struct Context {
   std::map<int, std::vector<unsigned char>> image_bytes;
 
   [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
-    throw Error(kind, file + ": " + problem);
+    throw Error(kind, one_line(file + ": " + problem));
   }
-  void warn(const std::string& problem) const { warnings.push_back(file + ": " + problem); }
+  void warn(const std::string& problem) const { warnings.push_back(one_line(file + ": " + problem)); }
 
   // Throws index_out_of_range unless 0 <= index < size; `what` names the referring element,
   // e.g. `node 3 "lamp": mesh` -> `node 3 "lamp": mesh 7 is out of range (5 meshes)`.

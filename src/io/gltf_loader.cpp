@@ -101,9 +101,20 @@ struct Source {
   std::string file;
   fs::path folder;  // absolute, canonical
   [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
-    throw Error(kind, file + ": " + problem);
+    throw Error(kind, gltf::one_line(file + ": " + problem));
   }
 };
+
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix, and with the raw
+// input bytes it quotes ("last read: ...") made printable, so that it stays one clean line.
+std::string json_error(const nlohmann::json::exception& e) {
+  std::string message = e.what();
+  if (const size_t end = message.find("] "); message.rfind("[json.exception", 0) == 0 && end != std::string::npos)
+    message.erase(0, end + 2);
+  for (char& c : message)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
+  return message;
+}
 
 std::vector<unsigned char> read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -214,9 +225,9 @@ void check_before_parsing(const Source& source, const std::string& text) {
   try {
     doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::out_of_range& e) {  // 406: number overflow, e.g. 1e999
-    source.fail(ErrorKind::not_finite, fmt::format("a number is not finite ({})", e.what()));
+    source.fail(ErrorKind::not_finite, fmt::format("a number is not finite ({})", json_error(e)));
   } catch (const nlohmann::json::exception& e) {
-    source.fail(ErrorKind::not_gltf, fmt::format("not glTF: the JSON does not parse ({})", e.what()));
+    source.fail(ErrorKind::not_gltf, fmt::format("not glTF: the JSON does not parse ({})", json_error(e)));
   }
   if (!doc.is_object()) source.fail(ErrorKind::not_gltf, "not glTF: the JSON is not an object");
 
