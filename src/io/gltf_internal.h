@@ -60,6 +60,13 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions,
 void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_world,
                        int default_material, Scene& scene);
 
+// gltf_lights_cameras.cpp: the node's perspective camera (orthographic ones are skipped with a
+// warning) and its KHR_lights_punctual light, if any; `node_what` names the node in messages.
+void add_camera(const Context& ctx, const tinygltf::Node& node, const glm::dmat4& to_world,
+                Scene& scene);
+void add_light(const Context& ctx, const tinygltf::Node& node, const std::string& node_what,
+               const glm::dmat4& to_world, Scene& scene);
+
 // gltf_materials.cpp: glTF materials -> scene.materials (same indices), and the base colour
 // textures they use -> scene.textures.
 void add_materials(Context& ctx, Scene& scene);
