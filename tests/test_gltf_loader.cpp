@@ -1,0 +1,927 @@
+// The glTF loader against SCENES.md: one test per mapping rule, values worked by hand, and one
+// test per kind of bad input (its ErrorKind, and a message that names the file).
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "gltf_fixture.h"
+#include "io/gltf_loader.h"
+
+namespace luz::test {
+namespace {
+
+using nlohmann::json;
+
+constexpr float kTol = 1e-5f;
+const float kHalfSqrt2 = std::sqrt(0.5f);
+
+#define EXPECT_VEC3(actual, ex, ey, ez)         \
+  do {                                          \
+    const glm::vec3 v_ = (actual);              \
+    EXPECT_NEAR(v_.x, (ex), kTol) << #actual;   \
+    EXPECT_NEAR(v_.y, (ey), kTol) << #actual;   \
+    EXPECT_NEAR(v_.z, (ez), kTol) << #actual;   \
+  } while (0)
+
+// A material that is plain diffuse: glTF's default metallicFactor is 1, which makes kd 0.
+json diffuse(double r, double g, double b) {
+  return {{"pbrMetallicRoughness", {{"baseColorFactor", {r, g, b, 1.0}}, {"metallicFactor", 0.0}}}};
+}
+
+bool any_warning_contains(const io::LoadedScene& loaded, const std::string& text) {
+  for (const std::string& w : loaded.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// Loads `path` expecting a luz::Error of `kind` whose message names the file; returns the message.
+std::string expect_error(const std::filesystem::path& path, ErrorKind kind) {
+  try {
+    io::load_gltf(path);
+  } catch (const Error& e) {
+    EXPECT_EQ(to_string(e.kind), std::string(to_string(kind))) << e.what();
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path.filename().string()), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    return message;
+  }
+  ADD_FAILURE() << "no error loading " << path;
+  return "";
+}
+
+// Replaces the first `from` in a file's text (for what nlohmann::json cannot write, like 1e999).
+void replace_in_file(const std::filesystem::path& path, const std::string& from, const std::string& to) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  write_file(path, text);
+}
+
+// ================================================================================================
+// Nodes and geometry
+// ================================================================================================
+
+TEST(Node, TrsComposesDownTheHierarchy) {
+  // parent: translate (1,0,0) * scale 2; child: translate (0,1,0) * rotate 90 deg about +Z.
+  // Child local: (1,0,0) -> (0,1,0) + (0,1,0) = (0,2,0); parent: x2 -> (0,4,0), + (1,0,0).
+  GltfBuilder b;
+  const int child = b.node({{"mesh", b.mesh({triangle()})},
+                            {"translation", {0, 1, 0}},
+                            {"rotation", {0, 0, kHalfSqrt2, kHalfSqrt2}}},
+                           false);
+  b.node({{"translation", {1, 0, 0}}, {"scale", {2, 2, 2}}, {"children", {child}}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  // No normals in the file: flat, so vertices follow the triangle's corners in order.
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_VEC3(mesh.positions[mesh.indices[0]], 1, 2, 0);
+  EXPECT_VEC3(mesh.positions[mesh.indices[1]], 1, 4, 0);
+  EXPECT_VEC3(mesh.positions[mesh.indices[2]], -1, 2, 0);
+  EXPECT_VEC3(mesh.normals[0], 0, 0, 1);
+}
+
+TEST(Node, MatrixIsColumnMajor) {
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({triangle()})},
+          {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 6, 7, 1}}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  EXPECT_VEC3(scene.meshes[0].positions[scene.meshes[0].indices[0]], 5, 6, 7);
+  EXPECT_VEC3(scene.meshes[0].positions[scene.meshes[0].indices[1]], 6, 6, 7);
+}
+
+TEST(Node, DefaultSceneIsTheOneNamed) {
+  GltfBuilder b;
+  const int mesh = b.mesh({triangle()});
+  b.node({{"mesh", mesh}});                                       // in scene 0
+  const int other = b.node({{"mesh", mesh}, {"translation", {0, 0, 9}}}, false);
+  b.doc["scenes"].push_back({{"nodes", {other}}});
+  b.doc["scene"] = 1;
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_NEAR(scene.meshes[0].positions[0].z, 9.0f, kTol);
+}
+
+TEST(Normals, FlatWhenAbsent) {
+  // Quad (0,0,0) (1,0,0) (1,1,1) (0,1,1): e1 x e2 = (1,0,0) x (1,1,1) = (0,-1,1), over sqrt 2.
+  Primitive quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {0, 1, 1}};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({quad})}});
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  // Un-indexed: every face has its own three vertices.
+  ASSERT_EQ(mesh.positions.size(), 6u);
+  ASSERT_EQ(mesh.normals.size(), 6u);
+  ASSERT_EQ(mesh.triangle_count(), 2u);
+  for (const glm::vec3& n : mesh.normals) EXPECT_VEC3(n, 0, -kHalfSqrt2, kHalfSqrt2);
+  EXPECT_VEC3(mesh.positions[mesh.indices[5]], 0, 1, 1);
+}
+
+TEST(Normals, FromFileRenormalisedAndShared) {
+  Primitive quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.normals = {{0, 0, 2}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({quad})}});
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  EXPECT_EQ(mesh.positions.size(), 4u);  // shared, as in the file
+  EXPECT_VEC3(mesh.normals[0], 0, 0, 1);
+  EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+}
+
+TEST(Normals, ByInverseTransposeOfTheNodeMatrix) {
+  // Scale (2,1,1): normals go by diag(1/2, 1, 1). (1,1,0)/sqrt2 -> (0.5,1,0)/|.| = (1,2,0)/sqrt5.
+  Primitive p = triangle();
+  p.normals = {{kHalfSqrt2, kHalfSqrt2, 0}, {kHalfSqrt2, kHalfSqrt2, 0}, {kHalfSqrt2, kHalfSqrt2, 0}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}, {"scale", {2, 1, 1}}});
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  const float s5 = std::sqrt(5.0f);
+  EXPECT_VEC3(mesh.normals[0], 1 / s5, 2 / s5, 0);
+  EXPECT_VEC3(mesh.positions[1], 2, 0, 0);
+}
+
+TEST(Winding, FlippedWhenTheNodeMirrors) {
+  // Scale (-1,1,1) turns the counter-clockwise triangle clockwise; the loader swaps two corners so
+  // that the front face (e1 x e2) still faces +Z, where the file's normal points.
+  Primitive p = triangle();
+  p.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}, {"scale", {-1, 1, 1}}});
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{0, 2, 1}));
+  const glm::vec3 a = mesh.positions[mesh.indices[0]], b1 = mesh.positions[mesh.indices[1]],
+                  c = mesh.positions[mesh.indices[2]];
+  EXPECT_VEC3(glm::normalize(glm::cross(b1 - a, c - a)), 0, 0, 1);
+  EXPECT_VEC3(mesh.normals[0], 0, 0, 1);  // inverse transpose of diag(-1,1,1) keeps (0,0,1)
+}
+
+TEST(Primitive, NonTrianglesSkippedWithOneWarningNamingTheMesh) {
+  Primitive lines = triangle();
+  lines.mode = 1;
+  Primitive strip = triangle();
+  strip.mode = 5;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({lines, triangle(), strip}, "wires")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_EQ(loaded.scene.triangle_count(), 1u);
+  int count = 0;
+  for (const std::string& w : loaded.warnings) count += w.find("\"wires\"") != std::string::npos;
+  EXPECT_EQ(count, 1);
+  EXPECT_NE(loaded.warnings.at(0).find("scene.gltf"), std::string::npos);
+}
+
+TEST(Primitive, NonIndexedMakesATriangleOfEveryThreeVertices) {
+  Primitive p;
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  EXPECT_EQ(scene.triangle_count(), 2u);
+  EXPECT_VEC3(scene.meshes[0].positions[scene.meshes[0].indices[3]], 0, 0, 1);
+}
+
+TEST(Accessor, ByteStrideAndOffsetHonoured) {
+  // Interleaved floats: [pad, x, y, z] per vertex; stride 16, accessor byteOffset 4.
+  const std::vector<float> data = {-7, 0, 0, 0, -7, 1, 0, 0, -7, 0, 1, 0};
+  GltfBuilder b;
+  const int view = b.add_view(data.data(), data.size() * 4, 16);
+  const int positions = b.add_accessor(view, kFloat, 3, "VEC3", 4);
+  json primitive;
+  primitive["attributes"]["POSITION"] = positions;
+  b.doc["meshes"].push_back({{"primitives", json::array({primitive})}});
+  b.node({{"mesh", 0}});
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  EXPECT_VEC3(mesh.positions[0], 0, 0, 0);
+  EXPECT_VEC3(mesh.positions[1], 1, 0, 0);
+  EXPECT_VEC3(mesh.positions[2], 0, 1, 0);
+}
+
+TEST(Accessor, ByteAndShortIndices) {
+  Primitive bytes = triangle(), shorts = triangle();
+  bytes.indices = {2, 1, 0, 0, 1, 2};
+  bytes.index_type = kUnsignedByte;
+  shorts.index_type = kUnsignedShort;
+  Primitive with_normals = bytes;  // indices are kept as given when the file has normals
+  with_normals.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({bytes, shorts, with_normals})}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  EXPECT_EQ(scene.meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(scene.meshes[1].triangle_count(), 1u);
+  EXPECT_EQ(scene.meshes[2].indices, (std::vector<uint32_t>{2, 1, 0, 0, 1, 2}));
+}
+
+TEST(Texcoords, FloatAndNormalizedShorts) {
+  Primitive p = triangle();
+  p.uvs = {{0, 0}, {1, 0}, {0.25f, 0.5f}};
+  GltfBuilder b;
+  const int float_mesh = b.mesh({p});
+  // The same uvs as normalized unsigned shorts: 65535 -> 1, 32768 -> 32768/65535.
+  const std::vector<uint16_t> shorts = {0, 0, 65535, 0, 16384, 32768};
+  const int view = b.add_view(shorts.data(), shorts.size() * 2);
+  json primitive = b.doc["meshes"][float_mesh]["primitives"][0];
+  primitive["attributes"]["TEXCOORD_0"] = b.add_accessor(view, kUnsignedShort, 3, "VEC2", 0, true);
+  b.doc["meshes"].push_back({{"primitives", {primitive}}});
+  b.node({{"mesh", float_mesh}});
+  b.node({{"mesh", 1}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  ASSERT_EQ(scene.meshes[0].uvs.size(), 3u);
+  EXPECT_NEAR(scene.meshes[0].uvs[2].x, 0.25f, kTol);
+  EXPECT_NEAR(scene.meshes[0].uvs[2].y, 0.5f, kTol);
+  EXPECT_NEAR(scene.meshes[1].uvs[1].x, 1.0f, kTol);
+  EXPECT_NEAR(scene.meshes[1].uvs[2].y, 32768.0f / 65535.0f, 1e-6f);
+}
+
+TEST(Triangles, ZeroAreaDroppedWithOneWarningGivingTheCount) {
+  Primitive p;
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
+  p.indices = {0, 1, 2,   // fine
+               0, 0, 2,   // repeated corner
+               0, 1, 3};  // collinear
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p}, "slivers")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_EQ(loaded.scene.triangle_count(), 1u);
+  ASSERT_EQ(loaded.warnings.size(), 1u);
+  EXPECT_NE(loaded.warnings[0].find("\"slivers\""), std::string::npos) << loaded.warnings[0];
+  EXPECT_NE(loaded.warnings[0].find("dropped 2 "), std::string::npos) << loaded.warnings[0];
+}
+
+TEST(Glb, LoadsLikeGltf) {
+  GltfBuilder b = one_triangle(diffuse(0.5, 0.25, 0.125));
+  b.doc["nodes"][0]["translation"] = {1, 2, 3};
+  ScratchDir dir;
+  const Scene text = io::load_gltf(b.write_gltf(dir)).scene;
+  const Scene binary = io::load_gltf(b.write_glb(dir)).scene;
+  ASSERT_EQ(binary.meshes.size(), 1u);
+  EXPECT_EQ(binary.meshes[0].positions, text.meshes[0].positions);
+  EXPECT_VEC3(binary.meshes[0].positions[0], 1, 2, 3);
+  EXPECT_VEC3(binary.materials[0].kd, 0.5f, 0.25f, 0.125f);
+  EXPECT_EQ(binary.path, (dir / "scene.glb").string());
+}
+
+TEST(Gltf, EmbeddedDataUriBuffer) {
+  GltfBuilder b = one_triangle();
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir, "embedded.gltf", true)).scene;
+  EXPECT_FALSE(std::filesystem::exists(dir / "embedded.bin"));
+  EXPECT_EQ(scene.triangle_count(), 1u);
+  EXPECT_VEC3(scene.meshes[0].positions[scene.meshes[0].indices[2]], 0, 1, 0);
+}
+
+// ================================================================================================
+// Materials
+// ================================================================================================
+
+Material load_material(const json& material) {
+  ScratchDir dir;
+  return io::load_gltf(one_triangle(material).write_gltf(dir)).scene.materials.at(0);
+}
+
+TEST(Material, DiffuseFromBaseColorTimesOneMinusMetallic) {
+  // kd = (0.8, 0.4, 0.2) x (1 - 0.25); ka defaults to kd; the rest to SCENES.md's defaults.
+  const Material m = load_material({{"name", "clay"},
+                                    {"pbrMetallicRoughness",
+                                     {{"baseColorFactor", {0.8, 0.4, 0.2, 1}}, {"metallicFactor", 0.25}}}});
+  EXPECT_EQ(m.name, "clay");
+  EXPECT_VEC3(m.kd, 0.6f, 0.3f, 0.15f);
+  EXPECT_VEC3(m.ka, 0.6f, 0.3f, 0.15f);
+  EXPECT_VEC3(m.ks, 0, 0, 0);
+  EXPECT_VEC3(m.kr, 0, 0, 0);
+  EXPECT_VEC3(m.kt, 0, 0, 0);
+  EXPECT_VEC3(m.emission, 0, 0, 0);
+  EXPECT_FLOAT_EQ(m.ior, 1.5f);
+  EXPECT_EQ(m.kd_texture, -1);
+}
+
+TEST(Material, ShininessFromRoughness) {
+  // n = 2 / r^4 - 2: r = 0.5 -> 2/0.0625 - 2 = 30; r = 1 -> 0, clamped up to 1.
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["roughnessFactor"] = 0.5;
+  EXPECT_NEAR(load_material(m).shininess, 30.0f, 1e-3f);
+  m["pbrMetallicRoughness"]["roughnessFactor"] = 1.0;
+  EXPECT_FLOAT_EQ(load_material(m).shininess, 1.0f);
+}
+
+TEST(Material, KrFromMetallicSmoothBaseColor) {
+  // metallic 1, roughness 0.05: a mirror tinted by the base colour, and no diffuse part.
+  json m = {{"pbrMetallicRoughness",
+             {{"baseColorFactor", {0.9, 0.8, 0.7, 1}}, {"metallicFactor", 1.0}, {"roughnessFactor", 0.05}}}};
+  const Material mirror = load_material(m);
+  EXPECT_VEC3(mirror.kr, 0.9f, 0.8f, 0.7f);
+  EXPECT_VEC3(mirror.kd, 0, 0, 0);
+  m["pbrMetallicRoughness"]["roughnessFactor"] = 0.1;  // too rough for a mirror
+  EXPECT_VEC3(load_material(m).kr, 0, 0, 0);
+  m["pbrMetallicRoughness"]["roughnessFactor"] = 0.0;
+  m["pbrMetallicRoughness"]["metallicFactor"] = 0.4;  // not metal enough
+  EXPECT_VEC3(load_material(m).kr, 0, 0, 0);
+}
+
+TEST(Material, ExtrasScalarIsGreyAndRgbIsRgb) {
+  json m = diffuse(0.2, 0.2, 0.2);
+  m["extras"] = {{"ka", 0.1}, {"ks", {0.2, 0.3, 0.4}}, {"shininess", 50}, {"kr", 0.25},
+                 {"kt", {0.1, 0.2, 0.3}}, {"ior", 1.33}};
+  const Material mat = load_material(m);
+  EXPECT_VEC3(mat.ka, 0.1f, 0.1f, 0.1f);
+  EXPECT_VEC3(mat.ks, 0.2f, 0.3f, 0.4f);
+  EXPECT_FLOAT_EQ(mat.shininess, 50.0f);
+  EXPECT_VEC3(mat.kr, 0.25f, 0.25f, 0.25f);
+  EXPECT_VEC3(mat.kt, 0.1f, 0.2f, 0.3f);
+  EXPECT_FLOAT_EQ(mat.ior, 1.33f);
+  EXPECT_VEC3(mat.kd, 0.2f, 0.2f, 0.2f);
+}
+
+TEST(Material, TransmissionAndIorExtensionsUnlessExtrasSayOtherwise) {
+  json m = diffuse(0.1, 0.1, 0.1);
+  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 0.7}}},
+                     {"KHR_materials_ior", {{"ior", 2.4}}}};
+  const Material glass = load_material(m);
+  EXPECT_VEC3(glass.kt, 0.7f, 0.7f, 0.7f);
+  EXPECT_FLOAT_EQ(glass.ior, 2.4f);
+  m["extras"] = {{"kt", 0.2}, {"ior", 1.1}};
+  const Material overridden = load_material(m);
+  EXPECT_VEC3(overridden.kt, 0.2f, 0.2f, 0.2f);
+  EXPECT_FLOAT_EQ(overridden.ior, 1.1f);
+}
+
+TEST(Material, EmissionTimesStrengthMakesAreaLights) {
+  json m = diffuse(0, 0, 0);
+  m["emissiveFactor"] = {1.0, 0.5, 0.25};
+  m["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}};
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(one_triangle(m).write_gltf(dir)).scene;
+  EXPECT_VEC3(scene.materials[0].emission, 4, 2, 1);
+  ASSERT_EQ(scene.area_lights.size(), 1u);
+  EXPECT_NEAR(scene.area_lights[0].area, 0.5f, kTol);
+  EXPECT_VEC3(scene.area_lights[0].normal, 0, 0, 1);
+  EXPECT_VEC3(scene.area_lights[0].radiance, 4, 2, 1);
+}
+
+TEST(Material, DefaultAppendedOnlyWhenAPrimitiveHasNone) {
+  GltfBuilder b;
+  const int red = b.material(diffuse(1, 0, 0));
+  b.node({{"mesh", b.mesh({triangle(red), triangle()})}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.materials.size(), 2u);  // the file's material keeps index 0
+  EXPECT_VEC3(scene.materials[0].kd, 1, 0, 0);
+  EXPECT_EQ(scene.materials[1].name, "default");
+  EXPECT_VEC3(scene.materials[1].kd, 0.8f, 0.8f, 0.8f);
+  EXPECT_EQ(scene.meshes[0].material, 0);
+  EXPECT_EQ(scene.meshes[1].material, 1);
+
+  ScratchDir dir2;
+  EXPECT_EQ(io::load_gltf(one_triangle(diffuse(1, 0, 0)).write_gltf(dir2)).scene.materials.size(), 1u);
+}
+
+TEST(Material, EnergyAboveOneLoadsWithAWarningNamingIt) {
+  json m = diffuse(0.8, 0.8, 0.8);
+  m["name"] = "hot";
+  m["extras"] = {{"kr", 0.5}};  // kd + kr = 1.3
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(one_triangle(m).write_gltf(dir));
+  EXPECT_VEC3(loaded.scene.materials[0].kr, 0.5f, 0.5f, 0.5f);
+  EXPECT_TRUE(any_warning_contains(loaded, "material 0 \"hot\"")) << ::testing::PrintToString(loaded.warnings);
+  ScratchDir dir2;
+  EXPECT_TRUE(io::load_gltf(one_triangle(diffuse(0.5, 0.5, 0.5)).write_gltf(dir2)).warnings.empty());
+}
+
+// ================================================================================================
+// Textures
+// ================================================================================================
+
+TEST(Texture, SrgbDecodedBaseColor) {
+  // A 2x1 PNG: red, then grey 128. sRGB-decoded: 128/255 -> ((0.50196 + 0.055) / 1.055)^2.4.
+  GltfBuilder b;
+  const int texture = b.texture_from_file("checker.png", png_rgb8(2, 1, {255, 0, 0, 128, 128, 128}));
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", texture}};
+  Primitive p = triangle(b.material(m));
+  p.uvs = {{0, 0}, {1, 0}, {0, 1}};
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(loaded.warnings.empty()) << ::testing::PrintToString(loaded.warnings);
+  const Scene& scene = loaded.scene;
+  ASSERT_EQ(scene.materials[0].kd_texture, 0);
+  const Texture& t = scene.textures.at(0);
+  ASSERT_EQ(t.width, 2);
+  ASSERT_EQ(t.height, 1);
+  EXPECT_VEC3(t.texel(0, 0), 1, 0, 0);
+  const float grey = std::pow((128.0f / 255.0f + 0.055f) / 1.055f, 2.4f);  // 0.21586
+  EXPECT_NEAR(t.texel(1, 0).g, grey, 1e-4f);
+  EXPECT_NEAR(grey, 0.21586f, 1e-4f);
+  EXPECT_NEAR(scene.meshes[0].uvs[1].x, 1.0f, kTol);
+}
+
+TEST(Texture, MissingFileGivesWhiteAndAWarningNamingTheUri) {
+  GltfBuilder b;
+  b.doc["images"] = json::array({{{"uri", "nowhere.png"}}});
+  b.doc["textures"] = json::array({{{"source", 0}}});
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  b.node({{"mesh", b.mesh({triangle(b.material(m))})}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  ASSERT_EQ(loaded.warnings.size(), 1u) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_NE(loaded.warnings[0].find("scene.gltf"), std::string::npos);
+  EXPECT_NE(loaded.warnings[0].find("nowhere.png"), std::string::npos);
+  const Texture& t = loaded.scene.textures.at(size_t(loaded.scene.materials[0].kd_texture));
+  EXPECT_EQ(t.width, 1);
+  EXPECT_EQ(t.height, 1);
+  EXPECT_VEC3(t.texel(0, 0), 1, 1, 1);
+}
+
+TEST(Texture, UndecodableGivesWhiteAndAWarning) {
+  GltfBuilder b;
+  const int texture = b.texture_from_file("garbage.png", {'n', 'o', 't', ' ', 'a', 'n', ' ', 'i'});
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", texture}};
+  b.node({{"mesh", b.mesh({triangle(b.material(m))})}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(any_warning_contains(loaded, "garbage.png"));
+  EXPECT_VEC3(loaded.scene.textures.at(0).texel(0, 0), 1, 1, 1);
+}
+
+TEST(Texture, FromABufferViewInAGlb) {
+  GltfBuilder b;
+  const std::vector<unsigned char> png = png_rgb8(1, 1, {0, 255, 0});
+  const int view = b.add_view(png.data(), png.size());
+  b.doc["images"] = json::array({{{"bufferView", view}, {"mimeType", "image/png"}}});
+  b.doc["textures"] = json::array({{{"source", 0}}});
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  b.node({{"mesh", b.mesh({triangle(b.material(m))})}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_glb(dir)).scene;
+  EXPECT_VEC3(scene.textures.at(0).texel(0, 0), 0, 1, 0);
+}
+
+// ================================================================================================
+// Lights
+// ================================================================================================
+
+TEST(Light, PointIsColourTimesIntensityAtItsNode) {
+  GltfBuilder b = one_triangle();
+  const int light = b.light({{"type", "point"}, {"name", "bulb"}, {"color", {1, 0.5, 0.25}}, {"intensity", 8}});
+  b.node({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.lights.size(), 1u);
+  const Light& l = scene.lights[0];
+  EXPECT_EQ(l.name, "bulb");
+  EXPECT_EQ(l.type, LightType::point);
+  EXPECT_VEC3(l.intensity, 8, 4, 2);
+  EXPECT_VEC3(l.position, 1, 2, 3);
+  EXPECT_FALSE(l.attenuation.classroom);  // physical 1/d^2 by default
+}
+
+TEST(Light, SpotConesAndWarnExponent) {
+  // Rotating -90 deg about X turns the node's -Z into -Y: the spot shines straight down.
+  GltfBuilder b = one_triangle();
+  const int light = b.light({{"type", "spot"},
+                             {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}},
+                             {"extras", {{"warn_exponent", 10}}}});
+  b.node({{"name", "lamp"},
+          {"rotation", {-kHalfSqrt2, 0, 0, kHalfSqrt2}},
+          {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+  ScratchDir dir;
+  const Light l = io::load_gltf(b.write_gltf(dir)).scene.lights.at(0);
+  EXPECT_EQ(l.type, LightType::spot);
+  EXPECT_EQ(l.name, "lamp");  // the light has no name: the node's
+  EXPECT_FLOAT_EQ(l.inner_cone, 0.2f);
+  EXPECT_FLOAT_EQ(l.outer_cone, 0.6f);
+  EXPECT_FLOAT_EQ(l.warn_exponent, 10.0f);
+  EXPECT_VEC3(l.direction, 0, -1, 0);
+  EXPECT_VEC3(l.intensity, 1, 1, 1);  // glTF defaults: white, intensity 1
+}
+
+TEST(Light, DirectionalWithClassroomAttenuation) {
+  GltfBuilder b = one_triangle();
+  const int light = b.light({{"type", "directional"}, {"intensity", 3},
+                             {"extras", {{"attenuation", {1, 0.5, 0.25}}}}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+  ScratchDir dir;
+  const Light l = io::load_gltf(b.write_gltf(dir)).scene.lights.at(0);
+  EXPECT_EQ(l.type, LightType::directional);
+  EXPECT_VEC3(l.direction, 0, 0, -1);
+  EXPECT_VEC3(l.intensity, 3, 3, 3);
+  EXPECT_TRUE(l.attenuation.classroom);
+  EXPECT_VEC3(l.attenuation.c, 1, 0.5f, 0.25f);
+  EXPECT_NEAR(l.attenuation.factor(2.0f), 1.0f / (1 + 1 + 1), kTol);  // 1/(c0 + 2 c1 + 4 c2)
+}
+
+// ================================================================================================
+// Cameras
+// ================================================================================================
+
+TEST(Camera, PerspectiveFieldsAndNodePose) {
+  GltfBuilder b = one_triangle();
+  const int camera = b.camera({{"type", "perspective"}, {"name", "eye"},
+                               {"perspective", {{"yfov", 0.7}, {"aspectRatio", 1.5}, {"znear", 0.1}, {"zfar", 100}}}});
+  b.node({{"camera", camera}, {"translation", {0, 1, 5}}, {"scale", {3, 3, 3}}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.cameras.size(), 1u);
+  const Camera& c = scene.cameras[0];
+  EXPECT_EQ(c.name, "eye");
+  EXPECT_FLOAT_EQ(c.yfov, 0.7f);
+  EXPECT_FLOAT_EQ(c.aspect, 1.5f);
+  EXPECT_FLOAT_EQ(c.znear, 0.1f);
+  EXPECT_FLOAT_EQ(c.zfar, 100.0f);
+  EXPECT_VEC3(c.position(), 0, 1, 5);
+  EXPECT_VEC3(c.forward(), 0, 0, -1);
+  EXPECT_NEAR(glm::length(glm::vec3(c.to_world[0])), 1.0f, kTol);  // the node's scale is dropped
+}
+
+TEST(Camera, FirstInNodeOrderIsDefault) {
+  // The file lists "second" first, but the node tree meets "first" (a child of root 0) before
+  // "second" (root 1).
+  GltfBuilder b = one_triangle();
+  const json perspective = {{"yfov", 0.5}, {"znear", 0.1}};
+  const int second = b.camera({{"type", "perspective"}, {"name", "second"}, {"perspective", perspective}});
+  const int first = b.camera({{"type", "perspective"}, {"name", "first"}, {"perspective", perspective}});
+  const int child = b.node({{"camera", first}}, false);
+  b.doc["nodes"][0]["children"] = {child};
+  b.node({{"camera", second}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  ASSERT_EQ(scene.cameras.size(), 2u);
+  EXPECT_EQ(scene.cameras[0].name, "first");
+  EXPECT_EQ(scene.cameras[1].name, "second");
+  EXPECT_EQ(scene.find_camera("second"), 1);
+}
+
+TEST(Camera, NamedAfterItsNodeWhenUnnamed) {
+  GltfBuilder b = one_triangle();
+  const int camera = b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}});
+  b.node({{"name", "tripod"}, {"camera", camera}});
+  ScratchDir dir;
+  const Camera c = io::load_gltf(b.write_gltf(dir)).scene.cameras.at(0);
+  EXPECT_EQ(c.name, "tripod");
+  EXPECT_FLOAT_EQ(c.zfar, 0.0f);    // absent: infinite
+  EXPECT_FLOAT_EQ(c.aspect, 0.0f);  // absent: none given
+}
+
+TEST(Camera, OrthographicSkippedWithWarningAndFramingAdded) {
+  GltfBuilder b = one_triangle();
+  const int camera = b.camera({{"type", "orthographic"}, {"name", "plan"},
+                               {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}});
+  b.node({{"camera", camera}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(any_warning_contains(loaded, "\"plan\""));
+  ASSERT_EQ(loaded.scene.cameras.size(), 1u);
+  EXPECT_EQ(loaded.scene.cameras[0].name, "framing");
+}
+
+TEST(Camera, FramingWhenNone) {
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(one_triangle().write_gltf(dir)).scene;
+  ASSERT_EQ(scene.cameras.size(), 1u);
+  const Camera& c = scene.cameras[0];
+  EXPECT_EQ(c.name, "framing");
+  EXPECT_NEAR(c.position().x, 0.5f, kTol);  // the bounding box's centre, seen from +Z
+  EXPECT_NEAR(c.position().y, 0.5f, kTol);
+  EXPECT_GT(c.position().z, 0.5f);
+  EXPECT_VEC3(c.forward(), 0, 0, -1);
+}
+
+// ================================================================================================
+// Scene-wide settings
+// ================================================================================================
+
+TEST(Scene, ExtrasAmbientBackgroundExposure) {
+  GltfBuilder b = one_triangle();
+  b.doc["scenes"][0]["extras"] = {{"ambient", 0.1}, {"background", {0.2, 0.3, 0.4}}, {"exposure", -1.5}};
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  EXPECT_VEC3(scene.ambient, 0.1f, 0.1f, 0.1f);
+  EXPECT_VEC3(scene.background, 0.2f, 0.3f, 0.4f);
+  EXPECT_FLOAT_EQ(scene.exposure, -1.5f);
+}
+
+TEST(Scene, DefaultsAndPathAsGiven) {
+  ScratchDir dir;
+  const std::filesystem::path path = one_triangle().write_gltf(dir, "plain.gltf");
+  const Scene scene = io::load_gltf(path).scene;
+  EXPECT_EQ(scene.path, path.string());
+  EXPECT_VEC3(scene.ambient, 0, 0, 0);
+  EXPECT_VEC3(scene.background, 0, 0, 0);
+  EXPECT_FLOAT_EQ(scene.exposure, 0.0f);
+  EXPECT_TRUE(scene.lights.empty());
+  EXPECT_TRUE(scene.area_lights.empty());
+}
+
+// ================================================================================================
+// Bad input: one test per case, each checking the kind and that the message names the file
+// ================================================================================================
+
+TEST(Error, MissingFile) {
+  ScratchDir dir;
+  expect_error(dir / "absent.gltf", ErrorKind::file_missing);
+}
+
+TEST(Error, MissingBinFile) {
+  ScratchDir dir;
+  const auto path = one_triangle().write_gltf(dir);
+  std::filesystem::remove(dir / "scene.bin");
+  const std::string message = expect_error(path, ErrorKind::file_missing);
+  EXPECT_NE(message.find("scene.bin"), std::string::npos) << message;
+}
+
+TEST(Error, BrokenJsonIsNotGltf) {
+  ScratchDir dir;
+  write_file(dir / "broken.gltf", std::string("{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [ "));
+  expect_error(dir / "broken.gltf", ErrorKind::not_gltf);
+}
+
+TEST(Error, JsonThatIsNotGltf) {
+  ScratchDir dir;
+  write_file(dir / "array.gltf", std::string("[1, 2, 3]"));
+  expect_error(dir / "array.gltf", ErrorKind::not_gltf);
+  write_file(dir / "empty.gltf", std::string("{\"nodes\": []}"));  // no asset
+  expect_error(dir / "empty.gltf", ErrorKind::not_gltf);
+  write_file(dir / "picture.gltf", png_rgb8(1, 1, {0, 0, 0}));
+  expect_error(dir / "picture.gltf", ErrorKind::not_gltf);
+}
+
+TEST(Error, BinShorterThanByteLengthIsTruncated) {
+  ScratchDir dir;
+  const auto path = one_triangle().write_gltf(dir);
+  std::filesystem::resize_file(dir / "scene.bin", 20);
+  const std::string message = expect_error(path, ErrorKind::truncated_buffer);
+  EXPECT_NE(message.find("scene.bin"), std::string::npos) << message;
+}
+
+TEST(Error, GlbBinChunkShorterThanBufferIsTruncated) {
+  GltfBuilder b = one_triangle();
+  b.doc["buffers"] = json::array({{{"byteLength", b.bin.size() + 64}}});
+  ScratchDir dir;
+  expect_error(b.write_glb(dir), ErrorKind::truncated_buffer);
+}
+
+TEST(Error, GlbCutShortIsTruncated) {
+  ScratchDir dir;
+  const auto path = one_triangle().write_glb(dir);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) - 8);
+  expect_error(path, ErrorKind::truncated_buffer);
+}
+
+TEST(Error, AccessorPastTheEndOfItsBufferView) {
+  GltfBuilder b = one_triangle();
+  b.doc["accessors"][0]["count"] = 400;  // POSITION: 400 x 12 bytes in a 36-byte view
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::truncated_buffer);
+  EXPECT_NE(message.find("accessor 0 reaches past the end of bufferView 0 (needs 4800 bytes, has 36)"),
+            std::string::npos) << message;
+}
+
+TEST(Error, BufferViewPastTheEndOfItsBuffer) {
+  GltfBuilder b = one_triangle();
+  b.doc["bufferViews"][0]["byteOffset"] = 1000;
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::truncated_buffer);
+  EXPECT_NE(message.find("bufferView 0"), std::string::npos) << message;
+}
+
+TEST(Error, VertexIndexOutOfRange) {
+  Primitive p = triangle();
+  p.indices = {0, 1, 3};  // 3 vertices
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, MaterialIndexOutOfRange) {
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({triangle(3)})}});
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+  EXPECT_NE(message.find("material 3"), std::string::npos) << message;
+}
+
+TEST(Error, AccessorIndexOutOfRange) {
+  GltfBuilder b = one_triangle();
+  b.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 42;
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, BufferViewIndexOutOfRange) {
+  GltfBuilder b = one_triangle();
+  b.doc["accessors"][0]["bufferView"] = 9;
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, NodeIndexOutOfRange) {
+  GltfBuilder b = one_triangle();
+  b.doc["nodes"][0]["children"] = {5};
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+  GltfBuilder root = one_triangle();
+  root.doc["scenes"][0]["nodes"].push_back(7);
+  ScratchDir dir2;
+  expect_error(root.write_gltf(dir2), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, MeshIndexOutOfRange) {
+  GltfBuilder b = one_triangle();
+  b.node({{"mesh", 4}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, TextureIndexOutOfRange) {
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 2}};
+  ScratchDir dir;
+  expect_error(one_triangle(m).write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, ImageSourceIndexOutOfRange) {
+  json m = diffuse(1, 1, 1);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  GltfBuilder b = one_triangle(m);
+  b.doc["textures"] = json::array({{{"source", 3}}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, LightIndexOutOfRange) {
+  GltfBuilder b = one_triangle();
+  b.light({{"type", "point"}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::index_out_of_range);
+}
+
+TEST(Error, NaNPositionIsNotFinite) {
+  Primitive p = triangle();
+  p.positions[1].y = std::numeric_limits<float>::quiet_NaN();
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::not_finite);
+  EXPECT_NE(message.find("POSITION"), std::string::npos) << message;
+}
+
+TEST(Error, InfiniteNormalIsNotFinite) {
+  Primitive p = triangle();
+  p.normals = {{0, 0, 1}, {0, 0, std::numeric_limits<float>::infinity()}, {0, 0, 1}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::not_finite);
+}
+
+TEST(Error, NaNTexcoordIsNotFinite) {
+  Primitive p = triangle();
+  p.uvs = {{0, 0}, {std::numeric_limits<float>::quiet_NaN(), 0}, {0, 1}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({p})}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::not_finite);
+}
+
+TEST(Error, MaterialValueBeyondFloatIsNotFinite) {
+  // JSON cannot hold NaN or Inf; 1e39 is a finite double but infinite as the float we compute in.
+  json m = diffuse(1, 1, 1);
+  m["name"] = "glass";
+  m["extras"] = {{"ior", 1e39}};
+  ScratchDir dir;
+  const std::string message = expect_error(one_triangle(m).write_gltf(dir), ErrorKind::not_finite);
+  EXPECT_NE(message.find("material 0 \"glass\": ior is infinite"), std::string::npos) << message;
+}
+
+TEST(Error, NumberOverflowingDoubleIsNotFinite) {
+  json m = diffuse(1, 1, 1);
+  m["extras"] = {{"ks", 0.123456}};
+  ScratchDir dir;
+  const auto path = one_triangle(m).write_gltf(dir);
+  replace_in_file(path, "0.123456", "1e999");
+  expect_error(path, ErrorKind::not_finite);
+}
+
+TEST(Error, LightValueBeyondFloatIsNotFinite) {
+  GltfBuilder b = one_triangle();
+  b.light({{"type", "point"}, {"intensity", 1e39}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::not_finite);
+}
+
+TEST(Error, NodeTransformBeyondFloatIsNotFinite) {
+  GltfBuilder b = one_triangle();
+  b.doc["nodes"][0]["translation"] = {0, 1e39, 0};
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::not_finite);
+  EXPECT_NE(message.find("node 0: translation"), std::string::npos) << message;
+}
+
+TEST(Error, UriWithDotDotIsOutsideTheFolder) {
+  // The file it names exists and has the right size: it is refused before it is read.
+  ScratchDir dir;
+  GltfBuilder b = one_triangle();
+  write_file(dir / "outside.bin", b.bin);
+  b.doc["buffers"] = json::array({{{"uri", "../outside.bin"}, {"byteLength", b.bin.size()}}});
+  const std::string message = expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::uri_outside_folder);
+  EXPECT_NE(message.find("../outside.bin"), std::string::npos) << message;
+  b.doc["buffers"][0]["uri"] = "%2E%2E/outside.bin";  // percent-encoded the same
+  expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::uri_outside_folder);
+}
+
+TEST(Error, AbsoluteUriIsOutsideTheFolder) {
+  ScratchDir dir;
+  GltfBuilder b = one_triangle();
+  write_file(dir / "scene.bin", b.bin);
+  b.doc["buffers"] = json::array({{{"uri", (dir / "scene.bin").string()}, {"byteLength", b.bin.size()}}});
+  expect_error(b.write_gltf(dir, "abs.gltf"), ErrorKind::uri_outside_folder);
+}
+
+TEST(Error, FileSchemeUriIsOutsideTheFolder) {
+  ScratchDir dir;
+  GltfBuilder b = one_triangle();
+  b.doc["buffers"] = json::array({{{"uri", "file://" + (dir / "scene.bin").string()}, {"byteLength", b.bin.size()}}});
+  write_file(dir / "scene.bin", b.bin);
+  expect_error(b.write_gltf(dir, "file.gltf"), ErrorKind::uri_outside_folder);
+}
+
+TEST(Error, ImageUriOutsideTheFolder) {
+  // Even a texture, which would only warn when missing, is refused when it leaves the folder.
+  GltfBuilder b = one_triangle();
+  b.doc["images"] = json::array({{{"uri", "../../etc/secret.png"}}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::uri_outside_folder);
+}
+
+TEST(Error, NoTriangles) {
+  Primitive lines = triangle();
+  lines.mode = 1;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({lines})}});
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::no_triangles);
+  GltfBuilder empty;  // a scene with no nodes at all
+  ScratchDir dir2;
+  expect_error(empty.write_gltf(dir2), ErrorKind::no_triangles);
+}
+
+TEST(Error, NegativeOrZeroIorIsBadValue) {
+  json m = diffuse(1, 1, 1);
+  m["extras"] = {{"ior", -1.0}};
+  ScratchDir dir;
+  expect_error(one_triangle(m).write_gltf(dir), ErrorKind::bad_value);
+  m["extras"] = json::object();
+  m["extensions"] = {{"KHR_materials_ior", {{"ior", 0.0}}}};
+  ScratchDir dir2;
+  expect_error(one_triangle(m).write_gltf(dir2), ErrorKind::bad_value);
+}
+
+TEST(Error, NegativeCoefficientIsBadValue) {
+  json m = diffuse(1, 1, 1);
+  m["name"] = "weird";
+  m["extras"] = {{"ks", {0.1, -0.2, 0.1}}};
+  ScratchDir dir;
+  const std::string message = expect_error(one_triangle(m).write_gltf(dir), ErrorKind::bad_value);
+  EXPECT_NE(message.find("material 0 \"weird\""), std::string::npos) << message;
+}
+
+TEST(Error, NodeCycleIsBadValueNotAHang) {
+  GltfBuilder b = one_triangle();
+  b.doc["nodes"][0]["children"] = {0};
+  ScratchDir dir;
+  expect_error(b.write_gltf(dir), ErrorKind::bad_value);
+}
+
+}  // namespace
+}  // namespace luz::test

@@ -1,0 +1,362 @@
+// glTF geometry -> world-space triangle meshes (SCENES.md "Format").
+//
+// [SECTION] Accessors: every read is bounds-checked here, because tinygltf 2.7 checks neither that
+//           an accessor fits its bufferView nor that a bufferView fits its buffer.
+// [SECTION] Primitives: triangles only, flattened by the node's world matrix, flat normals when
+//           the file has none, zero-area triangles dropped.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "io/gltf_internal.h"
+
+namespace luz::io::gltf {
+
+namespace {
+
+// ------------------------------------------------------------------------------------------------
+// [SECTION] Accessors
+// ------------------------------------------------------------------------------------------------
+
+size_t component_size(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+size_t component_count(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT2: return 4;
+    case TINYGLTF_TYPE_MAT3: return 9;
+    case TINYGLTF_TYPE_MAT4: return 16;
+    default: return 0;
+  }
+}
+
+// a + b and a * b for the "needs N bytes" of messages, saturating instead of wrapping so that a
+// hostile count cannot make a huge accessor look small.
+constexpr size_t kMaxSize = std::numeric_limits<size_t>::max();
+size_t add_sat(size_t a, size_t b) { return a > kMaxSize - b ? kMaxSize : a + b; }
+size_t mul_sat(size_t a, size_t b) { return b != 0 && a > kMaxSize / b ? kMaxSize : a * b; }
+
+// An accessor whose every element is known to lie inside its buffer.
+struct AccessorView {
+  std::string name;                      // "accessor 3" for messages
+  const unsigned char* first = nullptr;  // nullptr: no bufferView, every element is zero (glTF)
+  size_t stride = 0;
+  size_t count = 0;
+  int component_type = 0;
+  bool normalized = false;
+
+  const unsigned char* element(size_t i) const { return first + i * stride; }
+};
+
+AccessorView view_accessor(const Context& ctx, int index, const std::string& what) {
+  const tinygltf::Model& model = ctx.model;
+  ctx.check_index(index, model.accessors.size(), what, "accessors");
+  const tinygltf::Accessor& accessor = model.accessors[size_t(index)];
+  AccessorView view;
+  view.name = describe("accessor", size_t(index), accessor.name);
+  view.count = accessor.count;
+  view.component_type = accessor.componentType;
+  view.normalized = accessor.normalized;
+  if (accessor.sparse.isSparse) ctx.fail(ErrorKind::bad_value, view.name + ": sparse accessors are not supported");
+  const size_t element_size = component_size(accessor.componentType) * component_count(accessor.type);
+  if (element_size == 0)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}: unknown componentType {} or type {}", view.name,
+                                               accessor.componentType, accessor.type));
+  view.stride = element_size;
+  if (accessor.bufferView == -1) return view;  // all zeros
+
+  ctx.check_index(accessor.bufferView, model.bufferViews.size(), view.name + ": bufferView",
+                  "bufferViews");
+  const tinygltf::BufferView& buffer_view = model.bufferViews[size_t(accessor.bufferView)];
+  const std::string view_name = fmt::format("bufferView {}", accessor.bufferView);
+  ctx.check_index(buffer_view.buffer, model.buffers.size(), view_name + ": buffer", "buffers");
+  const std::vector<unsigned char>& data = model.buffers[size_t(buffer_view.buffer)].data;
+
+  // The bufferView must lie inside its buffer ...
+  const size_t view_end = add_sat(buffer_view.byteOffset, buffer_view.byteLength);
+  if (view_end > data.size())
+    ctx.fail(ErrorKind::truncated_buffer,
+             fmt::format("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
+                         buffer_view.buffer, view_end, data.size()));
+  if (buffer_view.byteStride != 0) {
+    if (buffer_view.byteStride < element_size)
+      ctx.fail(ErrorKind::bad_value,
+               fmt::format("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
+                           buffer_view.byteStride, element_size, view.name));
+    view.stride = buffer_view.byteStride;
+  }
+  // ... and the accessor inside its bufferView: byteOffset + stride * (count - 1) + element size.
+  if (view.count > 0) {
+    const size_t needs = add_sat(add_sat(accessor.byteOffset, mul_sat(view.stride, view.count - 1)),
+                                 element_size);
+    if (needs > buffer_view.byteLength)
+      ctx.fail(ErrorKind::truncated_buffer,
+               fmt::format("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
+                           view_name, needs, buffer_view.byteLength));
+  }
+  view.first = data.data() + buffer_view.byteOffset + accessor.byteOffset;
+  return view;
+}
+
+void require_type(const Context& ctx, int index, const AccessorView& view, int type,
+                  const char* type_name, const std::string& what) {
+  if (ctx.model.accessors[size_t(index)].type != type)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must be {}", what, view.name, type_name));
+}
+
+// One component as a float; normalized integers map to [0, 1] (or [-1, 1]) as glTF defines.
+float read_component(const unsigned char* p, int component_type, bool normalized) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+      float v;
+      std::memcpy(&v, p, sizeof v);
+      return v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+      const float v = float(*p);
+      return normalized ? v / 255.0f : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, p, sizeof v);
+      return normalized ? float(v) / 65535.0f : float(v);
+    }
+    default: return 0.0f;  // callers only pass the types they accepted
+  }
+}
+
+// Float VEC3 (POSITION, NORMAL), each component finite.
+std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::string& what) {
+  const AccessorView view = view_accessor(ctx, index, what);
+  require_type(ctx, index, view, TINYGLTF_TYPE_VEC3, "VEC3", what);
+  if (view.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must hold floats", what, view.name));
+  std::vector<glm::vec3> out(view.count, glm::vec3(0.0f));
+  if (!view.first) return out;
+  for (size_t i = 0; i < view.count; ++i) {
+    const unsigned char* p = view.element(i);
+    for (int c = 0; c < 3; ++c) {
+      out[i][c] = read_component(p + 4 * c, view.component_type, false);
+      if (!std::isfinite(out[i][c]))
+        ctx.fail(ErrorKind::not_finite, fmt::format("{}: element {} is {}", what, i,
+                                                    std::isnan(out[i][c]) ? "NaN" : "infinite"));
+    }
+  }
+  return out;
+}
+
+// TEXCOORD_0: float VEC2, or normalized unsigned byte / short as the glTF spec allows.
+std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::string& what) {
+  const AccessorView view = view_accessor(ctx, index, what);
+  require_type(ctx, index, view, TINYGLTF_TYPE_VEC2, "VEC2", what);
+  const bool integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                       view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
+    ctx.fail(ErrorKind::bad_value,
+             fmt::format("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
+  std::vector<glm::vec2> out(view.count, glm::vec2(0.0f));
+  if (!view.first) return out;
+  const size_t size = component_size(view.component_type);
+  for (size_t i = 0; i < view.count; ++i) {
+    for (int c = 0; c < 2; ++c) {
+      out[i][c] = read_component(view.element(i) + size * size_t(c), view.component_type, true);
+      if (!std::isfinite(out[i][c]))
+        ctx.fail(ErrorKind::not_finite, fmt::format("{}: element {} is {}", what, i,
+                                                    std::isnan(out[i][c]) ? "NaN" : "infinite"));
+    }
+  }
+  return out;
+}
+
+// Indices: scalar unsigned byte, short or int.
+std::vector<uint32_t> read_indices(const Context& ctx, int index, const std::string& what) {
+  const AccessorView view = view_accessor(ctx, index, what);
+  require_type(ctx, index, view, TINYGLTF_TYPE_SCALAR, "SCALAR", what);
+  std::vector<uint32_t> out(view.count, 0u);
+  if (!view.first) return out;
+  for (size_t i = 0; i < view.count; ++i) {
+    const unsigned char* p = view.element(i);
+    switch (view.component_type) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t v;
+        std::memcpy(&v, p, sizeof v);
+        out[i] = v;
+        break;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, sizeof(uint32_t)); break;
+      default:
+        ctx.fail(ErrorKind::bad_value,
+                 fmt::format("{}: {} must hold unsigned bytes, shorts or ints", what, view.name));
+    }
+  }
+  return out;
+}
+
+bool is_finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// ------------------------------------------------------------------------------------------------
+// [SECTION] Primitives
+// ------------------------------------------------------------------------------------------------
+
+// A triangle is dropped as zero-area when sin(angle at its first corner) <= 1e-6, i.e.
+// |e1 x e2|^2 <= 1e-12 |e1|^2 |e2|^2: exactly zero for repeated or collinear vertices, and
+// still zero after float rounding has moved collinear vertices by an ulp or so.
+bool is_degenerate(const glm::vec3& e1, const glm::vec3& e2) {
+  const glm::vec3 c = glm::cross(e1, e2);
+  const double lhs = double(glm::dot(c, c));
+  const double rhs = 1e-12 * double(glm::dot(e1, e1)) * double(glm::dot(e2, e2));
+  return lhs <= rhs;
+}
+
+}  // namespace
+
+void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_world,
+                       int default_material, Scene& scene) {
+  const tinygltf::Mesh& gltf_mesh = ctx.model.meshes[size_t(mesh_index)];
+  const std::string mesh_name = describe("mesh", size_t(mesh_index), gltf_mesh.name);
+
+  // Positions go by the node matrix, normals by its inverse transpose (then renormalised). A
+  // mirroring matrix (negative determinant) turns counter-clockwise faces clockwise: swapping two
+  // corners of every triangle keeps the front faces counter-clockwise as glTF wants.
+  const glm::dmat3 linear(to_world);
+  const double determinant = glm::determinant(linear);
+  const bool flip_winding = determinant < 0.0;
+  const glm::mat4 position_matrix(to_world);
+  const glm::mat3 normal_matrix =
+      determinant != 0.0 ? glm::mat3(glm::transpose(glm::inverse(linear))) : glm::mat3(1.0f);
+
+  bool warned_mode = false;
+  size_t dropped = 0;
+  for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
+    const tinygltf::Primitive& primitive = gltf_mesh.primitives[p];
+    if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
+      if (!warned_mode)
+        ctx.warn(fmt::format("{}: skipped its primitives that are not triangle lists (mode {})",
+                             mesh_name, primitive.mode));
+      warned_mode = true;
+      continue;
+    }
+    const std::string where = fmt::format("{} primitive {}", mesh_name, p);
+    auto attribute = [&](const char* name) {
+      auto it = primitive.attributes.find(name);
+      return it == primitive.attributes.end() ? -1 : it->second;
+    };
+    const int position_accessor = attribute("POSITION");
+    if (position_accessor == -1) ctx.fail(ErrorKind::bad_value, where + ": has no POSITION");
+
+    std::vector<glm::vec3> positions = read_vec3(ctx, position_accessor, where + ": POSITION");
+    const size_t vertex_count = positions.size();
+    std::vector<glm::vec3> normals;
+    if (const int a = attribute("NORMAL"); a != -1) normals = read_vec3(ctx, a, where + ": NORMAL");
+    std::vector<glm::vec2> uvs;
+    if (const int a = attribute("TEXCOORD_0"); a != -1)
+      uvs = read_texcoords(ctx, a, where + ": TEXCOORD_0");
+    auto same_count = [&](size_t n, const char* name) {
+      if (n != 0 && n != vertex_count)
+        ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} has {} elements but POSITION has {}",
+                                                   where, name, n, vertex_count));
+    };
+    same_count(normals.size(), "NORMAL");
+    same_count(uvs.size(), "TEXCOORD_0");
+    const bool has_normals = !normals.empty();
+
+    std::vector<uint32_t> indices;
+    if (primitive.indices != -1) {
+      indices = read_indices(ctx, primitive.indices, where + ": indices");
+    } else {  // non-indexed: vertices 0, 1, 2 make the first triangle, and so on
+      indices.resize(vertex_count);
+      for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
+    }
+    if (indices.size() % 3 != 0)
+      ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} indices are not a whole number of "
+                                                 "triangles", where, indices.size()));
+    for (size_t i = 0; i < indices.size(); ++i)
+      if (indices[i] >= vertex_count)
+        ctx.fail(ErrorKind::index_out_of_range,
+                 fmt::format("{}: index {} (element {}) is past the {} vertices", where, indices[i],
+                             i, vertex_count));
+
+    // To world space.
+    for (size_t i = 0; i < vertex_count; ++i) {
+      positions[i] = glm::vec3(position_matrix * glm::vec4(positions[i], 1.0f));
+      if (!is_finite(positions[i]))
+        ctx.fail(ErrorKind::not_finite,
+                 fmt::format("{}: vertex {} is not finite in world space", where, i));
+    }
+    if (has_normals) {
+      for (size_t i = 0; i < vertex_count; ++i) {
+        const glm::vec3 n = normal_matrix * normals[i];
+        const float length = glm::length(n);
+        if (!(length > 0.0f) || !std::isfinite(length))
+          ctx.fail(ErrorKind::bad_value, fmt::format("{}: NORMAL {} has no direction", where, i));
+        normals[i] = n / length;
+      }
+    }
+
+    Mesh mesh;
+    mesh.name = gltf_mesh.name.empty() ? fmt::format("mesh {}", mesh_index) : gltf_mesh.name;
+    if (primitive.material == -1) {
+      mesh.material = default_material;
+    } else {
+      ctx.check_index(primitive.material, ctx.model.materials.size(), where + ": material",
+                      "materials");
+      mesh.material = primitive.material;
+    }
+    if (has_normals) {
+      mesh.positions = std::move(positions);
+      mesh.normals = std::move(normals);
+      mesh.uvs = std::move(uvs);
+    }
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      uint32_t corner[3] = {indices[t], indices[t + 1], indices[t + 2]};
+      if (flip_winding) std::swap(corner[1], corner[2]);
+      const glm::vec3 a = has_normals ? mesh.positions[corner[0]] : positions[corner[0]];
+      const glm::vec3 b = has_normals ? mesh.positions[corner[1]] : positions[corner[1]];
+      const glm::vec3 c = has_normals ? mesh.positions[corner[2]] : positions[corner[2]];
+      if (is_degenerate(b - a, c - a)) {
+        ++dropped;
+        continue;
+      }
+      if (has_normals) {
+        mesh.indices.insert(mesh.indices.end(), corner, corner + 3);
+        continue;
+      }
+      // No NORMAL: the face normal (glTF spec), so each face gets vertices of its own.
+      const glm::vec3 face_normal = glm::normalize(glm::cross(b - a, c - a));
+      for (uint32_t k : corner) {
+        mesh.indices.push_back(uint32_t(mesh.positions.size()));
+        mesh.positions.push_back(positions[k]);
+        mesh.normals.push_back(face_normal);
+        if (!uvs.empty()) mesh.uvs.push_back(uvs[k]);
+      }
+    }
+    if (!mesh.indices.empty()) scene.meshes.push_back(std::move(mesh));
+  }
+  if (dropped > 0)
+    ctx.warn(fmt::format("{}: dropped {} zero-area triangle{}", mesh_name, dropped,
+                         dropped == 1 ? "" : "s"));
+}
+
+}  // namespace luz::io::gltf

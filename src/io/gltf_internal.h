@@ -1,0 +1,74 @@
+#pragma once
+// What the parts of the glTF loader share (gltf_loader.cpp, gltf_geometry.cpp,
+// gltf_materials.cpp). Private to src/io: only these files include tiny_gltf.h.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+
+#include "core/error.h"
+#include "core/scene.h"
+
+namespace luz::io::gltf {
+
+// Messages are one line: control characters (a newline in a material's name, say) become '?'.
+inline std::string one_line(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';
+  return text;
+}
+
+// The file being loaded, the parsed model and where warnings go. Every message starts with the
+// file as the user gave it, so that each one reads "FILE: problem" (STYLE.md 7).
+struct Context {
+  std::string file;
+  const tinygltf::Model& model;
+  std::vector<std::string>& warnings;
+  // Encoded bytes of every image tinygltf handed to our image loader, by image index. An image
+  // that is absent here could not be read (tinygltf only warned).
+  std::map<int, std::vector<unsigned char>> image_bytes;
+
+  [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
+    throw Error(kind, one_line(file + ": " + problem));
+  }
+  void warn(const std::string& problem) const { warnings.push_back(one_line(file + ": " + problem)); }
+
+  // Throws index_out_of_range unless 0 <= index < size; `what` names the referring element,
+  // e.g. `node 3 "lamp": mesh` -> `node 3 "lamp": mesh 7 is out of range (5 meshes)`.
+  void check_index(int index, size_t size, const std::string& what,
+                   const std::string& array) const;
+};
+
+// `kind index "name"` or `kind index` when the element has no name, for messages.
+std::string describe(const std::string& kind, size_t index, const std::string& name);
+
+// Reads `value` (a glTF extras/extension member) as a finite float; `what` names it for errors.
+float read_number(const Context& ctx, const tinygltf::Value& value, const std::string& what);
+// A scalar (grey) or [r, g, b].
+Rgb read_rgb(const Context& ctx, const tinygltf::Value& value, const std::string& what);
+// The member `key` of an object value, or nullptr when the value is not an object or lacks it.
+const tinygltf::Value* member(const tinygltf::Value& object, const std::string& key);
+// The extension object `name` in an extension map, or nullptr.
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions,
+                                 const std::string& name);
+
+// gltf_geometry.cpp: the triangle primitives of glTF mesh `mesh_index`, flattened to world space
+// by `to_world`, appended to scene.meshes. `default_material` is the index that primitives
+// without a material get.
+void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_world,
+                       int default_material, Scene& scene);
+
+// gltf_lights_cameras.cpp: the node's perspective camera (orthographic ones are skipped with a
+// warning) and its KHR_lights_punctual light, if any; `node_what` names the node in messages.
+void add_camera(const Context& ctx, const tinygltf::Node& node, const glm::dmat4& to_world,
+                Scene& scene);
+void add_light(const Context& ctx, const tinygltf::Node& node, const std::string& node_what,
+               const glm::dmat4& to_world, Scene& scene);
+
+// gltf_materials.cpp: glTF materials -> scene.materials (same indices), and the base colour
+// textures they use -> scene.textures.
+void add_materials(Context& ctx, Scene& scene);
+
+}  // namespace luz::io::gltf

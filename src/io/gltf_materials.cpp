@@ -1,0 +1,183 @@
+// glTF materials -> the lecture's coefficients, row by row of SCENES.md "Materials":
+//
+//   kd  = baseColorFactor.rgb x baseColorTexture x (1 - metallicFactor)   (texture: kd_texture)
+//   ka  = extras.ka, else kd
+//   ks  = extras.ks, else 0
+//   n   = extras.shininess, else 2/r^4 - 2 clamped to [1, 10000], r = roughnessFactor
+//   kr  = extras.kr, else baseColor when metallic >= 0.5 and roughness <= 0.05, else 0
+//   kt  = extras.kt, else KHR_materials_transmission.transmissionFactor, else 0
+//   eta = extras.ior, else KHR_materials_ior.ior, else 1.5
+//   Le  = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength
+//
+// A base colour texture whose image is missing or undecodable becomes a 1x1 white texture with a
+// warning: the scene still loads, only the texture's detail is lost.
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "io/gltf_internal.h"
+#include "io/image_io.h"
+
+namespace luz::io::gltf {
+
+namespace {
+
+// glTF stores factors as doubles; the program works in float, so a value beyond float's range
+// (1e39, say) is as unusable as infinity and is reported as such.
+float to_float(const Context& ctx, double value, const std::string& what) {
+  const float f = float(value);
+  if (std::isnan(f)) ctx.fail(ErrorKind::not_finite, what + " is NaN");
+  if (!std::isfinite(f)) ctx.fail(ErrorKind::not_finite, what + " is infinite");
+  return f;
+}
+
+Rgb to_rgb(const Context& ctx, const std::vector<double>& values, size_t expected,
+           const std::string& what) {
+  if (values.size() != expected)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} has {} numbers, not {}", what, values.size(), expected));
+  return Rgb(to_float(ctx, values[0], what), to_float(ctx, values[1], what),
+             to_float(ctx, values[2], what));
+}
+
+void require_non_negative(const Context& ctx, const Rgb& c, const std::string& what) {
+  if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} ({}, {}, {}) is negative", what, c.r, c.g, c.b));
+}
+
+// A short label for an image in messages: its URI when it has one (data URIs are not printed,
+// they can be megabytes long).
+std::string image_label(const tinygltf::Image& image, size_t index) {
+  if (image.uri.empty() || image.uri.rfind("data:", 0) == 0)
+    return describe("image", index, image.name);
+  return fmt::format("image {} \"{}\"", index, image.uri);
+}
+
+// The scene texture for glTF image `index`, decoded on first use.
+int texture_for_image(const Context& ctx, int index, std::map<int, int>& textures, Scene& scene) {
+  if (auto it = textures.find(index); it != textures.end()) return it->second;
+  const tinygltf::Image& image = ctx.model.images[size_t(index)];
+  const std::string label = image_label(image, size_t(index));
+  Texture texture;  // 1x1 white until decoded
+  auto bytes = ctx.image_bytes.find(index);
+  if (bytes == ctx.image_bytes.end()) {
+    ctx.warn(label + ": cannot be read; using a white texture");
+  } else {
+    std::string error;
+    if (std::optional<Texture> decoded = decode_texture(bytes->second, label, error))
+      texture = std::move(*decoded);
+    else
+      ctx.warn(fmt::format("{}: cannot be decoded ({}); using a white texture", label, error));
+  }
+  texture.name = !image.name.empty() ? image.name
+                 : !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                     ? image.uri
+                     : fmt::format("image {}", index);
+  scene.textures.push_back(std::move(texture));
+  textures[index] = int(scene.textures.size() - 1);
+  return textures[index];
+}
+
+Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, Scene& scene) {
+  const tinygltf::Material& source = ctx.model.materials[index];
+  const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+  const std::string what = describe("material", index, source.name);
+  auto field = [&](const std::string& name) { return what + ": " + name; };
+
+  Material m;
+  m.name = source.name.empty() ? fmt::format("material {}", index) : source.name;
+
+  const Rgb base = to_rgb(ctx, pbr.baseColorFactor, 4, field("baseColorFactor"));
+  const float metallic = to_float(ctx, pbr.metallicFactor, field("metallicFactor"));
+  const float roughness = to_float(ctx, pbr.roughnessFactor, field("roughnessFactor"));
+  if (metallic < 0.0f || metallic > 1.0f)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is outside [0, 1]", field("metallicFactor"), metallic));
+  if (roughness < 0.0f || roughness > 1.0f)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is outside [0, 1]", field("roughnessFactor"), roughness));
+
+  const tinygltf::Value& extras = source.extras;
+  m.kd = base * (1.0f - metallic);
+  const tinygltf::Value* v = member(extras, "ka");
+  m.ka = v ? read_rgb(ctx, *v, field("extras.ka")) : m.kd;
+  v = member(extras, "ks");
+  m.ks = v ? read_rgb(ctx, *v, field("extras.ks")) : Rgb(0.0f);
+  v = member(extras, "shininess");
+  m.shininess = v ? read_number(ctx, *v, field("extras.shininess")) : shininess_from_roughness(roughness);
+  v = member(extras, "kr");
+  // A smooth metal is the mirror of the classic model, tinted by its base colour.
+  const bool mirror = metallic >= 0.5f && roughness <= 0.05f;
+  m.kr = v ? read_rgb(ctx, *v, field("extras.kr")) : mirror ? base : Rgb(0.0f);
+
+  if ((v = member(extras, "kt"))) {
+    m.kt = read_rgb(ctx, *v, field("extras.kt"));
+  } else if (const tinygltf::Value* ext = extension(source.extensions, "KHR_materials_transmission")) {
+    const tinygltf::Value* factor = member(*ext, "transmissionFactor");
+    m.kt = Rgb(factor ? read_number(ctx, *factor, field("transmissionFactor")) : 0.0f);
+  }
+
+  if ((v = member(extras, "ior"))) {
+    m.ior = read_number(ctx, *v, field("ior"));
+  } else if (const tinygltf::Value* ext = extension(source.extensions, "KHR_materials_ior")) {
+    if (const tinygltf::Value* ior = member(*ext, "ior")) m.ior = read_number(ctx, *ior, field("ior"));
+  }
+
+  float strength = 1.0f;
+  if (const tinygltf::Value* ext = extension(source.extensions, "KHR_materials_emissive_strength"))
+    if (const tinygltf::Value* s = member(*ext, "emissiveStrength"))
+      strength = read_number(ctx, *s, field("emissiveStrength"));
+  if (!source.emissiveFactor.empty())  // absent: black
+    m.emission = to_rgb(ctx, source.emissiveFactor, 3, field("emissiveFactor")) * strength;
+  if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field("emitted radiance is infinite"));
+
+  // Domains: coefficients are reflectances (>= 0), eta is a ratio of speeds (> 0).
+  require_non_negative(ctx, m.kd, field("kd"));
+  require_non_negative(ctx, m.ka, field("ka"));
+  require_non_negative(ctx, m.ks, field("ks"));
+  require_non_negative(ctx, m.kr, field("kr"));
+  require_non_negative(ctx, m.kt, field("kt"));
+  require_non_negative(ctx, m.emission, field("emission"));
+  require_non_negative(ctx, strength * Rgb(1.0f), field("emissiveStrength"));
+  if (m.shininess < 0.0f)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is negative", field("shininess"), m.shininess));
+  if (!(m.ior > 0.0f))
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is not positive", field("ior"), m.ior));
+
+  if (const int t = pbr.baseColorTexture.index; t != -1) {
+    ctx.check_index(t, ctx.model.textures.size(), field("baseColorTexture"), "textures");
+    const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
+    if (texture.source == -1) {
+      ctx.warn(fmt::format("{}: texture {} has no image; ignored", what, t));
+    } else {
+      ctx.check_index(texture.source, ctx.model.images.size(),
+                      fmt::format("texture {}: source", t), "images");
+      if (pbr.baseColorTexture.texCoord != 0)
+        ctx.warn(fmt::format("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
+                             what, pbr.baseColorTexture.texCoord));
+      m.kd_texture = texture_for_image(ctx, texture.source, textures, scene);
+    }
+  }
+  return m;
+}
+
+// SCENES.md: kd + kr + kt <= 1 per channel is expected of a physically sensible material; a
+// scene that breaks it loads, with a warning.
+void check_energy(const Context& ctx, const Material& m, const std::string& what) {
+  const Rgb sum = m.kd + m.kr + m.kt;
+  constexpr float kSlack = 1e-5f;  // float rounding of sums that are exactly 1 on paper
+  if (sum.r > 1.0f + kSlack || sum.g > 1.0f + kSlack || sum.b > 1.0f + kSlack)
+    ctx.warn(fmt::format("{}: kd + kr + kt = ({:.3g}, {:.3g}, {:.3g}) exceeds 1; it reflects more "
+                         "light than it receives", what, sum.r, sum.g, sum.b));
+}
+
+}  // namespace
+
+void add_materials(Context& ctx, Scene& scene) {
+  std::map<int, int> textures;  // glTF image -> index in scene.textures
+  for (size_t i = 0; i < ctx.model.materials.size(); ++i) {
+    scene.materials.push_back(map_material(ctx, i, textures, scene));
+    check_energy(ctx, scene.materials.back(), describe("material", i, ctx.model.materials[i].name));
+  }
+}
+
+}  // namespace luz::io::gltf
