@@ -23,11 +23,15 @@ namespace fs = std::filesystem;
 constexpr const char* kScenes[] = {"cornell_box", "phong_spheres", "whitted"};
 constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
 
+// Small pictures at each camera's aspect ratio; update_goldens.sh uses the same sizes.
+std::string size_of(const std::string& scene) { return scene == "cornell_box" ? "120x120" : "160x120"; }
+
+// Renders through the command to EXR (linear radiance, for properties) or PNG (for goldens).
 Image render(const test::ScratchDir& dir, const std::string& scene, const std::string& model,
-             std::vector<std::string> extra = {}) {
-  const fs::path out = dir / (scene + "-" + model + ".png");
+             const std::string& extension, std::vector<std::string> extra = {}) {
+  const fs::path out = dir / (scene + "-" + model + extension);
   std::vector<std::string> args = {"render", (test::scene_dir() / (scene + ".gltf")).string(),
-                                   "--model", model, "--size", "160x120", "-q", "--out", out.string()};
+                                   "--model", model, "--size", size_of(scene), "-q", "--out", out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
   const auto result = test::run_luz(args);
   EXPECT_EQ(result.exit_code, 0) << result.output;
@@ -51,12 +55,16 @@ float max_luminance(const Image& image) {
   return best;
 }
 
+std::string snapshot_name(const testing::TestParamInfo<std::tuple<const char*, const char*>>& param) {
+  return std::string(std::get<0>(param.param)) + "_" + std::get<1>(param.param);
+}
+
 class Snapshot : public testing::TestWithParam<std::tuple<const char*, const char*>> {};
 
 TEST_P(Snapshot, MatchesItsGolden) {
   const auto [scene, model] = GetParam();
   test::ScratchDir dir;
-  const Image image = render(dir, scene, model);
+  const Image image = render(dir, scene, model, ".png");
   const fs::path golden_path = test::test_data_dir() / "golden" / (std::string(scene) + "-" + model + ".png");
   ASSERT_TRUE(fs::exists(golden_path)) << golden_path << " is missing: run the update-goldens target";
   const Image golden = io::read_image(golden_path);
@@ -77,9 +85,68 @@ TEST_P(Snapshot, MatchesItsGolden) {
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, Snapshot,
                          testing::Combine(testing::ValuesIn(kScenes), testing::ValuesIn(kModels)),
-                         [](const auto& info) {
-                           return std::string(std::get<0>(info.param)) + "_" + std::get<1>(info.param);
-                         });
+                         snapshot_name);
+
+// Properties: what a class sees in each plate, in every model.
+
+TEST(CornellBox, RedWallOnTheLeftGreenOnTheRightLightOnTheCeiling) {
+  test::ScratchDir dir;
+  for (const char* model : kModels) {
+    const Image image = render(dir, "cornell_box", model, ".exr");
+    const Rgb left = mean_colour(image, 0.03f, 0.3f, 0.15f, 0.7f);
+    const Rgb right = mean_colour(image, 0.85f, 0.3f, 0.97f, 0.7f);
+    EXPECT_GT(left.r, 3.0f * left.g) << model;
+    EXPECT_GT(left.r, 3.0f * left.b) << model;
+    EXPECT_GT(right.g, 2.0f * right.r) << model;
+    EXPECT_GT(right.g, 2.0f * right.b) << model;
+    // The lamp, just below the ceiling in the middle, shows its own radiance: the brightest
+    // thing in the picture.
+    EXPECT_GT(mean_colour(image, 0.45f, 0.12f, 0.55f, 0.15f).r, 10.0f) << model;
+    EXPECT_GT(max_luminance(image), 10.0f) << model;
+  }
+}
+
+TEST(PhongSpheres, HighlightsGrowWithKsAcrossTheColumns) {
+  test::ScratchDir dir;
+  const Image lit = render(dir, "phong_spheres", "phong", ".exr");
+  const Image matte = render(dir, "phong_spheres", "phong", ".exr", {"--no-specular"});
+  // The specular share of the brightest pixel in each column of spheres, ks rising left to right.
+  float previous = -1.0f;
+  for (int column = 0; column < 5; ++column) {
+    const float x0 = 0.1f + 0.1675f * float(column), x1 = x0 + 0.135f;
+    float lit_max = 0.0f, matte_max = 0.0f;
+    for (int y = 0; y < lit.height; ++y)
+      for (int x = int(x0 * float(lit.width)); x < int(x1 * float(lit.width)); ++x) {
+        lit_max = std::max(lit_max, lit.at(x, y).g);
+        matte_max = std::max(matte_max, matte.at(x, y).g);
+      }
+    const float specular = lit_max - matte_max;
+    if (column == 0) EXPECT_NEAR(specular, 0.0f, 1e-4f) << "ks = 0: no highlight";
+    else EXPECT_GT(specular, previous) << "column " << column;
+    previous = specular;
+  }
+}
+
+TEST(Whitted, SkyAboveCheckerboardBelow) {
+  test::ScratchDir dir;
+  for (const char* model : kModels) {
+    const Image image = render(dir, "whitted", model, ".exr");
+    const Rgb sky(0.2f, 0.35f, 0.8f);  // scene.extras.background
+    for (int x = 0; x < image.width; ++x) {
+      EXPECT_NEAR(image.at(x, 0).r, sky.r, 1e-5f);
+      EXPECT_NEAR(image.at(x, 0).b, sky.b, 1e-5f);
+    }
+    int red = 0, yellow = 0;
+    for (int y = int(0.85f * float(image.height)); y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const Rgb p = image.at(x, y);
+        red += p.r > 3.0f * p.g && p.r > 3.0f * p.b;
+        yellow += p.g > 0.5f * p.r && p.r > 3.0f * p.b;
+      }
+    EXPECT_GT(red, image.width / 4) << model;
+    EXPECT_GT(yellow, image.width / 4) << model;
+  }
+}
 
 }  // namespace
 }  // namespace luz

@@ -10,8 +10,10 @@ golden="$root/tests/data/golden"
 mkdir -p "$golden"
 # Keep this list in step with kScenes and kModels in tests/test_snapshots.cpp.
 for scene in cornell_box phong_spheres whitted; do
+  size=160x120
+  [ "$scene" = cornell_box ] && size=120x120
   for model in flat gouraud phong; do
-    "$luz" render "$root/scenes/$scene.gltf" --model "$model" --size 160x120 -q \
+    "$luz" render "$root/scenes/$scene.gltf" --model "$model" --size "$size" -q \
       --out "$golden/$scene-$model.png"
   done
 done
