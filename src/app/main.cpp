@@ -32,11 +32,14 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
       "Image size WxH (default: 600 pixels high, the camera's aspect ratio)");
   render.add_option("--camera", settings.camera, "Scene camera by name or index (default: the first)");
   render.add_option("--exposure", settings.exposure, "Exposure in EV for PNG output (default: the scene's)");
-  render.add_flag("--no-ambient{false}", settings.local.ambient, "Switch off the ambient term I_A = Ia*ka");
-  render.add_flag("--no-diffuse{false}", settings.local.diffuse, "Switch off the diffuse term I_D = IL*kd*cos(theta)");
-  render.add_flag("--no-specular{false}", settings.local.specular, "Switch off the specular term I_S = IL*ks*cos^n(alpha)");
-  render.add_flag("--no-emission{false}", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
-  render.add_flag("--no-textures{false}", settings.local.textures, "Ignore baseColorTexture");
+  auto switch_off = [&render](const char* flag, bool& term, const char* help) {
+    render.add_flag_callback(flag, [&term] { term = false; }, help);
+  };
+  switch_off("--no-ambient", settings.local.ambient, "Switch off the ambient term I_A = Ia*ka");
+  switch_off("--no-diffuse", settings.local.diffuse, "Switch off the diffuse term I_D = IL*kd*cos(theta)");
+  switch_off("--no-specular", settings.local.specular, "Switch off the specular term I_S = IL*ks*cos^n(alpha)");
+  switch_off("--no-emission", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
+  switch_off("--no-textures", settings.local.textures, "Ignore baseColorTexture");
   render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
 }
@@ -58,6 +61,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Luz: an interactive lab for realistic image synthesis (\"Síntesis realista de imágenes\").\n"
                "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships)."};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", "luz " LUZ_VERSION);
+  app.footer("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error.");
   std::string viewer_scene;
   app.add_option("SCENE", viewer_scene, "glTF scene for the viewer");
 
