@@ -1,0 +1,862 @@
+#!/usr/bin/env python3
+"""Writes the scenes that ship with Luz as glTF 2.0 (.gltf JSON + .bin), and checks them.
+
+    python3 scenes/generate.py [--out DIR]     write the scenes into DIR (default: this folder),
+                                               then check what was written
+    python3 scenes/generate.py --check [DIR]   only check the scenes already in DIR
+
+Python 3 standard library only. The output is deterministic, byte for byte: keys are sorted,
+every float written to JSON is rounded to a fixed number of significant digits first, every
+float written to the .bin is rounded before it is packed as float32, and nothing depends on
+the time or the machine. tests/check_generated_scenes.sh regenerates into a temporary folder
+and byte-compares with the committed files.
+
+Conventions are those of /SCENES.md (the scene contract): right-handed, +Y up, metres, radiance
+in the program's linear units (W/(m^2 sr)), point-light intensity in candela read as W/sr.
+
+Sections
+  [VECTORS]   tiny 3-vector helpers
+  [NUMBERS]   fixed float formatting (why the bytes are reproducible)
+  [BUILDER]   GltfBuilder: buffers, accessors, materials, meshes, nodes, cameras, lights
+  [GEOMETRY]  quads oriented by a wanted normal, UV spheres
+  [CORNELL]   cornell_box.gltf   (Cornell Program of Computer Graphics, measured data)
+  [SPHERES]   phong_spheres.gltf (ks along the columns, Phong exponent n along the rows)
+  [WHITTED]   whitted.gltf       (Whitted 1980, "An Improved Illumination Model for Shaded Display")
+  [CHECK]     validation of written files against SCENES.md's rules
+  [MAIN]
+"""
+
+import argparse
+import json
+import math
+import os
+import struct
+import sys
+
+GENERATOR = "luz scenes/generate.py"
+SCENE_FILES = ("cornell_box", "phong_spheres", "whitted")
+
+
+# ==== [VECTORS] ================================================================================
+
+def add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def scale(a, s):
+    return (a[0] * s, a[1] * s, a[2] * s)
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def length(a):
+    return math.sqrt(dot(a, a))
+
+
+def normalize(a):
+    return scale(a, 1.0 / length(a))
+
+
+def luminance(rgb):
+    """Rec. 709 luminance of a linear RGB triple (the program's primaries, SCENES.md)."""
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+
+
+# ==== [NUMBERS] ================================================================================
+# json.dumps prints a float as the shortest decimal that reads back as the same double. Values
+# that come out of atan/sin/cos could differ in their last bit between C libraries, so every
+# float is rounded to fewer digits than a double holds before it is written: the files are then
+# the same on every machine (barring a value sitting exactly on a rounding boundary).
+
+def num(x, digits=6):
+    """A JSON float: `digits` significant digits; -0.0 becomes 0.0 so no '-0.0' appears."""
+    if not math.isfinite(x):
+        raise ValueError("non-finite value %r" % x)
+    return float("%.*g" % (digits, x)) + 0.0
+
+
+def nums(values, digits=6):
+    return [num(v, digits) for v in values]
+
+
+def f32(x):
+    """x as the float32 the .bin stores (rounded to 9 decimals first, see above)."""
+    return struct.unpack("<f", struct.pack("<f", round(x, 9)))[0]
+
+
+def f32_text(x):
+    """The shortest decimal that reads back as float32 x: for accessor min/max, which must equal
+    the stored data exactly (glTF 2.0, 3.6.2.5)."""
+    for digits in range(1, 10):
+        candidate = float("%.*g" % (digits, x))
+        if f32(candidate) == x:
+            return candidate + 0.0
+    return x + 0.0
+
+
+# ==== [BUILDER] ================================================================================
+
+ARRAY_BUFFER = 34962
+ELEMENT_ARRAY_BUFFER = 34963
+FLOAT = 5126
+UNSIGNED_SHORT = 5123
+UNSIGNED_INT = 5125
+TRIANGLES = 4
+
+
+class GltfBuilder:
+    """Collects one glTF document and its single binary buffer."""
+
+    def __init__(self, name):
+        self.name = name
+        self.bin = bytearray()
+        self.extensions_used = set()
+        self.doc = {
+            "asset": {"version": "2.0", "generator": GENERATOR},
+            "scene": 0,
+            "scenes": [{"name": name, "nodes": []}],
+            "nodes": [],
+            "meshes": [],
+            "materials": [],
+            "accessors": [],
+            "bufferViews": [],
+            "buffers": [],
+        }
+
+    # -- binary data ---------------------------------------------------------------------------
+    def _buffer_view(self, data, target):
+        # Every view starts on a 4-byte boundary (glTF: offsets must be multiples of the
+        # component size; 4 covers float32 and uint32).
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        view = {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data), "target": target}
+        self.bin.extend(data)
+        self.doc["bufferViews"].append(view)
+        return len(self.doc["bufferViews"]) - 1
+
+    def _accessor(self, view, component_type, count, type_, **extra):
+        accessor = {"bufferView": view, "componentType": component_type, "count": count,
+                    "type": type_}
+        accessor.update(extra)
+        self.doc["accessors"].append(accessor)
+        return len(self.doc["accessors"]) - 1
+
+    def vec3_accessor(self, vectors, with_bounds):
+        flat = [f32(c) for v in vectors for c in v]
+        view = self._buffer_view(struct.pack("<%df" % len(flat), *flat), ARRAY_BUFFER)
+        extra = {}
+        if with_bounds:  # required for POSITION (glTF 2.0, 3.7.2.1)
+            extra["min"] = [f32_text(min(flat[i::3])) for i in range(3)]
+            extra["max"] = [f32_text(max(flat[i::3])) for i in range(3)]
+        return self._accessor(view, FLOAT, len(vectors), "VEC3", **extra)
+
+    def index_accessor(self, indices, vertex_count):
+        # uint16 while it can address every vertex, uint32 beyond.
+        if vertex_count <= 65535:
+            data, component = struct.pack("<%dH" % len(indices), *indices), UNSIGNED_SHORT
+        else:
+            data, component = struct.pack("<%dI" % len(indices), *indices), UNSIGNED_INT
+        view = self._buffer_view(data, ELEMENT_ARRAY_BUFFER)
+        return self._accessor(view, component, len(indices), "SCALAR")
+
+    def geometry(self, positions, normals, indices):
+        """Accessors of one triangle list: returns the attributes and indices of a primitive."""
+        assert len(positions) == len(normals) and len(indices) % 3 == 0
+        return {"attributes": {"POSITION": self.vec3_accessor(positions, True),
+                               "NORMAL": self.vec3_accessor(normals, False)},
+                "indices": self.index_accessor(indices, len(positions)),
+                "mode": TRIANGLES}
+
+    # -- materials -----------------------------------------------------------------------------
+    def material(self, name, kd, ks=0.0, shininess=None, roughness=1.0, kr=None, kt=None,
+                 ior=None, emission=None, transmission_extension=False):
+        """A material in SCENES.md's mapping: kd is baseColorFactor (metallicFactor 0), the
+        lecture's coefficients go in extras. `emission` is a radiance RGB in W/(m^2 sr): it is
+        written as emissiveFactor normalised to max 1 times KHR_materials_emissive_strength."""
+        extras = {"ks": num(ks) if isinstance(ks, (int, float)) else nums(ks)}
+        if shininess is not None:
+            extras["shininess"] = num(shininess)
+        if kr is not None:
+            extras["kr"] = num(kr) if isinstance(kr, (int, float)) else nums(kr)
+        if kt is not None:
+            extras["kt"] = num(kt) if isinstance(kt, (int, float)) else nums(kt)
+        if ior is not None:
+            extras["ior"] = num(ior)
+        mat = {"name": name,
+               "pbrMetallicRoughness": {"baseColorFactor": nums(list(kd) + [1.0]),
+                                        "metallicFactor": 0.0,
+                                        "roughnessFactor": num(roughness)},
+               "extras": extras}
+        if emission is not None:
+            strength = max(emission)
+            mat["emissiveFactor"] = nums([c / strength for c in emission])
+            if strength != 1.0:
+                mat.setdefault("extensions", {})["KHR_materials_emissive_strength"] = {
+                    "emissiveStrength": num(strength)}
+                self.extensions_used.add("KHR_materials_emissive_strength")
+        if transmission_extension:
+            # The same kt and ior for glTF viewers that do not read Luz's extras.
+            exts = mat.setdefault("extensions", {})
+            exts["KHR_materials_transmission"] = {"transmissionFactor": extras["kt"]}
+            exts["KHR_materials_ior"] = {"ior": extras["ior"]}
+            self.extensions_used.update(("KHR_materials_transmission", "KHR_materials_ior"))
+        self.doc["materials"].append(mat)
+        return len(self.doc["materials"]) - 1
+
+    # -- meshes and nodes ----------------------------------------------------------------------
+    def mesh(self, name, primitives):
+        """primitives: list of (geometry dict from geometry(), material index)."""
+        prims = []
+        for geometry, material in primitives:
+            prim = dict(geometry)
+            prim["material"] = material
+            prims.append(prim)
+        self.doc["meshes"].append({"name": name, "primitives": prims})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, name, translation=None, rotation=None, **fields):
+        node = {"name": name}
+        if translation is not None:
+            node["translation"] = nums(translation)
+        if rotation is not None:
+            node["rotation"] = nums(rotation)
+        node.update(fields)
+        self.doc["nodes"].append(node)
+        index = len(self.doc["nodes"]) - 1
+        self.doc["scenes"][0]["nodes"].append(index)
+        return index
+
+    def mesh_node(self, name, mesh, translation=None):
+        return self.node(name, translation, mesh=mesh)
+
+    def camera(self, name, eye, target, yfov, aspect, znear, zfar):
+        """A perspective camera at `eye` looking at `target` with +Y up. glTF cameras look down
+        their node's -Z, so the node's rotation takes -Z to the viewing direction."""
+        self.doc.setdefault("cameras", []).append({
+            "name": name, "type": "perspective",
+            "perspective": {"yfov": num(yfov), "aspectRatio": num(aspect),
+                            "znear": num(znear), "zfar": num(zfar)}})
+        return self.node(name, eye, look_rotation(eye, target), camera=len(self.doc["cameras"]) - 1)
+
+    def point_light(self, name, position, intensity, color=(1.0, 1.0, 1.0)):
+        """KHR_lights_punctual point light; intensity in candela, read as W/sr (SCENES.md)."""
+        lights = self.doc.setdefault("extensions", {}).setdefault(
+            "KHR_lights_punctual", {"lights": []})["lights"]
+        lights.append({"name": name, "type": "point", "intensity": num(intensity),
+                       "color": nums(color)})
+        self.extensions_used.add("KHR_lights_punctual")
+        return self.node(name, position,
+                         extensions={"KHR_lights_punctual": {"light": len(lights) - 1}})
+
+    def scene_extras(self, ambient, background, exposure):
+        self.doc["scenes"][0]["extras"] = {"ambient": nums(ambient),
+                                           "background": nums(background),
+                                           "exposure": num(exposure)}
+
+    # -- output --------------------------------------------------------------------------------
+    def write(self, folder):
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        bin_name = self.name + ".bin"
+        self.doc["buffers"] = [{"uri": bin_name, "byteLength": len(self.bin)}]
+        if self.extensions_used:
+            self.doc["extensionsUsed"] = sorted(self.extensions_used)
+        text = json.dumps(self.doc, indent=1, sort_keys=True, ensure_ascii=True,
+                          allow_nan=False) + "\n"
+        with open(os.path.join(folder, self.name + ".gltf"), "w", encoding="ascii",
+                  newline="\n") as f:
+            f.write(text)
+        with open(os.path.join(folder, bin_name), "wb") as f:
+            f.write(bytes(self.bin))
+
+
+def look_rotation(eye, target, up=(0.0, 1.0, 0.0)):
+    """Unit quaternion [x, y, z, w] turning the node's axes so that -Z points from eye to target
+    and +Y is as close to `up` as possible."""
+    z = normalize(sub(eye, target))  # the camera looks down -Z
+    x = normalize(cross(up, z))
+    y = cross(z, x)
+    # Rotation matrix with columns x, y, z -> quaternion (Shoemake's method).
+    m00, m11, m22 = x[0], y[1], z[2]
+    trace = m00 + m11 + m22
+    if trace > 0:
+        s = 2.0 * math.sqrt(trace + 1.0)
+        q = ((y[2] - z[1]) / s, (z[0] - x[2]) / s, (x[1] - y[0]) / s, 0.25 * s)
+    elif m00 > m11 and m00 > m22:
+        s = 2.0 * math.sqrt(1.0 + m00 - m11 - m22)
+        q = (0.25 * s, (y[0] + x[1]) / s, (z[0] + x[2]) / s, (y[2] - z[1]) / s)
+    elif m11 > m22:
+        s = 2.0 * math.sqrt(1.0 + m11 - m00 - m22)
+        q = ((y[0] + x[1]) / s, 0.25 * s, (z[1] + y[2]) / s, (z[0] - x[2]) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 + m22 - m00 - m11)
+        q = ((z[0] + x[2]) / s, (z[1] + y[2]) / s, 0.25 * s, (x[1] - y[0]) / s)
+    if q[3] < 0:  # one of the two equal quaternions, always the same one
+        q = tuple(-c for c in q)
+    return q
+
+
+# ==== [GEOMETRY] ===============================================================================
+
+def newell_normal(points):
+    """Unit normal of a polygon by Newell's method: exact for planar polygons, the best-fit plane
+    for slightly non-planar ones (the measured Cornell walls are out of plane by a few mm)."""
+    n = (0.0, 0.0, 0.0)
+    for i, p in enumerate(points):
+        q = points[(i + 1) % len(points)]
+        n = add(n, ((p[1] - q[1]) * (p[2] + q[2]),
+                    (p[2] - q[2]) * (p[0] + q[0]),
+                    (p[0] - q[0]) * (p[1] + q[1])))
+    return normalize(n)
+
+
+def oriented_quad(points, towards):
+    """A flat-shaded quad as two triangles, wound counter-clockwise seen from the side its normal
+    points to; `towards` is a direction the normal must have a positive component along (the
+    data's vertex order is not consistent, so the winding is decided here, not copied)."""
+    points = list(points)
+    n = newell_normal(points)
+    if dot(n, towards) < 0:
+        points.reverse()
+        n = scale(n, -1.0)
+    return points, [n] * 4, [0, 1, 2, 0, 2, 3]
+
+
+def uv_sphere(radius, segments, rings):
+    """A smooth UV sphere with shared vertices: one vertex at each pole (fans, so no degenerate
+    triangles), `rings - 1` latitude circles of `segments` vertices (the seam is closed by index,
+    not duplicated: there are no texture coordinates to split). Normals are the exact radial
+    directions. Counter-clockwise seen from outside."""
+    positions, normals = [], []
+
+    def vertex(n):
+        normals.append(n)
+        positions.append(scale(n, radius))
+
+    vertex((0.0, 1.0, 0.0))  # north pole, index 0
+    for i in range(1, rings):
+        theta = math.pi * i / rings
+        for j in range(segments):
+            phi = 2.0 * math.pi * j / segments
+            # phi runs from +X towards -Z, i.e. counter-clockwise seen from +Y.
+            vertex((math.sin(theta) * math.cos(phi), math.cos(theta),
+                    -math.sin(theta) * math.sin(phi)))
+    vertex((0.0, -1.0, 0.0))  # south pole, last index
+    south = len(positions) - 1
+
+    def ring(i, j):  # vertex j (mod segments) of latitude circle i (1 .. rings-1)
+        return 1 + (i - 1) * segments + j % segments
+
+    indices = []
+    for j in range(segments):
+        indices += [0, ring(1, j), ring(1, j + 1)]
+    for i in range(1, rings - 1):
+        for j in range(segments):
+            a, b = ring(i, j), ring(i, j + 1)
+            c, d = ring(i + 1, j), ring(i + 1, j + 1)
+            indices += [a, c, d, a, d, b]
+    for j in range(segments):
+        indices += [south, ring(rings - 1, j + 1), ring(rings - 1, j)]
+    return positions, normals, indices
+
+
+def roughness_for_shininess(n):
+    """Inverse of SCENES.md's default n = 2/r^4 - 2, so that a glTF viewer reading only the
+    roughness shows a highlight of about the same width as the Phong exponent in extras."""
+    return (2.0 / (n + 2.0)) ** 0.25
+
+
+# ==== [CORNELL] ================================================================================
+# Source: Cornell Program of Computer Graphics, "Cornell Box Data",
+# www.graphics.cornell.edu/online/box/data.html. Coordinates there are millimetres in a
+# right-handed frame with +Y up; the camera stands at z = -800 looking along +Z. Looking along +Z
+# with +Y up in a right-handed frame, +X points to the viewer's LEFT, so the red wall (x ~ 552.8)
+# is on the left and the green wall (x = 0) on the right, as in the photographs. The data is
+# used as-is, only scaled to metres (no mirroring needed).
+
+MM = 0.001  # millimetres -> metres
+
+CORNELL_WHITE = (0.73, 0.73, 0.73)
+# Red and green as in the RGB renditions of the measured spectra widely used by renderers'
+# Cornell-box scenes; white kept neutral (the measured white is slightly warm).
+CORNELL_RED = (0.63, 0.065, 0.05)
+CORNELL_GREEN = (0.14, 0.45, 0.091)
+# Radiance of the light, W/(m^2 sr): the usual RGB rendition of the measured (warm) lamp.
+CORNELL_LIGHT_RADIANCE = (17.0, 12.0, 4.0)
+
+# The light quad of the data sits at the ceiling's height (548.8 mm, in a hole of the ceiling).
+# The ceiling here is one quad without a hole, so the light hangs 1 mm below it: coplanar faces
+# would fight in depth buffers and self-intersect rays.
+CORNELL_LIGHT_Y = 548.8 - 1.0
+
+CORNELL_FACES = {
+    # name: (material, [4 corners in mm, as listed on the data page])
+    "floor": ("white", [(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2),
+                        (549.6, 0.0, 559.2)]),
+    "ceiling": ("white", [(556.0, 548.8, 0.0), (556.0, 548.8, 559.2), (0.0, 548.8, 559.2),
+                          (0.0, 548.8, 0.0)]),
+    "back_wall": ("white", [(549.6, 0.0, 559.2), (0.0, 0.0, 559.2), (0.0, 548.8, 559.2),
+                            (556.0, 548.8, 559.2)]),
+    "right_wall_green": ("green", [(0.0, 0.0, 559.2), (0.0, 0.0, 0.0), (0.0, 548.8, 0.0),
+                                   (0.0, 548.8, 559.2)]),
+    "left_wall_red": ("red", [(552.8, 0.0, 0.0), (549.6, 0.0, 559.2), (556.0, 548.8, 559.2),
+                              (556.0, 548.8, 0.0)]),
+}
+
+CORNELL_LIGHT = [(343.0, CORNELL_LIGHT_Y, 227.0), (343.0, CORNELL_LIGHT_Y, 332.0),
+                 (213.0, CORNELL_LIGHT_Y, 332.0), (213.0, CORNELL_LIGHT_Y, 227.0)]
+
+# Blocks: the top and four sides of each, as on the data page (no bottom: it rests on the floor).
+CORNELL_SHORT_BLOCK = [
+    ("top", [(130.0, 165.0, 65.0), (82.0, 165.0, 225.0), (240.0, 165.0, 272.0),
+             (290.0, 165.0, 114.0)]),
+    ("side_a", [(290.0, 0.0, 114.0), (290.0, 165.0, 114.0), (240.0, 165.0, 272.0),
+                (240.0, 0.0, 272.0)]),
+    ("side_b", [(130.0, 0.0, 65.0), (130.0, 165.0, 65.0), (290.0, 165.0, 114.0),
+                (290.0, 0.0, 114.0)]),
+    ("side_c", [(82.0, 0.0, 225.0), (82.0, 165.0, 225.0), (130.0, 165.0, 65.0),
+                (130.0, 0.0, 65.0)]),
+    ("side_d", [(240.0, 0.0, 272.0), (240.0, 165.0, 272.0), (82.0, 165.0, 225.0),
+                (82.0, 0.0, 225.0)]),
+]
+CORNELL_TALL_BLOCK = [
+    ("top", [(423.0, 330.0, 247.0), (265.0, 330.0, 296.0), (314.0, 330.0, 456.0),
+             (472.0, 330.0, 406.0)]),
+    ("side_a", [(423.0, 0.0, 247.0), (423.0, 330.0, 247.0), (472.0, 330.0, 406.0),
+                (472.0, 0.0, 406.0)]),
+    ("side_b", [(472.0, 0.0, 406.0), (472.0, 330.0, 406.0), (314.0, 330.0, 456.0),
+                (314.0, 0.0, 456.0)]),
+    ("side_c", [(314.0, 0.0, 456.0), (314.0, 330.0, 456.0), (265.0, 330.0, 296.0),
+                (265.0, 0.0, 296.0)]),
+    ("side_d", [(265.0, 0.0, 296.0), (265.0, 330.0, 296.0), (423.0, 330.0, 247.0),
+                (423.0, 0.0, 247.0)]),
+]
+
+# Camera of the data page: at (278, 273, -800) mm, looking along +Z, up +Y, focal length 35 mm,
+# film 25 mm x 25 mm, so yfov = 2 atan(12.5 / 35) (about 39.3 degrees) and a square picture.
+CORNELL_EYE = (278.0, 273.0, -800.0)
+CORNELL_YFOV = 2.0 * math.atan(12.5 / 35.0)
+
+
+def centroid(points):
+    return scale(tuple(map(sum, zip(*points))), 1.0 / len(points))
+
+
+def cornell_exposure():
+    """EV that makes the floor under the light mid-grey in the local models (direct light only,
+    the light sampled once at its centroid, SCENES.md): E = Le * A * cos_e * cos_r / d^2 with
+    both cosines 1 straight below, radiance L = kd/pi * E. Mid-grey = 0.214 linear, which the sRGB
+    curve writes as 50 %; the EV is rounded to half a stop."""
+    width = (343.0 - 213.0) * MM
+    depth = (332.0 - 227.0) * MM
+    d = CORNELL_LIGHT_Y * MM  # light above the floor
+    irradiance = [le * width * depth / (d * d) for le in CORNELL_LIGHT_RADIANCE]  # ~(0.77, 0.55, 0.18)
+    radiance = [kd / math.pi * e for kd, e in zip(CORNELL_WHITE, irradiance)]     # ~(0.18, 0.13, 0.04)
+    ev = math.log2(0.214 / luminance(radiance))                                     # ~0.70
+    return round(ev * 2.0) / 2.0                                                    # 0.5
+
+
+def cornell_box():
+    g = GltfBuilder("cornell_box")
+    materials = {
+        "white": g.material("white", CORNELL_WHITE, ks=0.0),
+        "red": g.material("red", CORNELL_RED, ks=0.0),
+        "green": g.material("green", CORNELL_GREEN, ks=0.0),
+        # The light's diffuser reflects like the white walls.
+        "light": g.material("light", CORNELL_WHITE, ks=0.0, emission=CORNELL_LIGHT_RADIANCE),
+    }
+    room_centre = (278.0, 274.4, 279.6)
+
+    def quad_geometry(corners_mm, towards):
+        points, normals, indices = oriented_quad([scale(p, MM) for p in corners_mm], towards)
+        return g.geometry(points, normals, indices)
+
+    # Walls, floor and ceiling: normals into the room (towards its centre).
+    for name, (material, corners) in CORNELL_FACES.items():
+        towards = sub(room_centre, centroid(corners))
+        mesh = g.mesh(name, [(quad_geometry(corners, towards), materials[material])])
+        g.mesh_node(name, mesh)
+
+    # Blocks: one primitive per face, normals out of the block.
+    for name, faces in (("short_block", CORNELL_SHORT_BLOCK), ("tall_block", CORNELL_TALL_BLOCK)):
+        block_centre = centroid([p for _, corners in faces for p in corners])
+        primitives = [(quad_geometry(corners, sub(centroid(corners), block_centre)),
+                       materials["white"]) for _, corners in faces]
+        g.mesh_node(name, g.mesh(name, primitives))
+
+    # The light faces down, into the room.
+    mesh = g.mesh("light", [(quad_geometry(CORNELL_LIGHT, (0.0, -1.0, 0.0)), materials["light"])])
+    g.mesh_node("light", mesh)
+
+    eye = scale(CORNELL_EYE, MM)
+    g.camera("cornell_camera", eye, add(eye, (0.0, 0.0, 1.0)), CORNELL_YFOV, 1.0, 0.1, 10.0)
+
+    # Ambient: the local models have no interreflection. A rough estimate of the indirect light
+    # in the box (power pi*Le*A ~ 0.73 W red over ~1.9 m^2 of surface, mean reflectance ~0.6,
+    # open front) gives an indirect radiance of ~0.1; a fifth of it, 0.02 grey, keeps the
+    # shadows dark (~15 % of the lit floor) but not holes. Radiosity and hybrid ignore it.
+    g.scene_extras(ambient=(0.02, 0.02, 0.02), background=(0.0, 0.0, 0.0),
+                   exposure=cornell_exposure())
+    return g
+
+
+# ==== [SPHERES] ================================================================================
+# The classic teaching plate of the Phong model: one diffuse colour, the specular coefficient ks
+# rising from left to right, the exponent n rising from top to bottom. kd = (1 - ks) * base, so
+# kd + ks <= 1 in every channel; ks stops at 0.8 so the last column still shows its colour.
+
+SPHERE_KS = (0.0, 0.2, 0.4, 0.6, 0.8)            # columns, left to right
+SPHERE_N = (5.0, 20.0, 80.0, 320.0)              # rows, top to bottom
+SPHERE_BASE = (0.85, 0.3, 0.1)                   # a red-orange
+SPHERE_RADIUS = 0.4                              # m
+SPHERE_SPACING = 1.0                             # m between centres
+SPHERE_SEGMENTS, SPHERE_RINGS = 48, 32
+
+
+def phong_spheres():
+    g = GltfBuilder("phong_spheres")
+    # One sphere geometry in the buffer, shared by the twenty meshes (each with its material)
+    # and placed by the nodes' translations.
+    sphere = g.geometry(*uv_sphere(SPHERE_RADIUS, SPHERE_SEGMENTS, SPHERE_RINGS))
+    columns, rows = len(SPHERE_KS), len(SPHERE_N)
+    for row, n in enumerate(SPHERE_N):
+        for column, ks in enumerate(SPHERE_KS):
+            name = "ks%.2f_n%d" % (ks, n)
+            kd = tuple((1.0 - ks) * c for c in SPHERE_BASE)
+            material = g.material(name, kd, ks=ks, shininess=n,
+                                  roughness=roughness_for_shininess(n))
+            centre = ((column - (columns - 1) / 2.0) * SPHERE_SPACING,
+                      ((rows - 1) / 2.0 - row) * SPHERE_SPACING, 0.0)
+            g.mesh_node(name, g.mesh(name, [(sphere, material)]), centre)
+
+    # Key light up, left and in front, so every sphere shows its highlight on the upper left of
+    # the side facing the camera; a weaker fill from the lower right keeps the shadow side from
+    # being pure black and adds a second, smaller highlight. At ~7.8 m the key gives
+    # IL = I / (pi d^2) ~ 0.52: diffuse radiance kd * IL ~ 0.44 (red) facing it in the first
+    # column, a highlight peak ks * IL ~ 0.42 in the last; nothing clips at exposure 0.
+    g.point_light("key_light", (-3.0, 4.0, 6.0), 100.0)
+    g.point_light("fill_light", (4.0, -1.5, 5.0), 20.0)
+
+    # Camera on +Z framing the 5 x 4 grid (4.8 m x 3.8 m with the radii) with a margin:
+    # yfov 30 degrees at 8.5 m sees 4.6 m vertically, 6.1 m horizontally at aspect 4:3.
+    g.camera("spheres_camera", (0.0, 0.0, 8.5), (0.0, 0.0, 0.0), math.radians(30.0),
+             4.0 / 3.0, 0.1, 100.0)
+    # Ambient so the ambient term shows when a student switches it on; dark grey background.
+    g.scene_extras(ambient=(0.03, 0.03, 0.03), background=(0.01, 0.01, 0.01), exposure=0.0)
+    return g
+
+
+# ==== [WHITTED] ================================================================================
+# After the picture in T. Whitted, "An Improved Illumination Model for Shaded Display",
+# Communications of the ACM 23(6), 1980: a red and yellow checkerboard, a mirror sphere and a
+# glass sphere in front of it, a blue sky. The positions are not published; these reproduce the
+# composition (glass sphere in front, upper left; mirror sphere behind it to the right).
+
+CHECK_SIZE = 0.5                                 # m, side of one square
+CHECK_COLUMNS, CHECK_ROWS = 12, 16               # x from -3 to 3, z from -6 to 2
+CHECK_X0, CHECK_Z0 = -3.0, -6.0
+CHECK_RED = (0.75, 0.08, 0.05)
+CHECK_YELLOW = (0.8, 0.7, 0.08)
+
+MIRROR_CENTRE, MIRROR_RADIUS = (0.65, 0.75, -1.0), 0.6
+GLASS_CENTRE, GLASS_RADIUS = (-0.45, 1.3, 0.4), 0.5
+
+
+def whitted():
+    g = GltfBuilder("whitted")
+    red = g.material("checker_red", CHECK_RED, ks=0.0)
+    yellow = g.material("checker_yellow", CHECK_YELLOW, ks=0.0)
+    # Mirror: kd + kr = 0.95; a highlight from ks.
+    mirror = g.material("mirror", (0.15, 0.15, 0.15), ks=0.5, shininess=100.0,
+                        roughness=roughness_for_shininess(100.0), kr=0.8)
+    # Glass: kd + kr + kt = 0.98; eta 1.5. With the Fresnel switch, kt's share splits further.
+    glass = g.material("glass", (0.03, 0.03, 0.03), ks=0.6, shininess=200.0,
+                       roughness=roughness_for_shininess(200.0), kr=0.05, kt=0.9, ior=1.5,
+                       transmission_extension=True)
+
+    # The checkerboard as geometry, one primitive per colour: every model sees the squares,
+    # radiosity included, without textures. Squares of one colour touch only at corners, so
+    # each keeps its own four vertices.
+    squares = {0: ([], [], []), 1: ([], [], [])}
+    for row in range(CHECK_ROWS):
+        for column in range(CHECK_COLUMNS):
+            x0, z0 = CHECK_X0 + column * CHECK_SIZE, CHECK_Z0 + row * CHECK_SIZE
+            x1, z1 = x0 + CHECK_SIZE, z0 + CHECK_SIZE
+            points, normals, indices = oriented_quad(
+                [(x0, 0.0, z0), (x1, 0.0, z0), (x1, 0.0, z1), (x0, 0.0, z1)], (0.0, 1.0, 0.0))
+            positions, all_normals, all_indices = squares[(row + column) % 2]
+            all_indices += [len(positions) + i for i in indices]
+            positions += points
+            all_normals += normals
+    floor = g.mesh("checkerboard", [(g.geometry(*squares[0]), red),
+                                    (g.geometry(*squares[1]), yellow)])
+    g.mesh_node("checkerboard", floor)
+
+    # Each sphere built at its own radius (no node scale: normals stay exactly unit) and placed
+    # by its node's translation. Finer than the plate's spheres: they are large in the picture
+    # and their silhouettes refract and reflect the board.
+    for name, centre, radius, material in (("mirror_sphere", MIRROR_CENTRE, MIRROR_RADIUS, mirror),
+                                           ("glass_sphere", GLASS_CENTRE, GLASS_RADIUS, glass)):
+        sphere = g.geometry(*uv_sphere(radius, 64, 48))
+        g.mesh_node(name, g.mesh(name, [(sphere, material)]), centre)
+
+    # The light above and behind the camera, to the right: shadows fall forward-left of the
+    # spheres onto the board. At ~6 m it gives the board ~2 W/m^2, diffuse radiance ~0.4.
+    g.point_light("light", (2.0, 5.5, 3.0), 90.0)
+
+    g.camera("whitted_camera", (0.2, 1.6, 4.2), (0.1, 0.8, -0.4), math.radians(40.0),
+             4.0 / 3.0, 0.1, 100.0)
+    # Blue sky; a little ambient as in Whitted's model, so shadows are not pure black.
+    g.scene_extras(ambient=(0.05, 0.05, 0.05), background=(0.2, 0.35, 0.8), exposure=0.0)
+    return g
+
+
+# ==== [CHECK] ==================================================================================
+# Independent of the builder above: reads the files back and applies the rules of SCENES.md
+# and of the glTF 2.0 specification that matter to Luz's loader.
+
+COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
+COMPONENT_FORMATS = {FLOAT: "f", UNSIGNED_SHORT: "H", UNSIGNED_INT: "I", 5121: "B"}
+
+
+def check_scene(path):
+    """Returns a list of problems (empty when the scene is fine)."""
+    problems = []
+
+    def problem(where, what):
+        problems.append("%s: %s: %s" % (os.path.basename(path), where, what))
+
+    with open(path, encoding="ascii") as f:
+        doc = json.load(f)
+
+    def walk_numbers(value, where):
+        if isinstance(value, float) and not math.isfinite(value):
+            problem(where, "non-finite number")
+        elif isinstance(value, dict):
+            for k, v in value.items():
+                walk_numbers(v, where + "." + k)
+        elif isinstance(value, list):
+            for i, v in enumerate(value):
+                walk_numbers(v, "%s[%d]" % (where, i))
+    walk_numbers(doc, "document")
+
+    if doc.get("asset", {}).get("version") != "2.0":
+        problem("asset", "version is not 2.0")
+    if doc.get("asset", {}).get("generator") != GENERATOR:
+        problem("asset", "generator is not %r" % GENERATOR)
+
+    # Buffers: only the scene's own .bin, beside it.
+    buffers = []
+    for i, buf in enumerate(doc.get("buffers", [])):
+        uri = buf.get("uri", "")
+        if (not uri or "/" in uri or "\\" in uri or ":" in uri or uri.startswith(".")
+                or uri != os.path.splitext(os.path.basename(path))[0] + ".bin"):
+            problem("buffer %d" % i, "uri %r is not the scene's own .bin" % uri)
+            buffers.append(b"")
+            continue
+        with open(os.path.join(os.path.dirname(path), uri), "rb") as f:
+            data = f.read()
+        if len(data) != buf.get("byteLength"):
+            problem("buffer %d" % i, "byteLength %s but file has %d bytes"
+                    % (buf.get("byteLength"), len(data)))
+        buffers.append(data)
+
+    views = doc.get("bufferViews", [])
+    for i, view in enumerate(views):
+        b = view.get("buffer", -1)
+        if not 0 <= b < len(buffers):
+            problem("bufferView %d" % i, "no buffer %s" % b)
+        elif view.get("byteOffset", 0) + view["byteLength"] > len(buffers[b]):
+            problem("bufferView %d" % i, "runs past the end of its buffer")
+
+    def read_accessor(index, where):
+        accessors = doc.get("accessors", [])
+        if not 0 <= index < len(accessors):
+            problem(where, "no accessor %s" % index)
+            return None
+        acc = accessors[index]
+        fmt = COMPONENT_FORMATS.get(acc["componentType"])
+        n = COMPONENTS[acc["type"]]
+        view = views[acc["bufferView"]]
+        size = struct.calcsize("<" + fmt) * n
+        stride = view.get("byteStride", size)
+        start = view.get("byteOffset", 0) + acc.get("byteOffset", 0)
+        if start % struct.calcsize("<" + fmt):
+            problem(where, "accessor %d is not aligned" % index)
+        if acc.get("byteOffset", 0) + stride * (acc["count"] - 1) + size > view["byteLength"]:
+            problem(where, "accessor %d runs past its bufferView" % index)
+            return None
+        data = buffers[view["buffer"]]
+        out = []
+        for k in range(acc["count"]):
+            values = struct.unpack_from("<%d%s" % (n, fmt), data, start + k * stride)
+            out.append(values if n > 1 else values[0])
+        return acc, out
+
+    meshes = doc.get("meshes", [])
+    materials = doc.get("materials", [])
+    for m, mesh in enumerate(meshes):
+        for p, prim in enumerate(mesh.get("primitives", [])):
+            where = "mesh %d %r primitive %d" % (m, mesh.get("name"), p)
+            if prim.get("mode", TRIANGLES) != TRIANGLES:
+                problem(where, "not a triangle primitive")
+            if "material" in prim and not 0 <= prim["material"] < len(materials):
+                problem(where, "no material %s" % prim["material"])
+            attrs = prim.get("attributes", {})
+            pos = read_accessor(attrs.get("POSITION", -1), where + " POSITION")
+            nor = read_accessor(attrs.get("NORMAL", -1), where + " NORMAL")
+            idx = read_accessor(prim.get("indices", -1), where + " indices")
+            if not (pos and nor and idx):
+                continue
+            (pacc, positions), (_, normals), (_, indices) = pos, nor, idx
+            for axis in range(3):
+                lo = min(v[axis] for v in positions)
+                hi = max(v[axis] for v in positions)
+                if "min" not in pacc or "max" not in pacc:
+                    problem(where, "POSITION without min/max")
+                    break
+                if f32(pacc["min"][axis]) != lo or f32(pacc["max"][axis]) != hi:
+                    problem(where, "POSITION min/max do not match the data on axis %d" % axis)
+            if len(normals) != len(positions):
+                problem(where, "NORMAL and POSITION counts differ")
+                continue
+            for v in positions + normals:
+                if not all(math.isfinite(c) for c in v):
+                    problem(where, "non-finite vertex data")
+                    break
+            for k, nrm in enumerate(normals):
+                if abs(length(nrm) - 1.0) > 1e-5:
+                    problem(where, "normal %d is not unit (%g)" % (k, length(nrm)))
+                    break
+            if len(indices) % 3:
+                problem(where, "index count is not a multiple of 3")
+                continue
+            if indices and max(indices) >= len(positions):
+                problem(where, "index %d >= vertex count %d" % (max(indices), len(positions)))
+                continue
+            for t in range(0, len(indices), 3):
+                a, b, c = (positions[i] for i in indices[t:t + 3])
+                face = cross(sub(b, a), sub(c, a))
+                longest = max(length(sub(b, a)), length(sub(c, b)), length(sub(a, c)))
+                if length(face) <= 1e-6 * longest * longest:
+                    problem(where, "degenerate triangle %d" % (t // 3))
+                    break
+                # Winding: counter-clockwise seen from the side the normals point to.
+                mean_normal = add(add(normals[indices[t]], normals[indices[t + 1]]),
+                                  normals[indices[t + 2]])
+                if dot(face, mean_normal) <= 0:
+                    problem(where, "triangle %d is wound against its normals" % (t // 3))
+                    break
+
+    # Materials: kd + kr + kt <= 1 per channel, with SCENES.md's defaults.
+    for i, mat in enumerate(materials):
+        where = "material %d %r" % (i, mat.get("name"))
+        pbr = mat.get("pbrMetallicRoughness", {})
+        base = pbr.get("baseColorFactor", [1.0, 1.0, 1.0, 1.0])[:3]
+        metallic = pbr.get("metallicFactor", 1.0)
+        roughness = pbr.get("roughnessFactor", 1.0)
+        extras = mat.get("extras", {})
+        exts = mat.get("extensions", {})
+
+        def rgb(value):
+            return [float(value)] * 3 if isinstance(value, (int, float)) else list(value)
+        kd = [c * (1.0 - metallic) for c in base]
+        if "kr" in extras:
+            kr = rgb(extras["kr"])
+        elif metallic >= 0.5 and roughness <= 0.05:
+            kr = base
+        else:
+            kr = [0.0] * 3
+        if "kt" in extras:
+            kt = rgb(extras["kt"])
+        else:
+            kt = rgb(exts.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0))
+        for ch in range(3):
+            if kd[ch] + kr[ch] + kt[ch] > 1.0 + 1e-9:
+                problem(where, "kd + kr + kt = %g > 1 in channel %d"
+                        % (kd[ch] + kr[ch] + kt[ch], ch))
+        for key in ("ks", "ka", "kr", "kt"):
+            if key in extras and any(c < 0 for c in rgb(extras[key])):
+                problem(where, "negative extras.%s" % key)
+
+    # Nodes, cameras, lights, scene.
+    cameras = doc.get("cameras", [])
+    lights = doc.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
+    nodes = doc.get("nodes", [])
+    for i, node in enumerate(nodes):
+        where = "node %d %r" % (i, node.get("name"))
+        if "mesh" in node and not 0 <= node["mesh"] < len(meshes):
+            problem(where, "no mesh %s" % node["mesh"])
+        if "camera" in node and not 0 <= node["camera"] < len(cameras):
+            problem(where, "no camera %s" % node["camera"])
+        light = node.get("extensions", {}).get("KHR_lights_punctual", {}).get("light")
+        if light is not None and not 0 <= light < len(lights):
+            problem(where, "no light %s" % light)
+        if "rotation" in node and abs(length(node["rotation"][:3]) ** 2
+                                      + node["rotation"][3] ** 2 - 1.0) > 1e-5:
+            problem(where, "rotation is not a unit quaternion")
+    if not cameras:
+        problem("cameras", "the scene has no camera")
+    for i, cam in enumerate(cameras):
+        persp = cam.get("perspective", {})
+        if cam.get("type") != "perspective" or not 0 < persp.get("yfov", 0) < math.pi:
+            problem("camera %d" % i, "not a perspective camera with 0 < yfov < pi")
+    for i, light in enumerate(lights):
+        if light.get("intensity", 1.0) < 0:
+            problem("light %d" % i, "negative intensity")
+    scene = doc.get("scenes", [{}])[doc.get("scene", 0)]
+    for n in scene.get("nodes", []):
+        if not 0 <= n < len(nodes):
+            problem("scene", "no node %s" % n)
+    for key in ("ambient", "background", "exposure"):
+        if key not in scene.get("extras", {}):
+            problem("scene.extras", "no %s" % key)
+    used = set(doc.get("extensionsUsed", []))
+    for ext in ("KHR_lights_punctual",) if lights else ():
+        if ext not in used:
+            problem("extensionsUsed", "%s missing" % ext)
+    return problems
+
+
+# ==== [MAIN] ===================================================================================
+
+def main(argv):
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--out", default=here, help="folder to write into (default: %(default)s)")
+    parser.add_argument("--check", nargs="?", const=here, metavar="DIR",
+                        help="only check the scenes in DIR (default: this folder)")
+    args = parser.parse_args(argv)
+
+    if args.check is None:
+        os.makedirs(args.out, exist_ok=True)
+        for build in (cornell_box, phong_spheres, whitted):
+            build().write(args.out)
+        folder = args.out
+    else:
+        folder = args.check
+
+    problems = []
+    for name in SCENE_FILES:
+        problems += check_scene(os.path.join(folder, name + ".gltf"))
+    for p in problems:
+        print(p, file=sys.stderr)
+    if problems:
+        return 1
+    print("%s: %d scenes written and checked" % (folder, len(SCENE_FILES))
+          if args.check is None else "%s: %d scenes checked" % (folder, len(SCENE_FILES)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
