@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The README's pictures, made by `luz render` from the shipped scenes.
+# Usage: docs/make_pictures.sh [LUZ_BINARY]   (default: build/luz)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+luz=${1:-$root/build/luz}
+out="$root/docs/images"
+mkdir -p "$out"
+for model in flat gouraud phong; do
+  "$luz" render "$root/scenes/cornell_box.gltf" --model "$model" --size 360x360 -q --out "$out/cornell_box-$model.png"
+  "$luz" render "$root/scenes/phong_spheres.gltf" --model "$model" --size 480x360 -q --out "$out/phong_spheres-$model.png"
+done
+"$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --out "$out/whitted-phong.png"
+"$luz" render "$root/scenes/phong_spheres.gltf" --model phong --blinn --size 480x360 -q --out "$out/phong_spheres-blinn.png"
+"$luz" render "$root/scenes/phong_spheres.gltf" --model phong --no-specular --size 480x360 -q --out "$out/phong_spheres-no-specular.png"
+echo "pictures in $out"
