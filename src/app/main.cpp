@@ -1,7 +1,6 @@
 // luz: the single command. `luz [SCENE]` opens the viewer; `luz render` makes one picture
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -9,7 +8,9 @@
 
 #include "app/render_command.h"
 #include "app/resources.h"
+#include "app/script.h"
 #include "app/viewer.h"
+#include "core/error.h"
 #include "gl/window_context.h"
 
 namespace {
@@ -44,15 +45,12 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
 }
 
-// No display: say so and do what the viewer would have shown, as a file.
-int render_without_display(const std::string& scene) {
-  const std::string out = std::filesystem::path(scene).stem().string() + ".png";
-  fmt::print(stderr, "luz: no display, so no window; rendering {} headless to {} instead "
-                     "(see `luz render --help`)\n", scene, out);
-  RenderSettings settings;
-  settings.scene = scene;
-  settings.out = out;
-  return luz::app::run_render(settings);
+// No display: the viewer cannot open; `luz render` makes the same pictures without one.
+int no_display(const std::string& scene) {
+  fmt::print(stderr, "luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are unset "
+                     "or unreachable).\nluz: for pictures without a display use `luz render`, e.g.\n"
+                     "  luz render {} --model phong --out picture.png\n(see `luz render --help`)\n", scene);
+  return 1;
 }
 
 }  // namespace
@@ -63,8 +61,18 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", "luz " LUZ_VERSION);
   app.footer("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error.");
-  std::string viewer_scene;
-  app.add_option("SCENE", viewer_scene, "glTF scene for the viewer");
+  luz::app::ViewerSettings viewer;
+  std::string script_file;
+  app.add_option("SCENE", viewer.scene, "glTF scene for the viewer");
+  app.add_option("--script", script_file,
+                 "Run the viewer from a script of commands (key, click, screenshot, ...; see README)");
+  app.add_option_function<std::string>(
+      "--size",
+      [&viewer](const std::string& text) {
+        if (!luz::app::parse_size(text, viewer.width, viewer.height))
+          throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, e.g. 1280x720");
+      },
+      "Viewer window size WxH");
 
   RenderSettings settings;
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
@@ -83,7 +91,15 @@ int main(int argc, char** argv) {
 
   if (render->parsed()) return luz::app::run_render(settings);
 
-  const std::string scene = viewer_scene.empty() ? luz::app::default_scene().string() : viewer_scene;
-  if (!luz::gl::WindowContext::display_available()) return render_without_display(scene);
-  return luz::app::run_viewer(scene);
+  if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
+  if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens
+    try {
+      viewer.script = luz::app::parse_script(script_file);
+    } catch (const luz::Error& error) {
+      fmt::print(stderr, "luz: {}\n", error.what());
+      return 2;
+    }
+  }
+  if (!luz::gl::WindowContext::display_available()) return no_display(viewer.scene);
+  return luz::app::run_viewer(viewer);
 }

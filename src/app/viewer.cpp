@@ -1,10 +1,39 @@
+// The viewer's loop: a window with the panel on the left, the picture on the right and the
+// status line under it. Every change comes in as an Action (shortcuts.h), a panel edit of the
+// ViewerState, a mouse gesture or a script line, and is drawn on the next frame.
+//
+// Sections: [layout] [the viewer] [loading] [input] [actions] [script] [the frame]
+//           [status, help and error windows] [run_viewer]
 #include "app/viewer.h"
 
-#define GLFW_INCLUDE_NONE  // GL comes through gl/functions.h, never GL/gl.h
-#include <GLFW/glfw3.h>
-#include <fmt/format.h>
+#include "gl/functions.h"  // before GLFW: GLFW_INCLUDE_NONE keeps GLFW from including GL
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "app/inspector.h"
+#include "app/orbit_camera.h"
+#include "app/panel.h"
+#include "app/picking.h"
+#include "app/screenshot.h"
+#include "app/shortcuts.h"
+#include "app/viewer_state.h"
 #include "core/error.h"
+#include "gl/framebuffer.h"
+#include "gl/shader.h"
 #include "gl/window_context.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
@@ -12,56 +41,663 @@
 namespace luz::app {
 namespace {
 
-// Keys of the classroom: 1 flat, 2 Gouraud, 3 Phong; A, D, S toggle the ambient, diffuse and
-// specular terms; B Phong/Blinn; Esc quits.
-void apply_key(int key, LocalOptions& options, bool& quit) {
-  switch (key) {
-    case GLFW_KEY_1: options.shading = Shading::flat; break;
-    case GLFW_KEY_2: options.shading = Shading::gouraud; break;
-    case GLFW_KEY_3: options.shading = Shading::phong; break;
-    case GLFW_KEY_A: options.ambient = !options.ambient; break;
-    case GLFW_KEY_D: options.diffuse = !options.diffuse; break;
-    case GLFW_KEY_S: options.specular = !options.specular; break;
-    case GLFW_KEY_B: options.blinn = !options.blinn; break;
-    case GLFW_KEY_ESCAPE: quit = true; break;
-    default: break;
+constexpr int default_width = 1280;
+constexpr int default_height = 760;
+constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
+constexpr float font_size = 16.0f;      // pixels at a content scale of 1
+constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
+const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// ---- [layout] ----------------------------------------------------------------------------------
+// Window coordinates (GLFW's, ImGui's, the script's) have their origin at the top left; on a
+// HiDPI screen a window unit can be several framebuffer pixels.
+struct Layout {
+  glm::vec2 window{0.0f};
+  glm::ivec2 framebuffer{0};
+  glm::vec2 scale{1.0f};         // framebuffer pixels per window unit
+  float panel = 0.0f;            // panel width, window units
+  float status = 0.0f;           // status line height, window units
+  glm::vec2 view_origin{0.0f};   // the picture's top-left corner, window units
+  glm::ivec2 view_pixels{0};     // the picture's size in framebuffer pixels
+  glm::ivec2 view_gl_origin{0};  // its lower-left corner in GL's window pixels
+
+  bool in_view(glm::vec2 p) const {
+    return p.x >= view_origin.x && p.y >= view_origin.y && p.x < window.x && p.y < window.y - status;
+  }
+  glm::ivec2 pixel_of(glm::vec2 p) const {  // row 0 at the top of the picture
+    return glm::ivec2(glm::floor((p - view_origin) * scale));
+  }
+  glm::vec2 window_of(glm::ivec2 pixel) const {
+    return view_origin + (glm::vec2(pixel) + 0.5f) / scale;
+  }
+};
+
+enum class DragButton { none, left, right };
+
+struct PendingScreenshot {
+  std::filesystem::path path;
+  bool with_panel = false;
+  std::string origin;  // "demo.txt:12" for a script's, empty for a key's
+};
+
+// ---- [the viewer] ------------------------------------------------------------------------------
+class Viewer : public ScriptTarget {
+public:
+  Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings);
+  ~Viewer() override;
+  int run();
+
+  bool run(const ScriptCommand& command, std::string& error) override;
+  bool busy() const override { return scripted_click_frames_ > 0; }
+
+private:
+  void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
+  void load(const std::filesystem::path& path);
+  void rebuild_renderer();
+  Camera current_camera() const;
+  void to_scene_camera();
+  Layout layout() const;
+
+  void on_key(int key, int mods);
+  void on_mouse_button(int button, int action);
+  void on_cursor(glm::vec2 p);
+  void on_scroll(float steps);
+  void apply(Action action);
+  void set_model(Model model);
+  void click(glm::vec2 p);
+  void move_camera(DragButton button, glm::vec2 delta);
+  void fly(float seconds);
+
+  void frame();
+  void draw_picture(const Layout& l);
+  void update_inspector(const Layout& l, const Camera& camera);
+  void draw_windows(const Layout& l);
+  void take_screenshots(const Layout& l);
+
+  gl::WindowContext window_;
+  ViewerState state_;
+  float ui_scale_ = 1.0f;
+  std::unique_ptr<LocalRenderer> renderer_;
+  std::unique_ptr<Picker> picker_;
+  std::unique_ptr<gl::Framebuffer> picture_;  // the picture's float radiance
+  gl::Program display_{{"display.vert", "display.frag"}};
+  GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
+  OrbitCamera orbit_;
+
+  std::optional<Pick> pick_;
+  Camera picked_with_;             // the view the pick was made in: moving the camera re-picks
+  glm::ivec2 picked_size_{0};
+  std::optional<InspectorReading> reading_;
+
+  DragButton drag_ = DragButton::none;
+  glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};
+  bool dragged_ = false;
+
+  std::optional<ScriptRunner> script_;
+  glm::vec2 scripted_click_at_{0.0f};
+  int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
+  std::string failure_;            // a script command that failed: the run ends with exit 1
+  std::vector<PendingScreenshot> screenshots_;
+  bool quit_ = false;
+};
+
+Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings)
+    : window_(settings.width > 0 ? settings.width : default_width,
+              settings.height > 0 ? settings.height : default_height,
+              "Luz - " + path.filename().string()) {
+  glGenVertexArrays(1, &empty_vertex_array_);
+  if (settings.script) script_.emplace(*settings.script);
+
+  GLFWwindow* w = window_.handle();
+  glfwSetWindowUserPointer(w, this);
+  // Ours first: ImGui's GLFW backend (1.86) keeps these and calls them after its own.
+  glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+    if (action != GLFW_RELEASE) static_cast<Viewer*>(glfwGetWindowUserPointer(win))->on_key(key, mods);
+  });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
+    static_cast<Viewer*>(glfwGetWindowUserPointer(win))->on_mouse_button(button, action);
+  });
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
+    static_cast<Viewer*>(glfwGetWindowUserPointer(win))->on_cursor(glm::vec2(float(x), float(y)));
+  });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
+    static_cast<Viewer*>(glfwGetWindowUserPointer(win))->on_scroll(float(dy));
+  });
+  glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
+    if (count > 0) static_cast<Viewer*>(glfwGetWindowUserPointer(win))->load(paths[count - 1]);
+  });
+
+  // Dear ImGui, scaled for the screen: fonts are rasterised at the pixel size they will have.
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the same layout every run, for the class and for the tests
+  float content_x = 1.0f, content_y = 1.0f;
+  glfwGetWindowContentScale(w, &content_x, &content_y);
+  int window_w = 1, window_h = 1;
+  glfwGetWindowSize(w, &window_w, &window_h);
+  const float pixels_per_unit = float(std::max(window_.framebuffer_size().x, 1)) / float(std::max(window_w, 1));
+  const float content = std::max(content_x, 1.0f);
+  ui_scale_ = std::max(content / pixels_per_unit, 1.0f);
+  // The formula needs Greek letters, sub- and superscripts: DejaVu Sans has them (Debian's
+  // fonts-dejavu-core); without it ImGui's own font shows '?' for those.
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D62, 0x1D62, 0x2070, 0x209F, 0x2200, 0x22FF, 0};
+  if (std::filesystem::exists(font_file)) {
+    io.Fonts->AddFontFromFileTTF(font_file, font_size * content, nullptr, ranges);
+  } else {
+    ImFontConfig config;
+    config.SizePixels = 13.0f * content;
+    io.Fonts->AddFontDefault(&config);
+  }
+  io.FontGlobalScale = 1.0f / pixels_per_unit;
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().ScaleAllSizes(ui_scale_);
+  ImGui_ImplGlfw_InitForOpenGL(w, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  adopt(std::move(loaded), path, false);
+}
+
+Viewer::~Viewer() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  if (empty_vertex_array_) glDeleteVertexArrays(1, &empty_vertex_array_);
+}
+
+Layout Viewer::layout() const {
+  Layout l;
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_.handle(), &w, &h);
+  l.window = glm::vec2(float(std::max(w, 1)), float(std::max(h, 1)));
+  l.framebuffer = window_.framebuffer_size();
+  l.scale = glm::vec2(l.framebuffer) / l.window;
+  l.panel = state_.show_panel ? std::min(panel_width * ui_scale_, 0.6f * l.window.x) : 0.0f;
+  l.status = ImGui::GetFontSize() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+  l.view_origin = glm::vec2(l.panel, 0.0f);
+  const int left = int(std::lround(l.panel * l.scale.x));
+  l.view_pixels = glm::ivec2(std::max(l.framebuffer.x - left, 0),
+                             std::max(int(std::lround((l.window.y - l.status) * l.scale.y)), 0));
+  l.view_gl_origin = glm::ivec2(left, l.framebuffer.y - l.view_pixels.y);
+  return l;
+}
+
+// ---- [loading] ---------------------------------------------------------------------------------
+// A new scene replaces the old only once it has loaded: a broken file shows its error and the
+// class keeps looking at the previous scene.
+void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view) {
+  for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+  picker_.reset();
+  renderer_.reset();  // both refer to the old scene
+  pick_.reset();
+  reading_.reset();
+  state_.scene = std::make_unique<Scene>(std::move(loaded.scene));
+  state_.scene_path = path;
+  const Scene& scene = *state_.scene;
+  state_.light_edits.clear();
+  for (const Light& light : scene.lights) {
+    const float intensity = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
+    state_.light_edits.push_back({intensity > 0 ? light.intensity / intensity : Rgb(1.0f), intensity});
+  }
+  if (!keep_view || size_t(state_.scene_camera) >= scene.cameras.size()) {
+    state_.scene_camera = 0;
+    state_.free_camera = false;
+  }
+  if (!keep_view) state_.exposure = scene.exposure;
+  if (size_t(state_.selected_material) >= scene.materials.size()) state_.selected_material = -1;
+  if (!state_.free_camera) to_scene_camera();
+  rebuild_renderer();
+  picker_ = std::make_unique<Picker>(scene);
+  state_.error.clear();
+  glfwSetWindowTitle(window_.handle(), ("Luz - " + path.filename().string()).c_str());
+}
+
+void Viewer::load(const std::filesystem::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension != ".gltf" && extension != ".glb") {
+    state_.error = fmt::format("{}: not a glTF scene (.gltf or .glb)", path.string());
+    return;
+  }
+  try {
+    adopt(io::load_gltf(path), path, path == state_.scene_path);
+    state_.note = fmt::format("loaded {}", path.filename().string());
+  } catch (const Error& error) {
+    state_.error = error.what();
+    state_.note = "the scene did not load; showing the previous one";
+    fmt::print(stderr, "luz: {}\n", error.what());
   }
 }
 
-struct KeyQueue {
-  int pending = -1;
-};
+void Viewer::rebuild_renderer() {
+  renderer_.reset();
+  renderer_ = std::make_unique<LocalRenderer>(*state_.scene);
+  for (const std::string& warning : renderer_->warnings()) fmt::print(stderr, "warning: {}\n", warning);
+}
+
+Camera Viewer::current_camera() const {
+  return state_.free_camera ? orbit_.camera() : state_.scene->cameras[size_t(state_.scene_camera)];
+}
+
+void Viewer::to_scene_camera() {
+  state_.free_camera = false;
+  orbit_.start_from(state_.scene->cameras[size_t(state_.scene_camera)], state_.scene->bounds().centre());
+}
+
+// ---- [input] -----------------------------------------------------------------------------------
+void Viewer::on_key(int key, int mods) {
+  if (ImGui::GetIO().WantTextInput) return;  // typing a number into the panel
+  if (const auto action = action_for(key, mods)) apply(*action);
+}
+
+void Viewer::on_mouse_button(int button, int action) {
+  if (action == GLFW_PRESS) {
+    if (ImGui::GetIO().WantCaptureMouse || !layout().in_view(last_cursor_)) return;
+    drag_ = button == GLFW_MOUSE_BUTTON_LEFT ? DragButton::left : DragButton::right;
+    press_at_ = last_cursor_;
+    dragged_ = false;
+  } else if (drag_ != DragButton::none) {
+    if (drag_ == DragButton::left && !dragged_) click(press_at_);
+    drag_ = DragButton::none;
+  }
+}
+
+void Viewer::on_cursor(glm::vec2 p) {
+  const glm::vec2 delta = p - last_cursor_;
+  last_cursor_ = p;
+  if (drag_ == DragButton::none) return;
+  if (!dragged_ && glm::length(p - press_at_) < drag_threshold) return;
+  dragged_ = true;
+  move_camera(drag_, delta);
+}
+
+void Viewer::on_scroll(float steps) {
+  if (ImGui::GetIO().WantCaptureMouse || !layout().in_view(last_cursor_)) return;
+  if (!state_.free_camera) to_scene_camera();
+  state_.free_camera = true;
+  orbit_.zoom(steps);
+}
+
+void Viewer::move_camera(DragButton button, glm::vec2 delta) {
+  if (!state_.free_camera) to_scene_camera();  // start from what is on screen
+  state_.free_camera = true;
+  if (button == DragButton::left) orbit_.orbit(delta.x, delta.y);
+  else orbit_.pan(delta.x, delta.y, layout().window.y);
+}
+
+// Arrows and PageUp / PageDown fly at half the scene's size per second (Shift: four times that).
+void Viewer::fly(float seconds) {
+  if (ImGui::GetIO().WantTextInput) return;
+  GLFWwindow* w = window_.handle();
+  auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+  const glm::vec3 axes(held(GLFW_KEY_UP) - held(GLFW_KEY_DOWN), held(GLFW_KEY_RIGHT) - held(GLFW_KEY_LEFT),
+                       held(GLFW_KEY_PAGE_UP) - held(GLFW_KEY_PAGE_DOWN));
+  if (axes == glm::vec3(0.0f)) return;
+  const float fast = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ? 4.0f : 1.0f;
+  const float speed = 0.5f * glm::length(state_.scene->bounds().extent()) * fast;
+  if (!state_.free_camera) to_scene_camera();
+  state_.free_camera = true;
+  orbit_.fly(axes * speed * seconds);
+}
+
+void Viewer::click(glm::vec2 p) {
+  const Layout l = layout();
+  if (!l.in_view(p) || l.view_pixels.x <= 0 || l.view_pixels.y <= 0) return;
+  const glm::ivec2 pixel = l.pixel_of(p);
+  const Camera camera = current_camera();
+  pick_ = picker_->pick(camera, l.view_pixels.x, l.view_pixels.y, pixel.x, pixel.y);
+  picked_with_ = camera;
+  picked_size_ = l.view_pixels;
+  if (pick_) {
+    state_.selected_material = state_.scene->meshes[size_t(pick_->mesh)].material;
+    state_.show_inspector = true;
+  } else {
+    reading_.reset();
+    state_.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
+  }
+}
+
+// ---- [actions] ---------------------------------------------------------------------------------
+void Viewer::set_model(Model model) {
+  const ModelInfo& m = info(model);
+  if (!m.available) {
+    state_.note = fmt::format("{} (key {}): not available yet", m.label, int(model) + 1);
+    return;
+  }
+  state_.model = model;
+  if (model == Model::flat) state_.local.shading = Shading::flat;
+  if (model == Model::gouraud) state_.local.shading = Shading::gouraud;
+  if (model == Model::phong) state_.local.shading = Shading::phong;
+  state_.note = m.label;
+}
+
+void Viewer::apply(Action action) {
+  LocalOptions& o = state_.local;
+  auto toggle = [this](bool& term, const char* name) {
+    term = !term;
+    state_.note = fmt::format("{} {}", name, term ? "on" : "off");
+  };
+  switch (action) {
+    case Action::none: break;
+    case Action::model_1: set_model(Model::flat); break;
+    case Action::model_2: set_model(Model::gouraud); break;
+    case Action::model_3: set_model(Model::phong); break;
+    case Action::model_4: set_model(Model::whitted); break;
+    case Action::model_5: set_model(Model::radiosity); break;
+    case Action::model_6: set_model(Model::hybrid); break;
+    case Action::toggle_ambient: toggle(o.ambient, "ambient I_A"); break;
+    case Action::toggle_diffuse: toggle(o.diffuse, "diffuse I_D"); break;
+    case Action::toggle_specular: toggle(o.specular, "specular I_S"); break;
+    case Action::toggle_emission: toggle(o.emission, "emission Le"); break;
+    case Action::toggle_textures: toggle(o.textures, "kd texture"); break;
+    case Action::toggle_blinn:
+      o.blinn = !o.blinn;
+      state_.note = o.blinn ? "Blinn's N.H" : "Phong's R.V";
+      break;
+    case Action::cycle_attenuation: {
+      std::vector<Light>& lights = state_.scene->lights;
+      const bool all_classroom = std::all_of(lights.begin(), lights.end(),
+                                             [](const Light& l) { return l.attenuation.classroom; });
+      for (Light& light : lights) light.attenuation.classroom = !all_classroom;
+      state_.note = all_classroom ? "f_att = 1/d^2" : "f_att = 1/(c0 + c1 d + c2 d^2)";
+      break;
+    }
+    case Action::exposure_up: state_.exposure += 0.5f; break;
+    case Action::exposure_down: state_.exposure -= 0.5f; break;
+    case Action::scene_camera: to_scene_camera(); break;
+    case Action::next_camera:
+      state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
+      to_scene_camera();
+      state_.note = fmt::format("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
+      break;
+    case Action::reload: load(state_.scene_path); break;
+    case Action::screenshot:
+    case Action::screenshot_with_panel: {
+      const bool with_panel = action == Action::screenshot_with_panel;
+      screenshots_.push_back({next_screenshot_name(state_.scene_path, with_panel), with_panel, ""});
+      break;
+    }
+    case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
+    case Action::toggle_inspector: state_.show_inspector = !state_.show_inspector; break;
+    case Action::help: state_.show_help = !state_.show_help; break;
+    case Action::quit: quit_ = true; break;
+  }
+}
+
+// ---- [script] ----------------------------------------------------------------------------------
+bool Viewer::run(const ScriptCommand& c, std::string& error) {
+  const auto& a = c.args;
+  if (c.verb == "key") {
+    int key = 0, mods = 0;
+    parse_key(a[0], key, mods);
+    on_key(key, mods);
+  } else if (c.verb == "click") {
+    const glm::vec2 p(std::stof(a[0]), std::stof(a[1]));
+    if (layout().in_view(p)) {
+      click(p);
+    } else {  // the panel: ImGui sees a press this frame and the release on the next
+      scripted_click_at_ = p;
+      scripted_click_frames_ = 2;
+    }
+  } else if (c.verb == "drag") {
+    const glm::vec2 from(std::stof(a[0]), std::stof(a[1])), to(std::stof(a[2]), std::stof(a[3]));
+    move_camera(a.size() == 5 && a[4] == "right" ? DragButton::right : DragButton::left, to - from);
+  } else if (c.verb == "scroll") {
+    if (!state_.free_camera) to_scene_camera();
+    state_.free_camera = true;
+    orbit_.zoom(std::stof(a[0]));
+  } else if (c.verb == "screenshot") {
+    screenshots_.push_back({a[0], a.size() == 2, fmt::format("{}:{}", c.line, a[0])});
+  } else if (c.verb == "camera") {
+    const int index = state_.scene->find_camera(a[0]);
+    if (index < 0) {
+      error = fmt::format("the scene has no camera \"{}\"", a[0]);
+      return false;
+    }
+    state_.scene_camera = index;
+    to_scene_camera();
+  } else if (c.verb == "model") {
+    for (const ModelInfo& m : models())
+      if (a[0] == m.name) set_model(m.model);
+  } else if (c.verb == "set") {
+    LocalOptions& o = state_.local;
+    if (a[0] == "exposure") {
+      state_.exposure = std::stof(a[1]);
+    } else {
+      bool* flags[] = {&o.ambient, &o.diffuse, &o.specular, &o.emission, &o.textures, &o.blinn,
+                       &state_.show_panel, &state_.show_inspector};
+      const char* names[] = {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector"};
+      for (size_t i = 0; i < std::size(names); ++i)
+        if (a[0] == names[i]) *flags[i] = a[1] == "on";
+    }
+  } else if (c.verb == "resize") {
+    glfwSetWindowSize(window_.handle(), std::stoi(a[0]), std::stoi(a[1]));
+  } else if (c.verb == "load") {
+    load(a[0]);
+  } else if (c.verb == "reload") {
+    load(state_.scene_path);
+  } else if (c.verb == "dump-inspector") {
+    if (!reading_) {
+      error = "the inspector shows nothing: click an object in the picture first";
+      return false;
+    }
+    std::ofstream out(a[0]);
+    out << to_json(*state_.scene, *reading_).dump(2) << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the inspector's values", a[0]);
+      return false;
+    }
+  } else if (c.verb == "quit") {
+    quit_ = true;
+  }
+  return true;
+}
+
+// ---- [the frame] -------------------------------------------------------------------------------
+void Viewer::draw_picture(const Layout& l) {
+  const glm::ivec2 size = l.view_pixels;
+  if (size.x <= 0 || size.y <= 0) return;
+  if (!picture_ || picture_->width() != size.x || picture_->height() != size.y)
+    picture_ = std::make_unique<gl::Framebuffer>(size.x, size.y);
+  const Camera camera = current_camera();
+  picture_->bind();
+  renderer_->draw(camera, size.x, size.y, state_.local);
+  update_inspector(l, camera);
+
+  // The display pass: radiance -> exposure -> sRGB, pixel for pixel into the window.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(l.view_gl_origin.x, l.view_gl_origin.y, size.x, size.y);
+  glDisable(GL_DEPTH_TEST);
+  display_.use();
+  display_.set("u_radiance", 0);
+  display_.set("u_scale", std::exp2(state_.exposure));
+  display_.set("u_origin", glm::vec2(l.view_gl_origin));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, picture_->colour_texture());
+  glBindVertexArray(empty_vertex_array_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+}
+
+void Viewer::update_inspector(const Layout& l, const Camera& camera) {
+  if (!pick_) return;
+  // The camera or the picture's size changed: the clicked pixel now shows another point.
+  if (picked_size_ != l.view_pixels || picked_with_.to_world != camera.to_world) {
+    const glm::ivec2 pixel = glm::min(glm::ivec2(pick_->x, pick_->y), l.view_pixels - 1);
+    pick_ = picker_->pick(camera, l.view_pixels.x, l.view_pixels.y, pixel.x, pixel.y);
+    picked_with_ = camera;
+    picked_size_ = l.view_pixels;
+    picture_->bind();
+    if (!pick_) {
+      reading_.reset();
+      return;
+    }
+  }
+  reading_ = read_terms(*state_.scene, renderer_->area_lights(), *pick_, state_.local);
+  float rgba[4] = {};
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(pick_->x, l.view_pixels.y - 1 - pick_->y, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+  reading_->gl_pixel = Rgb(rgba[0], rgba[1], rgba[2]);
+}
+
+void Viewer::take_screenshots(const Layout& l) {
+  for (const PendingScreenshot& shot : screenshots_) {
+    try {
+      if (shot.with_panel) save_window(l.framebuffer.x, l.framebuffer.y, shot.path);
+      else if (picture_) save_picture(*picture_, shot.path, state_.exposure);
+      state_.note = fmt::format("saved {}", shot.path.string());
+      fmt::print("{}\n", state_.note);
+    } catch (const Error& error) {
+      state_.note = error.what();
+      if (!shot.origin.empty() && failure_.empty()) failure_ = error.what();
+      fmt::print(stderr, "luz: {}\n", error.what());
+    }
+  }
+  screenshots_.clear();
+}
+
+void Viewer::frame() {
+  // Requests the panel made during the last frame.
+  if (state_.emitters_changed) {
+    state_.emitters_changed = false;
+    state_.scene->find_area_lights();
+    rebuild_renderer();
+  }
+  if (state_.reload) {
+    state_.reload = false;
+    load(state_.scene_path);
+  }
+  if (state_.back_to_scene_camera) {
+    state_.back_to_scene_camera = false;
+    to_scene_camera();
+  }
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  if (scripted_click_frames_ > 0) {  // a script's click on the panel
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(scripted_click_at_.x, scripted_click_at_.y);
+    io.MouseDown[0] = scripted_click_frames_-- == 2;
+  }
+  ImGui::NewFrame();
+  const Layout l = layout();
+  if (state_.show_panel) draw_panel(state_, l.panel, l.window.y - l.status);
+  draw_windows(l);
+  ImGui::Render();
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  draw_picture(l);
+  glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  take_screenshots(l);
+  window_.swap();
+}
+
+int Viewer::run() {
+  auto last = std::chrono::steady_clock::now();
+  while (!window_.should_close() && !quit_) {
+    window_.poll();
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last).count();
+    last = now;
+    state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * seconds;  // smoothed for reading
+    if (script_) {
+      std::string error;
+      if (!script_->step(*this, error)) {
+        fmt::print(stderr, "luz: {}\n", error);
+        return 1;
+      }
+    }
+    fly(float(std::min(seconds, 0.1)));
+    frame();
+    if (!failure_.empty()) return 1;
+  }
+  return 0;
+}
+
+// ---- [status, help and error windows] ------------------------------------------------------------
+void Viewer::draw_windows(const Layout& l) {
+  const Scene& scene = *state_.scene;
+  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar;
+
+  // The status line: model, frame time, triangles, lights.
+  ImGui::SetNextWindowPos(ImVec2(0, l.window.y - l.status));
+  ImGui::SetNextWindowSize(ImVec2(l.window.x, l.status));
+  ImGui::Begin("status", nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const int lights = int(std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& x) { return x.enabled; }));
+  const std::string camera = state_.free_camera ? "free camera (C: back)" : scene.cameras[size_t(state_.scene_camera)].name;
+  ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s", info(state_.model).label,
+              state_.frame_ms, scene.triangle_count(), lights, scene.area_lights.size(), camera.c_str(),
+              state_.note.c_str());
+  ImGui::End();
+
+  if (pick_ && reading_ && state_.show_inspector) {
+    ImGui::SetNextWindowPos(ImVec2(l.window.x - 8.0f * ui_scale_, 8.0f * ui_scale_), ImGuiCond_Always, ImVec2(1, 0));
+    draw_inspector(scene, *reading_, state_.show_inspector);
+    // A cross on the inspected pixel (drawn over the picture, never into it).
+    const glm::vec2 at = l.window_of(glm::ivec2(pick_->x, pick_->y));
+    const float r = 7.0f * ui_scale_;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddLine(ImVec2(at.x - r, at.y), ImVec2(at.x + r, at.y), IM_COL32(255, 60, 200, 255), 2.0f);
+    draw->AddLine(ImVec2(at.x, at.y - r), ImVec2(at.x, at.y + r), IM_COL32(255, 60, 200, 255), 2.0f);
+  }
+
+  if (state_.show_help) {
+    ImGui::SetNextWindowPos(ImVec2(l.view_origin.x + 0.5f * (l.window.x - l.view_origin.x), 0.45f * l.window.y),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys (F1)", &state_.show_help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+      auto row = [](const char* keys, const char* what) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(keys);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(what);
+      };
+      for (const Shortcut& s : shortcuts()) row(s.keys, s.what);
+      row("left drag", "orbit around the scene");
+      row("right drag", "pan");
+      row("wheel", "zoom");
+      row("left click", "inspect the pixel: each term's value");
+      row("drop a file", "load a .gltf / .glb scene");
+      ImGui::EndTable();
+    }
+    ImGui::End();
+  }
+
+  if (!state_.error.empty()) {
+    ImGui::SetNextWindowPos(ImVec2(l.view_origin.x + 0.5f * (l.window.x - l.view_origin.x), 0.5f * l.window.y),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(0.9f * (l.window.x - l.view_origin.x), l.window.y));
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
+    ImGui::Begin("The scene did not load", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushTextWrapPos(0.85f * (l.window.x - l.view_origin.x));
+    ImGui::TextUnformatted(state_.error.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::TextDisabled("Still showing %s. Fix the file and press R, or drop another.",
+                        state_.scene_path.filename().string().c_str());
+    if (ImGui::Button("OK")) state_.error.clear();
+    ImGui::End();
+    ImGui::PopStyleColor(2);
+  }
+}
 
 }  // namespace
 
-int run_viewer(const std::string& scene_path) {
+// ---- [run_viewer] ------------------------------------------------------------------------------
+int run_viewer(const ViewerSettings& settings) {
   try {
-    io::LoadedScene loaded = io::load_gltf(scene_path);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
-    const Scene& scene = loaded.scene;
-    const Camera& camera = scene.cameras.front();
-
-    gl::WindowContext window(960, int(960 / (camera.aspect > 0 ? camera.aspect : 4.0f / 3.0f)),
-                             "Luz - " + scene_path);
-    KeyQueue keys;
-    glfwSetWindowUserPointer(window.handle(), &keys);
-    glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int) {
-      if (action == GLFW_PRESS) static_cast<KeyQueue*>(glfwGetWindowUserPointer(w))->pending = key;
-    });
-
-    LocalRenderer renderer(scene);
-    LocalOptions options;
-    bool quit = false;
-    fmt::print("keys: 1 flat, 2 Gouraud, 3 Phong; A/D/S ambient/diffuse/specular; B Blinn; Esc quit\n");
-    while (!window.should_close() && !quit) {
-      window.poll();
-      if (keys.pending >= 0) apply_key(keys.pending, options, quit);
-      keys.pending = -1;
-      const glm::ivec2 size = window.framebuffer_size();
-      if (size.x > 0 && size.y > 0) renderer.draw(camera, size.x, size.y, options);
-      window.swap();
-    }
-    return 0;
+    io::LoadedScene loaded = io::load_gltf(settings.scene);
+    Viewer viewer(std::move(loaded), settings.scene, settings);
+    return viewer.run();
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());
     return 1;

@@ -1,9 +1,21 @@
 #pragma once
-// The window: the scene in a local model, on the scene's camera. Returns the exit code.
+// The classroom viewer: the scene in a local model in a resizable window, the panel, the
+// inspector, the shortcuts and the scripted runs. Returns the exit code (0; 1 when the scene
+// cannot be loaded, there is no window, or a script command fails).
+#include <optional>
 #include <string>
+
+#include "app/script.h"
 
 namespace luz::app {
 
-int run_viewer(const std::string& scene);
+struct ViewerSettings {
+  std::string scene;
+  std::optional<Script> script;  // `--script FILE`, already checked
+  int width = 0;                 // `--size WxH`: the window, in window coordinates; 0: default
+  int height = 0;
+};
+
+int run_viewer(const ViewerSettings& settings);
 
 }  // namespace luz::app

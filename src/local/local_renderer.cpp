@@ -158,6 +158,8 @@ LocalRenderer::~LocalRenderer() = default;
 
 const std::vector<std::string>& LocalRenderer::warnings() const { return impl_->warnings; }
 
+const std::vector<AreaLight>& LocalRenderer::area_lights() const { return impl_->area_lights; }
+
 // ---- [uniforms] --------------------------------------------------------------------------------
 void LocalRenderer::Impl::set_lights(gl::Program& p) {
   int count = 0, enabled = 0;

@@ -36,6 +36,10 @@ public:
   // hold, see local_renderer.cpp); the caller prints or shows them. Each is reported once.
   const std::vector<std::string>& warnings() const;
 
+  // The emissive triangles as the shaders receive them (merged when there are more than 64),
+  // for the CPU twin of the formula (local_terms.h).
+  const std::vector<AreaLight>& area_lights() const;
+
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,0 +1,187 @@
+// Sections: [evaluation, as each shading model does it] [json] [the window]
+#include "app/inspector.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+namespace luz::app {
+namespace {
+
+constexpr float degrees = 57.29577951f;
+
+const Material& material_of(const Scene& scene, const Pick& pick) {
+  static const Material fallback;
+  const int m = scene.meshes[size_t(pick.mesh)].material;
+  return m >= 0 && size_t(m) < scene.materials.size() ? scene.materials[size_t(m)] : fallback;
+}
+
+// kd's texture at uv, bilinear and repeating like the GL sampler at its finest mip level (the
+// GPU also blends mip levels far away, so there the two differ slightly).
+Rgb sample_texture(const Texture& texture, glm::vec2 uv) {
+  const float x = uv.x * float(texture.width) - 0.5f, y = uv.y * float(texture.height) - 0.5f;
+  const float fx = std::floor(x), fy = std::floor(y);
+  const float tx = x - fx, ty = y - fy;
+  auto texel = [&](float px, float py) {
+    const int ix = ((int(px) % texture.width) + texture.width) % texture.width;
+    const int iy = ((int(py) % texture.height) + texture.height) % texture.height;
+    return texture.texel(ix, iy);
+  };
+  return (1 - tx) * (1 - ty) * texel(fx, fy) + tx * (1 - ty) * texel(fx + 1, fy) +
+         (1 - tx) * ty * texel(fx, fy + 1) + tx * ty * texel(fx + 1, fy + 1);
+}
+
+}  // namespace
+
+// ---- [evaluation, as each shading model does it] -----------------------------------------------
+InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_lights,
+                            const Pick& pick, const LocalOptions& options) {
+  InspectorReading reading;
+  reading.pick = pick;
+  reading.shading = options.shading;
+  const Mesh& mesh = scene.meshes[size_t(pick.mesh)];
+  const Material& material = material_of(scene, pick);
+  const uint32_t* index = &mesh.indices[3 * size_t(pick.triangle)];
+  const glm::vec3 eye = pick.eye;
+  auto evaluate = [&](const glm::vec3& P, const glm::vec3& N) {
+    return evaluate_terms(scene, material, P, N, glm::normalize(eye - P), options, area_lights);
+  };
+  glm::vec2 uv = pick.uv;
+  // gl_FrontFacing: the triangle's winding is counter-clockwise on screen, i.e. its face normal
+  // points to the eye.
+  reading.emitting_side = glm::dot(pick.face, eye - pick.P) > 0.0f;
+
+  switch (options.shading) {
+    case Shading::phong: {  // phong.frag: N interpolated, turned to the viewer's side
+      glm::vec3 N = pick.N;
+      if (glm::dot(pick.face, N) * glm::dot(pick.face, eye - pick.P) < 0.0f) N = -N;
+      reading.terms = evaluate(pick.P, N);
+      reading.where = "Phong: the formula at this pixel, with the interpolated normal";
+      break;
+    }
+    case Shading::gouraud: {  // gouraud.vert/.frag: both sides per vertex, interpolated
+      const bool back = glm::dot(pick.face, pick.N) * glm::dot(pick.face, eye - pick.P) < 0.0f;
+      TermValues at[3];
+      for (int i = 0; i < 3; ++i) {
+        const glm::vec3 N = glm::normalize(mesh.normals[index[i]]);
+        at[i] = evaluate(mesh.positions[index[i]], back ? -N : N);
+        at[i].ambient = evaluate(mesh.positions[index[i]], N).ambient;  // the front side's
+      }
+      reading.terms = blend(at[0], at[1], at[2], pick.barycentric);
+      reading.where = "Gouraud: the formula at the 3 vertices, interpolated (angles too)";
+      break;
+    }
+    case Shading::flat: {  // flat.geom: once at the centroid, face normal toward the eye
+      const glm::vec3 middle = (mesh.positions[index[0]] + mesh.positions[index[1]] +
+                                mesh.positions[index[2]]) / 3.0f;
+      glm::vec3 N = pick.face;
+      if (glm::dot(N, eye - middle) < 0.0f) N = -N;
+      reading.terms = evaluate(middle, N);
+      if (!mesh.uvs.empty())
+        uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
+      reading.where = "flat: the formula once, at the triangle's centroid with its face normal";
+      break;
+    }
+  }
+  if (options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
+    reading.kd_texture = sample_texture(scene.textures[size_t(material.kd_texture)], uv);
+  reading.sum = radiance(reading.terms, material, options, reading.kd_texture, reading.emitting_side);
+  return reading;
+}
+
+// ---- [json] ------------------------------------------------------------------------------------
+nlohmann::json to_json(const Scene& scene, const InspectorReading& r) {
+  auto rgb = [](const Rgb& c) { return nlohmann::json::array({c.r, c.g, c.b}); };
+  const Material& material = material_of(scene, r.pick);
+  nlohmann::json lights = nlohmann::json::array();
+  for (const LightTerm& t : r.terms.lights)
+    lights.push_back({{"name", t.name}, {"lit", t.lit}, {"theta_deg", t.theta * degrees},
+                      {"alpha_deg", t.alpha * degrees}, {"d", t.d}, {"f_att", t.f_att},
+                      {"spot", t.spot}, {"IL", rgb(t.IL)}, {"I_D", rgb(t.diffuse)},
+                      {"I_S", rgb(t.specular)}});
+  return {{"pixel", {r.pick.x, r.pick.y}},
+          {"mesh", scene.meshes[size_t(r.pick.mesh)].name},
+          {"triangle", r.pick.triangle},
+          {"material", material.name},
+          {"shading", to_string(r.shading)},
+          {"P", {r.pick.P.x, r.pick.P.y, r.pick.P.z}},
+          {"N", {r.pick.N.x, r.pick.N.y, r.pick.N.z}},
+          {"I_A", rgb(r.terms.ambient)},
+          {"I_D", rgb(r.terms.diffuse)},
+          {"I_S", rgb(r.terms.specular)},
+          {"kd_texture", rgb(r.kd_texture)},
+          {"Le", rgb(r.emitting_side ? material.emission : Rgb(0.0f))},
+          {"lights", lights},
+          {"sum", rgb(r.sum)},
+          {"gl_pixel", rgb(r.gl_pixel)}};
+}
+
+// ---- [the window] ------------------------------------------------------------------------------
+namespace {
+
+void rgb_cell(const Rgb& c) { ImGui::Text("%.4g %.4g %.4g", double(c.r), double(c.g), double(c.b)); }
+
+}  // namespace
+
+void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
+  const Mesh& mesh = scene.meshes[size_t(r.pick.mesh)];
+  const Material& material = material_of(scene, r.pick);
+  ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
+  if (!ImGui::Begin("Inspector", &open, ImGuiWindowFlags_NoFocusOnAppearing)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::Text("pixel (%d, %d): %s, triangle %d, material \"%s\"", r.pick.x, r.pick.y,
+              mesh.name.c_str(), r.pick.triangle, material.name.c_str());
+  ImGui::Text("P = (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)", double(r.pick.P.x),
+              double(r.pick.P.y), double(r.pick.P.z), double(r.pick.N.x), double(r.pick.N.y),
+              double(r.pick.N.z));
+  ImGui::TextDisabled("%s", r.where.c_str());
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (ImGui::BeginTable("terms", 7, flags)) {
+    for (const char* heading : {"light", "theta", "alpha", "d", "f_att", "I_D", "I_S"})
+      ImGui::TableSetupColumn(heading);
+    ImGui::TableHeadersRow();
+    for (const LightTerm& t : r.terms.lights) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      if (t.lit) ImGui::TextUnformatted(t.name.c_str());
+      else ImGui::TextDisabled("%s (behind)", t.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f°", double(t.theta * degrees));
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f°", double(t.alpha * degrees));
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", double(t.d));
+      ImGui::TableNextColumn();
+      ImGui::Text("%.4g", double(t.f_att));
+      ImGui::TableNextColumn();
+      rgb_cell(t.diffuse);
+      ImGui::TableNextColumn();
+      rgb_cell(t.specular);
+    }
+    ImGui::EndTable();
+  }
+  if (ImGui::BeginTable("sum", 2, flags)) {
+    auto row = [](const char* name, const Rgb& value) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      ImGui::TableNextColumn();
+      rgb_cell(value);
+    };
+    row("I_A = Ia ka", r.terms.ambient);
+    row("sum I_D", r.terms.diffuse);
+    if (r.kd_texture != Rgb(1.0f)) row("kd texture", r.kd_texture);
+    row("sum I_S", r.terms.specular);
+    if (r.emitting_side && material.is_emissive()) row("Le", material.emission);
+    row("I (CPU, the formula)", r.sum);
+    row("I (GPU, the pixel)", r.gl_pixel);
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+}  // namespace luz::app

@@ -1,0 +1,39 @@
+#pragma once
+// The inspector: for the pixel the teacher clicked, each term of the local formula (I_A, and I_D,
+// I_S per light with theta, alpha, d and f_att) and their sum, computed on the CPU by
+// local/local_terms.h the way the active shading model computes it, beside the value the GPU
+// drew there.
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/picking.h"
+#include "core/scene.h"
+#include "local/local_options.h"
+#include "local/local_terms.h"
+
+namespace luz::app {
+
+struct InspectorReading {
+  Pick pick;
+  Shading shading = Shading::phong;
+  std::string where;              // how the shading model evaluates this pixel, one sentence
+  TermValues terms;
+  Rgb kd_texture{1.0f};           // kd's texture factor at the pixel (1 without a texture)
+  bool emitting_side = false;     // the front side of the triangle faces the viewer
+  Rgb sum{0.0f};                  // I = I_A + I_D * texture + I_S (+ Le)
+  Rgb gl_pixel{0.0f};             // what the GPU drew at the pixel (linear radiance)
+};
+
+// Evaluates the terms at `pick` as `options.shading` does (Phong: at the pixel; Gouraud: at the
+// triangle's vertices, interpolated; flat: once at the centroid with the face normal).
+InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_lights,
+                            const Pick& pick, const LocalOptions& options);
+
+nlohmann::json to_json(const Scene& scene, const InspectorReading& reading);
+
+// The inspector window (Dear ImGui). `open` goes false when the user closes it.
+void draw_inspector(const Scene& scene, const InspectorReading& reading, bool& open);
+
+}  // namespace luz::app

@@ -1,0 +1,225 @@
+// Sections: [the formula] [model sections] [lights] [material] [scene] [the panel]
+#include "app/panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+namespace luz::app {
+namespace {
+
+// ---- [the formula] -----------------------------------------------------------------------------
+// One colour per term, the same in the formula and in the term switches, so the class can match
+// the picture's change to the symbol that was switched.
+const ImVec4 ambient_colour(0.55f, 0.75f, 1.0f, 1.0f);
+const ImVec4 diffuse_colour(0.55f, 0.95f, 0.55f, 1.0f);
+const ImVec4 specular_colour(1.0f, 0.85f, 0.4f, 1.0f);
+const ImVec4 emission_colour(1.0f, 0.6f, 0.8f, 1.0f);
+
+// A piece of formula on the current line: coloured when its term is on, greyed when off.
+void piece(const char* text, bool on, const ImVec4& colour) {
+  ImGui::SameLine(0.0f, 0.0f);
+  if (on) ImGui::TextColored(colour, "%s", text);
+  else ImGui::TextDisabled("%s", text);
+}
+
+void plain(const char* text) {
+  ImGui::SameLine(0.0f, 0.0f);
+  ImGui::TextUnformatted(text);
+}
+
+bool any_classroom_attenuation(const Scene& scene) {
+  return std::any_of(scene.lights.begin(), scene.lights.end(),
+                     [](const Light& l) { return l.attenuation.classroom; });
+}
+
+// A checkbox in the colour of its term.
+bool term_checkbox(const char* label, bool* value, const ImVec4& colour) {
+  ImGui::PushStyleColor(ImGuiCol_CheckMark, colour);
+  const bool changed = ImGui::Checkbox(label, value);
+  ImGui::PopStyleColor();
+  return changed;
+}
+
+// ---- [model sections] --------------------------------------------------------------------------
+// Flat, Gouraud and Phong share the formula and its switches; they differ in where it is
+// evaluated, which the section says.
+void local_section(ViewerState& state) {
+  LocalOptions& o = state.local;
+  const char* where = o.shading == Shading::flat      ? "once per triangle, at its centroid, face normal"
+                      : o.shading == Shading::gouraud ? "per vertex, colours interpolated"
+                                                      : "per pixel, normals interpolated";
+  ImGui::TextDisabled("evaluated %s", where);
+  ImGui::Spacing();
+  draw_local_formula(o, *state.scene);
+  ImGui::Spacing();
+  term_checkbox("ambient I_A  [A]", &o.ambient, ambient_colour);
+  term_checkbox("diffuse I_D  [D]", &o.diffuse, diffuse_colour);
+  term_checkbox("specular I_S  [S]", &o.specular, specular_colour);
+  term_checkbox("emission Le  [E]", &o.emission, emission_colour);
+  ImGui::Checkbox("kd texture  [T]", &o.textures);
+  int blinn = o.blinn ? 1 : 0;
+  ImGui::TextUnformatted("cos(α):");
+  ImGui::SameLine();
+  ImGui::RadioButton("Phong R·V", &blinn, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
+  o.blinn = blinn == 1;
+}
+
+struct ModelSection {
+  Model model;
+  void (*draw)(ViewerState&);  // nullptr: the model has not landed yet
+};
+
+// A model that lands adds its line here (and sets `available` in viewer_state.cpp).
+constexpr ModelSection sections[] = {
+    {Model::flat, local_section},   {Model::gouraud, local_section}, {Model::phong, local_section},
+    {Model::whitted, nullptr},      {Model::radiosity, nullptr},     {Model::hybrid, nullptr},
+};
+
+void model_header(ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int key = 1;
+  for (const ModelInfo& m : models()) {
+    ImGui::BeginDisabled(!m.available);
+    const std::string label = fmt::format("{} [{}]", m.label, key);
+    if (ImGui::RadioButton(label.c_str(), state.model == m.model)) {
+      state.model = m.model;
+      if (m.model == Model::flat) state.local.shading = Shading::flat;
+      if (m.model == Model::gouraud) state.local.shading = Shading::gouraud;
+      if (m.model == Model::phong) state.local.shading = Shading::phong;
+    }
+    ImGui::EndDisabled();
+    if (key++ % 3 != 0) ImGui::SameLine();
+  }
+  for (const ModelSection& section : sections)
+    if (section.model == state.model) {
+      if (section.draw) section.draw(state);
+      else ImGui::TextDisabled("%s: not available yet", info(state.model).label);
+    }
+}
+
+// ---- [lights] ----------------------------------------------------------------------------------
+void lights_header(ViewerState& state) {
+  Scene& scene = *state.scene;
+  if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (scene.lights.empty()) ImGui::TextDisabled("no punctual lights");
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    Light& light = scene.lights[i];
+    LightEdit& edit = state.light_edits[i];
+    ImGui::PushID(int(i));
+    ImGui::Checkbox("##on", &light.enabled);
+    ImGui::SameLine();
+    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), to_string(light.type))) {
+      bool changed = ImGui::ColorEdit3("colour", &edit.colour.r);
+      changed |= ImGui::DragFloat(light.type == LightType::directional ? "E (W/m²)" : "I (W/sr)",
+                                  &edit.intensity, 0.1f + 0.01f * edit.intensity, 0.0f, 1e6f, "%.3g");
+      if (changed) light.intensity = edit.colour * edit.intensity;
+      if (light.type != LightType::directional) {
+        ImGui::DragFloat3("position", &light.position.x, 0.01f, 0.0f, 0.0f, "%.3f");
+        int mode = light.attenuation.classroom ? 1 : 0;
+        ImGui::Combo("f_att", &mode, "1/d²\0" "1/(c0 + c1 d + c2 d²)\0");
+        light.attenuation.classroom = mode == 1;
+        ImGui::BeginDisabled(!light.attenuation.classroom);
+        ImGui::DragFloat3("c0 c1 c2", &light.attenuation.c.x, 0.01f, 0.0f, 100.0f, "%.3f");
+        light.attenuation.c = glm::max(light.attenuation.c, glm::vec3(0.0f));
+        if (light.attenuation.c == glm::vec3(0.0f)) light.attenuation.c.x = 1e-3f;  // f_att finite
+        ImGui::EndDisabled();
+      }
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (!scene.area_lights.empty())
+    ImGui::TextDisabled("%zu emissive triangles light the scene (their Le: Material)",
+                        scene.area_lights.size());
+}
+
+// ---- [material] --------------------------------------------------------------------------------
+void material_header(ViewerState& state) {
+  Scene& scene = *state.scene;
+  if (!ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (state.selected_material < 0 || size_t(state.selected_material) >= scene.materials.size()) {
+    ImGui::TextDisabled("click an object in the picture");
+    return;
+  }
+  Material& m = scene.materials[size_t(state.selected_material)];
+  if (ImGui::BeginCombo("##material", m.name.c_str())) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+      if (ImGui::Selectable(scene.materials[i].name.c_str(), int(i) == state.selected_material))
+        state.selected_material = int(i);
+    ImGui::EndCombo();
+  }
+  const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+  ImGui::ColorEdit3("ka", &m.ka.r, ImGuiColorEditFlags_Float);
+  ImGui::ColorEdit3("kd", &m.kd.r, ImGuiColorEditFlags_Float);
+  ImGui::ColorEdit3("ks", &m.ks.r, ImGuiColorEditFlags_Float);
+  ImGui::DragFloat("n", &m.shininess, 0.5f + 0.02f * m.shininess, 1.0f, 10000.0f, "%.1f",
+                   ImGuiSliderFlags_Logarithmic);
+  ImGui::ColorEdit3("kr", &m.kr.r, ImGuiColorEditFlags_Float);
+  ImGui::ColorEdit3("kt", &m.kt.r, ImGuiColorEditFlags_Float);
+  ImGui::DragFloat("ior", &m.ior, 0.005f, 1.0f, 3.0f, "%.3f");
+  if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
+  ImGui::TextDisabled("kr, kt and ior are used by Whitted's model");
+}
+
+// ---- [scene] -----------------------------------------------------------------------------------
+void scene_header(ViewerState& state) {
+  Scene& scene = *state.scene;
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+  ImGui::ColorEdit3("ambient Ia", &scene.ambient.r, hdr);
+  ImGui::ColorEdit3("background", &scene.background.r, hdr);
+  ImGui::SliderFloat("exposure (EV)", &state.exposure, -6.0f, 6.0f, "%+.1f");
+  const Camera& current = scene.cameras[size_t(state.scene_camera)];
+  const std::string preview = state.free_camera ? fmt::format("(moved from {})", current.name) : current.name;
+  if (ImGui::BeginCombo("camera", preview.c_str())) {
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+      if (ImGui::Selectable(scene.cameras[i].name.c_str(), !state.free_camera && int(i) == state.scene_camera)) {
+        state.scene_camera = int(i);
+        state.back_to_scene_camera = true;
+      }
+    ImGui::EndCombo();
+  }
+  if (ImGui::Button("scene camera [C]")) state.back_to_scene_camera = true;
+  ImGui::SameLine();
+  if (ImGui::Button("reload [R]")) state.reload = true;
+  ImGui::TextDisabled("%s", state.scene_path.filename().string().c_str());
+}
+
+}  // namespace
+
+void draw_local_formula(const LocalOptions& o, const Scene& scene) {
+  // I = Ia ka + sum_i IL_i [kd cos(theta) + ks cos^n(alpha)] + Le
+  ImGui::TextUnformatted("I =");
+  piece(" Ia·ka", o.ambient, ambient_colour);
+  plain(" + Σᵢ ILᵢ·[");
+  piece("kd·cos θ", o.diffuse, diffuse_colour);
+  plain(" + ");
+  piece(o.blinn ? "ks·(N·H)ⁿ" : "ks·(R·V)ⁿ", o.specular, specular_colour);
+  plain("]");
+  piece(" + Le", o.emission, emission_colour);
+  ImGui::TextDisabled("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s",
+                      any_classroom_attenuation(scene) ? "1/(c0 + c1 d + c2 d²)" : "1/d²");
+}
+
+// ---- [the panel] -------------------------------------------------------------------------------
+void draw_panel(ViewerState& state, float width, float height) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  ImGui::Begin("Luz", nullptr, flags);
+  model_header(state);
+  lights_header(state);
+  material_header(state);
+  scene_header(state);
+  ImGui::End();
+}
+
+}  // namespace luz::app

@@ -1,0 +1,16 @@
+#pragma once
+// The Dear ImGui panel: the model and its formula (disabled terms greyed), its switches, the
+// lights, the material of the clicked object and the scene-wide settings. It edits the
+// ViewerState in place. Each model draws its own section (see `models` in panel.cpp): a new
+// model adds one function.
+#include "app/viewer_state.h"
+
+namespace luz::app {
+
+// Draws the panel as a fixed window at the left of the window, `width` x `height` window units.
+void draw_panel(ViewerState& state, float width, float height);
+
+// The formula of the local models with each term coloured, or greyed when it is off.
+void draw_local_formula(const LocalOptions& options, const Scene& scene);
+
+}  // namespace luz::app

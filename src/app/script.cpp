@@ -1,0 +1,155 @@
+#include "app/script.h"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "app/shortcuts.h"
+#include "core/error.h"
+
+namespace luz::app {
+namespace {
+
+bool is_int(const std::string& text) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size();
+}
+
+bool is_number(const std::string& text) {
+  try {
+    size_t used = 0;
+    std::stof(text, &used);
+    return used == text.size();
+  } catch (...) {
+    return false;
+  }
+}
+
+// The arguments a verb takes: "" when they are right, else what is wrong.
+std::string check(const ScriptCommand& c) {
+  const auto& a = c.args;
+  auto count = [&](size_t low, size_t high) -> std::string {
+    if (a.size() < low || a.size() > high)
+      return low == high ? fmt::format("`{}` takes {} argument{}", c.verb, low, low == 1 ? "" : "s")
+                         : fmt::format("`{}` takes {} to {} arguments", c.verb, low, high);
+    return "";
+  };
+  if (c.verb == "key") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    int key = 0, mods = 0;
+    return parse_key(a[0], key, mods) ? "" : fmt::format("unknown key \"{}\"", a[0]);
+  }
+  if (c.verb == "click") {
+    if (auto e = count(2, 2); !e.empty()) return e;
+    return is_int(a[0]) && is_int(a[1]) ? "" : "`click X Y` takes whole window coordinates";
+  }
+  if (c.verb == "drag") {
+    if (auto e = count(4, 5); !e.empty()) return e;
+    for (size_t i = 0; i < 4; ++i)
+      if (!is_int(a[i])) return "`drag X0 Y0 X1 Y1 [left|right]` takes whole window coordinates";
+    if (a.size() == 5 && a[4] != "left" && a[4] != "right") return "the drag button is left or right";
+    return "";
+  }
+  if (c.verb == "scroll") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return is_number(a[0]) ? "" : "`scroll STEPS` takes a number";
+  }
+  if (c.verb == "wait") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return is_int(a[0]) && std::stoi(a[0]) >= 0 ? "" : "`wait N` takes a number of frames";
+  }
+  if (c.verb == "screenshot") {
+    if (auto e = count(1, 2); !e.empty()) return e;
+    if (a.size() == 2 && a[1] != "--with-panel") return fmt::format("unknown option \"{}\"", a[1]);
+    return a[0].ends_with(".png") ? "" : "screenshots are .png files";
+  }
+  if (c.verb == "camera") return count(1, 1);
+  if (c.verb == "model") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    for (const char* model : {"flat", "gouraud", "phong", "whitted", "radiosity", "hybrid"})
+      if (a[0] == model) return "";
+    return fmt::format("unknown model \"{}\" (flat, gouraud, phong, whitted, radiosity, hybrid)", a[0]);
+  }
+  if (c.verb == "set") {
+    if (auto e = count(2, 2); !e.empty()) return e;
+    if (a[0] == "exposure") return is_number(a[1]) ? "" : "`set exposure EV` takes a number";
+    for (const char* name : {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector"})
+      if (a[0] == name) return a[1] == "on" || a[1] == "off" ? "" : fmt::format("`set {}` takes on or off", name);
+    return fmt::format("cannot set \"{}\" (ambient, diffuse, specular, emission, textures, blinn, "
+                       "panel, inspector, exposure)", a[0]);
+  }
+  if (c.verb == "resize") {
+    if (auto e = count(2, 2); !e.empty()) return e;
+    return is_int(a[0]) && is_int(a[1]) && std::stoi(a[0]) > 0 && std::stoi(a[1]) > 0
+               ? "" : "`resize W H` takes a positive window size";
+  }
+  if (c.verb == "load") return count(1, 1);
+  if (c.verb == "dump-inspector") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return a[0].ends_with(".json") ? "" : "the inspector dumps to a .json file";
+  }
+  if (c.verb == "reload" || c.verb == "quit") return count(0, 0);
+  return fmt::format("unknown command \"{}\"", c.verb);
+}
+
+// Commands whose effect the next command must see drawn: they end the frame.
+bool ends_frame(const std::string& verb) {
+  return verb == "click" || verb == "drag" || verb == "screenshot" || verb == "resize" ||
+         verb == "load" || verb == "reload" || verb == "camera" || verb == "dump-inspector";
+}
+
+}  // namespace
+
+Script parse_script_text(const std::string& text, const std::filesystem::path& name) {
+  Script script;
+  script.file = name;
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    std::istringstream words(line);
+    ScriptCommand command;
+    command.line = number;
+    if (!(words >> command.verb) || command.verb.starts_with('#')) continue;
+    for (std::string word; words >> word;) command.args.push_back(word);
+    if (const std::string problem = check(command); !problem.empty())
+      throw Error(ErrorKind::usage, fmt::format("{}:{}: {}", name.string(), number, problem));
+    script.commands.push_back(std::move(command));
+  }
+  return script;
+}
+
+Script parse_script(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw Error(ErrorKind::usage, fmt::format("{}: cannot read the script", file.string()));
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_script_text(text.str(), file);
+}
+
+bool ScriptRunner::step(ScriptTarget& target, std::string& error) {
+  if (waiting_ > 0) {
+    --waiting_;
+    return true;
+  }
+  if (target.busy()) return true;
+  while (next_ < script_.commands.size()) {
+    const ScriptCommand& command = script_.commands[next_++];
+    if (command.verb == "wait") {
+      waiting_ = std::stoi(command.args[0]);
+      if (waiting_ > 0) --waiting_;  // this frame is the first of them
+      return true;
+    }
+    std::string problem;
+    if (!target.run(command, problem)) {
+      error = fmt::format("{}:{}: {}", script_.file.string(), command.line, problem);
+      return false;
+    }
+    if (ends_frame(command.verb)) return true;
+  }
+  return true;
+}
+
+}  // namespace luz::app

@@ -1,0 +1,69 @@
+#pragma once
+// `luz --script FILE`: a prepared demo, or a test, fed to the viewer one command per line:
+//   key 2 | key Shift+P           press a key (shortcuts.h names)
+//   click X Y                     left click at window coordinates (the inspector, the panel)
+//   drag X0 Y0 X1 Y1 [right]      drag with the left (orbit) or right (pan) button
+//   scroll STEPS                  the mouse wheel over the picture (zoom)
+//   wait N                        let N frames pass
+//   screenshot FILE.png [--with-panel]
+//   camera N|NAME                 a scene camera by index or name
+//   model flat|gouraud|phong|whitted|radiosity|hybrid
+//   set TERM on|off               ambient, diffuse, specular, emission, textures, blinn,
+//                                 panel, inspector
+//   set exposure EV
+//   resize W H                    the window, in window coordinates
+//   load FILE | reload            as dropping a file on the window / pressing R
+//   dump-inspector FILE.json      the inspector's values, for tests and handouts
+//   quit
+// Blank lines and lines starting with # are ignored. Paths are relative to the working folder.
+// The whole file is checked before the window opens: a bad line is an error naming FILE:LINE.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace luz::app {
+
+struct ScriptCommand {
+  int line = 0;
+  std::string verb;               // the first word
+  std::vector<std::string> args;  // the other words
+};
+
+struct Script {
+  std::filesystem::path file;
+  std::vector<ScriptCommand> commands;
+};
+
+// Throws luz::Error (kind usage) "FILE:LINE: what is wrong".
+Script parse_script(const std::filesystem::path& file);
+Script parse_script_text(const std::string& text, const std::filesystem::path& name);
+
+// What the viewer does for each command. Returns false (after setting `error`) when the command
+// cannot be done (a camera that does not exist, a screenshot that cannot be written).
+class ScriptTarget {
+public:
+  virtual ~ScriptTarget() = default;
+  virtual bool run(const ScriptCommand& command, std::string& error) = 0;
+  // True while an earlier command is still playing out over frames (a click's press and
+  // release); the runner waits for it.
+  virtual bool busy() const { return false; }
+};
+
+// Steps through a script, a few commands per frame: `wait N` ends the frame N times; commands
+// whose effect must be seen before the next one (a click, a screenshot, a resize, a load) end it
+// once.
+class ScriptRunner {
+public:
+  explicit ScriptRunner(Script script) : script_(std::move(script)) {}
+  // Runs the commands of this frame. False on the first failing command, `error` holding
+  // "FILE:LINE: ...".
+  bool step(ScriptTarget& target, std::string& error);
+  bool finished() const { return next_ >= script_.commands.size() && waiting_ == 0; }
+
+private:
+  Script script_;
+  size_t next_ = 0;
+  int waiting_ = 0;
+};
+
+}  // namespace luz::app

@@ -1,0 +1,105 @@
+#include "app/shortcuts.h"
+
+#include <algorithm>
+#include <cctype>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace luz::app {
+namespace {
+
+// Terms on the initials of their names (Ambient, Diffuse, Specular, Emission, Textures, Blinn);
+// flying on the arrows so that A, D and S stay the terms.
+constexpr Shortcut table[] = {
+    {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
+    {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
+    {GLFW_KEY_3, 0, "3", Action::model_3, "Phong shading"},
+    {GLFW_KEY_4, 0, "4", Action::model_4, "Whitted ray tracing (not available yet)"},
+    {GLFW_KEY_5, 0, "5", Action::model_5, "radiosity (not available yet)"},
+    {GLFW_KEY_6, 0, "6", Action::model_6, "hybrid (not available yet)"},
+    {GLFW_KEY_A, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
+    {GLFW_KEY_D, 0, "D", Action::toggle_diffuse, "diffuse term I_D on / off"},
+    {GLFW_KEY_S, 0, "S", Action::toggle_specular, "specular term I_S on / off"},
+    {GLFW_KEY_E, 0, "E", Action::toggle_emission, "emitted radiance Le on / off"},
+    {GLFW_KEY_T, 0, "T", Action::toggle_textures, "kd texture on / off"},
+    {GLFW_KEY_B, 0, "B", Action::toggle_blinn, "Phong's R.V / Blinn's N.H"},
+    {GLFW_KEY_F, 0, "F", Action::cycle_attenuation, "f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)"},
+    {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
+    {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
+    {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},
+    {GLFW_KEY_N, 0, "N", Action::next_camera, "next scene camera"},
+    {GLFW_KEY_R, 0, "R", Action::reload, "reload the scene file"},
+    {GLFW_KEY_P, 0, "P", Action::screenshot, "screenshot of the picture (PNG)"},
+    {GLFW_KEY_P, GLFW_MOD_SHIFT, "Shift+P", Action::screenshot_with_panel, "screenshot with the panel"},
+    {GLFW_KEY_TAB, 0, "Tab", Action::toggle_panel, "hide / show the panel"},
+    {GLFW_KEY_I, 0, "I", Action::toggle_inspector, "hide / show the inspector"},
+    {GLFW_KEY_F1, 0, "F1", Action::help, "this list"},
+    {GLFW_KEY_ESCAPE, 0, "Esc", Action::quit, "quit"},
+    {GLFW_KEY_UP, 0, "Up / Down", Action::none, "fly forward / back (Shift: faster)"},
+    {GLFW_KEY_LEFT, 0, "Left / Right", Action::none, "fly left / right"},
+    {GLFW_KEY_PAGE_UP, 0, "PageUp / PageDown", Action::none, "fly up / down"},
+};
+
+struct NamedKey {
+  const char* name;
+  int key;
+};
+
+constexpr NamedKey named_keys[] = {
+    {"esc", GLFW_KEY_ESCAPE},   {"escape", GLFW_KEY_ESCAPE}, {"tab", GLFW_KEY_TAB},
+    {"enter", GLFW_KEY_ENTER},  {"space", GLFW_KEY_SPACE},   {"left", GLFW_KEY_LEFT},
+    {"right", GLFW_KEY_RIGHT},  {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},
+    {"pageup", GLFW_KEY_PAGE_UP}, {"pagedown", GLFW_KEY_PAGE_DOWN},
+    {"+", GLFW_KEY_EQUAL},      {"=", GLFW_KEY_EQUAL},       {"-", GLFW_KEY_MINUS},
+};
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return out;
+}
+
+}  // namespace
+
+std::span<const Shortcut> shortcuts() { return table; }
+
+std::optional<Action> action_for(int key, int mods) {
+  // The entry with the most required modifiers that are all held wins (Shift+P over P).
+  const Shortcut* best = nullptr;
+  for (const Shortcut& s : table)
+    if (s.key == key && s.action != Action::none && (mods & s.mods) == s.mods &&
+        (!best || s.mods > best->mods))
+      best = &s;
+  if (!best) return std::nullopt;
+  return best->action;
+}
+
+bool parse_key(std::string_view text, int& key, int& mods) {
+  mods = 0;
+  std::string name = lower(text);
+  for (const auto& [prefix, mod] : {std::pair{"shift+", GLFW_MOD_SHIFT}, std::pair{"ctrl+", GLFW_MOD_CONTROL}})
+    if (name.starts_with(prefix) && name.size() > std::string_view(prefix).size()) {
+      mods |= mod;
+      name = name.substr(std::string_view(prefix).size());
+    }
+  if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0]))) {
+    // GLFW's key codes for letters and digits are their upper-case ASCII codes.
+    key = std::toupper(static_cast<unsigned char>(name[0]));
+    return true;
+  }
+  if (name.size() >= 2 && name[0] == 'f' && std::all_of(name.begin() + 1, name.end(), ::isdigit)) {
+    const int n = std::stoi(name.substr(1));
+    if (n < 1 || n > 12) return false;
+    key = GLFW_KEY_F1 + n - 1;
+    return true;
+  }
+  for (const NamedKey& named : named_keys)
+    if (name == named.name) {
+      key = named.key;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace luz::app
