@@ -136,12 +136,17 @@ TEST(Cli, CameraByIndex) {
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
-TEST(Cli, WithoutADisplayTheViewerRendersTheDefaultSceneHeadless) {
+// Issue 3: with no display the viewer says so, points to `luz render` and exits 1; it writes
+// nothing (setup.sh, not luz, renders a picture on a headless machine).
+TEST(Cli, WithoutADisplayTheViewerPointsToLuzRenderAndExitsWithOne) {
   test::ScratchDir dir;
-  const auto result = run_luz({}, {.cwd = dir.path, .no_display = true});
-  EXPECT_EQ(result.exit_code, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "no display"));
-  EXPECT_TRUE(fs::exists(dir / "cornell_box.png"));
+  for (const std::vector<std::string>& args : {std::vector<std::string>{}, std::vector<std::string>{cornell()}}) {
+    const auto result = run_luz(args, {.cwd = dir.path, .no_display = true});
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_TRUE(contains(result.output, "no display")) << result.output;
+    EXPECT_TRUE(contains(result.output, "luz render")) << result.output;
+    EXPECT_TRUE(fs::is_empty(dir.path));
+  }
 }
 
 }  // namespace

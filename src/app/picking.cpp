@@ -52,13 +52,10 @@ Picker::Picker(const Scene& scene) : scene_(scene) {
   for (const Mesh& mesh : scene.meshes) meshes_.emplace_back(mesh);
 }
 
-std::optional<Pick> Picker::pick(const Camera& camera, int width, int height, int x, int y) {
-  if (x < 0 || y < 0 || x >= width || y >= height) return std::nullopt;
+void Picker::draw_ids(const Camera& camera, int width, int height) {
   if (!target_ || target_->width() != width || target_->height() != height)
     target_ = std::make_unique<gl::Framebuffer>(width, height);
-
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  drawn_with_ = camera;
   target_->bind();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -89,6 +86,18 @@ std::optional<Pick> Picker::pick(const Camera& camera, int width, int height, in
     meshes_[m].draw();
   }
   glUseProgram(0);
+}
+
+std::optional<Pick> Picker::pick(const Camera& camera, int width, int height, int x, int y) {
+  if (x < 0 || y < 0 || x >= width || y >= height) return std::nullopt;
+  const bool same_view = target_ && target_->width() == width && target_->height() == height &&
+                         drawn_with_ && drawn_with_->to_world == camera.to_world &&
+                         drawn_with_->yfov == camera.yfov && drawn_with_->znear == camera.znear &&
+                         drawn_with_->zfar == camera.zfar;
+  GLint previous = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  if (!same_view) draw_ids(camera, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_->id());
 
   float id[4] = {};
   glReadBuffer(GL_COLOR_ATTACHMENT0);

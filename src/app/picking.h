@@ -44,10 +44,12 @@ public:
   std::optional<Pick> pick(const Camera& camera, int width, int height, int x, int y);
 
 private:
+  void draw_ids(const Camera& camera, int width, int height);
   const Scene& scene_;
   std::vector<gl::MeshBuffers> meshes_;
   gl::Program program_{{"pick.vert", "pick.frag"}};
   std::unique_ptr<gl::Framebuffer> target_;
+  std::optional<Camera> drawn_with_;  // the id buffer is redrawn only when the view changes
 };
 
 }  // namespace luz::app

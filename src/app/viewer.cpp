@@ -639,10 +639,15 @@ void Viewer::draw_windows(const Layout& l) {
   ImGui::End();
 
   if (pick_ && reading_ && state_.show_inspector) {
-    ImGui::SetNextWindowPos(ImVec2(l.window.x - 8.0f * ui_scale_, 8.0f * ui_scale_), ImGuiCond_Always, ImVec2(1, 0));
+    // In the corner of the picture farthest from the inspected pixel, so both stay in view.
+    const glm::vec2 at = l.window_of(glm::ivec2(pick_->x, pick_->y));
+    const float margin = 8.0f * ui_scale_;
+    const bool right = at.x > 0.5f * (l.view_origin.x + l.window.x), low = at.y > 0.5f * (l.window.y - l.status);
+    ImGui::SetNextWindowPos(ImVec2(right ? l.view_origin.x + margin : l.window.x - margin,
+                                   low ? margin : l.window.y - l.status - margin),
+                            ImGuiCond_Always, ImVec2(right ? 0.0f : 1.0f, low ? 0.0f : 1.0f));
     draw_inspector(scene, *reading_, state_.show_inspector);
     // A cross on the inspected pixel (drawn over the picture, never into it).
-    const glm::vec2 at = l.window_of(glm::ivec2(pick_->x, pick_->y));
     const float r = 7.0f * ui_scale_;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     draw->AddLine(ImVec2(at.x - r, at.y), ImVec2(at.x + r, at.y), IM_COL32(255, 60, 200, 255), 2.0f);

@@ -1,0 +1,243 @@
+// The viewer in a real window: tests/viewer/classroom.txt is played by the `viewer_script` CTest
+// fixture (tests/viewer/run_viewer_script.sh: Xvfb, Mesa's software GL); these tests check what
+// it left behind: screenshots with and without the panel, and the inspector's values as JSON.
+// They are skipped only when xvfb-run is missing (setup.sh installs it, so CI runs them).
+//
+// Tolerances, in 8-bit sRGB codes: "the same picture" allows 1 code (one rounding); the viewer
+// against `luz render` (two GL contexts, GLX and OSMesa, both llvmpipe) a mean difference of
+// at most 0.5 code with 99.5% of the values within 2 codes.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture ran the script
+constexpr int window_width = 1280, window_height = 760;  // the script's --size
+
+// An 8-bit sRGB picture, as the PNG holds it.
+struct Codes {
+  int width = 0, height = 0;
+  std::vector<int> values;  // r, g, b per pixel, row 0 at the top
+  int at(int x, int y, int c) const { return values[(size_t(y) * width + x) * 3 + c]; }
+};
+
+Codes codes(const fs::path& png) {
+  const Image image = io::read_image(png);  // decoded to linear; encode back to the codes
+  Codes out{image.width, image.height, {}};
+  for (const Rgb& p : image.pixels)
+    for (int c = 0; c < 3; ++c) out.values.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
+  return out;
+}
+
+nlohmann::json json_of(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+bool xvfb_available() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+class ViewerRun : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (!fs::exists(run_dir / "done")) {
+      if (!xvfb_available()) GTEST_SKIP() << "xvfb-run is missing: the viewer cannot be run headless";
+      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_script test)";
+    }
+  }
+  static fs::path file(const std::string& name) { return run_dir / name; }
+};
+
+// The fraction of the window's picture area (right of the panel) that differs by more than
+// `codes` from `picture`.
+double differing_in_picture_area(const Codes& window, const Codes& picture, int tolerance) {
+  const int left = window.width - picture.width;
+  size_t differing = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(window.at(left + x, y, c) - picture.at(x, y, c)) > tolerance) {
+          ++differing;
+          break;
+        }
+  return double(differing) / (double(picture.width) * picture.height);
+}
+
+size_t count_colour(const Codes& image, int r, int g, int b) {
+  size_t n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (std::abs(image.at(x, y, 0) - r) <= 3 && std::abs(image.at(x, y, 1) - g) <= 3 &&
+          std::abs(image.at(x, y, 2) - b) <= 3)
+        ++n;
+  return n;
+}
+
+TEST_F(ViewerRun, ThePanelIsBesideThePictureNotOverIt) {
+  const Codes window = codes(file("phong-panel.png"));
+  const Codes picture = codes(file("phong.png"));
+  ASSERT_EQ(window.width, window_width);
+  ASSERT_EQ(window.height, window_height);
+  ASSERT_LT(picture.width, window.width);  // the panel takes the left part
+  ASSERT_LT(picture.height, window.height);  // the status line the bottom
+  // The window's picture area is the scene-only screenshot (no panel, no inspector yet).
+  EXPECT_LT(differing_in_picture_area(window, picture, 1), 0.001);
+
+  // The panel area looks like a panel: mostly one flat background, with light text on it.
+  const int panel_width = window.width - picture.width;
+  std::map<int, size_t> colours;
+  size_t text = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < panel_width; ++x) {
+      const int r = window.at(x, y, 0), g = window.at(x, y, 1), b = window.at(x, y, 2);
+      ++colours[(r << 16) | (g << 8) | b];
+      if (r > 180 && g > 180 && b > 180) ++text;
+    }
+  size_t most = 0;
+  for (const auto& [colour, n] : colours) most = std::max(most, n);
+  const double area = double(panel_width) * picture.height;
+  EXPECT_GT(double(most) / area, 0.4) << "no flat panel background";
+  EXPECT_GT(double(text) / area, 0.005) << "no text on the panel";
+}
+
+TEST_F(ViewerRun, SwitchingOffTheSpecularTermTakesTheHighlightsAway) {
+  const Codes with = codes(file("phong.png")), without = codes(file("no-specular.png"));
+  ASSERT_EQ(with.values.size(), without.values.size());
+  size_t darker = 0, brighter = 0;
+  for (size_t i = 0; i < with.values.size(); ++i) {
+    if (without.values[i] > with.values[i] + 1) ++brighter;
+    if (without.values[i] < with.values[i] - 10) ++darker;
+  }
+  EXPECT_EQ(brighter, 0u);  // a term only adds light
+  EXPECT_GT(double(darker) / double(with.values.size()), 0.005);  // the highlights are gone
+
+  // The panel shows it too: the specular term is greyed in the formula and its box unticked.
+  const Codes panel_with = codes(file("phong-panel.png")), panel_without = codes(file("no-specular-panel.png"));
+  const int panel_width = with.width > 0 ? window_width - with.width : 0;
+  size_t changed = 0;
+  for (int y = 0; y < with.height; ++y)
+    for (int x = 0; x < panel_width; ++x)
+      if (panel_with.at(x, y, 0) != panel_without.at(x, y, 0)) ++changed;
+  EXPECT_GT(changed, 100u);
+}
+
+TEST_F(ViewerRun, TheInspectorShowsEachTermAndTheirSum) {
+  const nlohmann::json r = json_of(file("inspector.json"));
+  EXPECT_EQ(r["shading"], "phong");
+  EXPECT_EQ(r["material"].get<std::string>(), "ks0.60_n5");  // the 4th sphere of the top row
+  ASSERT_EQ(r["lights"].size(), 2u);
+  EXPECT_EQ(r["lights"][0]["name"], "key_light");
+  EXPECT_EQ(r["lights"][1]["name"], "fill_light");
+  for (int c = 0; c < 3; ++c) {
+    double diffuse = 0, specular = 0;
+    for (const auto& light : r["lights"]) {
+      diffuse += light["I_D"][c].get<double>();
+      specular += light["I_S"][c].get<double>();
+      const double d = light["d"], f_att = light["f_att"];
+      EXPECT_NEAR(f_att, 1.0 / (d * d), 1e-4 * f_att);  // the scene's physical attenuation
+      EXPECT_GE(light["theta_deg"].get<double>(), 0.0);
+      EXPECT_LE(light["theta_deg"].get<double>(), 90.0);
+    }
+    EXPECT_NEAR(r["I_D"][c].get<double>(), diffuse, 1e-5);
+    EXPECT_NEAR(r["I_S"][c].get<double>(), specular, 1e-5);
+    const double sum = r["I_A"][c].get<double>() + diffuse + specular;
+    EXPECT_NEAR(r["sum"][c].get<double>(), sum, 1e-5);
+    // The CPU formula and the GPU's pixel agree.
+    EXPECT_NEAR(r["gl_pixel"][c].get<double>(), sum, 0.01 * sum);
+  }
+  EXPECT_GT(r["I_S"][0].get<double>(), 0.05);  // the click was on a highlight
+
+  // The inspector window is drawn over the picture (in the window only, not in the picture).
+  const Codes window = codes(file("inspector-panel.png")), picture = codes(file("phong.png"));
+  EXPECT_GT(differing_in_picture_area(window, picture, 8), 0.05);
+}
+
+TEST_F(ViewerRun, AClickOnThePanelSwitchesToBlinn) {
+  const nlohmann::json phong = json_of(file("inspector.json")), blinn = json_of(file("blinn.json"));
+  const auto& a = phong["lights"][0];
+  const auto& b = blinn["lights"][0];
+  EXPECT_NEAR(a["theta_deg"].get<double>(), b["theta_deg"].get<double>(), 1e-3);  // the same point
+  // N.H's angle is about half R.V's near the mirror direction.
+  EXPECT_LT(b["alpha_deg"].get<double>(), a["alpha_deg"].get<double>() - 1.0);
+  EXPECT_GT(blinn["I_S"][0].get<double>(), phong["I_S"][0].get<double>());
+}
+
+TEST_F(ViewerRun, ModelsThatHaveNotLandedKeepTheCurrentOne) {
+  EXPECT_EQ(json_of(file("after-key-4.json"))["shading"], "phong");
+}
+
+TEST_F(ViewerRun, OrbitingMovesTheView) {
+  const Codes before = codes(file("phong.png")), moved = codes(file("moved.png"));
+  ASSERT_EQ(before.values.size(), moved.values.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < before.values.size(); ++i)
+    if (std::abs(before.values[i] - moved.values[i]) > 8) ++differing;
+  EXPECT_GT(double(differing) / double(before.values.size()), 0.05);
+}
+
+// The state the script left (scene camera after an orbit and C, Gouraud, no diffuse term) is what
+// `luz render --model gouraud --no-diffuse` draws at the screenshot's size.
+TEST_F(ViewerRun, TheScreenshotIsWhatLuzRenderMakesWithTheSameSettings) {
+  const Codes viewer = codes(file("gouraud-no-diffuse.png"));
+  test::ScratchDir dir;
+  const fs::path out = dir / "render.png";
+  const auto result = test::run_luz({"render", (test::scene_dir() / "phong_spheres.gltf").string(),
+                                     "--model", "gouraud", "--no-diffuse", "--size",
+                                     std::to_string(viewer.width) + "x" + std::to_string(viewer.height),
+                                     "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const Codes render = codes(out);
+  ASSERT_EQ(render.width, viewer.width);
+  ASSERT_EQ(render.height, viewer.height);
+  double total = 0;
+  size_t within = 0;
+  for (size_t i = 0; i < render.values.size(); ++i) {
+    const int difference = std::abs(render.values[i] - viewer.values[i]);
+    total += difference;
+    if (difference <= 2) ++within;
+  }
+  const double n = double(render.values.size());
+  EXPECT_LE(total / n, 0.5);
+  EXPECT_GE(double(within) / n, 0.995);
+
+  // And the comparison can tell settings apart: the Phong screenshot is another picture.
+  const Codes phong = codes(file("phong.png"));
+  double phong_total = 0;
+  for (size_t i = 0; i < render.values.size(); ++i) phong_total += std::abs(render.values[i] - phong.values[i]);
+  EXPECT_GT(phong_total / n, 2.0);
+}
+
+TEST_F(ViewerRun, ABrokenFileShowsItsErrorAndKeepsThePreviousScene) {
+  const Codes before = codes(file("phong.png")), after = codes(file("after-broken.png"));
+  ASSERT_EQ(before.values.size(), after.values.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < before.values.size(); ++i)
+    if (std::abs(before.values[i] - after.values[i]) > 1) ++differing;
+  EXPECT_LT(double(differing) / double(before.values.size()), 0.001);
+
+  // The error window's red title bar (0.6, 0.1, 0.1 in viewer.cpp) is in the window.
+  const size_t red_after = count_colour(codes(file("after-broken-panel.png")), 153, 25, 25);
+  const size_t red_before = count_colour(codes(file("phong-panel.png")), 153, 25, 25);
+  EXPECT_GT(red_after, red_before + 1000);
+  std::ifstream log(file("viewer.log"));
+  const std::string text((std::istreambuf_iterator<char>(log)), {});
+  EXPECT_NE(text.find("broken.gltf"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace luz

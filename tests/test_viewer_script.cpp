@@ -1,0 +1,117 @@
+// The viewer's script language and shortcut table, without a window: a bad line is refused
+// with FILE:LINE before anything opens, and the runner paces commands over frames.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/script.h"
+#include "app/shortcuts.h"
+#include "core/error.h"
+#include "support.h"
+
+namespace luz::app {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_script_text(text, "demo.txt");
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind, ErrorKind::usage);
+    return error.what();
+  }
+  return "";
+}
+
+TEST(ViewerScript, ParsesEveryCommand) {
+  const Script script = parse_script_text(
+      "# a demo\n\nkey 2\nkey Shift+P\nclick 400 300\ndrag 1 2 3 4 right\nscroll -2\nwait 3\n"
+      "screenshot a.png --with-panel\ncamera 0\nmodel whitted\nset diffuse off\nset exposure -1.5\n"
+      "resize 800 600\nload x.glb\nreload\ndump-inspector i.json\nquit\n",
+      "demo.txt");
+  ASSERT_EQ(script.commands.size(), 16u);
+  EXPECT_EQ(script.commands[0].verb, "key");
+  EXPECT_EQ(script.commands[0].line, 3);
+  EXPECT_EQ(script.commands[6].args, (std::vector<std::string>{"a.png", "--with-panel"}));
+}
+
+TEST(ViewerScript, BadLinesNameFileAndLine) {
+  EXPECT_EQ(error_of("wait 1\nfly away\n"), "demo.txt:2: unknown command \"fly\"");
+  EXPECT_EQ(error_of("key Hyper\n"), "demo.txt:1: unknown key \"Hyper\"");
+  EXPECT_EQ(error_of("\n\nclick 1\n"), "demo.txt:3: `click` takes 2 arguments");
+  EXPECT_EQ(error_of("screenshot a.jpg\n"), "demo.txt:1: screenshots are .png files");
+  EXPECT_NE(error_of("model cartoon\n").find("demo.txt:1: unknown model"), std::string::npos);
+  EXPECT_NE(error_of("set specular maybe\n").find("demo.txt:1:"), std::string::npos);
+  EXPECT_NE(error_of("wait -1\n").find("demo.txt:1:"), std::string::npos);
+}
+
+struct Recorder : ScriptTarget {
+  std::vector<std::string> done;
+  bool run(const ScriptCommand& command, std::string& error) override {
+    if (command.verb == "camera" && command.args[0] == "nowhere") {
+      error = "no camera \"nowhere\"";
+      return false;
+    }
+    done.push_back(command.verb);
+    return true;
+  }
+};
+
+TEST(ViewerScript, WaitAndScreenshotsEndTheFrame) {
+  ScriptRunner runner(parse_script_text("key 1\nkey S\nwait 2\nscreenshot a.png\nkey 3\nquit\n", "d.txt"));
+  Recorder target;
+  std::string error;
+  ASSERT_TRUE(runner.step(target, error));  // frame 1: both keys, then the wait's first frame
+  EXPECT_EQ(target.done, (std::vector<std::string>{"key", "key"}));
+  ASSERT_TRUE(runner.step(target, error));  // frame 2: still waiting
+  EXPECT_EQ(target.done.size(), 2u);
+  ASSERT_TRUE(runner.step(target, error));  // frame 3: the screenshot ends it
+  EXPECT_EQ(target.done.back(), "screenshot");
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(target.done, (std::vector<std::string>{"key", "key", "screenshot", "key", "quit"}));
+  EXPECT_TRUE(runner.finished());
+}
+
+TEST(ViewerScript, AFailingCommandNamesItsLine) {
+  ScriptRunner runner(parse_script_text("key 1\n\ncamera nowhere\n", "d.txt"));
+  Recorder target;
+  std::string error;
+  EXPECT_FALSE(runner.step(target, error));
+  EXPECT_EQ(error, "d.txt:3: no camera \"nowhere\"");
+}
+
+TEST(ViewerShortcuts, KeysMapToActions) {
+  int key = 0, mods = 0;
+  ASSERT_TRUE(parse_key("Shift+p", key, mods));
+  EXPECT_EQ(key, GLFW_KEY_P);
+  EXPECT_EQ(mods, GLFW_MOD_SHIFT);
+  EXPECT_EQ(action_for(GLFW_KEY_P, GLFW_MOD_SHIFT), Action::screenshot_with_panel);
+  EXPECT_EQ(action_for(GLFW_KEY_P, 0), Action::screenshot);
+  ASSERT_TRUE(parse_key("F1", key, mods));
+  EXPECT_EQ(action_for(key, mods), Action::help);
+  EXPECT_EQ(action_for(GLFW_KEY_4, 0), Action::model_4);
+  EXPECT_FALSE(action_for(GLFW_KEY_Z, 0).has_value());
+  // Every model and every term has its key, and no key does two things.
+  for (const Shortcut& a : shortcuts())
+    for (const Shortcut& b : shortcuts())
+      if (&a != &b && a.action != Action::none) {
+        EXPECT_FALSE(a.key == b.key && a.mods == b.mods) << a.keys;
+      }
+}
+
+TEST(ViewerCommand, ABadScriptIsAUsageErrorBeforeAnyWindow) {
+  test::ScratchDir dir;
+  const auto script = dir / "demo.txt";
+  FILE* f = fopen(script.c_str(), "w");
+  fputs("key 1\nwiggle\n", f);
+  fclose(f);
+  const auto result = test::run_luz({"--script", script.string()}, {.cwd = dir.path, .no_display = true});
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("demo.txt:2: unknown command \"wiggle\""), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace luz::app

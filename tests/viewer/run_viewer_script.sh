@@ -1,0 +1,37 @@
+#!/bin/sh
+# Runs the scripted viewer in a real window under Xvfb, through Mesa's software OpenGL, as CI
+# does: run_viewer_script.sh LUZ SCRIPT SCENE OUT_DIR
+# OUT_DIR is emptied first and receives the script's screenshots and inspector dumps, which
+# tests/test_viewer.cpp then checks. Exit 77 (CTest's skip) only when xvfb-run is missing.
+set -eu
+luz=$1 script=$2 scene=$3 out=$4
+if ! command -v xvfb-run >/dev/null 2>&1; then
+  echo "xvfb-run is missing (Debian: apt-get install xvfb xauth; ./setup.sh installs them): skipped"
+  exit 77
+fi
+rm -rf "$out"
+mkdir -p "$out"
+cd "$out"
+# A scene the viewer must refuse while keeping the one it shows.
+printf '{ "asset": { "version": "2.0" }, "meshes": [ {' > broken.gltf
+# xvfb-run -a can lose a race for a display number with another Xvfb starting at the same moment
+# (parallel CI jobs); the viewer then cannot open its display. Such a start is retried; any other
+# failure is the test's.
+attempt=1
+while :; do
+  status=0
+  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n $((100 + $$ % 400)) -s "-screen 0 1600x1200x24" \
+    "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 || status=$?
+  [ "$status" -eq 0 ] && break
+  if [ "$attempt" -lt 3 ] && grep -q "Failed to open display" viewer.log; then
+    echo "attempt $attempt: Xvfb was not reachable, retrying"
+    attempt=$((attempt + 1))
+    sleep 1
+    continue
+  fi
+  cat viewer.log
+  echo "the scripted viewer exited with $status"
+  exit 1
+done
+cat viewer.log
+touch done
