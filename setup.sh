@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Luz on a fresh Debian (bookworm or later): installs the Debian packages that are missing,
 # builds (Release) into build/, then
-#   ./setup.sh [SCENE]   runs luz (the viewer; with no display it renders headless to a PNG)
+#   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
 #   ./setup.sh test      runs the whole test suite with ctest
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -11,7 +11,7 @@ packages=(
   libgl-dev libosmesa6-dev libglfw3-dev libglm-dev
   libtinygltf-dev libopenimageio-dev libimgui-dev libstb-dev
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  libgtest-dev xvfb xauth
+  libgtest-dev xvfb xauth fonts-dejavu-core
 )
 
 missing=()
@@ -31,6 +31,12 @@ cmake --build build --parallel "$(nproc)"
 
 if [ "${1:-}" = test ]; then
   ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600
+elif [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
+  # The viewer needs a window; on a headless machine show that the build works with a picture.
+  scene=${1:-scenes/cornell_box.gltf}
+  out=$(basename "${scene%.*}").png
+  echo "setup: no display for the viewer; rendering $scene headless to $out instead"
+  ./build/luz render "$scene" --out "$out"
 else
   ./build/luz "$@"
 fi

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The README's pictures, made by `luz render` from the shipped scenes.
+# The README's pictures, made by `luz render` from the shipped scenes, and the viewer's
+# (docs/make_viewer_picture.sh).
 # Usage: docs/make_pictures.sh [LUZ_BINARY]   (default: build/luz)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,4 +14,5 @@ done
 "$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --out "$out/whitted-phong.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --blinn --size 480x360 -q --out "$out/phong_spheres-blinn.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --no-specular --size 480x360 -q --out "$out/phong_spheres-no-specular.png"
+"$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

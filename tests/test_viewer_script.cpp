@@ -28,13 +28,14 @@ std::string error_of(const std::string& text) {
 
 TEST(ViewerScript, ParsesEveryCommand) {
   const Script script = parse_script_text(
-      "# a demo\n\nkey 2\nkey Shift+P\nclick 400 300\ndrag 1 2 3 4 right\nscroll -2\nwait 3\n"
+      "# a demo\n\nkey 2\nkey Shift+P\nclick 400 300\ndrag 1 2 3 4 right\nscroll -2\nwait 3 # frames\n"
       "screenshot a.png --with-panel\ncamera 0\nmodel whitted\nset diffuse off\nset exposure -1.5\n"
       "resize 800 600\nload x.glb\nreload\ndump-inspector i.json\nquit\n",
       "demo.txt");
   ASSERT_EQ(script.commands.size(), 16u);
   EXPECT_EQ(script.commands[0].verb, "key");
   EXPECT_EQ(script.commands[0].line, 3);
+  EXPECT_EQ(script.commands[5].args, (std::vector<std::string>{"3"}));  // the comment is not an argument
   EXPECT_EQ(script.commands[6].args, (std::vector<std::string>{"a.png", "--with-panel"}));
 }
 

@@ -58,6 +58,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       glm::vec3 N = pick.N;
       if (glm::dot(pick.face, N) * glm::dot(pick.face, eye - pick.P) < 0.0f) N = -N;
       reading.terms = evaluate(pick.P, N);
+      reading.normal = N;
       reading.where = "Phong: the formula at this pixel, with the interpolated normal";
       break;
     }
@@ -70,6 +71,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
         at[i].ambient = evaluate(mesh.positions[index[i]], N).ambient;  // the front side's
       }
       reading.terms = blend(at[0], at[1], at[2], pick.barycentric);
+      reading.normal = back ? -pick.N : pick.N;
       reading.where = "Gouraud: the formula at the 3 vertices, interpolated (angles too)";
       break;
     }
@@ -79,6 +81,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       glm::vec3 N = pick.face;
       if (glm::dot(N, eye - middle) < 0.0f) N = -N;
       reading.terms = evaluate(middle, N);
+      reading.normal = N;
       if (!mesh.uvs.empty())
         uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
       reading.where = "flat: the formula once, at the triangle's centroid with its face normal";
@@ -107,7 +110,7 @@ nlohmann::json to_json(const Scene& scene, const InspectorReading& r) {
           {"material", material.name},
           {"shading", to_string(r.shading)},
           {"P", {r.pick.P.x, r.pick.P.y, r.pick.P.z}},
-          {"N", {r.pick.N.x, r.pick.N.y, r.pick.N.z}},
+          {"N", {r.normal.x, r.normal.y, r.normal.z}},
           {"I_A", rgb(r.terms.ambient)},
           {"I_D", rgb(r.terms.diffuse)},
           {"I_S", rgb(r.terms.specular)},
@@ -136,8 +139,8 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
   ImGui::Text("pixel (%d, %d): %s, triangle %d, material \"%s\"", r.pick.x, r.pick.y,
               mesh.name.c_str(), r.pick.triangle, material.name.c_str());
   ImGui::Text("P = (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)", double(r.pick.P.x),
-              double(r.pick.P.y), double(r.pick.P.z), double(r.pick.N.x), double(r.pick.N.y),
-              double(r.pick.N.z));
+              double(r.pick.P.y), double(r.pick.P.z), double(r.normal.x), double(r.normal.y),
+              double(r.normal.z));
   ImGui::TextDisabled("%s", r.where.c_str());
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
   if (ImGui::BeginTable("terms", 7, flags)) {

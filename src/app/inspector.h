@@ -19,6 +19,7 @@ struct InspectorReading {
   Pick pick;
   Shading shading = Shading::phong;
   std::string where;              // how the shading model evaluates this pixel, one sentence
+  glm::vec3 normal{0.0f};         // the normal the formula used, turned toward the viewer
   TermValues terms;
   Rgb kd_texture{1.0f};           // kd's texture factor at the pixel (1 without a texture)
   bool emitting_side = false;     // the front side of the triangle faces the viewer

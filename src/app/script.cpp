@@ -113,7 +113,8 @@ Script parse_script_text(const std::string& text, const std::filesystem::path& n
     ScriptCommand command;
     command.line = number;
     if (!(words >> command.verb) || command.verb.starts_with('#')) continue;
-    for (std::string word; words >> word;) command.args.push_back(word);
+    for (std::string word; words >> word && !word.starts_with('#');)  // # starts a comment
+      command.args.push_back(word);
     if (const std::string problem = check(command); !problem.empty())
       throw Error(ErrorKind::usage, fmt::format("{}:{}: {}", name.string(), number, problem));
     script.commands.push_back(std::move(command));

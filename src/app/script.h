@@ -15,7 +15,7 @@
 //   load FILE | reload            as dropping a file on the window / pressing R
 //   dump-inspector FILE.json      the inspector's values, for tests and handouts
 //   quit
-// Blank lines and lines starting with # are ignored. Paths are relative to the working folder.
+// Blank lines are ignored, and so is everything from a word starting with #. Paths are relative to the working folder.
 // The whole file is checked before the window opens: a bad line is an error naming FILE:LINE.
 #include <filesystem>
 #include <string>
