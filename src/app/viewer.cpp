@@ -3,7 +3,7 @@
 // ViewerState, a mouse gesture or a script line, and is drawn on the next frame.
 //
 // Sections: [layout] [the viewer] [loading] [input] [actions] [script] [the frame]
-//           [status, help and error windows] [run_viewer]
+//           [the windows over the picture] [run_viewer]
 #include "app/viewer.h"
 
 #include "gl/functions.h"  // before GLFW: GLFW_INCLUDE_NONE keeps GLFW from including GL
@@ -26,6 +26,7 @@
 
 #include "app/inspector.h"
 #include "app/orbit_camera.h"
+#include "app/overlays.h"
 #include "app/panel.h"
 #include "app/picking.h"
 #include "app/screenshot.h"
@@ -85,7 +86,7 @@ class Viewer : public ScriptTarget {
 public:
   Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings);
   ~Viewer() override;
-  int run();
+  int loop();  // until Esc, the window closes or the script quits; the exit code
 
   bool run(const ScriptCommand& command, std::string& error) override;
   bool busy() const override { return scripted_click_frames_ > 0; }
@@ -598,7 +599,7 @@ void Viewer::frame() {
   window_.swap();
 }
 
-int Viewer::run() {
+int Viewer::loop() {
   auto last = std::chrono::steady_clock::now();
   while (!window_.should_close() && !quit_) {
     window_.poll();
@@ -620,23 +621,12 @@ int Viewer::run() {
   return 0;
 }
 
-// ---- [status, help and error windows] ------------------------------------------------------------
+// ---- [the windows over the picture] --------------------------------------------------------------
 void Viewer::draw_windows(const Layout& l) {
   const Scene& scene = *state_.scene;
-  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar;
 
-  // The status line: model, frame time, triangles, lights.
-  ImGui::SetNextWindowPos(ImVec2(0, l.window.y - l.status));
-  ImGui::SetNextWindowSize(ImVec2(l.window.x, l.status));
-  ImGui::Begin("status", nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const int lights = int(std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& x) { return x.enabled; }));
-  const std::string camera = state_.free_camera ? "free camera (C: back)" : scene.cameras[size_t(state_.scene_camera)].name;
-  ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s", info(state_.model).label,
-              state_.frame_ms, scene.triangle_count(), lights, scene.area_lights.size(), camera.c_str(),
-              state_.note.c_str());
-  ImGui::End();
+  draw_status_line(state_, l.window.y - l.status, l.window.x, l.status);
+  const float view_middle = l.view_origin.x + 0.5f * (l.window.x - l.view_origin.x);
 
   if (pick_ && reading_ && state_.show_inspector) {
     // In the corner of the picture farthest from the inspected pixel, so both stay in view.
@@ -654,45 +644,8 @@ void Viewer::draw_windows(const Layout& l) {
     draw->AddLine(ImVec2(at.x, at.y - r), ImVec2(at.x, at.y + r), IM_COL32(255, 60, 200, 255), 2.0f);
   }
 
-  if (state_.show_help) {
-    ImGui::SetNextWindowPos(ImVec2(l.view_origin.x + 0.5f * (l.window.x - l.view_origin.x), 0.45f * l.window.y),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::Begin("Keys (F1)", &state_.show_help, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-      auto row = [](const char* keys, const char* what) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(keys);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(what);
-      };
-      for (const Shortcut& s : shortcuts()) row(s.keys, s.what);
-      row("left drag", "orbit around the scene");
-      row("right drag", "pan");
-      row("wheel", "zoom");
-      row("left click", "inspect the pixel: each term's value");
-      row("drop a file", "load a .gltf / .glb scene");
-      ImGui::EndTable();
-    }
-    ImGui::End();
-  }
-
-  if (!state_.error.empty()) {
-    ImGui::SetNextWindowPos(ImVec2(l.view_origin.x + 0.5f * (l.window.x - l.view_origin.x), 0.5f * l.window.y),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(0.9f * (l.window.x - l.view_origin.x), l.window.y));
-    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
-    ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
-    ImGui::Begin("The scene did not load", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushTextWrapPos(0.85f * (l.window.x - l.view_origin.x));
-    ImGui::TextUnformatted(state_.error.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::TextDisabled("Still showing %s. Fix the file and press R, or drop another.",
-                        state_.scene_path.filename().string().c_str());
-    if (ImGui::Button("OK")) state_.error.clear();
-    ImGui::End();
-    ImGui::PopStyleColor(2);
-  }
+  if (state_.show_help) draw_help(state_.show_help, view_middle, 0.45f * l.window.y);
+  if (!state_.error.empty()) draw_load_error(state_, view_middle, 0.5f * l.window.y, l.window.x - l.view_origin.x);
 }
 
 }  // namespace
@@ -702,7 +655,7 @@ int run_viewer(const ViewerSettings& settings) {
   try {
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     Viewer viewer(std::move(loaded), settings.scene, settings);
-    return viewer.run();
+    return viewer.loop();
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());
     return 1;

@@ -1,0 +1,17 @@
+#pragma once
+// The small windows of the viewer besides the panel and the inspector: the status line, the
+// list of keys (F1) and the error of a scene that did not load.
+#include "app/viewer_state.h"
+
+namespace luz::app {
+
+// Model, frame time, triangles, lights, camera and the latest message, in one line at `top`.
+void draw_status_line(const ViewerState& state, float top, float width, float height);
+
+// The shortcut table (shortcuts.h) and the mouse gestures, centred on (x, y).
+void draw_help(bool& open, float x, float y);
+
+// state.error in a red-titled window centred on (x, y); its OK button clears the error.
+void draw_load_error(ViewerState& state, float x, float y, float max_width);
+
+}  // namespace luz::app
