@@ -12,7 +12,8 @@ run=("$luz" --script "$root/docs/viewer_picture.txt" --size 1280x760 "$root/scen
 if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
   "${run[@]}"
 else
-  # Mesa's software GL: the same picture on every machine.
-  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1600x1200x24" "${run[@]}"
+  # Mesa's software GL: the same picture on every machine. -noreset: luz checks the display
+  # (one connection) before opening its window (another); a reset between them would fail it.
+  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1600x1200x24 -noreset" "${run[@]}"
 fi
 echo "picture in $out/viewer.png"

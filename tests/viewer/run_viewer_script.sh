@@ -14,14 +14,17 @@ mkdir -p "$out"
 cd "$out"
 # A scene the viewer must refuse while keeping the one it shows.
 printf '{ "asset": { "version": "2.0" }, "meshes": [ {' > broken.gltf
-# xvfb-run -a can lose a race for a display number with another Xvfb starting at the same moment
-# (parallel CI jobs); the viewer then cannot open its display. Such a start is retried; any other
-# failure is the test's.
+# -noreset: by default an X server resets when its last client leaves, and `luz` first checks
+# that a display is there (a connection it closes) before opening its window (a second one); on
+# a loaded machine the second connection can fall into the reset and fail.
+# The X authority file lives here rather than in a temporary folder of xvfb-run's, and a lost
+# race for a display number with another Xvfb starting at the same moment (parallel CI jobs) is
+# retried; any other failure is the test's.
 attempt=1
 while :; do
   status=0
-  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n $((100 + $$ % 400)) -s "-screen 0 1600x1200x24" \
-    "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 || status=$?
+  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n $((100 + $$ % 400)) -f "$PWD/xauthority" -e "$PWD/xvfb.log" \
+    -s "-screen 0 1600x1200x24 -noreset" "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 || status=$?
   [ "$status" -eq 0 ] && break
   if [ "$attempt" -lt 3 ] && grep -q "Failed to open display" viewer.log; then
     echo "attempt $attempt: Xvfb was not reachable, retrying"
