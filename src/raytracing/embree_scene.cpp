@@ -119,7 +119,8 @@ void EmbreeIntersector::intersect(std::span<const Ray> rays, std::span<Hit> hits
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  std::vector<RTCRayHit> stream(rays.size());
+  thread_local std::vector<RTCRayHit> stream;  // reused: no allocation per batch
+  stream.resize(rays.size());
   for (size_t i = 0; i < rays.size(); ++i) stream[i] = to_embree_hit(rays[i]);
   rtcIntersect1M(impl_->scene, &context, stream.data(), unsigned(stream.size()), sizeof(RTCRayHit));
   for (size_t i = 0; i < rays.size(); ++i) hits[i] = from_embree(stream[i]);
@@ -130,7 +131,8 @@ void EmbreeIntersector::occluded(std::span<const Ray> rays, std::span<bool> bloc
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  std::vector<RTCRay> stream(rays.size());
+  thread_local std::vector<RTCRay> stream;
+  stream.resize(rays.size());
   for (size_t i = 0; i < rays.size(); ++i) stream[i] = to_embree(rays[i]);
   rtcOccluded1M(impl_->scene, &context, stream.data(), unsigned(stream.size()), sizeof(RTCRay));
   for (size_t i = 0; i < rays.size(); ++i) blocked[i] = stream[i].tfar < 0.0f;

@@ -68,6 +68,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
                                   const WhittedOptions& options, Image& image, Counters& counters,
                                   std::vector<RecordedRay>* log, RayTree* tree) {
   const Intersector& hits_of = intersector(options);
+  const PrimaryRays camera_rays(camera, width, height);
   Whitted whitted(scene_, hits_of, options, counters);
   whitted.log_rays(log);
   whitted.record_tree(tree);
@@ -80,7 +81,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
       whitted.reseed(Random(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
       ++counters[RayKind::primary];
       ++counters.samples;
-      const Ray ray = primary_ray(camera, width, height, {x, y});
+      const Ray ray = camera_rays.through({x, y});
       if (log) log->push_back({ray, RayKind::primary});
       const Hit hit = hits_of.intersect(ray, counters.intersection_tests);
       return whitted.follow(ray, hit, 1, RayKind::primary);
@@ -108,11 +109,13 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
   std::vector<Ray> rays;
   rays.reserve(size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel));
+  std::vector<glm::vec2> offsets;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Random jitter(x, y, -1);
-      for (const glm::vec2& s : stratified_pixel_samples(samples_per_pixel, jitter))
-        rays.push_back(primary_ray(camera, width, height, glm::vec2(float(x), float(y)) + s));
+      stratified_pixel_samples(samples_per_pixel, jitter, offsets);
+      for (const glm::vec2& s : offsets)
+        rays.push_back(camera_rays.through(glm::vec2(float(x), float(y)) + s));
     }
   std::vector<Hit> hits(rays.size());
   hits_of.intersect(rays, hits, counters.intersection_tests);

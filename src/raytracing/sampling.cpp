@@ -33,17 +33,18 @@ bool is_square(int spp) {
   return n * n == spp;
 }
 
-std::vector<glm::vec2> stratified_pixel_samples(int spp, Random& random) {
-  if (spp <= 1) return {glm::vec2(0.5f)};
+void stratified_pixel_samples(int spp, Random& random, std::vector<glm::vec2>& samples) {
+  samples.clear();
+  if (spp <= 1) {
+    samples.emplace_back(0.5f);
+    return;
+  }
   const int n = std::max(1, int(std::lround(std::sqrt(double(spp)))));
-  std::vector<glm::vec2> samples;
-  samples.reserve(size_t(n) * n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const float jx = random.next(), jy = random.next();
       samples.emplace_back((float(i) + jx) / float(n), (float(j) + jy) / float(n));
     }
-  return samples;
 }
 
 void triangle_samples(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, int count,

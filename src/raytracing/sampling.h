@@ -27,7 +27,7 @@ private:
 
 // Stratified pixel sampling: n x n jittered positions in the unit square, n = sqrt(spp); a single
 // sample sits at the centre (0.5, 0.5), where the rasteriser samples too.
-std::vector<glm::vec2> stratified_pixel_samples(int spp, Random& random);
+void stratified_pixel_samples(int spp, Random& random, std::vector<glm::vec2>& samples);
 
 // True when spp is a perfect square (1, 4, 9, ...).
 bool is_square(int spp);

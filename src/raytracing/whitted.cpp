@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "raytracing/optics.h"
 
@@ -140,10 +141,14 @@ Rgb Whitted::direct_light(const SurfacePoint& p, const glm::vec3& V) {
   for (size_t a = 0; a < scene_.area_lights.size(); ++a) {
     const AreaLight& area = scene_.area_lights[a];
     if (area.mesh == p.mesh && area.triangle == p.triangle) continue;  // it cannot light itself
-    const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
-    const size_t t = size_t(area.triangle);
-    triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                     mesh.positions[mesh.indices[3 * t + 2]], n, random_, light_points_);
+    if (n == 1) {
+      light_points_.assign(1, area.centroid);
+    } else {
+      const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
+      const size_t t = size_t(area.triangle);
+      triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+                       mesh.positions[mesh.indices[3 * t + 2]], n, random_, light_points_);
+    }
     for (const glm::vec3& y : light_points_) {
       const glm::vec3 to_light = y - p.position;
       const float d = glm::length(to_light);
@@ -266,15 +271,22 @@ int Whitted::begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weig
   return node.id;
 }
 
-Ray primary_ray(const Camera& camera, int width, int height, glm::vec2 image_point) {
+PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
+  // In camera space the image plane at z = -1 spans x in [-tan(yfov/2) aspect, +...] and
+  // y in [-tan(yfov/2), +tan(yfov/2)], y up; then the camera's rotation takes it to the world.
   const float tan_half = std::tan(0.5f * camera.yfov);
   const float aspect = float(width) / float(height);
-  const float x_ndc = 2.0f * image_point.x / float(width) - 1.0f;
-  const float y_ndc = 1.0f - 2.0f * image_point.y / float(height);
-  const glm::vec3 d_camera(x_ndc * tan_half * aspect, y_ndc * tan_half, -1.0f);
+  const glm::mat3 rotation(camera.to_world);
+  origin_ = camera.position();
+  corner_ = rotation * glm::vec3(-tan_half * aspect, tan_half, -1.0f);
+  right_ = rotation * glm::vec3(2.0f * tan_half * aspect / float(width), 0.0f, 0.0f);
+  down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
+}
+
+Ray PrimaryRays::through(glm::vec2 image_point) const {
   Ray ray;
-  ray.origin = camera.position();
-  ray.direction = glm::normalize(glm::vec3(camera.to_world * glm::vec4(d_camera, 0.0f)));
+  ray.origin = origin_;
+  ray.direction = glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
   return ray;
 }
 

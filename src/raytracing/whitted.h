@@ -86,9 +86,24 @@ private:
   std::vector<RecordedRay>* log_ = nullptr;
 };
 
-// The primary ray through image point (x, y) in pixel units (0..width, 0..height, y down), as
-// the rasteriser projects: glm::perspective with the camera's yfov and the image's aspect.
-Ray primary_ray(const Camera& camera, int width, int height, glm::vec2 image_point);
+// The primary rays of a camera for an image of width x height pixels, as the rasteriser projects
+// (glm::perspective with the camera's yfov and the image's aspect). Image points are in pixel
+// units (0..width, 0..height, y down); a pixel's centre is (x + 0.5, y + 0.5).
+class PrimaryRays {
+public:
+  PrimaryRays(const Camera& camera, int width, int height);
+  Ray through(glm::vec2 image_point) const;
+
+private:
+  glm::vec3 origin_;
+  glm::vec3 corner_;  // the direction through image point (0, 0), unnormalised
+  glm::vec3 right_;   // its change per pixel to the right
+  glm::vec3 down_;    // its change per pixel down
+};
+
+inline Ray primary_ray(const Camera& camera, int width, int height, glm::vec2 image_point) {
+  return PrimaryRays(camera, width, height).through(image_point);
+}
 
 // The origin of a secondary ray leaving point p toward the side of unit normal n, moved off the
 // surface far enough that the new ray cannot hit the surface it leaves, however large the
