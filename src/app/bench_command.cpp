@@ -1,7 +1,9 @@
 // `luz bench whitted`. For each scene: the full render (best of N), then the same render once more
-// keeping every ray it traced, then those rays traced bare through the same Embree scene, each
-// kind with the query the tracer uses for it (primary rays as coherent streams per tile, the
-// others one by one), on the same TBB threads. bare / render is how close the tracer comes to
+// keeping every ray it traced, then those rays traced bare through the same Embree scene on the
+// same TBB threads: primary and shadow rays as streams of 256 in the order the tracer made them
+// (a tile's worth, as the tracer streams them; the bare run streams the deeper hits' shadow rays
+// too, so it is if anything faster than the tracer could be), reflected and transmitted rays one
+// by one, as the tracer's recursion traces them. bare / render is how close the tracer comes to
 // Embree's limit on this machine; what it spends beyond is shading, sampling and bookkeeping.
 #include "app/bench_command.h"
 
@@ -59,7 +61,8 @@ double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, 
       std::array<rt::Hit, chunk> hits;
       embree.intersect(part, std::span(hits.data(), part.size()), tests);
     } else if (kind == rt::RayKind::shadow) {
-      for (const rt::Ray& ray : part) (void)embree.occluded(ray, tests);
+      bool blocked[chunk];
+      embree.occluded(part, std::span(blocked, part.size()), tests);
     } else {
       for (const rt::Ray& ray : part) (void)embree.intersect(ray, tests);
     }

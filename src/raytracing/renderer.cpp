@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <memory>
+#include <span>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
@@ -13,6 +15,31 @@
 #include "raytracing/sampling.h"
 
 namespace luz::rt {
+
+namespace {
+
+// The buffers of one tile, kept per thread.
+struct TileScratch {
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+  std::vector<glm::vec2> offsets;
+  std::vector<PreparedHit> prepared;
+  std::vector<size_t> first;
+  std::vector<Random> randoms{};
+  std::vector<LightSample> lights;
+  std::vector<Ray> shadow_rays;
+  std::unique_ptr<bool[]> blocked;
+  void resize(size_t n) {
+    if (rays.size() >= n) return;
+    rays.resize(n);
+    hits.resize(n);
+    prepared.resize(n);
+    first.resize(n + 1);
+    randoms.resize(n, Random(0));
+  }
+};
+
+}  // namespace
 
 // ---- [the renderer] -----------------------------------------------------------------------------
 WhittedRenderer::WhittedRenderer(const Scene& scene) : scene_(scene) { scene_changed(); }
@@ -107,30 +134,63 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   // stream (Embree's advice), then each hit is shaded by Color() and its recursion.
   const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
   const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
-  std::vector<Ray> rays;
-  rays.reserve(size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel));
-  std::vector<glm::vec2> offsets;
+  const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
+  // Per-thread scratch, reused from tile to tile: no allocation or clearing per tile.
+  thread_local TileScratch scratch;
+  scratch.resize(n);
+  std::span<Ray> rays(scratch.rays.data(), n);
+  std::span<Hit> hits(scratch.hits.data(), n);
+  size_t i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Random jitter(x, y, -1);
-      stratified_pixel_samples(samples_per_pixel, jitter, offsets);
-      for (const glm::vec2& s : offsets)
-        rays.push_back(camera_rays.through(glm::vec2(float(x), float(y)) + s));
+      stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
+      for (const glm::vec2& s : scratch.offsets)
+        camera_rays.through(glm::vec2(float(x), float(y)) + s, rays[i++]);
     }
-  std::vector<Hit> hits(rays.size());
   hits_of.intersect(rays, hits, counters.intersection_tests);
-  counters[RayKind::primary] += rays.size();
-  counters.samples += rays.size();
+  counters[RayKind::primary] += n;
+  counters.samples += n;
+
+  // Each primary hit's surface point and light samples, then all their shadow rays as one
+  // stream (see PreparedHit), then Color() at each hit with those answers, and its recursion.
+  std::vector<PreparedHit>& prepared = scratch.prepared;
+  std::vector<size_t>& first = scratch.first;
+  std::vector<Random>& randoms = scratch.randoms;  // each sample's generator after preparing
+  std::vector<LightSample>& lights = scratch.lights;
+  lights.clear();
+  i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x)
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+        first[i] = lights.size();
+        whitted.reseed(Random(x, y, s));
+        if (hits[i].found()) {
+          prepared[i].point = whitted.surface_at(rays[i], hits[i]);
+          whitted.light_samples(prepared[i].point, -rays[i].direction, lights);
+        }
+        randoms[i] = whitted.random();
+      }
+  first[i] = lights.size();
+  if (options.shadows) {
+    scratch.shadow_rays.resize(lights.size());
+    scratch.blocked.reset(new bool[lights.size() + 1]);
+    for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
+    hits_of.occluded(scratch.shadow_rays, std::span(scratch.blocked.get(), lights.size()),
+                     counters.intersection_tests);
+  }
 
   const Rgb weight(1.0f / float(samples_per_pixel));
-  size_t i = 0;
+  i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Rgb sum(0.0f);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {
         if (log) log->push_back({rays[i], RayKind::primary});
-        whitted.reseed(Random(x, y, s));
-        sum += whitted.follow(rays[i], hits[i], 1, RayKind::primary, weight);
+        whitted.reseed(randoms[i]);
+        prepared[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
+        prepared[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
+        sum += whitted.follow(rays[i], hits[i], 1, RayKind::primary, weight, &prepared[i]);
       }
       image.at(x, y) = sum * weight;
     }

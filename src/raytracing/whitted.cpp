@@ -45,11 +45,13 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight) {
   return follow(ray, hit, depth, kind, weight);
 }
 
-Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight) {
+Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight,
+                    const PreparedHit* prepared) {
   const int node = begin_node(ray, kind, depth, weight);
   Rgb radiance = scene_.background;  // "sino devolver color del fondo"
   if (hit.found()) {
-    const SurfacePoint p = surface_at(ray, hit);  // "calcular la normal"
+    // "calcular la normal"
+    const SurfacePoint p = prepared ? prepared->point : surface_at(ray, hit);
     if (tree_) {
       RayTreeNode& n = tree_->nodes[size_t(node)];
       n.hit = true;
@@ -61,7 +63,7 @@ Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb
     }
     const int outer = parent_;
     parent_ = node;
-    radiance = color(p, ray, depth);
+    radiance = color(p, ray, depth, prepared);
     parent_ = outer;
   }
   if (tree_) tree_->nodes[size_t(node)].radiance = radiance;
@@ -70,7 +72,7 @@ Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb
 
 // ---- [Color] ------------------------------------------------------------------------------------
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
-Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
+Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared) {
   const Material& o = *p.material;
   const glm::vec3 V = -ray.direction;
 
@@ -78,8 +80,15 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   Rgb color = options_.ambient ? scene_.ambient * o.ka : Rgb(0.0f);
   // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
   if (options_.emission && p.front) color += o.emission;
-  // "para cada luz": shadow rays and the lights' terms.
-  color += direct_light(p, V);
+  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's
+  // term (the renderer may have prepared the terms and traced the shadow rays already).
+  if (prepared) {
+    color += shadowed(prepared->lights, prepared->blocked);
+  } else {
+    lights_.clear();
+    light_samples(p, V, lights_);
+    color += shadowed(lights_, nullptr);
+  }
   if (tree_ && parent_ >= 0) tree_->nodes[size_t(parent_)].local = color;
 
   // "si d < máxima": the reflected and the transmitted rays.
@@ -115,24 +124,21 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------
-Rgb Whitted::direct_light(const SurfacePoint& p, const glm::vec3& V) {
-  Rgb sum(0.0f);
+void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out) {
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
     if (!light.enabled) continue;
     if (light.type == LightType::directional) {
-      sum += light_term(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity,
-                        int(i));
+      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), out);
       continue;
     }
     const glm::vec3 to_light = light.position - p.position;
     const float d = glm::length(to_light);
     if (d <= 0.0f) continue;
     const glm::vec3 L = to_light / d;
-    const Rgb IL = light.intensity * light.attenuation.factor(d) *
-                   light.spot_factor(-L) / kPi;
-    sum += light_term(p, V, L, IL, d, int(i));
+    const Rgb IL = light.intensity * light.attenuation.factor(d) * light.spot_factor(-L) / kPi;
+    add_light(p, V, L, IL, d, int(i), out);
   }
   // Emissive triangles, sampled over their area: each of N samples y stands for area A/N and
   // lights like a point of intensity Le * (A/N) * cos(theta_e) (SCENES.md; N = 1 is the
@@ -156,16 +162,16 @@ Rgb Whitted::direct_light(const SurfacePoint& p, const glm::vec3& V) {
       const glm::vec3 L = to_light / d;
       const float cos_theta_e = std::max(glm::dot(area.normal, -L), 0.0f);  // dark behind it
       const Rgb IL = area.radiance * (area.area / float(n)) * cos_theta_e / (d * d) / kPi;
-      sum += light_term(p, V, L, IL, d, int(scene_.lights.size() + a));
+      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), out);
     }
   }
-  return sum;
 }
 
-Rgb Whitted::light_term(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L,
-                        const Rgb& IL, float distance, int light) {
+void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L,
+                        const Rgb& IL, float distance, int light,
+                        std::vector<LightSample>& out) const {
   const float cos_theta = glm::dot(p.N, L);
-  if (cos_theta <= 0.0f || !positive(IL)) return Rgb(0.0f);  // "si (L·N) > 0"
+  if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
   const Material& o = *p.material;
   Rgb term(0.0f);
   if (options_.diffuse) term += IL * kd_at(p) * cos_theta;  // I_D = IL kd cos(theta)
@@ -176,31 +182,43 @@ Rgb Whitted::light_term(const SurfacePoint& p, const glm::vec3& V, const glm::ve
                                 : std::max(glm::dot(reflect(-L, p.N), V), 0.0f);
     term += IL * o.ks * std::pow(cos_alpha, o.shininess);  // I_S = IL ks cos^n(alpha)
   }
-  if (!positive(term)) return term;
+  if (!positive(term)) return;
+  // The shadow ray, from just off the surface on the light's side to just short of the light
+  // (an emitter's sample lies on the emitter, which must not block it).
+  LightSample sample;
+  sample.term = term;
+  const glm::vec3 side = glm::dot(L, p.geometric) >= 0.0f ? p.geometric : -p.geometric;
+  sample.shadow.origin = offset_origin(p.position, side);
+  sample.shadow.direction = L;
+  sample.shadow.tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
+  sample.distance = distance;
+  sample.light = light;
+  out.push_back(sample);
+}
 
-  // "y no hay obstrucción": the shadow ray, from just off the surface on the light's side to
-  // just short of the light (an emitter's sample lies on the emitter, which must not block it).
-  bool blocked = false;
-  Ray shadow;
-  if (options_.shadows) {
-    const glm::vec3 side = glm::dot(L, p.geometric) >= 0.0f ? p.geometric : -p.geometric;
-    shadow.origin = offset_origin(p.position, side);
-    shadow.direction = L;
-    shadow.tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
-    ++counters_[RayKind::shadow];
-    if (log_) log_->push_back({shadow, RayKind::shadow});
-    blocked = intersector_.occluded(shadow, counters_.intersection_tests);
+Rgb Whitted::shadowed(std::span<const LightSample> lights, const bool* blocked) {
+  Rgb sum(0.0f);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const LightSample& sample = lights[i];
+    // "y no hay obstrucción": S_i = 0 when the shadow ray meets anything before the light.
+    bool occluded = false;
+    if (options_.shadows) {
+      ++counters_[RayKind::shadow];
+      if (log_) log_->push_back({sample.shadow, RayKind::shadow});
+      occluded = blocked ? blocked[i] : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+      if (tree_) {
+        const int node = begin_node(sample.shadow, RayKind::shadow,
+                                    tree_->nodes[size_t(parent_)].depth, Rgb(occluded ? 0.0f : 1.0f));
+        RayTreeNode& n = tree_->nodes[size_t(node)];
+        n.hit = occluded;
+        n.t = sample.distance;
+        n.light = sample.light;
+        n.radiance = sample.term;
+      }
+    }
+    if (!occluded) sum += sample.term;
   }
-  if (tree_ && options_.shadows) {
-    const int node = begin_node(shadow, RayKind::shadow, tree_->nodes[size_t(parent_)].depth,
-                                Rgb(blocked ? 0.0f : 1.0f));
-    RayTreeNode& n = tree_->nodes[size_t(node)];
-    n.hit = blocked;
-    n.t = distance;
-    n.light = light;
-    n.radiance = term;
-  }
-  return blocked ? Rgb(0.0f) : term;  // S_i = 0 or 1
+  return sum;
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {
@@ -281,13 +299,6 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   corner_ = rotation * glm::vec3(-tan_half * aspect, tan_half, -1.0f);
   right_ = rotation * glm::vec3(2.0f * tan_half * aspect / float(width), 0.0f, 0.0f);
   down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
-}
-
-Ray PrimaryRays::through(glm::vec2 image_point) const {
-  Ray ray;
-  ray.origin = origin_;
-  ray.direction = glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
-  return ray;
 }
 
 glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n) {

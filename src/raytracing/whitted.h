@@ -10,9 +10,11 @@
 //
 // One Whitted object traces one sample at a time on one thread (the renderer makes one per tile);
 // the scene and the intersector are shared read-only.
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/camera.h"
@@ -44,6 +46,25 @@ struct RecordedRay {
   RayKind kind;
 };
 
+// One light's term at a point and the shadow ray that decides whether it counts (S_i).
+struct LightSample {
+  Rgb term{0.0f};        // IL * [kd cos(theta) + ks cos^n(alpha)]: the light's share if unblocked
+  Ray shadow;            // from just off the surface to just short of the light
+  float distance = 0.0f; // to the light (infinite for a directional one)
+  int light = -1;        // index into Scene::lights, then lights.size() + index into area_lights
+};
+
+// A primary hit prepared by the renderer: its surface point and light samples, and whether each
+// shadow ray is blocked. Shadow rays from a tile's primary hits toward one light are coherent,
+// and Embree traces coherent rays faster as a stream than one by one (its performance
+// recommendations), so the renderer traces them for the whole tile at once and Color() reads
+// the answers. Deeper hits trace their shadow rays one by one.
+struct PreparedHit {
+  SurfacePoint point;
+  std::span<const LightSample> lights;
+  const bool* blocked = nullptr;  // one per light sample; nullptr: every light unoccluded
+};
+
 class Whitted {
 public:
   Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
@@ -52,26 +73,30 @@ public:
   // Trazar(r, d): the radiance arriving along `ray`. `weight` is what the caller will multiply
   // the result by (kr, kt, 1/spp); it is only written into the ray tree.
   Rgb trace(const Ray& ray, int depth, RayKind kind, Rgb weight = Rgb(1.0f));
-  // The rest of Trazar once the nearest hit is known (the renderer finds primary hits in batches).
-  Rgb follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight = Rgb(1.0f));
+  // The rest of Trazar once the nearest hit is known (the renderer finds primary hits in
+  // batches, and may have prepared the hit's lights).
+  Rgb follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight = Rgb(1.0f),
+             const PreparedHit* prepared = nullptr);
   // Color(o, r, p, N, d).
-  Rgb color(const SurfacePoint& p, const Ray& ray, int depth);
+  Rgb color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared = nullptr);
 
   SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
+  // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
+  // (not traced): punctual lights and the samples of the emissive triangles.
+  void light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out);
 
   // The random numbers of the current sample (area-light positions): seeded per sample.
   void reseed(const Random& random) { random_ = random; }
+  const Random& random() const { return random_; }
   // Record every ray and its result in `tree` (trace_pixel), or log the rays (benchmark).
   void record_tree(RayTree* tree) { tree_ = tree; }
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
 
 private:
-  // sum_i S_i * IL_i * [kd cos(theta) + ks cos^n(alpha)] over punctual lights and the samples
-  // of the emissive triangles.
-  Rgb direct_light(const SurfacePoint& p, const glm::vec3& V);
-  // One light's term, if (L.N) > 0 and no obstruction (the shadow ray), as slide 26.
-  Rgb light_term(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
-                 float distance, int light);
+  // sum_i S_i * term_i, the shadow rays traced here unless `blocked` has the answers.
+  Rgb shadowed(std::span<const LightSample> lights, const bool* blocked);
+  void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
+                 float distance, int light, std::vector<LightSample>& out) const;
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture
   int begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
 
@@ -81,6 +106,7 @@ private:
   Counters& counters_;
   Random random_{0};
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples
+  std::vector<LightSample> lights_;      // scratch for Color()'s light samples
   RayTree* tree_ = nullptr;
   int parent_ = -1;                      // the tree node whose hit is being shaded
   std::vector<RecordedRay>* log_ = nullptr;
@@ -92,7 +118,18 @@ private:
 class PrimaryRays {
 public:
   PrimaryRays(const Camera& camera, int width, int height);
-  Ray through(glm::vec2 image_point) const;
+  // Inline so that the caller builds the ray in place (a returned Ray reloaded from the stack
+  // stalls on store forwarding, which cost a tenth of a render).
+  void through(glm::vec2 image_point, Ray& ray) const {
+    ray.origin = origin_;
+    ray.direction = glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
+    ray.tfar = kInfinity;
+  }
+  Ray through(glm::vec2 image_point) const {
+    Ray ray;
+    through(image_point, ray);
+    return ray;
+  }
 
 private:
   glm::vec3 origin_;
