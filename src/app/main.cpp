@@ -65,7 +65,7 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
         return std::string();
       }, "SQUARE"))->capture_default_str());
   flags.push_back(render.add_flag_callback("--adaptive", [&w] { w.sampling = luz::rt::Sampling::adaptive; },
-      "whitted: Whitted's adaptive supersampling (pixel corners, subdivided where they differ)"));
+      "whitted: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of --spp)"));
   flags.push_back(render.add_flag("--fresnel", w.fresnel,
       "whitted: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"));
   flags.push_back(render.add_option("--light-samples", w.light_samples,
