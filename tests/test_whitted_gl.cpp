@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <ostream>
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,10 @@ struct Case {
   int width, height;
   bool blinn;
 };
+
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.scene << " " << c.width << "x" << c.height << (c.blinn ? " blinn" : "");
+}
 
 class TracerAgreesWithGl : public testing::TestWithParam<Case> {};
 
