@@ -10,6 +10,10 @@
 // The scene must outlive the renderer. Lights, materials, the ambient term and the background
 // are read at every render (a panel may edit them between renders); after a change of geometry
 // call scene_changed(), which rebuilds the intersectors.
+//
+// Threads: one render() at a time per renderer (the viewer runs it off its GL thread, e.g. in a
+// std::async task, and cancels it before starting the next). trace_pixel() and primary_hit() may
+// run on another thread during a render; scene_changed() may not.
 #include <atomic>
 #include <functional>
 #include <memory>
