@@ -14,5 +14,12 @@ done
 "$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --out "$out/whitted-phong.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --blinn --size 480x360 -q --out "$out/phong_spheres-blinn.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --no-specular --size 480x360 -q --out "$out/phong_spheres-no-specular.png"
+# The Whitted tracer: Whitted's scene (4 samples per pixel), with Fresnel, at depth 1 (the local
+# model with shadows), and the Cornell box with hard (centroid) and soft (16 samples) shadows.
+"$luz" render "$root/scenes/whitted.gltf" --model whitted --spp 4 --size 480x360 -q --out "$out/whitted-whitted.png"
+"$luz" render "$root/scenes/whitted.gltf" --model whitted --spp 4 --fresnel --size 480x360 -q --out "$out/whitted-fresnel.png"
+"$luz" render "$root/scenes/whitted.gltf" --model whitted --spp 4 --depth 1 --size 480x360 -q --out "$out/whitted-depth1.png"
+"$luz" render "$root/scenes/cornell_box.gltf" --model whitted --spp 4 --size 360x360 -q --out "$out/cornell_box-whitted.png"
+"$luz" render "$root/scenes/cornell_box.gltf" --model whitted --spp 4 --light-samples 16 --size 360x360 -q --out "$out/cornell_box-whitted-soft.png"
 "$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

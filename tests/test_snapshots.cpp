@@ -5,6 +5,7 @@
 // most 0.5% of the pixels off by more than 16 codes (rasterisation may move a silhouette by a
 // pixel between Mesa versions; shading may not change). Goldens are rewritten only by
 // `cmake --build build --target update-goldens`.
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -87,6 +88,14 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, Snapshot,
                          testing::Combine(testing::ValuesIn(kScenes), testing::ValuesIn(kModels)),
                          snapshot_name);
 
+// The Whitted tracer (default settings: depth 5, 1 sample per pixel, centroid area lights) is
+// deterministic, so the same golden tolerance holds; update_goldens.sh renders the same list.
+constexpr const char* kTracedScenes[] = {"whitted", "cornell_box"};
+constexpr const char* kTracedModels[] = {"whitted"};
+INSTANTIATE_TEST_SUITE_P(Traced, Snapshot,
+                         testing::Combine(testing::ValuesIn(kTracedScenes), testing::ValuesIn(kTracedModels)),
+                         snapshot_name);
+
 // Properties: what a class sees in each plate, in every model.
 
 TEST(CornellBox, RedWallOnTheLeftGreenOnTheRightLightOnTheCeiling) {
@@ -146,6 +155,59 @@ TEST(Whitted, SkyAboveCheckerboardBelow) {
     EXPECT_GT(red, image.width / 4) << model;
     EXPECT_GT(yellow, image.width / 4) << model;
   }
+}
+
+// Whitted's tracer: what slide 23's picture shows.
+
+int count(const Image& image, float x0, float y0, float x1, float y1, bool (*is)(const Rgb&)) {
+  int n = 0;
+  for (int y = int(y0 * float(image.height)); y < int(y1 * float(image.height)); ++y)
+    for (int x = int(x0 * float(image.width)); x < int(x1 * float(image.width)); ++x) n += is(image.at(x, y));
+  return n;
+}
+// The checker's red and yellow, also when seen through glass (where the sky's reflection adds
+// a little blue), and the sky.
+bool reddish(const Rgb& p) { return p.r > 2.0f * p.g && p.r > 1.5f * p.b; }
+bool yellowish(const Rgb& p) { return p.g > 0.7f * p.r && p.r > 1.5f * p.b; }
+bool sky_blue(const Rgb& p) { return p.b > 1.5f * p.r && p.b > p.g; }
+
+TEST(WhittedModel, MirrorReflectsTheCheckerboardAndGlassShowsItUpsideDown) {
+  test::ScratchDir dir;
+  const Image traced = render(dir, "whitted", "whitted", ".exr");
+  const Image local = render(dir, "whitted", "phong", ".exr");
+  // Mirror sphere (right): the checkerboard in its lower half, the sky in its upper half.
+  const float mx0 = 0.55f, mx1 = 0.67f;
+  EXPECT_GT(count(traced, mx0, 0.50f, mx1, 0.60f, reddish), 30);
+  EXPECT_GT(count(traced, mx0, 0.50f, mx1, 0.60f, yellowish), 30);
+  EXPECT_GT(count(traced, mx0, 0.36f, mx1, 0.44f, sky_blue), 60);
+  // Glass sphere (left) refracts like a lens: the checkerboard upside down in its upper half,
+  // the sky in its lower half.
+  const float gx0 = 0.30f, gx1 = 0.45f;
+  EXPECT_GT(count(traced, gx0, 0.22f, gx1, 0.32f, reddish), 30);
+  EXPECT_GT(count(traced, gx0, 0.22f, gx1, 0.32f, yellowish), 30);
+  EXPECT_GT(count(traced, gx0, 0.40f, gx1, 0.50f, sky_blue), 150);
+  // The local model shows none of it: there the spheres are their own dull colours (boxes
+  // inside both silhouettes).
+  for (auto is : {reddish, yellowish, sky_blue}) {
+    EXPECT_EQ(count(local, 0.56f, 0.40f, 0.66f, 0.58f, is), 0);
+    EXPECT_EQ(count(local, 0.31f, 0.26f, 0.40f, 0.46f, is), 0);
+  }
+}
+
+TEST(WhittedModel, CornellBlocksCastShadowsOnTheFloor) {
+  test::ScratchDir dir;
+  const Image shadows = render(dir, "cornell_box", "whitted", ".exr");
+  const Image none = render(dir, "cornell_box", "whitted", ".exr", {"--no-shadows"});
+  // The floor beside the short block (in front, right) and left of the tall one, in shadow.
+  for (const auto& [x0, y0, x1, y1] : {std::array{0.50f, 0.92f, 0.64f, 0.96f},
+                                       std::array{0.15f, 0.70f, 0.25f, 0.77f}}) {
+    EXPECT_LT(mean_colour(shadows, x0, y0, x1, y1).r, 0.3f * mean_colour(none, x0, y0, x1, y1).r)
+        << x0 << "," << y0;
+  }
+  // The open floor in front on the left sees the whole lamp: the same with or without shadows.
+  const Rgb open = mean_colour(shadows, 0.10f, 0.92f, 0.35f, 0.96f);
+  EXPECT_NEAR(open.r, mean_colour(none, 0.10f, 0.92f, 0.35f, 0.96f).r, 1e-6f);
+  EXPECT_GT(open.r, 5.0f * mean_colour(shadows, 0.50f, 0.92f, 0.64f, 0.96f).r);
 }
 
 }  // namespace

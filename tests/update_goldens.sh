@@ -17,4 +17,11 @@ for scene in cornell_box phong_spheres whitted; do
       --out "$golden/$scene-$model.png"
   done
 done
+# The Whitted tracer (kTracedScenes in tests/test_snapshots.cpp), default settings.
+for scene in whitted cornell_box; do
+  size=160x120
+  [ "$scene" = cornell_box ] && size=120x120
+  "$luz" render "$root/scenes/$scene.gltf" --model whitted --size "$size" -q \
+    --out "$golden/$scene-whitted.png"
+done
 echo "goldens written to $golden"

@@ -2,15 +2,19 @@
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/bench_command.h"
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/script.h"
 #include "app/viewer.h"
 #include "core/error.h"
+#include "raytracing/sampling.h"
 #include "gl/window_context.h"
 
 namespace {
@@ -45,6 +49,45 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
 }
 
+// The tracer's flags (--model whitted). Returns them so main() can tell which were given: they
+// are a usage error with another model.
+std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& settings) {
+  luz::rt::WhittedOptions& w = settings.whitted;
+  std::vector<CLI::Option*> flags;
+  flags.push_back(render.add_option("--depth", w.max_depth,
+      "whitted: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
+      "reflected or transmitted rays)")->check(CLI::Range(0, 64))->capture_default_str());
+  flags.push_back(render.add_option("--spp", w.spp,
+      "whitted: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...")
+      ->check(CLI::Validator([](std::string& text) {
+        int n = 0;
+        if (!CLI::detail::lexical_cast(text, n) || !luz::rt::is_square(n) || n > 4096)
+          return std::string("expected a square number of samples: 1, 4, 9, 16, ... (at most 4096)");
+        return std::string();
+      }, "SQUARE"))->capture_default_str());
+  flags.push_back(render.add_flag_callback("--adaptive", [&w] { w.sampling = luz::rt::Sampling::adaptive; },
+      "whitted: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of --spp)"));
+  flags.push_back(render.add_flag("--fresnel", w.fresnel,
+      "whitted: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"));
+  flags.push_back(render.add_option("--light-samples", w.light_samples,
+      "whitted: shadow rays per emissive triangle (1: its centroid; N: soft shadows)")
+      ->check(CLI::Range(1, 1024))->capture_default_str());
+  flags.push_back(render.add_flag("--brute-force", w.brute_force,
+      "whitted: test every ray against every triangle instead of Embree's BVH (counts the tests)"));
+  flags.push_back(render.add_flag_callback("--no-shadows", [&w] { w.shadows = false; },
+      "whitted: no shadow rays (every light unoccluded)"));
+  flags.push_back(render.add_option_function<std::string>(
+      "--ray-tree",
+      [&settings](const std::string& text) {
+        int x = 0, y = 0;
+        if (!luz::app::parse_pixel(text, x, y))
+          throw CLI::ValidationError("--ray-tree", "expected a pixel X,Y, e.g. 320,240");
+        settings.ray_tree = std::make_pair(x, y);
+      },
+      "whitted: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"));
+  return flags;
+}
+
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
   fmt::print(stderr, "luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are unset "
@@ -77,6 +120,13 @@ int main(int argc, char** argv) {
   RenderSettings settings;
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
   add_render_flags(*render, settings);
+  const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
+
+  luz::app::BenchSettings bench_settings;
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
+  bench->require_subcommand(1);
+  CLI::App* bench_whitted = bench->add_subcommand("whitted", "The Whitted tracer against the same rays traced bare through Embree");
+  luz::app::add_bench_flags(*bench_whitted, bench_settings);
 
   try {
     app.parse(argc, argv);
@@ -89,7 +139,12 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (render->parsed()) return luz::app::run_render(settings);
+  if (render->parsed()) {
+    for (const CLI::Option* flag : whitted_flags)
+      if (flag->count() > 0) settings.whitted_only_flags.push_back(flag->get_name());
+    return luz::app::run_render(settings);
+  }
+  if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
 
   if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
   if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens

@@ -1,8 +1,10 @@
 #include "app/render_command.h"
+#include "app/render_whitted.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <regex>
 
 #include <fmt/format.h>
@@ -44,7 +46,33 @@ std::string camera_list(const Scene& scene) {
   return list;
 }
 
+// The ray tree's JSON, written beside its final name and renamed, like the image.
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream file(temporary, std::ios::binary);
+    file << text;
+    if (!file.flush())
+      throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+  }
+}
+
 }  // namespace
+
+bool parse_pixel(const std::string& text, int& x, int& y) {
+  static const std::regex pattern(R"((\d{1,5}),(\d{1,5}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern)) return false;
+  x = std::stoi(match[1]);
+  y = std::stoi(match[2]);
+  return true;
+}
 
 bool parse_size(const std::string& text, int& width, int& height) {
   static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
@@ -59,6 +87,9 @@ int run_render(const RenderSettings& settings) {
   try {
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
+    if (settings.model != "whitted" && !settings.whitted_only_flags.empty())
+      throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted",
+                                                settings.whitted_only_flags.front()));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
     const Scene& scene = loaded.scene;
@@ -75,18 +106,29 @@ int run_render(const RenderSettings& settings) {
     output_size(settings, camera, width, height);
 
     const auto start = std::chrono::steady_clock::now();
-    gl::OffscreenContext context;
-    LocalOptions options = settings.local;
-    options.shading = shading_of(settings.model);
-    LocalRenderer renderer(scene);
-    const Image image = renderer.render(camera, width, height, options);
-    for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+    Image image;
+    WhittedResult traced;
+    if (settings.model == "whitted") {
+      traced = render_whitted(scene, camera, width, height, settings);  // no GL needed
+      image = std::move(traced.image);
+    } else {
+      gl::OffscreenContext context;
+      LocalOptions options = settings.local;
+      options.shading = shading_of(settings.model);
+      LocalRenderer renderer(scene);
+      image = renderer.render(camera, width, height, options);
+      for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+    }
     const float exposure = settings.exposure.value_or(scene.exposure);
     io::write_image(image, settings.out, exposure);
+    if (traced.ray_tree) write_text(ray_tree_path(settings.out), *traced.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!settings.quiet)
+    if (!settings.quiet) {
       fmt::print("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s\n", settings.out,
                  settings.model, width, height, camera.name, exposure, seconds);
+      fmt::print("{}", traced.summary);
+      if (traced.ray_tree) fmt::print("ray tree: {}\n", ray_tree_path(settings.out).string());
+    }
     return 0;
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());

@@ -2,14 +2,17 @@
 // `luz render`: one picture of a scene, headless through OSMesa.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "local/local_options.h"
+#include "raytracing/whitted_options.h"
 
 namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong
+  std::string model = "phong";   // flat | gouraud | phong | whitted
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
@@ -17,13 +20,22 @@ struct RenderSettings {
   std::optional<float> exposure; // overrides the scene's
   LocalOptions local;
   bool quiet = false;
+  // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`),
+  // the pixel whose ray tree is written beside the image, and which whitted-only flags were given
+  // (a usage error with another model).
+  rt::WhittedOptions whitted;
+  std::optional<std::pair<int, int>> ray_tree;
+  std::vector<std::string> whitted_only_flags;
 };
 
 // The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);
+
+// Parses "X,Y" (a pixel); false when malformed.
+bool parse_pixel(const std::string& text, int& x, int& y);
 
 // Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
 // any message to stderr.

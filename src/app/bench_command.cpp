@@ -1,0 +1,155 @@
+// `luz bench whitted`. For each scene: the full render (best of N), then the same render once more
+// keeping every ray it traced, then those rays traced bare through the same Embree scene on the
+// same TBB threads: primary and shadow rays as streams of 256 in the order the tracer made them
+// (a tile's worth, as the tracer streams them; the bare run streams the deeper hits' shadow rays
+// too, so it is if anything faster than the tracer could be), reflected and transmitted rays one
+// by one, as the tracer's recursion traces them. bare / render is how close the tracer comes to
+// Embree's limit on this machine; what it spends beyond is shading, sampling and bookkeeping.
+#include "app/bench_command.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <span>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
+#include "app/render_command.h"
+#include "app/resources.h"
+#include "core/error.h"
+#include "io/gltf_loader.h"
+#include "raytracing/renderer.h"
+
+namespace luz::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+std::filesystem::path scene_path(const std::string& name) {
+  if (name.find('/') == std::string::npos && name.find('.') == std::string::npos)
+    return scene_dir() / (name + ".gltf");
+  return name;
+}
+
+// The rays of one kind traced bare: no shading, no recursion, no counters.
+double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, rt::RayKind kind) {
+  constexpr size_t chunk = 256;  // one 16x16 tile of primary rays
+  const size_t chunks = (rays.size() + chunk - 1) / chunk;
+  const auto start = Clock::now();
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    const std::span<const rt::Ray> part = rays.subspan(c * chunk, std::min(chunk, rays.size() - c * chunk));
+    uint64_t tests = 0;
+    if (kind == rt::RayKind::primary) {
+      std::array<rt::Hit, chunk> hits;
+      embree.intersect(part, std::span(hits.data(), part.size()), tests);
+    } else if (kind == rt::RayKind::shadow) {
+      bool blocked[chunk];
+      embree.occluded(part, std::span(blocked, part.size()), tests);
+    } else {
+      for (const rt::Ray& ray : part) (void)embree.intersect(ray, tests);
+    }
+  });
+  return seconds_since(start);
+}
+
+}  // namespace
+
+void add_bench_flags(CLI::App& bench, BenchSettings& settings) {
+  bench.add_option_function<std::string>(
+      "--size",
+      [&settings](const std::string& text) {
+        if (!parse_size(text, settings.width, settings.height))
+          throw CLI::ValidationError("--size", "expected WxH, e.g. 1920x1080");
+      },
+      "Image size WxH (default 1920x1080)");
+  bench.add_option("--depth", settings.depth, "Maximum ray depth (slide 26)")
+      ->check(CLI::Range(1, 64))->capture_default_str();
+  bench.add_option("--spp", settings.spp, "Samples per pixel (a square)")
+      ->check(CLI::Range(1, 4096))->capture_default_str();
+  bench.add_option("--repeats", settings.repeats, "Best of this many runs")
+      ->check(CLI::Range(1, 100))->capture_default_str();
+  bench.add_option("--scenes", settings.scenes, "Shipped scene names or glTF paths")
+      ->delimiter(',')->capture_default_str();
+}
+
+int run_bench_whitted(const BenchSettings& settings) {
+  try {
+    fmt::print("luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}\n",
+               settings.width, settings.height, settings.depth, settings.spp, settings.repeats,
+               tbb::info::default_concurrency(), cpu_model());
+    fmt::print("{:<14} {:>9} {:>10} {:>9} | {:>9} {:>9} | {:>6}\n", "scene", "render s", "rays",
+               "Mrays/s", "bare s", "Mrays/s", "ratio");
+    for (const std::string& name : settings.scenes) {
+      const io::LoadedScene loaded = io::load_gltf(scene_path(name));
+      const Scene& scene = loaded.scene;
+      const Camera& camera = scene.cameras.front();
+      rt::WhittedOptions options;
+      options.max_depth = settings.depth;
+      options.spp = settings.spp;
+
+      auto start = Clock::now();
+      rt::WhittedRenderer tracer(scene);
+      const double build = seconds_since(start);
+
+      double render = 1e30;
+      rt::Counters counters;
+      for (int r = 0; r < settings.repeats; ++r) {
+        tracer.render(camera, settings.width, settings.height, options);
+        if (tracer.counters().seconds < render) {
+          render = tracer.counters().seconds;
+          counters = tracer.counters();
+        }
+      }
+
+      tracer.keep_rays(true);
+      tracer.render(camera, settings.width, settings.height, options);
+      tracer.keep_rays(false);
+      const std::vector<rt::RecordedRay> recorded = tracer.take_rays();
+      std::array<std::vector<rt::Ray>, rt::kRayKinds> by_kind;
+      for (const rt::RecordedRay& r : recorded) by_kind[size_t(r.kind)].push_back(r.ray);
+
+      std::array<double, rt::kRayKinds> bare{};
+      bare.fill(1e30);
+      for (int r = 0; r < settings.repeats; ++r)
+        for (int k = 0; k < rt::kRayKinds; ++k)
+          bare[size_t(k)] = std::min(bare[size_t(k)], trace_bare(tracer.intersector(options),
+                                                                 by_kind[size_t(k)], rt::RayKind(k)));
+      double bare_total = 0.0;
+      for (double b : bare) bare_total += b;
+      const double rays = double(counters.total_rays());
+      fmt::print("{:<14} {:>9.3f} {:>9.2f}M {:>9.2f} | {:>9.3f} {:>9.2f} | {:>6.2f}\n", name, render,
+                 rays * 1e-6, rays / render * 1e-6, bare_total, rays / bare_total * 1e-6,
+                 render / bare_total);
+      for (int k = 0; k < rt::kRayKinds; ++k) {
+        const double n = double(by_kind[size_t(k)].size());
+        fmt::print("  {:<12} {:>10} rays, bare {:7.2f} Mrays/s\n", rt::to_string(rt::RayKind(k)),
+                   by_kind[size_t(k)].size(), bare[size_t(k)] > 0 ? n / bare[size_t(k)] * 1e-6 : 0.0);
+      }
+      fmt::print("  BVH build {:.3f} s\n", build);
+    }
+    return 0;
+  } catch (const Error& error) {
+    fmt::print(stderr, "luz: {}\n", error.what());
+    return error.kind == ErrorKind::usage ? 2 : 1;
+  }
+}
+
+}  // namespace luz::app

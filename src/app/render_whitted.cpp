@@ -1,0 +1,77 @@
+#include "app/render_whitted.h"
+
+#include <cstdio>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "raytracing/renderer.h"
+
+namespace luz::app {
+
+namespace {
+
+// The --no-TERM switches and --blinn apply to the tracer's local part as to the rasteriser.
+rt::WhittedOptions options_of(const RenderSettings& settings) {
+  rt::WhittedOptions options = settings.whitted;
+  options.ambient = settings.local.ambient;
+  options.diffuse = settings.local.diffuse;
+  options.specular = settings.local.specular;
+  options.emission = settings.local.emission;
+  options.textures = settings.local.textures;
+  options.blinn = settings.local.blinn;
+  return options;
+}
+
+// "whitted [##########..........]  52%" on stderr, rewritten in place; only on a terminal.
+class ProgressBar {
+public:
+  explicit ProgressBar(bool on) : on_(on) {}
+  void update(int done, int total) {
+    if (!on_) return;
+    const int percent = total > 0 ? 100 * done / total : 100;
+    if (percent == shown_) return;
+    shown_ = percent;
+    constexpr int width = 40;
+    const int filled = width * percent / 100;
+    fmt::print(stderr, "\rwhitted [{}{}] {:3}%", std::string(size_t(filled), '#'),
+               std::string(size_t(width - filled), '.'), percent);
+    if (done == total) fmt::print(stderr, "\n");
+    std::fflush(stderr);
+  }
+
+private:
+  bool on_;
+  int shown_ = -1;
+};
+
+}  // namespace
+
+std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
+  std::filesystem::path path = out;
+  return path.replace_extension(".ray-tree.json");
+}
+
+WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
+                             const RenderSettings& settings) {
+  if (settings.ray_tree) {
+    const auto [x, y] = *settings.ray_tree;
+    if (x < 0 || y < 0 || x >= width || y >= height)
+      throw Error(ErrorKind::usage, fmt::format("--ray-tree {},{}: outside the {}x{} image", x, y,
+                                                width, height));
+  }
+  const rt::WhittedOptions options = options_of(settings);
+  rt::WhittedRenderer tracer(scene);
+  ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO));
+  WhittedResult result;
+  result.image = tracer.render(camera, width, height, options,
+                               [&bar](const rt::TileDone& done) { bar.update(done.done, done.total); });
+  result.summary = tracer.counters().to_string();
+  if (settings.ray_tree)
+    result.ray_tree = tracer.trace_pixel(camera, width, height, settings.ray_tree->first,
+                                         settings.ray_tree->second, options).to_json();
+  return result;
+}
+
+}  // namespace luz::app

@@ -1,0 +1,28 @@
+#pragma once
+// `luz render --model whitted`: the tracer of src/raytracing with a progress bar on a terminal,
+// the counters at the end, and the ray tree of one pixel as JSON.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/render_command.h"
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+
+namespace luz::app {
+
+struct WhittedResult {
+  Image image;
+  std::string summary;                // the counters, for the end of the run
+  std::optional<std::string> ray_tree;  // JSON, when --ray-tree was given
+};
+
+// Throws luz::Error (usage) when the --ray-tree pixel lies outside the image.
+WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
+                             const RenderSettings& settings);
+
+// Where --ray-tree's JSON goes: beside the image, `<out without extension>.ray-tree.json`.
+std::filesystem::path ray_tree_path(const std::filesystem::path& out);
+
+}  // namespace luz::app

@@ -1,0 +1,43 @@
+#pragma once
+// Slide 24's ray tree: every ray one pixel spawned, as nodes linked to their parent. The command
+// writes it as JSON (`luz render ... --ray-tree X,Y`); the viewer draws it over the scene.
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/color.h"
+#include "raytracing/ray.h"
+
+namespace luz::rt {
+
+struct RayTreeNode {
+  int id = 0;
+  int parent = -1;        // -1 for a primary ray
+  RayKind kind = RayKind::primary;
+  int depth = 1;          // slide 26's d of the hit that spawned it (primary: 1)
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f};
+  bool hit = false;       // shadow rays: blocked
+  float t = 0.0f;         // distance to the hit (or to the light, for a shadow ray)
+  glm::vec3 hit_point{0.0f};
+  glm::vec3 normal{0.0f}; // shading normal at the hit, facing the ray
+  std::string mesh;       // name of the mesh hit ("" for none)
+  std::string material;
+  int light = -1;         // shadow rays: index into Scene::lights, or lights + area light index
+  Rgb weight{1.0f};       // what the parent multiplies this ray's radiance by (kr, kt, 1/spp; S_i)
+  Rgb local{0.0f};        // the local part at the hit: Ia*ka + sum S_i IL_i [...] + Le
+  Rgb radiance{0.0f};     // what the ray returns (shadow ray: the light's term if unblocked)
+  Rgb contribution{0.0f}; // its share of the pixel: the weights down the tree x radiance
+};
+
+struct RayTree {
+  int x = 0, y = 0;          // the pixel
+  int width = 0, height = 0; // of the image it belongs to
+  Rgb pixel{0.0f};           // the pixel's radiance (sum of the primary rays' contributions)
+  std::vector<RayTreeNode> nodes;
+
+  std::string to_json() const;  // the format of README.md "The ray tree"
+};
+
+}  // namespace luz::rt

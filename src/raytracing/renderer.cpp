@@ -1,0 +1,228 @@
+// Tiles on TBB. Sections: [the renderer] [one tile] [one pixel]
+#include "raytracing/renderer.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <memory>
+#include <span>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "raytracing/brute_force.h"
+#include "raytracing/embree_scene.h"
+#include "raytracing/sampling.h"
+
+namespace luz::rt {
+
+namespace {
+
+// The buffers of one tile, kept per thread.
+struct TileScratch {
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+  std::vector<glm::vec2> offsets;
+  std::vector<PreparedHit> prepared;
+  std::vector<size_t> first;
+  std::vector<Random> randoms{};
+  std::vector<LightSample> lights;
+  std::vector<Ray> shadow_rays;
+  std::unique_ptr<bool[]> blocked;
+  void resize(size_t n) {
+    if (rays.size() >= n) return;
+    rays.resize(n);
+    hits.resize(n);
+    prepared.resize(n);
+    first.resize(n + 1);
+    randoms.resize(n, Random(0));
+  }
+};
+
+}  // namespace
+
+// ---- [the renderer] -----------------------------------------------------------------------------
+WhittedRenderer::WhittedRenderer(const Scene& scene) : scene_(scene) { scene_changed(); }
+
+WhittedRenderer::~WhittedRenderer() = default;
+
+void WhittedRenderer::scene_changed() {
+  embree_ = std::make_unique<EmbreeIntersector>(scene_);
+  std::lock_guard lock(brute_force_mutex_);
+  brute_force_.reset();
+}
+
+const Intersector& WhittedRenderer::intersector(const WhittedOptions& options) {
+  if (!options.brute_force) return *embree_;
+  std::lock_guard lock(brute_force_mutex_);
+  if (!brute_force_) brute_force_ = std::make_unique<BruteForceIntersector>(scene_);
+  return *brute_force_;
+}
+
+Image WhittedRenderer::render(const Camera& camera, int width, int height,
+                              const WhittedOptions& options, const TileCallback& on_tile,
+                              const std::atomic<bool>* cancel) {
+  const auto start = std::chrono::steady_clock::now();
+  Image image(width, height);
+  const std::vector<Tile> tiles = make_tiles(width, height, options.tile_size);
+  intersector(options);  // build the brute-force triangles before the threads start
+  counters_ = Counters{};
+  rays_.clear();
+
+  // Each tile writes only its own pixels and its own counters and ray log; they are summed
+  // (integers, so the order does not matter) and concatenated in tile order at the end.
+  std::vector<Counters> tile_counters(tiles.size());
+  std::vector<std::vector<RecordedRay>> tile_rays(keep_rays_ ? tiles.size() : 0);
+  std::mutex report;
+  int done = 0;
+  tbb::parallel_for(size_t(0), tiles.size(), [&](size_t i) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return;
+    render_tile(tiles[i], camera, width, height, options, image, tile_counters[i],
+                keep_rays_ ? &tile_rays[i] : nullptr);
+    std::lock_guard lock(report);
+    ++done;
+    if (on_tile) on_tile(TileDone{tiles[i], done, int(tiles.size()), image});
+  });
+
+  for (const Counters& c : tile_counters) counters_ += c;
+  for (auto& r : tile_rays) rays_.insert(rays_.end(), r.begin(), r.end());
+  counters_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return image;
+}
+
+// ---- [one tile] ---------------------------------------------------------------------------------
+void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int width, int height,
+                                  const WhittedOptions& options, Image& image, Counters& counters,
+                                  std::vector<RecordedRay>* log, RayTree* tree) {
+  const Intersector& hits_of = intersector(options);
+  const PrimaryRays camera_rays(camera, width, height);
+  Whitted whitted(scene_, hits_of, options, counters);
+  whitted.log_rays(log);
+  whitted.record_tree(tree);
+
+  if (options.sampling == Sampling::adaptive) {
+    // Whitted's adaptive supersampling: corners first (shared by neighbouring pixels), then each
+    // pixel subdivided where its corners differ. Every point's random numbers are seeded by the
+    // point itself, so a corner gives the same radiance from either pixel.
+    const auto radiance = [&](float x, float y) {
+      whitted.reseed(Random(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
+      ++counters[RayKind::primary];
+      ++counters.samples;
+      const Ray ray = camera_rays.through({x, y});
+      if (log) log->push_back({ray, RayKind::primary});
+      const Hit hit = hits_of.intersect(ray, counters.intersection_tests);
+      return whitted.follow(ray, hit, 1, RayKind::primary);
+    };
+    const int cw = tile.width() + 1;
+    std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
+    for (int y = tile.y0; y <= tile.y1; ++y)
+      for (int x = tile.x0; x <= tile.x1; ++x)
+        corners[size_t(y - tile.y0) * cw + size_t(x - tile.x0)] = radiance(float(x), float(y));
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        const auto corner = [&](int dx, int dy) {
+          return corners[size_t(y - tile.y0 + dy) * cw + size_t(x - tile.x0 + dx)];
+        };
+        const Rgb c[4] = {corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1)};
+        image.at(x, y) = adaptive_pixel(float(x), float(y), c, options.adaptive_levels,
+                                        options.adaptive_threshold, radiance);
+      }
+    return;
+  }
+
+  // Stratified sampling. The tile's primary rays are coherent: they are intersected as one
+  // stream (Embree's advice), then each hit is shaded by Color() and its recursion.
+  const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
+  const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
+  const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
+  // Per-thread scratch, reused from tile to tile: no allocation or clearing per tile.
+  thread_local TileScratch scratch;
+  scratch.resize(n);
+  std::span<Ray> rays(scratch.rays.data(), n);
+  std::span<Hit> hits(scratch.hits.data(), n);
+  size_t i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Random jitter(x, y, -1);
+      stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
+      for (const glm::vec2& s : scratch.offsets)
+        camera_rays.through(glm::vec2(float(x), float(y)) + s, rays[i++]);
+    }
+  hits_of.intersect(rays, hits, counters.intersection_tests);
+  counters[RayKind::primary] += n;
+  counters.samples += n;
+
+  // Each primary hit's surface point and light samples, then all their shadow rays as one
+  // stream (see PreparedHit), then Color() at each hit with those answers, and its recursion.
+  std::vector<PreparedHit>& prepared = scratch.prepared;
+  std::vector<size_t>& first = scratch.first;
+  std::vector<Random>& randoms = scratch.randoms;  // each sample's generator after preparing
+  std::vector<LightSample>& lights = scratch.lights;
+  lights.clear();
+  i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x)
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+        first[i] = lights.size();
+        whitted.reseed(Random(x, y, s));
+        if (hits[i].found()) {
+          prepared[i].point = whitted.surface_at(rays[i], hits[i]);
+          whitted.light_samples(prepared[i].point, -rays[i].direction, lights);
+        }
+        randoms[i] = whitted.random();
+      }
+  first[i] = lights.size();
+  if (options.shadows) {
+    scratch.shadow_rays.resize(lights.size());
+    scratch.blocked.reset(new bool[lights.size() + 1]);
+    for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
+    hits_of.occluded(scratch.shadow_rays, std::span(scratch.blocked.get(), lights.size()),
+                     counters.intersection_tests);
+  }
+
+  const Rgb weight(1.0f / float(samples_per_pixel));
+  i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Rgb sum(0.0f);
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+        if (log) log->push_back({rays[i], RayKind::primary});
+        whitted.reseed(randoms[i]);
+        prepared[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
+        prepared[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
+        sum += whitted.follow(rays[i], hits[i], 1, RayKind::primary, weight, &prepared[i]);
+      }
+      image.at(x, y) = sum * weight;
+    }
+}
+
+// ---- [one pixel] --------------------------------------------------------------------------------
+RayTree WhittedRenderer::trace_pixel(const Camera& camera, int width, int height, int x, int y,
+                                     const WhittedOptions& options) {
+  RayTree tree;
+  tree.x = x;
+  tree.y = y;
+  tree.width = width;
+  tree.height = height;
+  Image image(width, height);
+  Counters counters;
+  render_tile(Tile{x, y, x + 1, y + 1}, camera, width, height, options, image, counters, nullptr,
+              &tree);
+  tree.pixel = image.at(x, y);
+  // Each node's share of the pixel: the product of the weights from its primary ray down.
+  std::vector<Rgb> throughput(tree.nodes.size());
+  for (RayTreeNode& node : tree.nodes) {
+    const Rgb above = node.parent >= 0 ? throughput[size_t(node.parent)] : Rgb(1.0f);
+    throughput[size_t(node.id)] = above * node.weight;
+    node.contribution = throughput[size_t(node.id)] * node.radiance;
+  }
+  return tree;
+}
+
+Hit WhittedRenderer::primary_hit(const Camera& camera, int width, int height,
+                                 glm::vec2 image_point, const WhittedOptions& options) {
+  uint64_t tests = 0;
+  return intersector(options).intersect(primary_ray(camera, width, height, image_point), tests);
+}
+
+}  // namespace luz::rt

@@ -1,0 +1,52 @@
+#pragma once
+// Where the samples go (slide 27, aliasing and supersampling; soft shadows of area lights).
+// Every random number comes from a generator seeded by the pixel and the sample, never from
+// shared state, so a picture is bitwise the same however the threads are scheduled.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/color.h"
+
+namespace luz::rt {
+
+// A small counter-based generator (SplitMix64, Steele et al. 2014): seeded by a hash of the
+// pixel and the sample index, it gives the same sequence on any thread.
+class Random {
+public:
+  explicit Random(uint64_t seed) : state_(seed) {}
+  Random(int x, int y, int sample);
+  float next();  // uniform in [0, 1)
+
+private:
+  uint64_t state_;
+};
+
+// Stratified pixel sampling: n x n jittered positions in the unit square, n = sqrt(spp); a single
+// sample sits at the centre (0.5, 0.5), where the rasteriser samples too.
+void stratified_pixel_samples(int spp, Random& random, std::vector<glm::vec2>& samples);
+
+// True when spp is a perfect square (1, 4, 9, ...).
+bool is_square(int spp);
+
+// Points on triangle (p0, p1, p2) for an area light, with equal area each. One sample is the
+// centroid (SCENES.md's cheapest setting). N samples are N-rooks (Shirley 1991): strata of width
+// 1/N in each coordinate of the unit square, paired by a random permutation, mapped onto the
+// triangle by Shirley's area-preserving map (b0 = 1 - sqrt(u), b1 = v sqrt(u)), so every
+// sample stands for area A/N.
+void triangle_samples(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, int count,
+                      Random& random, std::vector<glm::vec3>& points);
+
+// Whitted's adaptive supersampling (Whitted 1980, section 4): radiance at the four corners of a
+// pixel; where they differ by more than `threshold` (after sRGB encoding, so the test follows
+// what the eye sees) the square is split in four and each quarter is sampled the same way, at
+// most `levels` times. The pixel is the area-weighted mean of its squares' corner averages.
+// `radiance(x, y)` gives the radiance through image point (x, y) (pixel units, y down);
+// `corners` are the pixel's four corner radiances, (x, y), (x+1, y), (x, y+1), (x+1, y+1).
+Rgb adaptive_pixel(float x, float y, const Rgb corners[4], int levels, float threshold,
+                   const std::function<Rgb(float, float)>& radiance);
+
+}  // namespace luz::rt

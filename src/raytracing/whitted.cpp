@@ -1,0 +1,330 @@
+// Whitted's tracer, slide 26. Sections: [Trazar] [Color] [lights] [surface] [rays]
+#include "raytracing/whitted.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "raytracing/optics.h"
+
+namespace luz::rt {
+
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+bool positive(const Rgb& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
+
+// A shading normal is not the face's normal, so a reflected ray may point into the surface it
+// leaves (or a transmitted one out of it) and hit it again at once. Such a ray is bent to just
+// graze the surface on the side it must leave on (unit normal n of that side).
+glm::vec3 keep_on_side(const glm::vec3& direction, const glm::vec3& n) {
+  constexpr float graze = 1e-3f;
+  const float c = glm::dot(direction, n);
+  if (c >= graze) return direction;
+  return glm::normalize(direction + (graze - c) * n);
+}
+
+}  // namespace
+
+Whitted::Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
+                 Counters& counters)
+    : scene_(scene), intersector_(intersector), options_(options), counters_(counters) {}
+
+// ---- [Trazar] -----------------------------------------------------------------------------------
+Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight) {
+  // "Determinar intersección con objeto más cercano".
+  ++counters_[kind];
+  if (log_) log_->push_back({ray, kind});
+  const Hit hit = intersector_.intersect(ray, counters_.intersection_tests);
+  return follow(ray, hit, depth, kind, weight);
+}
+
+Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight,
+                    const PreparedHit* prepared) {
+  const int node = begin_node(ray, kind, depth, weight);
+  Rgb radiance = scene_.background;  // "sino devolver color del fondo"
+  if (hit.found()) {
+    // "calcular la normal"
+    const SurfacePoint p = prepared ? prepared->point : surface_at(ray, hit);
+    if (tree_) {
+      RayTreeNode& n = tree_->nodes[size_t(node)];
+      n.hit = true;
+      n.t = hit.t;
+      n.hit_point = p.position;
+      n.normal = p.N;
+      n.mesh = scene_.meshes[size_t(p.mesh)].name;
+      n.material = p.material->name;
+    }
+    const int outer = parent_;
+    parent_ = node;
+    radiance = color(p, ray, depth, prepared);
+    parent_ = outer;
+  }
+  if (tree_) tree_->nodes[size_t(node)].radiance = radiance;
+  return radiance;
+}
+
+// ---- [Color] ------------------------------------------------------------------------------------
+// I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
+Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared) {
+  const Material& o = *p.material;
+  const glm::vec3 V = -ray.direction;
+
+  // "color := color ambiental"
+  Rgb color = options_.ambient ? scene_.ambient * o.ka : Rgb(0.0f);
+  // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
+  if (options_.emission && p.front) color += o.emission;
+  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's
+  // term (the renderer may have prepared the terms and traced the shadow rays already).
+  if (prepared) {
+    color += shadowed(prepared->lights, prepared->blocked);
+  } else {
+    lights_.clear();
+    light_samples(p, V, lights_);
+    color += shadowed(lights_, nullptr);
+  }
+  if (tree_ && parent_ >= 0) tree_->nodes[size_t(parent_)].local = color;
+
+  // "si d < máxima": the reflected and the transmitted rays.
+  if (depth >= max_depth_of(options_)) return color;
+
+  // The transmitted direction by Snell's law. The ray enters the object when it hits the front
+  // (counter-clockwise) face, glTF's outside: eta = n1/n2 = 1/ior; leaving, eta = ior.
+  std::optional<glm::vec3> T;
+  float F = 0.0f;  // the share of kt that reflects instead
+  if (positive(o.kt)) {
+    const float eta = p.front ? 1.0f / o.ior : o.ior;
+    T = refract(ray.direction, p.N, eta);
+    const float cos_i = std::max(glm::dot(V, p.N), 0.0f);
+    if (options_.fresnel) F = fresnel_dielectric(cos_i, eta);  // 1 under total internal reflection
+    else if (!T) F = 1.0f;  // total internal reflection moves kt's share to the reflected ray
+  }
+  const Rgb kr = o.kr + o.kt * F;       // SCENES.md: kr, or kr + kt*F with Fresnel
+  const Rgb kt = o.kt * (1.0f - F);     //            kt, or kt*(1 - F) with Fresnel
+
+  // "si o es reflexivo": R := rayo de reflexión; color := color + Trazar(R, d+1) * kr.
+  if (positive(kr)) {
+    const glm::vec3 R = keep_on_side(reflect(ray.direction, p.N), p.geometric);
+    const Ray reflected{offset_origin(p.position, p.geometric), R};
+    color += kr * trace(reflected, depth + 1, RayKind::reflected, kr);
+  }
+  // "si o es transmisivo y no hay reflexión interna total": T := rayo de refracción.
+  if (positive(kt) && T) {
+    const glm::vec3 inward = -p.geometric;
+    const Ray transmitted{offset_origin(p.position, inward), keep_on_side(*T, inward)};
+    color += kt * trace(transmitted, depth + 1, RayKind::transmitted, kt);
+  }
+  return color;
+}
+
+// ---- [lights] -----------------------------------------------------------------------------------
+void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out) {
+  // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
+  for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    if (!light.enabled) continue;
+    if (light.type == LightType::directional) {
+      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), out);
+      continue;
+    }
+    const glm::vec3 to_light = light.position - p.position;
+    const float d = glm::length(to_light);
+    if (d <= 0.0f) continue;
+    const glm::vec3 L = to_light / d;
+    const Rgb IL = light.intensity * light.attenuation.factor(d) * light.spot_factor(-L) / kPi;
+    add_light(p, V, L, IL, d, int(i), out);
+  }
+  // Emissive triangles, sampled over their area: each of N samples y stands for area A/N and
+  // lights like a point of intensity Le * (A/N) * cos(theta_e) (SCENES.md; N = 1 is the
+  // centroid, exactly the rasteriser's light).
+  const int n = std::max(1, options_.light_samples);
+  for (size_t a = 0; a < scene_.area_lights.size(); ++a) {
+    const AreaLight& area = scene_.area_lights[a];
+    if (area.mesh == p.mesh && area.triangle == p.triangle) continue;  // it cannot light itself
+    if (n == 1) {
+      light_points_.assign(1, area.centroid);
+    } else {
+      const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
+      const size_t t = size_t(area.triangle);
+      triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+                       mesh.positions[mesh.indices[3 * t + 2]], n, random_, light_points_);
+    }
+    for (const glm::vec3& y : light_points_) {
+      const glm::vec3 to_light = y - p.position;
+      const float d = glm::length(to_light);
+      if (d < 1e-6f) continue;
+      const glm::vec3 L = to_light / d;
+      const float cos_theta_e = std::max(glm::dot(area.normal, -L), 0.0f);  // dark behind it
+      const Rgb IL = area.radiance * (area.area / float(n)) * cos_theta_e / (d * d) / kPi;
+      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), out);
+    }
+  }
+}
+
+void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L,
+                        const Rgb& IL, float distance, int light,
+                        std::vector<LightSample>& out) const {
+  const float cos_theta = glm::dot(p.N, L);
+  if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
+  const Material& o = *p.material;
+  Rgb term(0.0f);
+  if (options_.diffuse) term += IL * kd_at(p) * cos_theta;  // I_D = IL kd cos(theta)
+  if (options_.specular && positive(o.ks)) {
+    // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
+    const float cos_alpha = options_.blinn
+                                ? std::max(glm::dot(p.N, glm::normalize(L + V)), 0.0f)
+                                : std::max(glm::dot(reflect(-L, p.N), V), 0.0f);
+    term += IL * o.ks * std::pow(cos_alpha, o.shininess);  // I_S = IL ks cos^n(alpha)
+  }
+  if (!positive(term)) return;
+  // The shadow ray, from just off the surface on the light's side to just short of the light
+  // (an emitter's sample lies on the emitter, which must not block it).
+  LightSample sample;
+  sample.term = term;
+  const glm::vec3 side = glm::dot(L, p.geometric) >= 0.0f ? p.geometric : -p.geometric;
+  sample.shadow.origin = offset_origin(p.position, side);
+  sample.shadow.direction = L;
+  sample.shadow.tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
+  sample.distance = distance;
+  sample.light = light;
+  out.push_back(sample);
+}
+
+Rgb Whitted::shadowed(std::span<const LightSample> lights, const bool* blocked) {
+  Rgb sum(0.0f);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const LightSample& sample = lights[i];
+    // "y no hay obstrucción": S_i = 0 when the shadow ray meets anything before the light.
+    bool occluded = false;
+    if (options_.shadows) {
+      ++counters_[RayKind::shadow];
+      if (log_) log_->push_back({sample.shadow, RayKind::shadow});
+      occluded = blocked ? blocked[i] : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+      if (tree_) {
+        const int node = begin_node(sample.shadow, RayKind::shadow,
+                                    tree_->nodes[size_t(parent_)].depth, Rgb(occluded ? 0.0f : 1.0f));
+        RayTreeNode& n = tree_->nodes[size_t(node)];
+        n.hit = occluded;
+        n.t = sample.distance;
+        n.light = sample.light;
+        n.radiance = sample.term;
+      }
+    }
+    if (!occluded) sum += sample.term;
+  }
+  return sum;
+}
+
+Rgb Whitted::kd_at(const SurfacePoint& p) const {
+  const Material& o = *p.material;
+  if (!options_.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
+      scene_.meshes[size_t(p.mesh)].uvs.empty())
+    return o.kd;
+  // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the
+  // base level (the rasteriser's mipmaps only differ where a texel is smaller than a pixel).
+  const Texture& tex = scene_.textures[size_t(o.kd_texture)];
+  const float x = p.uv.x * float(tex.width) - 0.5f, y = p.uv.y * float(tex.height) - 0.5f;
+  const float fx = std::floor(x), fy = std::floor(y);
+  const float ax = x - fx, ay = y - fy;
+  const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
+  const int x0 = wrap(int(fx), tex.width), x1 = wrap(int(fx) + 1, tex.width);
+  const int y0 = wrap(int(fy), tex.height), y1 = wrap(int(fy) + 1, tex.height);
+  const Rgb texel = (1 - ax) * (1 - ay) * tex.texel(x0, y0) + ax * (1 - ay) * tex.texel(x1, y0) +
+                    (1 - ax) * ay * tex.texel(x0, y1) + ax * ay * tex.texel(x1, y1);
+  return o.kd * texel;
+}
+
+// ---- [surface] ----------------------------------------------------------------------------------
+SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
+  static const Material fallback;
+  const Mesh& mesh = scene_.meshes[size_t(hit.mesh)];
+  const size_t t = size_t(hit.triangle);
+  const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
+  const float w = 1.0f - hit.u - hit.v;
+
+  SurfacePoint p;
+  p.mesh = hit.mesh;
+  p.triangle = hit.triangle;
+  const glm::vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
+  // The hit point from the barycentrics: its error is a few ULPs of the vertices' coordinates,
+  // which is what offset_origin's offsets are sized for (o + t d would add t's error).
+  p.position = w * p0 + hit.u * p1 + hit.v * p2;
+  const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));  // counter-clockwise front
+  p.front = glm::dot(face, ray.direction) < 0.0f;
+  p.geometric = p.front ? face : -face;
+
+  glm::vec3 N = w * mesh.normals[i0] + hit.u * mesh.normals[i1] + hit.v * mesh.normals[i2];
+  const float length = glm::length(N);
+  N = length > 0.0f ? N / length : face;
+  // Two-sided lighting, as lighting.glsl: N is turned over when the viewer sees the side of the
+  // face opposite to it.
+  if (glm::dot(face, N) * glm::dot(face, -ray.direction) < 0.0f) N = -N;
+  p.N = N;
+
+  if (!mesh.uvs.empty())
+    p.uv = w * mesh.uvs[i0] + hit.u * mesh.uvs[i1] + hit.v * mesh.uvs[i2];
+  const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
+  p.material = known ? &scene_.materials[size_t(mesh.material)] : &fallback;
+  return p;
+}
+
+// ---- [rays] -------------------------------------------------------------------------------------
+int Whitted::begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight) {
+  if (!tree_) return -1;
+  RayTreeNode node;
+  node.id = int(tree_->nodes.size());
+  node.parent = parent_;
+  node.kind = kind;
+  node.depth = depth;
+  node.origin = ray.origin;
+  node.direction = ray.direction;
+  node.weight = weight;
+  tree_->nodes.push_back(node);
+  return node.id;
+}
+
+PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
+  // In camera space the image plane at z = -1 spans x in [-tan(yfov/2) aspect, +...] and
+  // y in [-tan(yfov/2), +tan(yfov/2)], y up; then the camera's rotation takes it to the world.
+  const float tan_half = std::tan(0.5f * camera.yfov);
+  const float aspect = float(width) / float(height);
+  const glm::mat3 rotation(camera.to_world);
+  origin_ = camera.position();
+  corner_ = rotation * glm::vec3(-tan_half * aspect, tan_half, -1.0f);
+  right_ = rotation * glm::vec3(2.0f * tan_half * aspect / float(width), 0.0f, 0.0f);
+  down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
+}
+
+glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n) {
+  constexpr float near_origin = 1.0f / 32.0f;  // below this, ULPs are too small to rely on
+  constexpr float fixed_scale = 1.0f / 65536.0f;
+  constexpr float ulp_scale = 256.0f;  // ULPs per unit of n: covers the hit point's rounding
+  glm::vec3 moved;
+  for (int i = 0; i < 3; ++i) {
+    // Adding k to a positive float's bits moves it k ULPs away from zero (k ULPs toward zero
+    // for a negative float), so the step follows the coordinate's magnitude.
+    const int32_t ulps = int32_t(ulp_scale * n[i]);
+    const int32_t bits = std::bit_cast<int32_t>(p[i]);
+    const float stepped = std::bit_cast<float>(bits + (p[i] < 0.0f ? -ulps : ulps));
+    moved[i] = std::abs(p[i]) < near_origin ? p[i] + fixed_scale * n[i] : stepped;
+  }
+  return moved;
+}
+
+const char* to_string(RayKind kind) {
+  switch (kind) {
+    case RayKind::primary: return "primary";
+    case RayKind::shadow: return "shadow";
+    case RayKind::reflected: return "reflected";
+    case RayKind::transmitted: return "transmitted";
+  }
+  return "?";
+}
+
+}  // namespace luz::rt

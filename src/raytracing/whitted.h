@@ -1,0 +1,153 @@
+#pragma once
+// Whitted's ray tracer (Whitted 1980; slides 25-26), as the slide writes it:
+//
+//   Trazar(Rayo r, Profundidad d)        -> Whitted::trace
+//     nearest hit, or the background
+//   Color(objeto, r, punto, normal, d)   -> Whitted::color
+//     color := ambient; for each light: a shadow ray, and the light's term if nothing blocks it;
+//     if d < maximum: the reflected ray Trazar(R, d+1) x kr, the transmitted ray Trazar(T, d+1) x kt
+//     unless there is total internal reflection.
+//
+// One Whitted object traces one sample at a time on one thread (the renderer makes one per tile);
+// the scene and the intersector are shared read-only.
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/camera.h"
+#include "core/scene.h"
+#include "raytracing/counters.h"
+#include "raytracing/intersector.h"
+#include "raytracing/ray.h"
+#include "raytracing/ray_tree.h"
+#include "raytracing/sampling.h"
+#include "raytracing/whitted_options.h"
+
+namespace luz::rt {
+
+// Where a ray met a surface: what Color() needs ("calcular la normal" of slide 26).
+struct SurfacePoint {
+  glm::vec3 position{0.0f};  // from the barycentrics, not o + t d (see offset_origin)
+  glm::vec3 geometric{0.0f}; // unit face normal on the side the ray came from
+  glm::vec3 N{0.0f};         // unit shading normal (interpolated), turned to the ray's side
+  bool front = true;         // the ray hit the counter-clockwise (glTF front) face
+  glm::vec2 uv{0.0f};
+  const Material* material = nullptr;
+  int mesh = -1;
+  int triangle = -1;
+};
+
+// A ray kept for the benchmark, which traces the same rays again without shading.
+struct RecordedRay {
+  Ray ray;
+  RayKind kind;
+};
+
+// One light's term at a point and the shadow ray that decides whether it counts (S_i).
+struct LightSample {
+  Rgb term{0.0f};        // IL * [kd cos(theta) + ks cos^n(alpha)]: the light's share if unblocked
+  Ray shadow;            // from just off the surface to just short of the light
+  float distance = 0.0f; // to the light (infinite for a directional one)
+  int light = -1;        // index into Scene::lights, then lights.size() + index into area_lights
+};
+
+// A primary hit prepared by the renderer: its surface point and light samples, and whether each
+// shadow ray is blocked. Shadow rays from a tile's primary hits toward one light are coherent,
+// and Embree traces coherent rays faster as a stream than one by one (its performance
+// recommendations), so the renderer traces them for the whole tile at once and Color() reads
+// the answers. Deeper hits trace their shadow rays one by one.
+struct PreparedHit {
+  SurfacePoint point;
+  std::span<const LightSample> lights;
+  const bool* blocked = nullptr;  // one per light sample; nullptr: every light unoccluded
+};
+
+class Whitted {
+public:
+  Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
+          Counters& counters);
+
+  // Trazar(r, d): the radiance arriving along `ray`. `weight` is what the caller will multiply
+  // the result by (kr, kt, 1/spp); it is only written into the ray tree.
+  Rgb trace(const Ray& ray, int depth, RayKind kind, Rgb weight = Rgb(1.0f));
+  // The rest of Trazar once the nearest hit is known (the renderer finds primary hits in
+  // batches, and may have prepared the hit's lights).
+  Rgb follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight = Rgb(1.0f),
+             const PreparedHit* prepared = nullptr);
+  // Color(o, r, p, N, d).
+  Rgb color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared = nullptr);
+
+  SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
+  // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
+  // (not traced): punctual lights and the samples of the emissive triangles.
+  void light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out);
+
+  // The random numbers of the current sample (area-light positions): seeded per sample.
+  void reseed(const Random& random) { random_ = random; }
+  const Random& random() const { return random_; }
+  // Record every ray and its result in `tree` (trace_pixel), or log the rays (benchmark).
+  void record_tree(RayTree* tree) { tree_ = tree; }
+  void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
+
+private:
+  // sum_i S_i * term_i, the shadow rays traced here unless `blocked` has the answers.
+  Rgb shadowed(std::span<const LightSample> lights, const bool* blocked);
+  void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
+                 float distance, int light, std::vector<LightSample>& out) const;
+  Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture
+  int begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
+
+  const Scene& scene_;
+  const Intersector& intersector_;
+  const WhittedOptions& options_;
+  Counters& counters_;
+  Random random_{0};
+  std::vector<glm::vec3> light_points_;  // scratch for area-light samples
+  std::vector<LightSample> lights_;      // scratch for Color()'s light samples
+  RayTree* tree_ = nullptr;
+  int parent_ = -1;                      // the tree node whose hit is being shaded
+  std::vector<RecordedRay>* log_ = nullptr;
+};
+
+// The primary rays of a camera for an image of width x height pixels, as the rasteriser projects
+// (glm::perspective with the camera's yfov and the image's aspect). Image points are in pixel
+// units (0..width, 0..height, y down); a pixel's centre is (x + 0.5, y + 0.5).
+class PrimaryRays {
+public:
+  PrimaryRays(const Camera& camera, int width, int height);
+  // Inline so that the caller builds the ray in place (a returned Ray reloaded from the stack
+  // stalls on store forwarding, which cost a tenth of a render).
+  void through(glm::vec2 image_point, Ray& ray) const {
+    ray.origin = origin_;
+    ray.direction = glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
+    ray.tfar = kInfinity;
+  }
+  Ray through(glm::vec2 image_point) const {
+    Ray ray;
+    through(image_point, ray);
+    return ray;
+  }
+
+private:
+  glm::vec3 origin_;
+  glm::vec3 corner_;  // the direction through image point (0, 0), unnormalised
+  glm::vec3 right_;   // its change per pixel to the right
+  glm::vec3 down_;    // its change per pixel down
+};
+
+inline Ray primary_ray(const Camera& camera, int width, int height, glm::vec2 image_point) {
+  return PrimaryRays(camera, width, height).through(image_point);
+}
+
+// The origin of a secondary ray leaving point p toward the side of unit normal n, moved off the
+// surface far enough that the new ray cannot hit the surface it leaves, however large the
+// coordinates: each coordinate moves by a number of float ULPs proportional to n (so the offset
+// grows with the scene's scale), with a small fixed offset near the world origin where ULPs
+// vanish. The method of Wachter & Binder, "A Fast and Robust Method for Avoiding
+// Self-Intersection", Ray Tracing Gems (2019), chapter 6.
+glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n);
+
+}  // namespace luz::rt

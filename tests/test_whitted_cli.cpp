@@ -1,0 +1,107 @@
+// `luz render --model whitted` and `luz bench whitted` as a user runs them: flags, usage errors
+// (exit 2), the counters, the ray tree JSON beside the image.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_luz;
+
+std::string whitted() { return (test::scene_dir() / "whitted.gltf").string(); }
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(WhittedCli, HelpListsTheTracersFlags) {
+  const auto help = run_luz({"render", "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"whitted", "--depth", "--spp", "--adaptive", "--fresnel", "--light-samples",
+                           "--brute-force", "--no-shadows", "--ray-tree", "ray-tree.json"})
+    EXPECT_TRUE(contains(help.output, flag)) << flag;
+  EXPECT_EQ(run_luz({"bench", "whitted", "--help"}).exit_code, 0);
+}
+
+TEST(WhittedCli, TracerFlagsWithAnotherModelAreUsageErrors) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "x.png").string();
+  for (const std::vector<std::string>& flag : std::vector<std::vector<std::string>>{
+           {"--depth", "3"}, {"--spp", "4"}, {"--adaptive"}, {"--fresnel"}, {"--light-samples", "4"},
+           {"--brute-force"}, {"--no-shadows"}, {"--ray-tree", "1,1"}}) {
+    std::vector<std::string> args = {"render", whitted(), "--model", "phong", "--out", out};
+    args.insert(args.end(), flag.begin(), flag.end());
+    const auto result = run_luz(args);
+    EXPECT_EQ(result.exit_code, 2) << flag[0];
+    EXPECT_TRUE(contains(result.output, flag[0])) << result.output;
+  }
+  const auto bad = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"render", whitted(), "--model", "whitted", "--size", "16x12", "--out", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_luz(args).exit_code;
+  };
+  EXPECT_EQ(bad({"--spp", "3"}), 2);  // not a square
+  EXPECT_EQ(bad({"--depth", "-1"}), 2);
+  EXPECT_EQ(bad({"--light-samples", "0"}), 2);
+  EXPECT_EQ(bad({"--ray-tree", "16,0"}), 2);  // outside the 16x12 image
+  EXPECT_EQ(bad({"--ray-tree", "a,b"}), 2);
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(WhittedCli, RendersPrintsTheCountersAndWritesTheRayTree) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "w.exr";
+  const auto result = run_luz({"render", whitted(), "--model", "whitted", "--size", "80x60", "--depth", "4",
+                               "--spp", "4", "--fresnel", "--ray-tree", "28,24", "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* part : {"primary", "shadow", "reflected", "transmitted", "Mrays/s", "w.ray-tree.json"})
+    EXPECT_TRUE(contains(result.output, part)) << part << " in " << result.output;
+  EXPECT_FALSE(contains(result.output, "whitted [")) << "no progress bar when stderr is not a terminal";
+  const Image image = io::read_image(out);
+  EXPECT_EQ(image.width, 80);
+
+  // Pixel (28, 24) looks at the glass sphere: a primary ray per sample, each with a transmitted
+  // child, depths within --depth, and contributions that add up to the pixel.
+  std::ifstream file(dir / "w.ray-tree.json");
+  ASSERT_TRUE(file.good());
+  const nlohmann::json tree = nlohmann::json::parse(file);
+  EXPECT_EQ(tree["pixel"], nlohmann::json::array({28, 24}));
+  int primaries = 0, transmitted = 0;
+  double sum = 0.0;
+  for (const auto& node : tree["nodes"]) {
+    EXPECT_LE(node["depth"].get<int>(), 4);
+    for (const char* key : {"id", "parent", "kind", "origin", "direction", "weight", "radiance", "contribution"})
+      EXPECT_TRUE(node.contains(key)) << key;
+    if (node["kind"] == "primary") {
+      ++primaries;
+      sum += node["contribution"][1].get<double>();
+      EXPECT_EQ(node["hit"]["mesh"], "glass_sphere");
+    }
+    transmitted += node["kind"] == "transmitted";
+  }
+  EXPECT_EQ(primaries, 4);
+  EXPECT_GT(transmitted, 4);
+  EXPECT_NEAR(sum, tree["radiance"][1].get<double>(), 1e-5);
+  EXPECT_NEAR(sum, image.at(28, 24).g, 1e-4);
+
+  // -q prints nothing.
+  const auto quiet = run_luz({"render", whitted(), "--model", "whitted", "--size", "8x6", "-q",
+                              "--out", (dir / "q.png").string()});
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_EQ(quiet.output, "");
+}
+
+TEST(WhittedCli, BenchPrintsTheRatioToBareEmbree) {
+  const auto result = run_luz({"bench", "whitted", "--size", "64x48", "--repeats", "1", "--scenes", "whitted"});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* part : {"whitted", "ratio", "bare", "primary", "shadow", "reflected", "transmitted"})
+    EXPECT_TRUE(contains(result.output, part)) << part << " in " << result.output;
+}
+
+}  // namespace
+}  // namespace luz

@@ -1,0 +1,355 @@
+// The Whitted tracer (src/raytracing) on scenes with known answers: closed forms worked here in
+// double precision, and properties every picture must have (no acne, no self-intersection,
+// energy never grows along a path, determinism, the two intersectors agree).
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+#include "io/gltf_loader.h"
+#include "raytracing/renderer.h"
+#include "support.h"
+#include "whitted_fixtures.h"
+
+namespace luz::rt {
+namespace {
+
+using dvec3 = glm::dvec3;
+constexpr double pi = std::numbers::pi;
+
+Scene shipped(const std::string& name) {
+  return io::load_gltf(test::scene_dir() / (name + ".gltf")).scene;
+}
+
+// ---- A mirror of kr = k facing a diffuse wall shows the wall times k ---------------------------
+// Wall z = 0 (kd 0.5, facing +z), mirror z = 2 (kr = k, nothing else, facing -z), point light at
+// (0.3, 0.2, 1.5), camera at (0, 0, 1) looking at the mirror. A pixel's ray reflects off the
+// mirror onto the wall at w; the closed form there is kd/pi * I cos(theta) / d^2, times k.
+TEST(WhittedTracer, MirrorShowsTheWallTimesKr) {
+  const double k = 0.6, kd = 0.5, I = 10.0;
+  const dvec3 light(0.3, 0.2, 1.5);
+  Scene scene;
+  scene.materials.push_back(test::matte(Rgb(float(kd))));
+  Material mirror = test::matte(Rgb(0.0f));
+  mirror.kr = Rgb(float(k));
+  scene.materials.push_back(mirror);
+  scene.meshes.push_back(test::quad("wall", {-20, -20, 0}, {40, 0, 0}, {0, 40, 0}, 0));
+  scene.meshes.push_back(test::quad("mirror", {-20, -20, 2}, {0, 40, 0}, {40, 0, 0}, 1));
+  Light point;
+  point.position = glm::vec3(light);
+  point.intensity = Rgb(float(I));
+  scene.lights.push_back(point);
+  const Camera camera = test::look_at({0, 0, 1}, {0, 0, 2}, 1.0f);
+
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 2;
+  const int size = 24;
+  const Image image = tracer.render(camera, size, size, options);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const Ray ray = primary_ray(camera, size, size, {float(x) + 0.5f, float(y) + 0.5f});
+      const dvec3 o(ray.origin), d(ray.direction);
+      const dvec3 m = o + ((2.0 - o.z) / d.z) * d;    // on the mirror
+      const dvec3 r(d.x, d.y, -d.z);                  // reflected about the mirror's normal
+      const dvec3 w = m + (m.z / -r.z) * r;           // on the wall
+      const dvec3 to_light = light - w;
+      const double dist = glm::length(to_light);
+      const double wall = kd / pi * I * (to_light.z / dist) / (dist * dist);
+      EXPECT_NEAR(image.at(x, y).g, k * wall, 1e-4 * k * wall) << x << "," << y;
+    }
+}
+
+// ---- A ray through a glass slab comes out parallel to itself ------------------------------------
+// Slab z in [-1, 0], ior 1.5, kt 1, nothing else; the ray hits it at 40 degrees. The ray tree's
+// last transmitted ray keeps the primary direction, shifted sideways by
+// t sin(ti - tt) / cos(tt) (t = 1, the thickness).
+TEST(WhittedTracer, GlassSlabShiftsARayParallelToItself) {
+  Scene scene;
+  Material glass = test::matte(Rgb(0.0f));
+  glass.kt = Rgb(1.0f);
+  glass.ior = 1.5f;
+  scene.materials.push_back(glass);
+  scene.meshes.push_back(test::box("slab", {-50, -50, -1}, {50, 50, 0}, 0));
+  const double ti = 40.0 * pi / 180;
+  const glm::vec3 eye(0.0f, 0.0f, 2.0f);
+  const Camera camera = test::look_at(eye, eye + glm::vec3(float(std::sin(ti)), 0, float(-std::cos(ti))));
+
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 5;
+  const RayTree tree = tracer.trace_pixel(camera, 9, 9, 4, 4, options);
+  ASSERT_EQ(tree.nodes.size(), 3u) << tree.to_json();  // primary, into the glass, out of it
+  const RayTreeNode& in = tree.nodes[0];
+  const RayTreeNode& out = tree.nodes[2];
+  EXPECT_EQ(tree.nodes[1].kind, RayKind::transmitted);
+  EXPECT_EQ(out.kind, RayKind::transmitted);
+  EXPECT_FALSE(out.hit);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(out.direction[i], in.direction[i], 1e-5f) << i;
+  const double tt = std::asin(std::sin(ti) / 1.5);
+  const double shift = std::sin(ti - tt) / std::cos(tt);
+  // Distance between the two parallel lines.
+  const dvec3 d(in.direction), gap = dvec3(out.origin) - dvec3(in.origin);
+  EXPECT_NEAR(glm::length(gap - glm::dot(gap, d) * d), shift, 1e-4);
+}
+
+// ---- Total internal reflection moves kt's share to the reflected ray ----------------------------
+// A camera inside a glass cube looks at its +z face at 20 and at 60 degrees (critical: 41.8).
+TEST(WhittedTracer, TotalInternalReflectionGivesKtToTheReflectedRay) {
+  Scene scene;
+  Material glass = test::matte(Rgb(0.0f));
+  glass.kr = Rgb(0.05f);
+  glass.kt = Rgb(0.9f);
+  glass.ior = 1.5f;
+  scene.materials.push_back(glass);
+  scene.meshes.push_back(test::box("cube", {-1, -1, -1}, {1, 1, 1}, 0));
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 2;
+  const auto children = [&](double deg) {
+    const double t = deg * pi / 180;
+    const glm::vec3 eye(-0.9f, 0.0f, 0.0f);  // so that every ray below meets the z = 1 face
+    const Camera camera = test::look_at(eye, eye + glm::vec3(float(std::sin(t)), 0, float(std::cos(t))));
+    return tracer.trace_pixel(camera, 3, 3, 1, 1, options);
+  };
+  const RayTree below = children(20);
+  ASSERT_EQ(below.nodes.size(), 3u);
+  EXPECT_EQ(below.nodes[1].kind, RayKind::reflected);
+  EXPECT_NEAR(below.nodes[1].weight.r, 0.05f, 1e-6f);
+  EXPECT_EQ(below.nodes[2].kind, RayKind::transmitted);
+  EXPECT_NEAR(below.nodes[2].weight.r, 0.9f, 1e-6f);
+  const RayTree beyond = children(60);
+  ASSERT_EQ(beyond.nodes.size(), 2u) << "no transmitted ray under total internal reflection";
+  EXPECT_EQ(beyond.nodes[1].kind, RayKind::reflected);
+  EXPECT_NEAR(beyond.nodes[1].weight.r, 0.95f, 1e-6f);
+  // With Fresnel the reflected ray takes kr + kt*F and the transmitted one kt*(1 - F).
+  options.fresnel = true;
+  const RayTree fresnel = children(0);
+  ASSERT_EQ(fresnel.nodes.size(), 3u);
+  EXPECT_NEAR(fresnel.nodes[1].weight.r, 0.05f + 0.9f * 0.04f, 1e-5f);
+  EXPECT_NEAR(fresnel.nodes[2].weight.r, 0.9f * 0.96f, 1e-5f);
+}
+
+// ---- Energy never grows along a path ------------------------------------------------------------
+// In every ray tree of the shipped scenes, with and without Fresnel: a hit's secondary rays
+// weigh at most 1 together, so each ray's share of the pixel is at most its parent's.
+TEST(WhittedTracer, EnergyNeverGrowsAlongAPath) {
+  for (const char* name : {"whitted", "cornell_box"}) {
+    const Scene scene = shipped(name);
+    WhittedRenderer tracer(scene);
+    for (bool fresnel : {false, true}) {
+      WhittedOptions options;
+      options.fresnel = fresnel;
+      options.max_depth = 8;
+      int secondary = 0;
+      for (int y = 0; y < 30; y += 2)
+        for (int x = 0; x < 40; x += 2) {
+          const RayTree tree = tracer.trace_pixel(scene.cameras[0], 40, 30, x, y, options);
+          std::vector<Rgb> children_weight(tree.nodes.size(), Rgb(0.0f)), share(tree.nodes.size());
+          for (const RayTreeNode& n : tree.nodes) {
+            share[size_t(n.id)] = (n.parent >= 0 ? share[size_t(n.parent)] : Rgb(1.0f)) * n.weight;
+            if (n.parent < 0 || n.kind == RayKind::shadow) continue;
+            ++secondary;
+            children_weight[size_t(n.parent)] += n.weight;
+            for (int c = 0; c < 3; ++c)
+              EXPECT_LE(share[size_t(n.id)][c], share[size_t(n.parent)][c] + 1e-6f) << name;
+          }
+          for (const Rgb& w : children_weight)
+            for (int c = 0; c < 3; ++c) EXPECT_LE(w[c], 1.0f + 1e-6f) << name;
+        }
+      if (std::string(name) == "whitted") {
+        EXPECT_GT(secondary, 50) << "the test saw secondary rays";
+      }
+    }
+  }
+}
+
+// ---- No acne, no self-intersection ---------------------------------------------------------------
+// A plane far from the origin (coordinates near 1000, where a float's ULP is 6e-5) under a
+// directional light at 60 degrees: every pixel must show the closed form kd/pi E cos(theta), none
+// darkened by its own shadow ray hitting the plane it leaves.
+TEST(WhittedTracer, NoShadowAcneOnAFlatSurfaceFarFromTheOrigin) {
+  for (const glm::vec3 at : {glm::vec3(0.0f), glm::vec3(1000.0f, 1000.0f, -1000.0f)}) {
+    Scene scene;
+    scene.materials.push_back(test::matte(Rgb(0.5f)));
+    scene.meshes.push_back(test::quad("plane", at + glm::vec3(-50, 0, -50), {0, 0, 100}, {100, 0, 0}, 0));
+    Light sun;
+    sun.type = LightType::directional;
+    sun.direction = glm::normalize(glm::vec3(std::sin(1.0472f), -std::cos(1.0472f), 0.0f));
+    sun.intensity = Rgb(3.0f);
+    scene.lights.push_back(sun);
+    const Camera camera = test::look_at(at + glm::vec3(0, 3, 6), at);
+    WhittedRenderer tracer(scene);
+    const Image image = tracer.render(camera, 64, 48, WhittedOptions{});
+    const float expected = float(0.5 / pi * 3.0 * 0.5);  // cos(60 degrees) = 0.5
+    int plane = 0;
+    for (const Rgb& p : image.pixels)
+      if (p.r > 0.0f) {
+        ++plane;
+        EXPECT_NEAR(p.r, expected, 1e-4f * expected);
+      }
+    EXPECT_GT(plane, 64 * 48 / 3) << "the plane fills the lower part of the picture";
+    const int dark_on_plane = int(std::count_if(image.pixels.begin() + 64 * 30, image.pixels.end(),
+                                                 [](const Rgb& p) { return p.r == 0.0f; }));
+    EXPECT_EQ(dark_on_plane, 0) << "no speckles of shadow acne";
+  }
+}
+
+// On curved glass and mirrors (the shipped scene's tessellated spheres, smooth normals), no
+// secondary ray hits the surface it leaves: every hit is farther than a hundredth of the
+// spheres' radius, and rays inside the glass sphere cross it (their hit is on the far side).
+TEST(WhittedTracer, SecondaryRaysNeverHitTheSurfaceTheyLeave) {
+  const Scene scene = shipped("whitted");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 6;
+  int inside = 0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 80; ++x) {
+      const RayTree tree = tracer.trace_pixel(scene.cameras[0], 80, 60, x, y, options);
+      for (const RayTreeNode& n : tree.nodes) {
+        if (n.kind == RayKind::shadow || n.kind == RayKind::primary || !n.hit) continue;
+        EXPECT_GT(n.t, 0.005f) << "pixel " << x << "," << y << " node " << n.id;
+        const RayTreeNode& parent = tree.nodes[size_t(n.parent)];
+        if (n.kind == RayKind::transmitted && parent.mesh == "glass_sphere" && n.mesh == "glass_sphere") {
+          ++inside;
+          EXPECT_GT(n.t, 0.05f);  // a chord of a 0.5 m sphere, not a graze of the entry point
+        }
+      }
+    }
+  EXPECT_GT(inside, 100);
+}
+
+// ---- The picture is deterministic; the ray tree agrees with the render -------------------------
+TEST(WhittedTracer, SameSettingsGiveTheSameImageBitForBit) {
+  const Scene scene = shipped("cornell_box");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.spp = 4;
+  options.light_samples = 4;
+  const Image a = tracer.render(scene.cameras[0], 48, 48, options);
+  const Image b = tracer.render(scene.cameras[0], 48, 48, options);
+  WhittedRenderer again(scene);
+  const Image c = again.render(scene.cameras[0], 48, 48, options);
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  EXPECT_TRUE(std::equal(a.pixels.begin(), a.pixels.end(), b.pixels.begin()));
+  EXPECT_TRUE(std::equal(a.pixels.begin(), a.pixels.end(), c.pixels.begin()));
+  // The soft shadows really are sampled (N-rooks), not N copies of the centroid.
+  options.light_samples = 1;
+  const Image hard = tracer.render(scene.cameras[0], 48, 48, options);
+  EXPECT_FALSE(std::equal(a.pixels.begin(), a.pixels.end(), hard.pixels.begin()));
+}
+
+TEST(WhittedTracer, RayTreeSumsToTheRenderedPixel) {
+  const Scene scene = shipped("whitted");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.spp = 4;
+  const Image image = tracer.render(scene.cameras[0], 40, 30, options);
+  for (const auto& [x, y] : {std::pair{12, 10}, std::pair{25, 14}, std::pair{5, 25}, std::pair{30, 2}}) {
+    const RayTree tree = tracer.trace_pixel(scene.cameras[0], 40, 30, x, y, options);
+    Rgb sum(0.0f);
+    int primaries = 0;
+    for (const RayTreeNode& n : tree.nodes)
+      if (n.parent < 0) {
+        sum += n.contribution;
+        ++primaries;
+      }
+    EXPECT_EQ(primaries, 4);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(sum[c], image.at(x, y)[c], 1e-5f + 1e-5f * image.at(x, y)[c]);
+      EXPECT_NEAR(tree.pixel[c], image.at(x, y)[c], 1e-5f + 1e-5f * image.at(x, y)[c]);
+    }
+    // Each node's contribution is its radiance times the weights down the tree; a hit's
+    // radiance is its local colour plus its secondary rays' weighted radiance.
+    for (const RayTreeNode& n : tree.nodes) {
+      if (!n.hit || n.kind == RayKind::shadow) continue;
+      Rgb expected = n.local;
+      for (const RayTreeNode& child : tree.nodes)
+        if (child.parent == n.id && child.kind != RayKind::shadow) expected += child.weight * child.radiance;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(n.radiance[c], expected[c], 1e-5f + 1e-5f * expected[c]);
+    }
+  }
+}
+
+// ---- Slide 27: the brute-force intersector sees the same picture, at a counted cost --------------
+TEST(WhittedTracer, BruteForceAgreesWithEmbreeAndCountsItsTests) {
+  const Scene scene = shipped("whitted");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  const Image bvh = tracer.render(scene.cameras[0], 32, 24, options);
+  const Counters bvh_counters = tracer.counters();
+  options.brute_force = true;
+  const Image brute = tracer.render(scene.cameras[0], 32, 24, options);
+  const Counters& brute_counters = tracer.counters();
+  int differ = 0;
+  for (size_t i = 0; i < bvh.pixels.size(); ++i)
+    differ += glm::length(bvh.pixels[i] - brute.pixels[i]) > 1e-3f;
+  EXPECT_LE(differ, 2) << "at most a pixel or two where a ray grazes an edge";
+  EXPECT_EQ(bvh_counters.intersection_tests, 0u);
+  // Every ray is tested against every triangle (shadow rays may stop at their first occluder).
+  const uint64_t triangles = scene.triangle_count();
+  const uint64_t nearest = brute_counters[RayKind::primary] + brute_counters[RayKind::reflected] +
+                           brute_counters[RayKind::transmitted];
+  EXPECT_GE(brute_counters.intersection_tests, nearest * triangles);
+  EXPECT_LE(brute_counters.intersection_tests, brute_counters.total_rays() * triangles);
+}
+
+// ---- Cancellation and the per-tile callback ------------------------------------------------------
+TEST(WhittedTracer, TilesAreReportedAndCancellationStopsTheRender) {
+  const Scene scene = shipped("whitted");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.tile_size = 8;
+  int reported = 0, last_done = 0;
+  tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone& t) {
+    ++reported;
+    EXPECT_EQ(t.done, last_done + 1);  // the calls are serialised
+    last_done = t.done;
+    EXPECT_EQ(t.total, 48);
+  });
+  EXPECT_EQ(reported, 48);
+
+  std::atomic<bool> cancel{false};
+  reported = 0;
+  const Image cut = tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone&) {
+    ++reported;
+    cancel = true;  // the viewer's camera moved
+  }, &cancel);
+  EXPECT_LT(reported, 48);
+  EXPECT_LT(tracer.counters()[RayKind::primary], uint64_t(64 * 48));
+  cancel = true;
+  reported = 0;
+  tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone&) { ++reported; }, &cancel);
+  EXPECT_EQ(reported, 0);
+}
+
+// ---- Slide 27: adaptive supersampling spends rays only where the picture changes -----------------
+TEST(WhittedTracer, AdaptiveSupersamplingSubdividesOnlyAtEdges) {
+  const Scene scene = shipped("whitted");
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.spp = 16;
+  const Image reference = tracer.render(scene.cameras[0], 64, 48, options);
+  const uint64_t uniform = tracer.counters().samples;
+  options.sampling = Sampling::adaptive;
+  const Image adaptive = tracer.render(scene.cameras[0], 64, 48, options);
+  const uint64_t corners = 65 * 49;
+  EXPECT_GT(tracer.counters().samples, corners + 5 * 64) << "edges were subdivided";
+  // Whitted's busy scene (checker edges, two spheres) takes about 43% of the uniform 4x4 count.
+  EXPECT_LT(tracer.counters().samples, uniform / 2) << "flat regions were not";
+  // Close to the 4x4 stratified picture: mean difference under 2% of the mean radiance.
+  double diff = 0, mean = 0;
+  for (size_t i = 0; i < adaptive.pixels.size(); ++i) {
+    diff += glm::length(adaptive.pixels[i] - reference.pixels[i]);
+    mean += glm::length(reference.pixels[i]);
+  }
+  EXPECT_LT(diff / mean, 0.02);
+}
+
+}  // namespace
+}  // namespace luz::rt
