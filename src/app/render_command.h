@@ -25,6 +25,9 @@ inline constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);
 
+// Parses "R,G,B" (three finite numbers >= 0); false when malformed.
+bool parse_rgb(const std::string& text, Rgb& colour);
+
 // Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
 // any message to stderr.
 int run_render(const RenderSettings& settings);
