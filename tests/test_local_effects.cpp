@@ -22,9 +22,11 @@
 #include <fmt/format.h>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
+#include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "local/local_renderer.h"
 #include "support.h"
@@ -447,6 +449,102 @@ TEST(LocalEffects, MirrorBallAloneReflectsTheEnvironmentImage) {
                                                  << " expected " << rgb(expected);
   });
   EXPECT_GT(checked, 800);
+}
+
+}  // namespace
+}  // namespace luz
+
+namespace luz {
+namespace {
+
+// ---- The plate: distance attenuation and non-uniform lights at floor points ----------------------
+// scenes/local_effects.gltf with one light on at a time: every floor pixel of the front row is the
+// closed form Ia ka + kd/pi * I * f_att(d) * spot * cos(theta) (the floor has ks = 0), at the floor
+// point the pixel's central ray meets (nothing stands between the camera and the front row).
+class Plate : public ::testing::Test {
+protected:
+  void SetUp() override { loaded_ = io::load_gltf(test::scene_dir() / "local_effects.gltf"); }
+
+  // Renders with only `light_name` on and checks every floor pixel within `radius` of its foot.
+  // Returns the radiance at the foot and at `probe` metres from it, for comparisons.
+  std::pair<float, float> check(const std::string& light_name, float radius, float probe) {
+    Scene& scene = loaded_.scene;
+    const Light* only = nullptr;
+    for (Light& light : scene.lights) {
+      light.enabled = light.name == light_name;
+      if (light.enabled) only = &light;
+    }
+    EXPECT_NE(only, nullptr) << light_name;
+    if (!only) return {0, 0};
+    const Camera& camera = scene.cameras.front();
+    constexpr int width = 320, height = 240;
+    LocalRenderer renderer(scene);
+    const Image image = renderer.render(camera, width, height, LocalOptions{});
+    const Material& floor = scene.materials[size_t(scene.meshes[0].material)];
+    const glm::mat4 to_world = glm::inverse(camera.projection(float(width) / float(height), 100.0f) * camera.view());
+    const glm::vec3 foot(only->position.x, 0.0f, only->position.z);
+    int checked = 0, failed = 0;
+    std::string first;
+    float at_foot = 0.0f, at_probe = 0.0f, best_foot = 1e9f, best_probe = 1e9f;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        // The pixel centre's ray, from the near to the far plane, meets the floor y = 0 at P.
+        const float nx = 2.0f * (float(x) + 0.5f) / float(width) - 1.0f, ny = 1.0f - 2.0f * (float(y) + 0.5f) / float(height);
+        const glm::vec4 a = to_world * glm::vec4(nx, ny, -1.0f, 1.0f), b = to_world * glm::vec4(nx, ny, 1.0f, 1.0f);
+        const glm::vec3 near_point = glm::vec3(a) / a.w, far_point = glm::vec3(b) / b.w;
+        const float t = near_point.y / (near_point.y - far_point.y);
+        const glm::vec3 P = near_point + t * (far_point - near_point);
+        const float from_foot = glm::length(P - foot);
+        if (from_foot > radius) continue;
+        const glm::vec3 to_light = only->position - P;
+        const float d = glm::length(to_light);
+        const float cos_theta = to_light.y / d;
+        const double f_att = only->attenuation.classroom
+                                 ? 1.0 / (only->attenuation.c.x + only->attenuation.c.y * d + only->attenuation.c.z * d * d)
+                                 : 1.0 / (double(d) * d);
+        // The spot's distributions written out here, not taken from core::Light.
+        double spot = 1.0;
+        if (only->type == LightType::spot) {
+          const double cos_angle = glm::dot(glm::normalize(only->direction), -to_light / d);
+          const double cos_outer = std::cos(only->outer_cone), cos_inner = std::cos(only->inner_cone);
+          if (only->warn_exponent > 0) spot = cos_angle >= cos_outer ? std::pow(cos_angle, only->warn_exponent) : 0.0;
+          else spot = std::pow(std::clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0), 2.0);
+        }
+        const Rgb expected = scene.ambient * floor.ka +
+                             floor.kd * float(only->intensity.r / 3.14159265358979 * f_att * spot * cos_theta);
+        ++checked;
+        const Rgb got = image.at(x, y);
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(got[c] - expected[c]) > 0.01f * expected[c] + 1e-5f) {
+            if (failed++ < 5)
+              first += fmt::format("  ({}, {}) at {:.3f} m from the foot: {} expected {}\n", x, y, from_foot, rgb(got), rgb(expected));
+            break;
+          }
+        if (from_foot < best_foot) best_foot = from_foot, at_foot = got.r;
+        if (std::abs(from_foot - probe) < best_probe) best_probe = std::abs(from_foot - probe), at_probe = got.r;
+      }
+    EXPECT_GT(checked, 200) << light_name;
+    EXPECT_EQ(failed, 0) << light_name << ": " << failed << " of " << checked << " floor pixels:\n" << first;
+    return {at_foot, at_probe};
+  }
+
+  io::LoadedScene loaded_;
+};
+
+TEST_F(Plate, PhysicalAndClassroomAttenuationAreTheirClosedForms) {
+  const auto physical = check("lamp_physical", 1.2f, 0.8f);
+  const auto classroom = check("lamp_classroom", 1.2f, 0.8f);
+  // Equal below the lamps (1/d^2 = 1/(0.35 d) at d = 0.35 m); 0.8 m away the classroom lamp,
+  // falling as 1/d, keeps more of its light: the wider pool the plate shows.
+  EXPECT_NEAR(physical.first, classroom.first, 0.02f * physical.first);
+  EXPECT_GT(classroom.second / classroom.first, 2.0f * physical.second / physical.first);
+}
+
+TEST_F(Plate, SmoothConeAndWarnSpotAreTheirClosedForms) {
+  const auto smooth = check("spot_smooth", 1.0f, 0.5f);
+  const auto warn = check("spot_warn", 1.0f, 0.5f);
+  EXPECT_NEAR(smooth.first, warn.first, 0.02f * smooth.first) << "the same spot on its axis";
+  EXPECT_GT(smooth.second, 0.0f);
 }
 
 }  // namespace

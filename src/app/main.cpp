@@ -56,8 +56,7 @@ void add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
   render.add_option("--reflection-map-size", local.reflection.resolution, "Texels per side of each cube face (default 256)")
       ->check(CLI::Range(8, 4096));
   render.add_option("--environment", local.reflection.environment,
-                    "Equirectangular image of the surroundings, seen in reflections where no object is")
-      ->check(CLI::ExistingFile);
+                    "Equirectangular image of the surroundings, seen in reflections where no object is");
 }
 
 void add_render_flags(CLI::App& render, RenderSettings& settings) {

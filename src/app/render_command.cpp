@@ -73,6 +73,9 @@ bool parse_rgb(const std::string& text, Rgb& colour) {
 
 int run_render(const RenderSettings& settings) {
   try {
+    if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
+      throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+                                                settings.local.fog.far, settings.local.fog.near));
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
