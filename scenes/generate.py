@@ -748,9 +748,9 @@ def local_effects():
             spot=(0.0, math.radians(40.0)), extras={"warn_exponent": 30.0})
     # The key light of the middle row (a spot: its shadows come from a perspective map) and a
     # weak sun over everything (an orthographic map), so the far floor is lit for the fog.
-    g.light("key_spot", "spot", (-0.5, 4.5, 0.5), (0.0, 0.0, -1.8), 10.0,
+    g.light("key_spot", "spot", (-0.5, 4.5, 0.5), (0.0, 0.0, -1.8), 25.0,
             spot=(math.radians(30.0), math.radians(40.0)))
-    g.light("sun", "directional", (0.0, 10.0, 0.0), (3.0, 0.0, -4.0), 0.3)
+    g.light("sun", "directional", (0.0, 10.0, 0.0), (3.0, 0.0, -4.0), 0.2)
 
     g.camera("effects_camera", (0.0, 3.0, 5.6), (0.0, 0.2, -1.8), math.radians(50.0), 4.0 / 3.0,
              0.1, 100.0)
