@@ -84,12 +84,13 @@ void effects_section(LocalOptions& o) {
   // Blocking of the sources by occlusion.
   term_checkbox("shadows S_i (shadow maps)  [H]", &o.shadows.on, shadow_colour);
   if (o.shadows.on) {
-    ImGui::DragFloat("constant bias (m)", &o.shadows.constant_bias, 0.0002f, 0.0f, 0.5f, "%.4f");
-    ImGui::DragFloat("slope bias (texels)", &o.shadows.slope_bias, 0.02f, 0.0f, 20.0f, "%.2f");
-    ImGui::DragFloat("normal offset (texels)", &o.shadows.normal_offset, 0.02f, 0.0f, 20.0f, "%.2f");
+    ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, 0.0f, 0.5f, "%.4f");
+    ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, 0.0f, 20.0f, "%.2f");
+    ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, 0.0f, 20.0f, "%.2f");
     int size_index = std::clamp(int(std::lround(std::log2(float(o.shadows.map_size)))) - 8, 0, 4);
     ImGui::Combo("map size", &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
     o.shadows.map_size = 256 << size_index;
+    ImGui::TextDisabled("bias + slope·texel·tan θ; lookup moved offset texels along N");
     ImGui::TextDisabled("point lights, emitters: cube maps; spots, sun: one map");
   }
 
