@@ -14,5 +14,20 @@ done
 "$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --out "$out/whitted-phong.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --blinn --size 480x360 -q --out "$out/phong_spheres-blinn.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model phong --no-specular --size 480x360 -q --out "$out/phong_spheres-no-specular.png"
+# Slide 19's other possibilities on scenes/local_effects.gltf, one switch at a time, then all.
+plate="$root/scenes/local_effects.gltf"
+fog=(--fog linear --fog-near 6 --fog-far 24)
+"$luz" render "$plate" --model phong --size 480x360 -q --out "$out/local_effects-plain.png"
+"$luz" render "$plate" --model phong --size 480x360 -q "${fog[@]}" --out "$out/local_effects-fog.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --shadows --out "$out/local_effects-shadows.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --transparency --out "$out/local_effects-transparency.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --reflection-map --out "$out/local_effects-reflection.png"
+for model in flat gouraud phong; do
+  "$luz" render "$plate" --model "$model" --size 480x360 -q --shadows --transparency --reflection-map "${fog[@]}" \
+    --out "$out/local_effects-all-$model.png"
+done
+"$luz" render "$root/scenes/cornell_box.gltf" --model phong --size 360x360 -q --shadows --out "$out/cornell_box-shadows.png"
+"$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --shadows --reflection-map --transparency \
+  --out "$out/whitted-effects.png"
 "$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

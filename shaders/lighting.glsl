@@ -324,7 +324,12 @@ void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
   vec3 I = radiance(terms, uv, emitting_side);
   if (u_reflection_on) I += u_kr * reflected(R);  // + kr Ir
   float f = fog_factor(length(P - u_eye));
-  frag_radiance = vec4(f * I + (1.0 - f) * u_fog_colour, 1.0);
-  frag_transmittance = vec4(u_transparent ? f * u_kt : vec3(0.0), 0.0);  // alpha stays 1
+  vec3 transmitted = u_transparent ? f * u_kt : vec3(0.0);
+  // Alpha: how much of the pixel is covered, for the reflection cube maps (cleared to 0, where the
+  // surroundings show through by 1 - alpha): a transparent surface covers 1 - kt of what is behind
+  // it (kt's mean: one alpha for three channels).
+  float through = (transmitted.r + transmitted.g + transmitted.b) / 3.0;
+  frag_radiance = vec4(f * I + (1.0 - f) * u_fog_colour, 1.0 - through);
+  frag_transmittance = vec4(transmitted, through);
 }
 #endif
