@@ -21,5 +21,20 @@ done
 "$luz" render "$root/scenes/whitted.gltf" --model whitted --spp 4 --depth 1 --size 480x360 -q --out "$out/whitted-depth1.png"
 "$luz" render "$root/scenes/cornell_box.gltf" --model whitted --spp 4 --size 360x360 -q --out "$out/cornell_box-whitted.png"
 "$luz" render "$root/scenes/cornell_box.gltf" --model whitted --spp 4 --light-samples 16 --size 360x360 -q --out "$out/cornell_box-whitted-soft.png"
+# Slide 19's other possibilities on scenes/local_effects.gltf, one switch at a time, then all.
+plate="$root/scenes/local_effects.gltf"
+fog=(--fog linear --fog-near 6 --fog-far 24)
+"$luz" render "$plate" --model phong --size 480x360 -q --out "$out/local_effects-plain.png"
+"$luz" render "$plate" --model phong --size 480x360 -q "${fog[@]}" --out "$out/local_effects-fog.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --shadows --out "$out/local_effects-shadows.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --transparency --out "$out/local_effects-transparency.png"
+"$luz" render "$plate" --model phong --size 480x360 -q --reflection-map --out "$out/local_effects-reflection.png"
+for model in flat gouraud phong; do
+  "$luz" render "$plate" --model "$model" --size 480x360 -q --shadows --transparency --reflection-map "${fog[@]}" \
+    --out "$out/local_effects-all-$model.png"
+done
+"$luz" render "$root/scenes/cornell_box.gltf" --model phong --size 360x360 -q --shadows --out "$out/cornell_box-shadows.png"
+"$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --shadows --reflection-map --transparency \
+  --out "$out/whitted-effects.png"
 "$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

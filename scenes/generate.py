@@ -22,6 +22,7 @@ Sections
   [CORNELL]   cornell_box.gltf   (Cornell Program of Computer Graphics, measured data)
   [SPHERES]   phong_spheres.gltf (ks along the columns, Phong exponent n along the rows)
   [WHITTED]   whitted.gltf       (Whitted 1980, "An Improved Illumination Model for Shaded Display")
+  [EFFECTS]   local_effects.gltf (slide 19's other possibilities of the local models, one each)
   [CHECK]     validation of written files against SCENES.md's rules
   [MAIN]
 """
@@ -34,7 +35,7 @@ import struct
 import sys
 
 GENERATOR = "luz scenes/generate.py"
-SCENE_FILES = ("cornell_box", "phong_spheres", "whitted")
+SCENE_FILES = ("cornell_box", "phong_spheres", "whitted", "local_effects")
 
 
 # ==== [VECTORS] ================================================================================
@@ -256,6 +257,27 @@ class GltfBuilder:
                        "color": nums(color)})
         self.extensions_used.add("KHR_lights_punctual")
         return self.node(name, position,
+                         extensions={"KHR_lights_punctual": {"light": len(lights) - 1}})
+
+    def light(self, name, type_, position, target, intensity, color=(1.0, 1.0, 1.0), spot=None,
+              extras=None):
+        """A KHR_lights_punctual light of any type aimed from `position` at `target` (lights shine
+        down their node's -Z, as cameras look). `spot`: (inner, outer) cone angles in radians.
+        `extras`: Luz's light extras (attenuation, warn_exponent; SCENES.md)."""
+        lights = self.doc.setdefault("extensions", {}).setdefault(
+            "KHR_lights_punctual", {"lights": []})["lights"]
+        light = {"name": name, "type": type_, "intensity": num(intensity), "color": nums(color)}
+        if spot is not None:
+            light["spot"] = {"innerConeAngle": num(spot[0]), "outerConeAngle": num(spot[1])}
+        if extras:
+            light["extras"] = {k: (nums(v) if isinstance(v, (list, tuple)) else num(v))
+                               for k, v in extras.items()}
+        lights.append(light)
+        self.extensions_used.add("KHR_lights_punctual")
+        direction = sub(target, position)
+        # look_rotation needs an up vector off the aiming direction: straight down aims use -Z.
+        up = (0.0, 1.0, 0.0) if abs(normalize(direction)[1]) < 0.99 else (0.0, 0.0, -1.0)
+        return self.node(name, position, look_rotation(position, target, up),
                          extensions={"KHR_lights_punctual": {"light": len(lights) - 1}})
 
     def scene_extras(self, ambient, background, exposure):
@@ -621,6 +643,121 @@ def whitted():
     return g
 
 
+# ==== [EFFECTS] ================================================================================
+# Slide 19's "other possibilities" of the local models on one plate, each where the camera sees it
+# plainly (the README's table names the switch and the flag of each):
+#   front row, left to right: distance attenuation (two low point lights, physical 1/d^2 and the
+#     classroom 1/(0.35 d), equal straight below them), and non-uniform lights (a spot with a
+#     smooth cone edge, a spot with Warn's cos^p);
+#   middle row: blocking by occlusion (a box in the key spot's and the sun's light), a
+#     non-refractive pane (kt 0.6) in front of a red box and a yellow ball, a mirror ball (kr 0.8)
+#     before a green panel;
+#   behind: the floor recedes 16 m between coloured pillars, for the atmospheric attenuation.
+
+EFFECTS_FLOOR = (-4.0, 4.0, -16.0, 3.0)  # x0, x1, z0, z1, m
+EFFECTS_CELL = 0.25                      # m: fine enough for Gouraud to show the light pools
+EFFECTS_GREY = (0.55, 0.55, 0.55)
+
+
+def grid_floor(x0, x1, z0, z1, cell):
+    """A flat floor at y = 0 facing +Y, tessellated into cells with shared vertices."""
+    columns, rows = int(round((x1 - x0) / cell)), int(round((z1 - z0) / cell))
+    positions, normals, indices = [], [], []
+    for j in range(rows + 1):
+        for i in range(columns + 1):
+            positions.append((x0 + i * cell, 0.0, z0 + j * cell))
+            normals.append((0.0, 1.0, 0.0))
+    for j in range(rows):
+        for i in range(columns):
+            a = j * (columns + 1) + i
+            b, c, d = a + 1, a + columns + 2, a + columns + 1
+            # Counter-clockwise seen from +Y: a (x0, z0), d (x0, z0 + cell), c, b.
+            indices += [a, d, c, a, c, b]
+    return positions, normals, indices
+
+
+def box(centre, size):
+    """An axis-aligned box, flat faces wound counter-clockwise seen from outside."""
+    hx, hy, hz = (s / 2.0 for s in size)
+    cx, cy, cz = centre
+    positions, normals, indices = [], [], []
+    for axis in range(3):
+        for sign in (1.0, -1.0):
+            n = [0.0, 0.0, 0.0]
+            n[axis] = sign
+            u, v = (axis + 1) % 3, (axis + 2) % 3
+            corners = []
+            for du, dv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = sign
+                p[u], p[v] = du, dv
+                corners.append((cx + p[0] * hx, cy + p[1] * hy, cz + p[2] * hz))
+            points, face_normals, face_indices = oriented_quad(corners, tuple(n))
+            indices += [len(positions) + k for k in face_indices]
+            positions += points
+            normals += face_normals
+    return positions, normals, indices
+
+
+def local_effects():
+    g = GltfBuilder("local_effects")
+    floor = g.material("floor", EFFECTS_GREY, ks=0.0)
+    white = g.material("white", (0.75, 0.75, 0.75), ks=0.0)
+    red = g.material("red", (0.7, 0.08, 0.06), ks=0.2, shininess=40.0,
+                     roughness=roughness_for_shininess(40.0))
+    yellow = g.material("yellow", (0.75, 0.6, 0.08), ks=0.3, shininess=60.0,
+                        roughness=roughness_for_shininess(60.0))
+    green = g.material("green", (0.1, 0.5, 0.12), ks=0.0)
+    blue = g.material("pillar_blue", (0.12, 0.25, 0.7), ks=0.0)
+    orange = g.material("pillar_orange", (0.8, 0.4, 0.08), ks=0.0)
+    # kd + kt = 0.7 and kd + kr = 0.9: within the SCENES.md budget of 1.
+    pane = g.material("pane", (0.05, 0.08, 0.1), ks=0.4, shininess=200.0,
+                      roughness=roughness_for_shininess(200.0), kt=0.6)
+    mirror = g.material("mirror", (0.1, 0.1, 0.1), ks=0.5, shininess=200.0,
+                        roughness=roughness_for_shininess(200.0), kr=0.8)
+
+    g.mesh_node("floor", g.mesh("floor", [(g.geometry(*grid_floor(*EFFECTS_FLOOR, EFFECTS_CELL)), floor)]))
+    # Pillars along the receding floor: the fog takes their colour away with distance.
+    for k, z in enumerate((-4.0, -7.0, -10.0, -13.0)):
+        for side, x in (("left", -3.0), ("right", 3.0)):
+            name = "pillar_%s_%d" % (side, k)
+            material = blue if (k + (side == "right")) % 2 == 0 else orange
+            g.mesh_node(name, g.mesh(name, [(g.geometry(*box((x, 1.0, z), (0.4, 2.0, 0.4))), material)]))
+    # Middle row. Occlusion: a box in the key spot's and the sun's light.
+    g.mesh_node("shadow_box", g.mesh("shadow_box", [(g.geometry(*box((-2.6, 0.35, -1.6), (0.7, 0.7, 0.7))), white)]))
+    # Transparency: a thin pane, and what lies behind it.
+    g.mesh_node("pane", g.mesh("pane", [(g.geometry(*box((0.0, 0.65, -1.0), (1.6, 1.2, 0.02))), pane)]))
+    g.mesh_node("red_box", g.mesh("red_box", [(g.geometry(*box((-0.4, 0.3, -2.0), (0.5, 0.6, 0.5))), red)]))
+    g.mesh_node("yellow_ball", g.mesh("yellow_ball", [(g.geometry(*uv_sphere(0.3, 48, 32)), yellow)]),
+                (0.45, 0.3, -2.0))
+    # Reflection map: a mirror ball before a green panel (and the rest of the plate around it).
+    g.mesh_node("mirror_ball", g.mesh("mirror_ball", [(g.geometry(*uv_sphere(0.5, 64, 48)), mirror)]),
+                (2.6, 0.5, -1.6))
+    g.mesh_node("green_panel", g.mesh("green_panel", [(g.geometry(*box((2.6, 0.8, -2.6), (1.8, 1.6, 0.05))), green)]))
+
+    # Front row: distance attenuation. Both lamps 0.35 m over the floor, equal straight below them
+    # (1/d^2 = 1/(0.35 d) at d = 0.35); away from there the classroom lamp falls as 1/d only.
+    g.light("lamp_physical", "point", (-2.4, 0.35, 0.8), (-2.4, 0.0, 0.8), 0.3)
+    g.light("lamp_classroom", "point", (-0.8, 0.35, 0.8), (-0.8, 0.0, 0.8), 0.3,
+            extras={"attenuation": [0.0, 0.35, 0.0]})
+    # Non-uniform lights: the same spot twice, 1.6 m up, with a smooth cone edge and with Warn's
+    # cos^30 (half its axis intensity at 12 degrees off the axis).
+    g.light("spot_smooth", "spot", (0.8, 1.6, 0.8), (0.8, 0.0, 0.8), 6.0,
+            spot=(math.radians(12.0), math.radians(22.0)))
+    g.light("spot_warn", "spot", (2.4, 1.6, 0.8), (2.4, 0.0, 0.8), 6.0,
+            spot=(0.0, math.radians(40.0)), extras={"warn_exponent": 30.0})
+    # The key light of the middle row (a spot: its shadows come from a perspective map) and a
+    # weak sun over everything (an orthographic map), so the far floor is lit for the fog.
+    g.light("key_spot", "spot", (-0.5, 4.5, 0.5), (0.0, 0.0, -1.8), 25.0,
+            spot=(math.radians(30.0), math.radians(40.0)))
+    g.light("sun", "directional", (0.0, 10.0, 0.0), (3.0, 0.0, -4.0), 0.2)
+
+    g.camera("effects_camera", (0.0, 3.0, 5.6), (0.0, 0.2, -1.8), math.radians(50.0), 4.0 / 3.0,
+             0.1, 100.0)
+    g.scene_extras(ambient=(0.02, 0.02, 0.02), background=(0.05, 0.06, 0.08), exposure=0.0)
+    return g
+
+
 # ==== [CHECK] ==================================================================================
 # Independent of the builder above: reads the files back and applies the rules of SCENES.md
 # and of the glTF 2.0 specification that matter to Luz's loader.
@@ -840,7 +977,7 @@ def main(argv):
 
     if args.check is None:
         os.makedirs(args.out, exist_ok=True)
-        for build in (cornell_box, phong_spheres, whitted):
+        for build in (cornell_box, phong_spheres, whitted, local_effects):
             build().write(args.out)
         folder = args.out
     else:

@@ -1,12 +1,13 @@
 #version 330 core
-// Flat shading: the triangle's one colour, computed in flat.geom.
+// Flat shading: the triangle's one colour, computed in flat.geom (the fog, a matter of the
+// distance to the eye, per fragment).
 flat in vec3 g_ambient;
 flat in vec3 g_diffuse;
 flat in vec3 g_specular;
 flat in vec2 g_uv;
-
-layout(location = 0) out vec4 frag_radiance;
+flat in vec3 g_mirror;  // R at the centroid
+in vec3 g_position;
 
 void main() {
-  frag_radiance = vec4(radiance(Terms(g_ambient, g_diffuse, g_specular), g_uv, gl_FrontFacing), 1.0);
+  write_fragment(Terms(g_ambient, g_diffuse, g_specular), g_uv, gl_FrontFacing, g_mirror, g_position);
 }

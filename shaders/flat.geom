@@ -13,6 +13,8 @@ flat out vec3 g_ambient;
 flat out vec3 g_diffuse;
 flat out vec3 g_specular;
 flat out vec2 g_uv;
+flat out vec3 g_mirror;
+out vec3 g_position;
 
 void main() {
   // The centroid (named `middle`: "centroid" is a GLSL keyword).
@@ -25,6 +27,7 @@ void main() {
 
   Terms terms = local_model(middle, N);
   vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
+  vec3 mirror = mirror_direction(middle, N);
 
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
@@ -32,6 +35,8 @@ void main() {
     g_diffuse = terms.diffuse;
     g_specular = terms.specular;
     g_uv = uv;
+    g_mirror = mirror;
+    g_position = v_position[i];
     EmitVertex();
   }
   EndPrimitive();

@@ -9,12 +9,12 @@ in vec3 v_front_diffuse;
 in vec3 v_front_specular;
 in vec3 v_back_diffuse;
 in vec3 v_back_specular;
-
-layout(location = 0) out vec4 frag_radiance;
+in vec3 v_front_mirror;
+in vec3 v_back_mirror;
 
 void main() {
   bool back = viewer_sees_back(v_position, v_normal);  // two-sided lighting
   Terms terms = back ? Terms(v_ambient, v_back_diffuse, v_back_specular)
                      : Terms(v_ambient, v_front_diffuse, v_front_specular);
-  frag_radiance = vec4(radiance(terms, v_uv, gl_FrontFacing), 1.0);
+  write_fragment(terms, v_uv, gl_FrontFacing, back ? v_back_mirror : v_front_mirror, v_position);
 }

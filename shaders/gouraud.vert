@@ -16,6 +16,8 @@ out vec3 v_front_diffuse;  // I_D, I_S on the side the normal points to
 out vec3 v_front_specular;
 out vec3 v_back_diffuse;   // I_D, I_S on the other side
 out vec3 v_back_specular;
+out vec3 v_front_mirror;   // R per vertex, interpolated (as fixed-function GL's reflection texgen)
+out vec3 v_back_mirror;
 
 void main() {
   vec3 N = normalize(a_normal);
@@ -26,6 +28,8 @@ void main() {
   v_front_specular = front.specular;
   v_back_diffuse = back.diffuse;
   v_back_specular = back.specular;
+  v_front_mirror = mirror_direction(a_position, N);
+  v_back_mirror = mirror_direction(a_position, -N);
 
   v_position = a_position;
   v_normal = a_normal;

@@ -1,7 +1,7 @@
 // lighting.glsl: the lecture's local illumination model (slides 15-19), shared by the flat,
 // Gouraud and Phong programs (spliced in after each stage's #version line).
 //
-//   I = I_A + sum_i (I_D,i + I_S,i)  (+ Le)
+//   I = I_A + sum_i S_i (I_D,i + I_S,i)  (+ Le)  + kr Ir  + kt It
 //   I_A = Ia * ka                       ambient            (slide 15)
 //   I_D = IL * kd * cos(theta)          Lambert            (slide 16)
 //   I_S = IL * ks * cos^n(alpha)        Phong's highlight  (slide 17)
@@ -10,7 +10,16 @@
 // The 1/pi makes the diffuse term Lambert's law in radiance, kd/pi * E (SCENES.md), so this
 // picture agrees with the ray tracer and radiosity.
 //
-// Sections: [limits and uniforms] [lights] [the formula] [two-sided lighting]
+// Slide 19's other possibilities, each behind its switch (local/local_options.h):
+//   f_att(d), spot and Warn's cos^p    per light, in punctual_IL()           (distance, non-uniform)
+//   S_i                                shadow maps, shadow_factor()          (blocking by occlusion)
+//   kr Ir                              reflection map, reflected()           (reflection maps)
+//   kt It                              blending with what lies behind        (non-refractive transparency)
+//   I' = f I + (1 - f) C_fog           depth cueing, fog_factor()            (atmospheric attenuation)
+// Whitted's formula (slide 25) is the same sum with S_i, Ir and It found by rays.
+//
+// Sections: [limits and uniforms] [lights] [shadows: S_i] [the formula] [reflection map: kr Ir]
+//           [atmospheric attenuation] [two-sided lighting] [the fragment]
 
 // ---- [limits and uniforms] --------------------------------------------------------------------
 // Must match LocalRenderer's constants (local_renderer.cpp), which merge or drop extra lights.
@@ -21,6 +30,23 @@ const float PI = 3.14159265358979;
 const int POINT = 0;
 const int SPOT = 1;
 const int DIRECTIONAL = 2;
+const int SHADOW_NONE = 0;
+const int SHADOW_CUBE = 1;
+const int SHADOW_PERSPECTIVE = 2;
+const int SHADOW_ORTHOGRAPHIC = 3;
+const int FOG_OFF = 0;
+const int FOG_LINEAR = 1;
+const int FOG_EXPONENTIAL = 2;
+
+// Where a light's shadow map is (local/shadow_maps.h ShadowView).
+struct ShadowView {
+  int kind;        // SHADOW_NONE, SHADOW_CUBE, SHADOW_PERSPECTIVE or SHADOW_ORTHOGRAPHIC
+  int layer;       // the first layer (a cube: six) in u_shadow_maps
+  vec3 origin;     // the light's position (cube, perspective)
+  vec3 direction;  // the way a directional light travels (orthographic)
+  mat4 matrix;     // world -> the map's clip space (perspective, orthographic)
+  float texel;     // a texel's world size, per metre of distance (cube, perspective) or absolute
+};
 
 struct PunctualLight {
   int type;             // POINT, SPOT or DIRECTIONAL
@@ -32,6 +58,7 @@ struct PunctualLight {
   float cos_inner;      // spot cone (glTF smooth falloff between inner and outer)
   float cos_outer;
   float warn_exponent;  // > 0: Warn's cos^p spot inside the outer cone
+  ShadowView shadow;
 };
 
 // An emissive triangle as a point light at its centroid (SCENES.md): I = Le * A * cos(theta_e).
@@ -39,6 +66,7 @@ struct AreaLight {
   vec3 position;  // the triangle's centroid ("centroid" is a GLSL keyword)
   vec3 normal;  // unit, the side it emits from
   vec3 power;   // Le * A
+  ShadowView shadow;  // its group's cube (kind SHADOW_NONE while shadows are off)
 };
 
 uniform int u_light_count;
@@ -64,6 +92,26 @@ uniform bool u_diffuse_on;
 uniform bool u_specular_on;
 uniform bool u_emission_on;
 uniform bool u_blinn;
+
+// Slide 19's switches (LocalOptions' sub-structs).
+uniform bool u_shadows_on;
+uniform sampler2DArray u_shadow_maps;  // R32F, one layer per map (local/shadow_maps.h)
+uniform float u_shadow_constant_bias;  // m
+uniform float u_shadow_slope_bias;     // texels per unit of tan(theta)
+uniform float u_shadow_normal_offset;  // texels
+uniform bool u_reflection_on;          // this mesh has kr > 0 and a reflection map
+uniform vec3 u_kr;
+uniform samplerCube u_reflection_map;  // the surroundings seen from the object's centre
+uniform bool u_has_environment;
+uniform sampler2D u_environment;       // equirectangular, linear
+uniform vec3 u_background;
+uniform int u_fog_mode;                // FOG_OFF, FOG_LINEAR, FOG_EXPONENTIAL
+uniform vec3 u_fog_colour;
+uniform float u_fog_near;
+uniform float u_fog_far;
+uniform float u_fog_density;
+uniform bool u_transparent;            // this mesh is drawn blended over what lies behind it
+uniform vec3 u_kt;
 
 // ---- [lights] ----------------------------------------------------------------------------------
 // f_att(d) as core/light.cpp Attenuation::factor.
@@ -108,6 +156,66 @@ vec3 area_IL(int i, vec3 P, out vec3 L) {
   return light.power * cos_theta_e / (d * d) / PI;
 }
 
+// ---- [shadows: S_i] ---------------------------------------------------------------------------
+// The texel of direction D on a cube around the light: the OpenGL specification's cube-map rule
+// (the major axis picks the face, sc and tc are the coordinates on it); the faces were rendered so
+// that their image axes are sc and tc (local/shadow_maps.cpp). Returns (x, y, face).
+ivec3 cube_texel(vec3 D, int size) {
+  vec3 a = abs(D);
+  int face;
+  float sc, tc, ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = D.x >= 0.0 ? 0 : 1;
+    sc = D.x >= 0.0 ? -D.z : D.z;
+    tc = -D.y;
+    ma = a.x;
+  } else if (a.y >= a.z) {
+    face = D.y >= 0.0 ? 2 : 3;
+    sc = D.x;
+    tc = D.y >= 0.0 ? D.z : -D.z;
+    ma = a.y;
+  } else {
+    face = D.z >= 0.0 ? 4 : 5;
+    sc = D.z >= 0.0 ? D.x : -D.x;
+    tc = -D.y;
+    ma = a.z;
+  }
+  float s = 0.5 * (sc / ma + 1.0), t = 0.5 * (tc / ma + 1.0);
+  return ivec3(clamp(int(floor(s * float(size))), 0, size - 1),
+               clamp(int(floor(t * float(size))), 0, size - 1), face);
+}
+
+// S_i: 1 when the light reaches P (unit normal N facing the viewer, cos(theta) = N.L > 0), 0 when
+// its shadow map holds a surface nearer the light. Bias against self-shadowing ("acne"): look up
+// from P moved normal_offset texels along N, and forgive constant + slope * texel * tan(theta).
+float shadow_factor(ShadowView view, vec3 P, vec3 N, float cos_theta) {
+  if (!u_shadows_on || view.kind == SHADOW_NONE) return 1.0;
+  int size = textureSize(u_shadow_maps, 0).x;
+  float texel = view.kind == SHADOW_ORTHOGRAPHIC ? view.texel : view.texel * length(P - view.origin);
+  vec3 Q = P + N * (u_shadow_normal_offset * texel);
+  float sin_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0));
+  float tan_theta = min(sin_theta / max(cos_theta, 1e-4), 10.0);
+  float bias = u_shadow_constant_bias + u_shadow_slope_bias * texel * tan_theta;
+
+  ivec3 at;
+  float measured;
+  if (view.kind == SHADOW_CUBE) {
+    vec3 D = Q - view.origin;
+    measured = length(D);
+    at = cube_texel(D, size);
+    at.z += view.layer;
+  } else {
+    vec4 clip = view.matrix * vec4(Q, 1.0);
+    if (clip.w <= 0.0) return 1.0;  // behind a spot: outside its cone anyway
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (uv.x < 0.0 || uv.y < 0.0 || uv.x >= 1.0 || uv.y >= 1.0) return 1.0;  // off the map
+    at = ivec3(int(floor(uv.x * float(size))), int(floor(uv.y * float(size))), view.layer);
+    measured = view.kind == SHADOW_ORTHOGRAPHIC ? dot(Q, view.direction) : length(Q - view.origin);
+  }
+  float stored = texelFetch(u_shadow_maps, at, 0).r;
+  return measured - bias > stored ? 0.0 : 1.0;
+}
+
 // ---- [the formula] -----------------------------------------------------------------------------
 // The three terms kept apart: Gouraud interpolates them and applies the kd texture per fragment.
 struct Terms {
@@ -123,12 +231,13 @@ float cos_alpha(vec3 N, vec3 L, vec3 V) {
   return max(dot(R, V), 0.0);
 }
 
-// One light's contribution IL * [kd cos(theta) + ks cos^n(alpha)] to the terms.
-void add_light(inout Terms terms, vec3 IL, vec3 N, vec3 L, vec3 V) {
+// One light's contribution S_i * IL * [kd cos(theta) + ks cos^n(alpha)] to the terms.
+void add_light(inout Terms terms, vec3 IL, ShadowView shadow, vec3 P, vec3 N, vec3 L, vec3 V) {
   float cos_theta = dot(N, L);
   if (cos_theta <= 0.0) return;  // the light is behind the surface: no diffuse, no highlight
-  if (u_diffuse_on)  terms.diffuse  += IL * u_kd * cos_theta;                              // I_D
-  if (u_specular_on) terms.specular += IL * u_ks * pow(cos_alpha(N, L, V), u_shininess);  // I_S
+  float S = shadow_factor(shadow, P, N, cos_theta);                                            // S_i
+  if (u_diffuse_on)  terms.diffuse  += S * IL * u_kd * cos_theta;                              // I_D
+  if (u_specular_on) terms.specular += S * IL * u_ks * pow(cos_alpha(N, L, V), u_shininess);  // I_S
 }
 
 // The formula at world point P with unit normal N (already facing the viewer's side).
@@ -139,12 +248,12 @@ Terms local_model(vec3 P, vec3 N) {
   for (int i = 0; i < u_light_count; ++i) {
     vec3 L;
     vec3 IL = punctual_IL(i, P, L);
-    add_light(terms, IL, N, L, V);
+    add_light(terms, IL, u_lights[i].shadow, P, N, L, V);
   }
   for (int i = 0; i < u_area_light_count; ++i) {
     vec3 L;
     vec3 IL = area_IL(i, P, L);
-    add_light(terms, IL, N, L, V);
+    add_light(terms, IL, u_area_lights[i].shadow, P, N, L, V);
   }
   return terms;
 }
@@ -161,6 +270,35 @@ vec3 radiance(Terms terms, vec2 uv, bool emitting_side) {
   return I;
 }
 
+// ---- [reflection map: kr Ir] -------------------------------------------------------------------
+// The mirror direction of the viewer, R = 2 (N.V) N - V: where a mirror at P shows the world.
+vec3 mirror_direction(vec3 P, vec3 N) { return reflect(normalize(P - u_eye), N); }
+
+// What surrounds the scene along D: the environment image (equirectangular: its centre looks
+// down -Z, its top row up) or the background radiance.
+vec3 environment(vec3 D) {
+  if (!u_has_environment) return u_background;
+  D = normalize(D);
+  vec2 uv = vec2(0.5 + atan(D.x, -D.z) / (2.0 * PI), acos(clamp(D.y, -1.0, 1.0)) / PI);
+  return textureLod(u_environment, uv, 0.0).rgb;
+}
+
+// Ir along R: the cube map's picture (alpha: how much of the texel saw a surface) over the
+// surroundings.
+vec3 reflected(vec3 R) {
+  vec4 seen = textureLod(u_reflection_map, R, 0.0);
+  return seen.rgb + (1.0 - seen.a) * environment(R);
+}
+
+// ---- [atmospheric attenuation] -----------------------------------------------------------------
+// Depth cueing: the share f of a surface's radiance that reaches the eye from distance d; the
+// rest, 1 - f, is the fog colour.
+float fog_factor(float d) {
+  if (u_fog_mode == FOG_LINEAR) return clamp((u_fog_far - d) / max(u_fog_far - u_fog_near, 1e-6), 0.0, 1.0);
+  if (u_fog_mode == FOG_EXPONENTIAL) return exp(-u_fog_density * d);
+  return 1.0;
+}
+
 // ---- [two-sided lighting] ----------------------------------------------------------------------
 #ifdef LUZ_FRAGMENT_SHADER
 // True when the viewer sees the back of the face, i.e. the side opposite the shading normal N.
@@ -169,5 +307,29 @@ vec3 radiance(Terms terms, vec2 uv, bool emitting_side) {
 bool viewer_sees_back(vec3 P, vec3 N) {
   vec3 face = cross(dFdx(P), dFdy(P));
   return dot(face, N) * dot(face, u_eye - P) < 0.0;
+}
+#endif
+
+// ---- [the fragment] ----------------------------------------------------------------------------
+#ifdef LUZ_FRAGMENT_SHADER
+// Two outputs for dual-source blending (GL 3.3 core): the radiance, and what share of the pixel
+// behind it comes through (kt, for a transparent mesh drawn with glBlendFunc(ONE, SRC1_COLOR)).
+layout(location = 0, index = 0) out vec4 frag_radiance;
+layout(location = 0, index = 1) out vec4 frag_transmittance;
+
+// What the pixel shows of the surface at P: the local formula, + kr Ir, then the fog.
+// A transparent surface adds kt times the pixel behind it (non-refractive transparency):
+//   pixel = f (I + kt It) + (1 - f) C_fog,  with It taken as the pixel already drawn behind.
+void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
+  vec3 I = radiance(terms, uv, emitting_side);
+  if (u_reflection_on) I += u_kr * reflected(R);  // + kr Ir
+  float f = fog_factor(length(P - u_eye));
+  vec3 transmitted = u_transparent ? f * u_kt : vec3(0.0);
+  // Alpha: how much of the pixel is covered, for the reflection cube maps (cleared to 0, where the
+  // surroundings show through by 1 - alpha): a transparent surface covers 1 - kt of what is behind
+  // it (kt's mean: one alpha for three channels).
+  float through = (transmitted.r + transmitted.g + transmitted.b) / 3.0;
+  frag_radiance = vec4(f * I + (1.0 - f) * u_fog_colour, 1.0 - through);
+  frag_transmittance = vec4(transmitted, through);
 }
 #endif

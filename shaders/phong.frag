@@ -4,10 +4,9 @@ in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
 
-layout(location = 0) out vec4 frag_radiance;
-
 void main() {
   vec3 N = normalize(v_normal);  // interpolation shortens it
   if (viewer_sees_back(v_position, N)) N = -N;  // two-sided lighting
-  frag_radiance = vec4(radiance(local_model(v_position, N), v_uv, gl_FrontFacing), 1.0);
+  write_fragment(local_model(v_position, N), v_uv, gl_FrontFacing, mirror_direction(v_position, N),
+                 v_position);
 }

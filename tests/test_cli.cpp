@@ -55,6 +55,45 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
 
+// Slide 19's switches: listed, checked, and a missing environment image is bad input naming it.
+TEST(Cli, EffectFlagsAreListedAndChecked) {
+  const auto help = run_luz({"render", "--help"});
+  for (const char* flag : {"--fog", "linear|exponential", "--fog-colour", "--fog-near", "--fog-far", "--fog-density",
+                           "--shadows", "--shadow-bias", "--shadow-slope-bias", "--shadow-normal-offset",
+                           "--shadow-map-size", "--transparency", "--reflection-map", "--reflection-map-size",
+                           "--environment"})
+    EXPECT_TRUE(contains(help.output, flag)) << flag;
+
+  test::ScratchDir dir;
+  const std::string out = (dir / "x.png").string();
+  const std::string plate = (test::scene_dir() / "local_effects.gltf").string();
+  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+           {"--fog", "smoke"}, {"--fog-colour", "1,2"}, {"--fog-colour", "1,2,x"}, {"--fog-colour", "-1,0,0"},
+           {"--fog-near", "-1"}, {"--fog-density", "thick"}, {"--shadow-bias", "-0.1"},
+           {"--shadow-map-size", "8"}, {"--fog", "linear", "--fog-near", "5", "--fog-far", "4"}, {"--shadow-map-size", "100000"}, {"--reflection-map-size", "2"}}) {
+    std::vector<std::string> args = {"render", plate, "--out", out};
+    args.insert(args.end(), bad.begin(), bad.end());
+    const auto result = run_luz(args);
+    EXPECT_EQ(result.exit_code, 2) << bad[0] << " " << bad[1] << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, bad[0])) << "the message names the flag: " << result.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path));
+
+  const auto missing = run_luz({"render", plate, "--out", out, "--size", "40x30", "--reflection-map",
+                                "--environment", (dir / "no-sky.exr").string()});
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  EXPECT_TRUE(contains(missing.output, "no-sky.exr")) << missing.output;
+  EXPECT_FALSE(fs::exists(out));
+
+  const auto good = run_luz({"render", plate, "--out", out, "--size", "40x30", "-q", "--fog", "Exponential",
+                             "--fog-colour", "0.2,0.25,0.3", "--fog-density", "0.05", "--shadows",
+                             "--shadow-bias", "0.001", "--shadow-map-size", "256", "--transparency",
+                             "--reflection-map", "--reflection-map-size", "32"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  EXPECT_EQ(good.output, "");
+  EXPECT_TRUE(fs::exists(out));
+}
+
 TEST(Cli, MissingSceneIsBadInputNamingTheFile) {
   test::ScratchDir dir;
   const auto result = run_luz({"render", (dir / "nope.gltf").string(), "--out", (dir / "x.png").string()});

@@ -6,6 +6,7 @@
 // the near-black tails, where 1% means nothing).
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -39,14 +40,17 @@ struct Case {
   std::string scene;
   Shading shading;
   bool blinn;
+  bool effects = false;  // slide 19: shadows, reflection map and linear fog on (transparency off:
+                         // the pixel behind a pane is the GPU's, not a term at the point)
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
-  *os << c.scene << " " << to_string(c.shading) << (c.blinn ? " blinn" : "");
+  *os << c.scene << " " << to_string(c.shading) << (c.blinn ? " blinn" : "") << (c.effects ? " effects" : "");
 }
 
 std::string name_of(const ::testing::TestParamInfo<Case>& info) {
-  return fmt::format("{}_{}{}", info.param.scene, to_string(info.param.shading), info.param.blinn ? "_blinn" : "");
+  return fmt::format("{}_{}{}{}", info.param.scene, to_string(info.param.shading), info.param.blinn ? "_blinn" : "",
+                     info.param.effects ? "_effects" : "");
 }
 
 class CpuAndGpuAgree : public ::testing::TestWithParam<Case> {};
@@ -60,20 +64,37 @@ TEST_P(CpuAndGpuAgree, AtEveryPickedPixel) {
   LocalOptions options;
   options.shading = c.shading;
   options.blinn = c.blinn;
+  if (c.effects) {
+    options.shadows.on = true;
+    options.reflection.on = true;
+    options.fog.mode = FogMode::linear;
+    options.fog.near = 3.0f;
+    options.fog.far = 12.0f;
+  }
   LocalRenderer renderer(scene);
   const Image image = renderer.render(camera, width, height, options);
+  const std::optional<ShadowLookup> shadows = renderer.shadow_lookup();
+  ASSERT_EQ(shadows.has_value(), c.effects);
   float brightest = 0.0f;
   for (const Rgb& p : image.pixels) brightest = std::max({brightest, p.r, p.g, p.b});
   const float floor = 1e-4f * brightest;
 
   app::Picker picker(scene);
-  int checked = 0, failed = 0;
+  int checked = 0, failed = 0, blocked = 0, reflecting = 0, fogged = 0;
   std::string first_failures;
   for (int y = step / 2; y < height; y += step)
     for (int x = step / 2; x < width; x += step) {
       const auto pick = picker.pick(camera, width, height, x, y);
       if (!pick) continue;
-      const app::InspectorReading reading = app::read_terms(scene, renderer.area_lights(), *pick, options);
+      app::DrawnLookups lookups;
+      lookups.shadows = shadows ? &*shadows : nullptr;
+      lookups.reflection = renderer.reflection_lookup(pick->mesh);
+      const app::InspectorReading reading = app::read_terms(scene, renderer.area_lights(), *pick, options, lookups);
+      if (c.effects) {
+        for (const LightTerm& t : reading.terms.lights) blocked += t.lit && t.S == 0.0f;
+        reflecting += reading.terms.reflection != Rgb(0.0f);
+        fogged += reading.terms.fog < 1.0f;
+      }
       ++checked;
       for (int ch = 0; ch < 3; ++ch) {
         const float gpu = image.at(x, y)[ch], cpu = reading.sum[ch];
@@ -86,6 +107,13 @@ TEST_P(CpuAndGpuAgree, AtEveryPickedPixel) {
     }
   EXPECT_GT(checked, 200) << "too few pixels hit the scene";
   EXPECT_EQ(failed, 0) << failed << " of " << checked << " pixels disagree:\n" << first_failures;
+  if (c.effects) {  // the effects were there to agree on
+    EXPECT_GT(blocked, 20) << "lights blocked (S_i = 0) at the picked pixels";
+    if (c.scene == "local_effects") {
+      EXPECT_GT(reflecting, 5) << "pixels with a kr Ir term";
+      EXPECT_GT(fogged, 100) << "pixels in fog";
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, CpuAndGpuAgree,
@@ -95,7 +123,12 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, CpuAndGpuAgree,
                                            Case{"phong_spheres", Shading::flat, false},
                                            Case{"cornell_box", Shading::phong, false},
                                            Case{"cornell_box", Shading::gouraud, false},
-                                           Case{"whitted", Shading::phong, false}),
+                                           Case{"whitted", Shading::phong, false},
+                                           Case{"cornell_box", Shading::phong, false, true},
+                                           Case{"local_effects", Shading::phong, false, true},
+                                           Case{"local_effects", Shading::gouraud, false, true},
+                                           Case{"local_effects", Shading::flat, false, true},
+                                           Case{"whitted", Shading::phong, false, true}),
                          name_of);
 
 // A switched-off term is zero in the CPU evaluation as in the shader (and the sum follows).

@@ -6,13 +6,17 @@
 // pixel between Mesa versions; shading may not change). Goldens are rewritten only by
 // `cmake --build build --target update-goldens`.
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include <glm/mat4x4.hpp>
+
 #include "core/image.h"
+#include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "support.h"
 
@@ -21,16 +25,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kScenes[] = {"cornell_box", "phong_spheres", "whitted"};
+constexpr const char* kScenes[] = {"cornell_box", "phong_spheres", "whitted", "local_effects"};
 constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
 
 // Small pictures at each camera's aspect ratio; update_goldens.sh uses the same sizes.
 std::string size_of(const std::string& scene) { return scene == "cornell_box" ? "120x120" : "160x120"; }
 
+// Every switch of slide 19 on, as the local_effects golden and the README's picture have them.
+const std::vector<std::string> kEffectFlags = {"--shadows", "--transparency", "--reflection-map", "--fog", "linear",
+                                               "--fog-near", "6", "--fog-far", "24"};
+
 // Renders through the command to EXR (linear radiance, for properties) or PNG (for goldens).
 Image render(const test::ScratchDir& dir, const std::string& scene, const std::string& model,
              const std::string& extension, std::vector<std::string> extra = {}) {
-  const fs::path out = dir / (scene + "-" + model + extension);
+  static int count = 0;  // each render its own file: a test may render one model several ways
+  const fs::path out = dir / (scene + "-" + model + "-" + std::to_string(count++) + extension);
   std::vector<std::string> args = {"render", (test::scene_dir() / (scene + ".gltf")).string(),
                                    "--model", model, "--size", size_of(scene), "-q", "--out", out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
@@ -62,14 +71,11 @@ std::string snapshot_name(const testing::TestParamInfo<std::tuple<const char*, c
 
 class Snapshot : public testing::TestWithParam<std::tuple<const char*, const char*>> {};
 
-TEST_P(Snapshot, MatchesItsGolden) {
-  const auto [scene, model] = GetParam();
-  test::ScratchDir dir;
-  const Image image = render(dir, scene, model, ".png");
-  const fs::path golden_path = test::test_data_dir() / "golden" / (std::string(scene) + "-" + model + ".png");
+void expect_golden(const Image& image, const std::string& name) {
+  const fs::path golden_path = test::test_data_dir() / "golden" / (name + ".png");
   ASSERT_TRUE(fs::exists(golden_path)) << golden_path << " is missing: run the update-goldens target";
   const Image golden = io::read_image(golden_path);
-  ASSERT_EQ(image.width, golden.width);
+  ASSERT_EQ(image.width, golden.width) << name;
   ASSERT_EQ(image.height, golden.height);
   double total = 0.0;
   int far_off = 0;
@@ -83,6 +89,24 @@ TEST_P(Snapshot, MatchesItsGolden) {
   EXPECT_LE(total / channels, 1.0) << "mean difference in 8-bit codes";
   EXPECT_LE(double(far_off) / channels, 0.005) << "share of values off by more than 16 codes";
 }
+
+TEST_P(Snapshot, MatchesItsGolden) {
+  const auto [scene, model] = GetParam();
+  test::ScratchDir dir;
+  expect_golden(render(dir, scene, model, ".png"), std::string(scene) + "-" + model);
+}
+
+// The plate with every effect of slide 19 on, in each model.
+class EffectsSnapshot : public testing::TestWithParam<const char*> {};
+
+TEST_P(EffectsSnapshot, MatchesItsGolden) {
+  const char* model = GetParam();
+  test::ScratchDir dir;
+  expect_golden(render(dir, "local_effects", model, ".png", kEffectFlags),
+                std::string("local_effects-") + model + "-effects");
+}
+
+INSTANTIATE_TEST_SUITE_P(LocalEffects, EffectsSnapshot, testing::ValuesIn(kModels));
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, Snapshot,
                          testing::Combine(testing::ValuesIn(kScenes), testing::ValuesIn(kModels)),
@@ -209,6 +233,81 @@ TEST(WhittedModel, CornellBlocksCastShadowsOnTheFloor) {
   EXPECT_NEAR(open.r, mean_colour(none, 0.10f, 0.92f, 0.35f, 0.96f).r, 1e-6f);
   EXPECT_GT(open.r, 5.0f * mean_colour(shadows, 0.50f, 0.92f, 0.64f, 0.96f).r);
 }
+
+// ---- Slide 19 on the plate: each switch on and off, in every model ------------------------------
+// Where a world point of local_effects.gltf lands in the picture (the scene camera, 160x120).
+struct PlatePixels {
+  Scene scene = io::load_gltf(test::scene_dir() / "local_effects.gltf").scene;
+  glm::ivec2 pixel(const Image& image, glm::vec3 P) const {
+    const Camera& camera = scene.cameras.front();
+    const glm::vec4 clip = camera.projection(float(image.width) / float(image.height), 100.0f) * camera.view() *
+                           glm::vec4(P, 1.0f);
+    const int x = int((clip.x / clip.w * 0.5f + 0.5f) * float(image.width));
+    const int y = int((0.5f - clip.y / clip.w * 0.5f) * float(image.height));
+    return {std::clamp(x, 0, image.width - 1), std::clamp(y, 0, image.height - 1)};
+  }
+  Rgb at(const Image& image, glm::vec3 P) const {
+    const glm::ivec2 p = pixel(image, P);
+    return image.at(p.x, p.y);
+  }
+};
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+class EffectSwitch : public testing::TestWithParam<const char*> {};
+
+TEST_P(EffectSwitch, ShadowsDarkenTheFloorBehindTheBoxAndNothingElse) {
+  test::ScratchDir dir;
+  const PlatePixels plate;
+  const Image off = render(dir, "local_effects", GetParam(), ".exr");
+  const Image on = render(dir, "local_effects", GetParam(), ".exr", {"--shadows"});
+  // Left of the box, where the key spot's shadow shows beside it (the box hides the rest).
+  const glm::vec3 beside_box(-3.15f, 0.0f, -1.65f), open_floor(0.8f, 0.0f, 0.8f), box_top(-2.6f, 0.7f, -1.6f);
+  EXPECT_LT(luminance(plate.at(on, beside_box)), 0.7f * luminance(plate.at(off, beside_box)));
+  EXPECT_NEAR(luminance(plate.at(on, open_floor)), luminance(plate.at(off, open_floor)), 1e-4f)
+      << "the lit floor keeps its light (no acne)";
+  EXPECT_NEAR(luminance(plate.at(on, box_top)), luminance(plate.at(off, box_top)), 1e-4f)
+      << "the box's top is lit by every light (no acne)";
+}
+
+TEST_P(EffectSwitch, FogTakesTheFarPillarsTowardTheFogColour) {
+  test::ScratchDir dir;
+  const PlatePixels plate;
+  const Rgb fog(0.25f, 0.27f, 0.3f);  // LocalOptions' default fog colour
+  const Image off = render(dir, "local_effects", GetParam(), ".exr");
+  const Image on = render(dir, "local_effects", GetParam(), ".exr", {"--fog", "linear", "--fog-near", "6", "--fog-far", "24"});
+  const glm::vec3 far_pillar(-3.0f, 1.5f, -12.8f), near_floor(0.0f, 0.0f, 2.0f);  // 18.9 m and 4.7 m away
+  const float f = (24.0f - 18.9f) / 18.0f;
+  EXPECT_LT(glm::length(plate.at(on, far_pillar) - fog), 1.5f * f * glm::length(plate.at(off, far_pillar) - fog));
+  EXPECT_EQ(plate.at(on, near_floor), plate.at(off, near_floor)) << "nearer than --fog-near: untouched";
+  EXPECT_EQ(on.at(on.width / 2, 0), fog) << "the sky is all fog";
+}
+
+TEST_P(EffectSwitch, TransparencyShowsTheRedBoxThroughThePane) {
+  test::ScratchDir dir;
+  const PlatePixels plate;
+  const Image off = render(dir, "local_effects", GetParam(), ".exr");
+  const Image on = render(dir, "local_effects", GetParam(), ".exr", {"--transparency"});
+  const glm::vec3 red_box_front(-0.4f, 0.35f, -1.75f);
+  const Rgb seen_off = plate.at(off, red_box_front), seen_on = plate.at(on, red_box_front);
+  const glm::ivec2 p = plate.pixel(on, red_box_front);
+  EXPECT_GT(seen_on.r, seen_off.r + 0.02f) << "through the pane, the red box, pixel " << p.x << ", " << p.y;
+  EXPECT_GT(seen_on.r, 1.5f * seen_on.g);
+  EXPECT_LT(seen_off.r, 1.5f * seen_off.b) << "the opaque pane is bluish grey";
+}
+
+TEST_P(EffectSwitch, ReflectionMapShowsTheFloorInTheMirrorBall) {
+  test::ScratchDir dir;
+  const PlatePixels plate;
+  const Image off = render(dir, "local_effects", GetParam(), ".exr");
+  const Image on = render(dir, "local_effects", GetParam(), ".exr", {"--reflection-map"});
+  const glm::vec3 lower_ball(2.6f, 0.5f - 0.3f, -1.6f + 0.4f);  // its normal looks down and forward
+  EXPECT_GT(luminance(plate.at(on, lower_ball)), luminance(plate.at(off, lower_ball)) + 0.03f);
+  const glm::vec3 open_floor(0.8f, 0.0f, 0.8f);
+  EXPECT_EQ(plate.at(on, open_floor), plate.at(off, open_floor)) << "kr = 0 there";
+}
+
+INSTANTIATE_TEST_SUITE_P(LocalEffects, EffectSwitch, testing::ValuesIn(kModels));
 
 }  // namespace
 }  // namespace luz

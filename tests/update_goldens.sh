@@ -8,8 +8,8 @@ luz=${1:?usage: $0 LUZ_BINARY}
 root=$(cd "$(dirname "$0")/.." && pwd)
 golden="$root/tests/data/golden"
 mkdir -p "$golden"
-# Keep this list in step with kScenes and kModels in tests/test_snapshots.cpp.
-for scene in cornell_box phong_spheres whitted; do
+# Keep this list in step with kScenes, kModels and kEffectFlags in tests/test_snapshots.cpp.
+for scene in cornell_box phong_spheres whitted local_effects; do
   size=160x120
   [ "$scene" = cornell_box ] && size=120x120
   for model in flat gouraud phong; do
@@ -23,5 +23,11 @@ for scene in whitted cornell_box; do
   [ "$scene" = cornell_box ] && size=120x120
   "$luz" render "$root/scenes/$scene.gltf" --model whitted --size "$size" -q \
     --out "$golden/$scene-whitted.png"
+done
+# The plate with every switch of slide 19 on.
+for model in flat gouraud phong; do
+  "$luz" render "$root/scenes/local_effects.gltf" --model "$model" --size 160x120 -q \
+    --shadows --transparency --reflection-map --fog linear --fog-near 6 --fog-far 24 \
+    --out "$golden/local_effects-$model-effects.png"
 done
 echo "goldens written to $golden"

@@ -37,7 +37,7 @@ Rgb sample_texture(const Texture& texture, glm::vec2 uv) {
 
 // ---- [evaluation, as each shading model does it] -----------------------------------------------
 InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_lights,
-                            const Pick& pick, const LocalOptions& options) {
+                            const Pick& pick, const LocalOptions& options, const DrawnLookups& lookups) {
   InspectorReading reading;
   reading.pick = pick;
   reading.shading = options.shading;
@@ -46,8 +46,11 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
   const uint32_t* index = &mesh.indices[3 * size_t(pick.triangle)];
   const glm::vec3 eye = pick.eye;
   auto evaluate = [&](const glm::vec3& P, const glm::vec3& N) {
-    return evaluate_terms(scene, material, P, N, glm::normalize(eye - P), options, area_lights);
+    return evaluate_terms(scene, material, P, N, glm::normalize(eye - P), options, area_lights,
+                          lookups.shadows);
   };
+  // lighting.glsl mirror_direction(): R = reflect(view ray, N).
+  auto mirror = [&](const glm::vec3& P, const glm::vec3& N) { return glm::reflect(glm::normalize(P - eye), N); };
   glm::vec2 uv = pick.uv;
   // gl_FrontFacing: the triangle's winding is counter-clockwise on screen, i.e. its face normal
   // points to the eye.
@@ -59,6 +62,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       if (glm::dot(pick.face, N) * glm::dot(pick.face, eye - pick.P) < 0.0f) N = -N;
       reading.terms = evaluate(pick.P, N);
       reading.normal = N;
+      reading.mirror = mirror(pick.P, N);
       reading.where = "Phong: the formula at this pixel, with the interpolated normal";
       break;
     }
@@ -69,6 +73,8 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
         const glm::vec3 N = glm::normalize(mesh.normals[index[i]]);
         at[i] = evaluate(mesh.positions[index[i]], back ? -N : N);
         at[i].ambient = evaluate(mesh.positions[index[i]], N).ambient;  // the front side's
+        // gouraud.vert: R per vertex, interpolated like the colours.
+        reading.mirror += pick.barycentric[i] * mirror(mesh.positions[index[i]], back ? -N : N);
       }
       reading.terms = blend(at[0], at[1], at[2], pick.barycentric);
       reading.normal = back ? -pick.N : pick.N;
@@ -82,6 +88,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       if (glm::dot(N, eye - middle) < 0.0f) N = -N;
       reading.terms = evaluate(middle, N);
       reading.normal = N;
+      reading.mirror = mirror(middle, N);  // flat.geom: once per triangle
       if (!mesh.uvs.empty())
         uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
       reading.where = "flat: the formula once, at the triangle's centroid with its face normal";
@@ -90,6 +97,10 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
   }
   if (options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
     reading.kd_texture = sample_texture(scene.textures[size_t(material.kd_texture)], uv);
+  // lighting.glsl write_fragment(): + kr Ir, then the fog at this pixel's distance.
+  add_reflection_and_fog(reading.terms, material, options, lookups.reflection, reading.mirror,
+                         glm::length(pick.P - eye));
+  reading.transparent = options.transparency.on && (material.kt.r > 0 || material.kt.g > 0 || material.kt.b > 0);
   reading.sum = radiance(reading.terms, material, options, reading.kd_texture, reading.emitting_side);
   return reading;
 }
@@ -102,7 +113,7 @@ nlohmann::json to_json(const Scene& scene, const InspectorReading& r) {
   for (const LightTerm& t : r.terms.lights)
     lights.push_back({{"name", t.name}, {"lit", t.lit}, {"theta_deg", t.theta * degrees},
                       {"alpha_deg", t.alpha * degrees}, {"d", t.d}, {"f_att", t.f_att},
-                      {"spot", t.spot}, {"IL", rgb(t.IL)}, {"I_D", rgb(t.diffuse)},
+                      {"spot", t.spot}, {"S", t.S}, {"IL", rgb(t.IL)}, {"I_D", rgb(t.diffuse)},
                       {"I_S", rgb(t.specular)}});
   return {{"pixel", {r.pick.x, r.pick.y}},
           {"mesh", scene.meshes[size_t(r.pick.mesh)].name},
@@ -117,6 +128,9 @@ nlohmann::json to_json(const Scene& scene, const InspectorReading& r) {
           {"kd_texture", rgb(r.kd_texture)},
           {"Le", rgb(r.emitting_side ? material.emission : Rgb(0.0f))},
           {"lights", lights},
+          {"kr_Ir", rgb(r.terms.reflection)},
+          {"fog_factor", r.terms.fog},
+          {"transparent", r.transparent},
           {"sum", rgb(r.sum)},
           {"gl_pixel", rgb(r.gl_pixel)}};
 }
@@ -143,8 +157,8 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
               double(r.normal.z));
   ImGui::TextDisabled("%s", r.where.c_str());
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-  if (ImGui::BeginTable("terms", 7, flags)) {
-    for (const char* heading : {"light", "theta", "alpha", "d", "f_att", "I_D", "I_S"})
+  if (ImGui::BeginTable("terms", 8, flags)) {
+    for (const char* heading : {"light", "theta", "alpha", "d", "f_att", "S", "I_D", "I_S"})
       ImGui::TableSetupColumn(heading);
     ImGui::TableHeadersRow();
     for (const LightTerm& t : r.terms.lights) {
@@ -160,6 +174,9 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
       ImGui::Text("%.3f", double(t.d));
       ImGui::TableNextColumn();
       ImGui::Text("%.4g", double(t.f_att));
+      ImGui::TableNextColumn();
+      if (t.S < 1.0f) ImGui::TextColored(ImVec4(0.8f, 0.7f, 1.0f, 1.0f), "%.2g", double(t.S));  // blocked
+      else ImGui::TextDisabled("1");
       ImGui::TableNextColumn();
       rgb_cell(t.diffuse);
       ImGui::TableNextColumn();
@@ -180,8 +197,18 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
     if (r.kd_texture != Rgb(1.0f)) row("kd texture", r.kd_texture);
     row("sum I_S", r.terms.specular);
     if (r.emitting_side && material.is_emissive()) row("Le", material.emission);
+    if (r.terms.reflection != Rgb(0.0f)) row("kr Ir (reflection map)", r.terms.reflection);
+    if (r.terms.fog < 1.0f) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted("fog f, C_fog");
+      ImGui::TableNextColumn();
+      ImGui::Text("%.4g   %.3g %.3g %.3g", double(r.terms.fog), double(r.terms.fog_colour.r),
+                  double(r.terms.fog_colour.g), double(r.terms.fog_colour.b));
+    }
     row("I (CPU, the formula)", r.sum);
     row("I (GPU, the pixel)", r.gl_pixel);
+    if (r.transparent) row("f kt It (GPU - CPU: behind)", r.gl_pixel - r.sum);
     ImGui::EndTable();
   }
   ImGui::End();

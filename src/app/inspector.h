@@ -23,14 +23,25 @@ struct InspectorReading {
   TermValues terms;
   Rgb kd_texture{1.0f};           // kd's texture factor at the pixel (1 without a texture)
   bool emitting_side = false;     // the front side of the triangle faces the viewer
-  Rgb sum{0.0f};                  // I = I_A + I_D * texture + I_S (+ Le)
+  glm::vec3 mirror{0.0f};         // R, the mirror direction the reflection map is read along
+  bool transparent = false;       // kt > 0 with transparency on: the GPU adds kt * (pixel behind)
+  Rgb sum{0.0f};                  // I = I_A + I_D * texture + I_S (+ Le) + kr Ir, fogged
   Rgb gl_pixel{0.0f};             // what the GPU drew at the pixel (linear radiance)
+};
+
+// What the renderer's last draw looked up besides the formula: its shadow maps (nullptr when
+// shadows were off) and the picked object's reflection (LocalRenderer::shadow_lookup(),
+// reflection_lookup()).
+struct DrawnLookups {
+  const ShadowLookup* shadows = nullptr;
+  ReflectionLookup reflection;
 };
 
 // Evaluates the terms at `pick` as `options.shading` does (Phong: at the pixel; Gouraud: at the
 // triangle's vertices, interpolated; flat: once at the centroid with the face normal).
 InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_lights,
-                            const Pick& pick, const LocalOptions& options);
+                            const Pick& pick, const LocalOptions& options,
+                            const DrawnLookups& lookups = {});
 
 nlohmann::json to_json(const Scene& scene, const InspectorReading& reading);
 

@@ -1,6 +1,7 @@
 // luz: the single command. `luz [SCENE]` opens the viewer; `luz render` makes one picture
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,47 @@
 namespace {
 
 using luz::app::RenderSettings;
+
+// Slide 19's "other possibilities" of the local models: each a switch of LocalOptions, off unless
+// its flag is given (distance attenuation and spot distributions belong to the scene's lights).
+void add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
+  const std::map<std::string, luz::FogMode> fog_modes = {{"linear", luz::FogMode::linear},
+                                                         {"exponential", luz::FogMode::exponential}};
+  render.add_option("--fog", local.fog.mode, "Atmospheric attenuation (depth cueing) toward the fog colour")
+      ->transform(CLI::CheckedTransformer(fog_modes, CLI::ignore_case))
+      ->option_text("linear|exponential");
+  render.add_option_function<std::string>(
+      "--fog-colour",
+      [&local](const std::string& text) {
+        if (!luz::app::parse_rgb(text, local.fog.colour))
+          throw CLI::ValidationError("--fog-colour", "expected R,G,B radiance, three numbers >= 0, e.g. 0.3,0.3,0.35");
+      },
+      "Fog colour as R,G,B radiance (default 0.25,0.27,0.3)");
+  render.add_option("--fog-near", local.fog.near, "Linear fog: no fog closer than D metres (default 2)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_option("--fog-far", local.fog.far, "Linear fog: only fog beyond D metres (default 20)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_option("--fog-density", local.fog.density, "Exponential fog: f = exp(-K d), K per metre (default 0.1)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_flag("--shadows", local.shadows.on, "Blocking of the sources by occlusion (S_i), with shadow maps");
+  render.add_option("--shadow-bias", local.shadows.constant_bias, "Constant shadow bias in metres (default 0.002)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_option("--shadow-slope-bias", local.shadows.slope_bias,
+                    "Slope-scaled shadow bias, texels per unit of tan(theta) (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_option("--shadow-normal-offset", local.shadows.normal_offset,
+                    "Shadow lookup moved this many texels along the normal (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  render.add_option("--shadow-map-size", local.shadows.map_size, "Texels per side of each shadow map (default 1024)")
+      ->check(CLI::Range(16, 8192));
+  render.add_flag("--transparency", local.transparency.on, "Non-refractive transparency: I + kt * what lies behind");
+  render.add_flag("--reflection-map", local.reflection.on,
+                  "Reflection maps: kr * Ir from a cube map around each object with kr > 0");
+  render.add_option("--reflection-map-size", local.reflection.resolution, "Texels per side of each cube face (default 256)")
+      ->check(CLI::Range(8, 4096));
+  render.add_option("--environment", local.reflection.environment,
+                    "Equirectangular image of the surroundings, seen in reflections where no object is");
+}
 
 void add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
@@ -46,6 +88,7 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
   switch_off("--no-emission", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
   switch_off("--no-textures", settings.local.textures, "Ignore baseColorTexture");
   render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
+  add_effect_flags(render, settings.local);
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
 }
 

@@ -1,4 +1,5 @@
-// Sections: [the formula] [model sections] [lights] [material] [scene] [the panel]
+// Sections: [the formula] [slide 19's switches] [model sections] [lights] [material] [scene]
+//           [the panel]
 #include "app/panel.h"
 
 #include <algorithm>
@@ -6,6 +7,8 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/trigonometric.hpp>
 #include <imgui.h>
 
 namespace luz::app {
@@ -18,6 +21,10 @@ const ImVec4 ambient_colour(0.55f, 0.75f, 1.0f, 1.0f);
 const ImVec4 diffuse_colour(0.55f, 0.95f, 0.55f, 1.0f);
 const ImVec4 specular_colour(1.0f, 0.85f, 0.4f, 1.0f);
 const ImVec4 emission_colour(1.0f, 0.6f, 0.8f, 1.0f);
+const ImVec4 shadow_colour(0.8f, 0.7f, 1.0f, 1.0f);
+const ImVec4 reflection_colour(0.6f, 0.95f, 0.95f, 1.0f);
+const ImVec4 transparency_colour(0.75f, 0.85f, 1.0f, 1.0f);
+const ImVec4 fog_colour(0.8f, 0.8f, 0.8f, 1.0f);
 
 // A piece of formula on the current line: coloured when its term is on, greyed when off.
 void piece(const char* text, bool on, const ImVec4& colour) {
@@ -44,6 +51,66 @@ bool term_checkbox(const char* label, bool* value, const ImVec4& colour) {
   return changed;
 }
 
+// ---- [slide 19's switches] ---------------------------------------------------------------------
+// "Otras posibilidades": each a switch with its parameters, the same LocalOptions `luz render`
+// fills from --fog, --shadows, --transparency and --reflection-map. Distance attenuation and
+// non-uniform lights belong to each light (the Lights section below).
+void effects_section(LocalOptions& o) {
+  if (!ImGui::TreeNodeEx("slide 19: other possibilities", ImGuiTreeNodeFlags_DefaultOpen)) return;
+
+  // Atmospheric attenuation.
+  int fog = int(o.fog.mode);
+  ImGui::PushStyleColor(ImGuiCol_Text, o.fog.mode != FogMode::off ? fog_colour : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextUnformatted("atmospheric attenuation (fog)  [G]");
+  ImGui::PopStyleColor();
+  ImGui::RadioButton("off##fog", &fog, int(FogMode::off));
+  ImGui::SameLine();
+  ImGui::RadioButton("linear", &fog, int(FogMode::linear));
+  ImGui::SameLine();
+  ImGui::RadioButton("exponential", &fog, int(FogMode::exponential));
+  o.fog.mode = FogMode(fog);
+  if (o.fog.mode != FogMode::off) {
+    ImGui::ColorEdit3("fog colour", &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    if (o.fog.mode == FogMode::linear) {
+      ImGui::DragFloatRange2("near, far (m)", &o.fog.near, &o.fog.far, 0.05f, 0.0f, 1000.0f, "%.2f");
+      ImGui::TextDisabled("f = (far - d) / (far - near), clamped");
+    } else {
+      ImGui::DragFloat("density (1/m)", &o.fog.density, 0.002f, 0.0f, 10.0f, "%.3f");
+      ImGui::TextDisabled("f = exp(-density d)");
+    }
+    ImGui::TextDisabled("I' = f I + (1 - f) C_fog");
+  }
+
+  // Blocking of the sources by occlusion.
+  term_checkbox("shadows S_i (shadow maps)  [H]", &o.shadows.on, shadow_colour);
+  if (o.shadows.on) {
+    ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, 0.0f, 0.5f, "%.4f");
+    ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, 0.0f, 20.0f, "%.2f");
+    ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, 0.0f, 20.0f, "%.2f");
+    int size_index = std::clamp(int(std::lround(std::log2(float(o.shadows.map_size)))) - 8, 0, 4);
+    ImGui::Combo("map size", &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
+    o.shadows.map_size = 256 << size_index;
+    ImGui::TextDisabled("bias + slope·texel·tan θ; lookup moved offset texels along N");
+    ImGui::TextDisabled("point lights, emitters: cube maps; spots, sun: one map");
+  }
+
+  // Non-refractive transparency.
+  term_checkbox("transparency kt·It (non-refractive)  [O]", &o.transparency.on, transparency_colour);
+  if (o.transparency.on) ImGui::TextDisabled("I + kt · (what lies behind), drawn back to front");
+
+  // Reflection maps.
+  term_checkbox("reflection map kr·Ir  [M]", &o.reflection.on, reflection_colour);
+  if (o.reflection.on) {
+    int size_index = std::clamp(int(std::lround(std::log2(float(o.reflection.resolution)))) - 6, 0, 4);
+    ImGui::Combo("cube face size", &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
+    o.reflection.resolution = 64 << size_index;
+    ImGui::TextDisabled("a cube map from the centre of each object with kr > 0");
+    if (!o.reflection.environment.empty())
+      ImGui::TextDisabled("environment: %s", o.reflection.environment.c_str());
+  }
+  ImGui::TreePop();
+}
+
 // ---- [model sections] --------------------------------------------------------------------------
 // Flat, Gouraud and Phong share the formula and its switches; they differ in where it is
 // evaluated, which the section says.
@@ -68,6 +135,8 @@ void local_section(ViewerState& state) {
   ImGui::SameLine();
   ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
   o.blinn = blinn == 1;
+  ImGui::Spacing();
+  effects_section(o);
 }
 
 struct ModelSection {
@@ -130,6 +199,21 @@ void lights_header(ViewerState& state) {
         if (light.attenuation.c == glm::vec3(0.0f)) light.attenuation.c.x = 1e-3f;  // f_att finite
         ImGui::EndDisabled();
       }
+      if (light.type == LightType::spot) {  // slide 19: lights with a non-uniform distribution
+        int warn = light.warn_exponent > 0.0f ? 1 : 0;
+        ImGui::Combo("distribution", &warn, "smooth cone\0" "Warn's cos^p\0");
+        float outer = glm::degrees(light.outer_cone), inner = glm::degrees(light.inner_cone);
+        if (warn == 1) {
+          if (light.warn_exponent <= 0.0f) light.warn_exponent = 10.0f;
+          ImGui::DragFloat("p", &light.warn_exponent, 0.2f, 0.01f, 1000.0f, "%.1f");
+          ImGui::DragFloat("cut-off (°)", &outer, 0.2f, 0.1f, 90.0f, "%.1f");
+        } else {
+          light.warn_exponent = 0.0f;
+          ImGui::DragFloatRange2("inner, outer (°)", &inner, &outer, 0.2f, 0.0f, 90.0f, "%.1f");
+          light.inner_cone = glm::radians(std::clamp(inner, 0.0f, outer));
+        }
+        light.outer_cone = glm::radians(std::clamp(outer, 0.1f, 90.0f));
+      }
       ImGui::TreePop();
     }
     ImGui::PopID();
@@ -164,7 +248,7 @@ void material_header(ViewerState& state) {
   ImGui::ColorEdit3("kt", &m.kt.r, ImGuiColorEditFlags_Float);
   ImGui::DragFloat("ior", &m.ior, 0.005f, 1.0f, 3.0f, "%.3f");
   if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
-  ImGui::TextDisabled("kr, kt and ior are used by Whitted's model");
+  ImGui::TextDisabled("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model");
 }
 
 // ---- [scene] -----------------------------------------------------------------------------------
@@ -194,15 +278,20 @@ void scene_header(ViewerState& state) {
 }  // namespace
 
 void draw_local_formula(const LocalOptions& o, const Scene& scene) {
-  // I = Ia ka + sum_i IL_i [kd cos(theta) + ks cos^n(alpha)] + Le
+  // I = Ia ka + sum_i S_i IL_i [kd cos(theta) + ks cos^n(alpha)] + Le + kr Ir + kt It
   ImGui::TextUnformatted("I =");
   piece(" Ia·ka", o.ambient, ambient_colour);
-  plain(" + Σᵢ ILᵢ·[");
+  plain(" + Σᵢ");
+  piece(" Sᵢ", o.shadows.on, shadow_colour);
+  plain(" ILᵢ·[");
   piece("kd·cos θ", o.diffuse, diffuse_colour);
   plain(" + ");
   piece(o.blinn ? "ks·(N·H)ⁿ" : "ks·(R·V)ⁿ", o.specular, specular_colour);
   plain("]");
   piece(" + Le", o.emission, emission_colour);
+  piece(" + kr·Ir", o.reflection.on, reflection_colour);
+  piece(" + kt·It", o.transparency.on, transparency_colour);
+  if (o.fog.mode != FogMode::off) ImGui::TextColored(fog_colour, "then I' = f·I + (1 - f)·C_fog (%s fog)", to_string(o.fog.mode));
   ImGui::TextDisabled("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s",
                       any_classroom_attenuation(scene) ? "1/(c0 + c1 d + c2 d²)" : "1/d²");
 }

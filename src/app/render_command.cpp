@@ -83,8 +83,27 @@ bool parse_size(const std::string& text, int& width, int& height) {
   return width >= 1 && height >= 1 && width <= kMaxSide && height <= kMaxSide;
 }
 
+bool parse_rgb(const std::string& text, Rgb& colour) {
+  static const std::regex number(R"(\s*([0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?)\s*)");
+  const size_t first = text.find(','), second = first == std::string::npos ? first : text.find(',', first + 1);
+  if (second == std::string::npos || text.find(',', second + 1) != std::string::npos) return false;
+  const std::string parts[3] = {text.substr(0, first), text.substr(first + 1, second - first - 1),
+                                text.substr(second + 1)};
+  Rgb parsed(0.0f);
+  for (int i = 0; i < 3; ++i) {
+    if (!std::regex_match(parts[i], number)) return false;
+    parsed[i] = std::stof(parts[i]);
+    if (!std::isfinite(parsed[i])) return false;
+  }
+  colour = parsed;
+  return true;
+}
+
 int run_render(const RenderSettings& settings) {
   try {
+    if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
+      throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+                                                settings.local.fog.far, settings.local.fog.near));
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
     if (settings.model != "whitted" && !settings.whitted_only_flags.empty())

@@ -36,6 +36,8 @@ bool parse_size(const std::string& text, int& width, int& height);
 
 // Parses "X,Y" (a pixel); false when malformed.
 bool parse_pixel(const std::string& text, int& x, int& y);
+// Parses "R,G,B" (three finite numbers >= 0); false when malformed.
+bool parse_rgb(const std::string& text, Rgb& colour);
 
 // Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
 // any message to stderr.

@@ -76,10 +76,14 @@ std::string check(const ScriptCommand& c) {
   if (c.verb == "set") {
     if (auto e = count(2, 2); !e.empty()) return e;
     if (a[0] == "exposure") return is_number(a[1]) ? "" : "`set exposure EV` takes a number";
-    for (const char* name : {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector"})
+    if (a[0] == "fog")
+      return a[1] == "off" || a[1] == "linear" || a[1] == "exponential"
+                 ? "" : "`set fog` takes off, linear or exponential";
+    for (const char* name : {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector",
+                             "shadows", "transparency", "reflection-map"})
       if (a[0] == name) return a[1] == "on" || a[1] == "off" ? "" : fmt::format("`set {}` takes on or off", name);
     return fmt::format("cannot set \"{}\" (ambient, diffuse, specular, emission, textures, blinn, "
-                       "panel, inspector, exposure)", a[0]);
+                       "panel, inspector, shadows, transparency, reflection-map, fog, exposure)", a[0]);
   }
   if (c.verb == "resize") {
     if (auto e = count(2, 2); !e.empty()) return e;

@@ -10,7 +10,8 @@ namespace luz::app {
 namespace {
 
 // Terms on the initials of their names (Ambient, Diffuse, Specular, Emission, Textures, Blinn);
-// flying on the arrows so that A, D and S stay the terms.
+// flying on the arrows so that A, D and S stay the terms. Slide 19's switches where a letter of
+// their name is free: foG, sHadows, Opacity (transparency), Mirror (reflection map).
 constexpr Shortcut table[] = {
     {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
     {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
@@ -25,6 +26,10 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_T, 0, "T", Action::toggle_textures, "kd texture on / off"},
     {GLFW_KEY_B, 0, "B", Action::toggle_blinn, "Phong's R.V / Blinn's N.H"},
     {GLFW_KEY_F, 0, "F", Action::cycle_attenuation, "f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)"},
+    {GLFW_KEY_G, 0, "G", Action::cycle_fog, "fog: off / linear / exponential"},
+    {GLFW_KEY_H, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
+    {GLFW_KEY_O, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
+    {GLFW_KEY_M, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
     {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
     {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
     {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},

@@ -13,6 +13,7 @@ enum class Action {
   model_1, model_2, model_3, model_4, model_5, model_6,
   toggle_ambient, toggle_diffuse, toggle_specular, toggle_emission, toggle_textures, toggle_blinn,
   cycle_attenuation,
+  cycle_fog, toggle_shadows, toggle_transparency, toggle_reflection_map,
   exposure_up, exposure_down,
   scene_camera, next_camera,
   reload, screenshot, screenshot_with_panel,

@@ -402,6 +402,15 @@ void Viewer::apply(Action action) {
       state_.note = all_classroom ? "f_att = 1/d^2" : "f_att = 1/(c0 + c1 d + c2 d^2)";
       break;
     }
+    case Action::cycle_fog:
+      o.fog.mode = o.fog.mode == FogMode::off      ? FogMode::linear
+                   : o.fog.mode == FogMode::linear ? FogMode::exponential
+                                                   : FogMode::off;
+      state_.note = fmt::format("fog {}", to_string(o.fog.mode));
+      break;
+    case Action::toggle_shadows: toggle(o.shadows.on, "shadows S_i"); break;
+    case Action::toggle_transparency: toggle(o.transparency.on, "transparency kt"); break;
+    case Action::toggle_reflection_map: toggle(o.reflection.on, "reflection map kr Ir"); break;
     case Action::exposure_up: state_.exposure += 0.5f; break;
     case Action::exposure_down: state_.exposure -= 0.5f; break;
     case Action::scene_camera: to_scene_camera(); break;
@@ -463,10 +472,14 @@ bool Viewer::run(const ScriptCommand& c, std::string& error) {
     LocalOptions& o = state_.local;
     if (a[0] == "exposure") {
       state_.exposure = std::stof(a[1]);
+    } else if (a[0] == "fog") {
+      o.fog.mode = a[1] == "linear" ? FogMode::linear : a[1] == "exponential" ? FogMode::exponential : FogMode::off;
     } else {
       bool* flags[] = {&o.ambient, &o.diffuse, &o.specular, &o.emission, &o.textures, &o.blinn,
-                       &state_.show_panel, &state_.show_inspector};
-      const char* names[] = {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector"};
+                       &state_.show_panel, &state_.show_inspector, &o.shadows.on, &o.transparency.on,
+                       &o.reflection.on};
+      const char* names[] = {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector",
+                             "shadows", "transparency", "reflection-map"};
       for (size_t i = 0; i < std::size(names); ++i)
         if (a[0] == names[i]) *flags[i] = a[1] == "on";
     }
@@ -535,7 +548,12 @@ void Viewer::update_inspector(const Layout& l, const Camera& camera) {
       return;
     }
   }
-  reading_ = read_terms(*state_.scene, renderer_->area_lights(), *pick_, state_.local);
+  // The shadow maps and the reflection map the picture was drawn with, read texel by texel.
+  const std::optional<ShadowLookup> shadows = renderer_->shadow_lookup();
+  DrawnLookups lookups;
+  lookups.shadows = shadows ? &*shadows : nullptr;
+  lookups.reflection = renderer_->reflection_lookup(pick_->mesh);
+  reading_ = read_terms(*state_.scene, renderer_->area_lights(), *pick_, state_.local, lookups);
   float rgba[4] = {};
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(pick_->x, l.view_pixels.y - 1 - pick_->y, 1, 1, GL_RGBA, GL_FLOAT, rgba);

@@ -11,4 +11,13 @@ const char* to_string(Shading shading) {
   return "?";
 }
 
+const char* to_string(FogMode mode) {
+  switch (mode) {
+    case FogMode::off: return "off";
+    case FogMode::linear: return "linear";
+    case FogMode::exponential: return "exponential";
+  }
+  return "?";
+}
+
 }  // namespace luz

@@ -2,7 +2,17 @@
 // shaders/lighting.glsl; this file uploads the scene, chooses the program of the shading model
 // and hands the lights, the material and the switches to it as uniforms.
 //
-// Sections: [light limits] [textures] [the renderer] [uniforms] [draw and render]
+// A frame, with every switch of slide 19 on:
+//   1. shadow maps, one set for all lights (shadow_maps.cpp);
+//   2. a reflection cube map from the centre of each object with kr > 0, the object left out;
+//   3. the picture: opaque meshes first with depth writes, then the transparent ones (kt > 0)
+//      back to front by the distance of their centre from the eye, blended without depth writes
+//      (dual-source blending: pixel = I + kt * pixel behind); within a mesh its back faces first,
+//      then its front faces, so a sphere's far side shows through its near side. The fog is in
+//      the shaders (lighting.glsl write_fragment).
+//
+// Sections: [light limits] [textures] [the renderer] [uniforms] [the scene pass]
+//           [reflection maps] [draw and render] [for the CPU twin]
 #include "local/local_renderer.h"
 
 #include <algorithm>
@@ -16,6 +26,7 @@
 
 #include "core/error.h"
 #include "gl/framebuffer.h"
+#include "io/image_io.h"
 #include "gl/functions.h"
 #include "gl/mesh_buffers.h"
 #include "gl/shader.h"
@@ -36,6 +47,14 @@ namespace luz {
 //   light within the group is approximated. A warning says so.
 constexpr int max_lights = 16;
 constexpr int max_area_lights = 64;
+// Reflection maps: one cube per reflective mesh, for the first 8 (a warning names the cap).
+constexpr size_t max_reflection_maps = 8;
+
+// Texture units, one per sampler type (GL refuses a draw where two sampler types share a unit).
+constexpr int kd_unit = 0;
+constexpr int shadow_unit = 1;
+constexpr int reflection_unit = 2;
+constexpr int environment_unit = 3;
 
 namespace {
 
@@ -88,6 +107,13 @@ GLuint upload_texture(const Texture& texture) {
   return id;
 }
 
+bool any(const Rgb& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
+
+// The six faces of a cube map in GL's order, with the up vectors GL's cube-map rule implies (the
+// same as shadow_maps.cpp's).
+const glm::vec3 face_forward[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const glm::vec3 face_up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+
 int light_type_code(LightType type) {  // POINT, SPOT, DIRECTIONAL in lighting.glsl
   switch (type) {
     case LightType::point: return 0;
@@ -100,11 +126,37 @@ int light_type_code(LightType type) {  // POINT, SPOT, DIRECTIONAL in lighting.g
 }  // namespace
 
 // ---- [the renderer] ----------------------------------------------------------------------------
+// One view of the scene to draw: the picture, or a face of a reflection cube map.
+struct ScenePass {
+  glm::mat4 view_projection{1.0f};
+  glm::vec3 eye{0.0f};
+  bool fog = true;          // the picture has the fog; the cube maps see the surfaces unfogged
+  bool reflections = true;  // a cube map shows objects without their own reflections
+  int skip_mesh = -1;       // the object a cube map is rendered from
+};
+
+struct ReflectionCube {
+  GLuint texture = 0;
+  int size = 0;
+};
+
 struct LocalRenderer::Impl {
   const Scene& scene;
   std::vector<gl::MeshBuffers> meshes;  // one per Scene::meshes entry
+  std::vector<glm::vec3> centres;       // each mesh's bounding-box centre (sorting, cube maps)
   std::vector<GLuint> textures;         // one per Scene::textures entry
   std::vector<AreaLight> area_lights;   // at most max_area_lights
+  std::unique_ptr<ShadowMaps> shadow_maps;  // made when shadows are first switched on
+  bool drew_shadows = false;                // the last draw() used them
+  Shadows drawn_shadow_settings;
+  std::vector<ReflectionCube> cubes;        // per mesh (texture 0: none)
+  GLuint cube_framebuffer = 0, cube_depth = 0;
+  int cube_depth_size = 0;
+  bool drew_reflections = false;
+  std::string environment_path;             // the image in environment_texture
+  Image environment;
+  GLuint environment_texture = 0;
+  bool warned_reflections = false;
   gl::Program flat{{"local.vert", "flat.geom", "flat.frag"}, {"lighting.glsl"}};
   gl::Program gouraud{{"gouraud.vert", "gouraud.frag"}, {"lighting.glsl"}};
   gl::Program phong{{"local.vert", "phong.frag"}, {"lighting.glsl"}};
@@ -115,6 +167,11 @@ struct LocalRenderer::Impl {
   explicit Impl(const Scene& s) : scene(s) {}
   ~Impl() {
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
+    for (const ReflectionCube& cube : cubes)
+      if (cube.texture) glDeleteTextures(1, &cube.texture);
+    if (cube_framebuffer) glDeleteFramebuffers(1, &cube_framebuffer);
+    if (cube_depth) glDeleteRenderbuffers(1, &cube_depth);
+    if (environment_texture) glDeleteTextures(1, &environment_texture);
   }
 
   gl::Program& program(Shading shading) {
@@ -126,9 +183,19 @@ struct LocalRenderer::Impl {
     return phong;
   }
 
-  void set_lights(gl::Program& p);
+  const Material& material_of(size_t mesh) const {
+    static const Material fallback;
+    const int m = scene.meshes[mesh].material;
+    return m >= 0 && size_t(m) < scene.materials.size() ? scene.materials[size_t(m)] : fallback;
+  }
+
+  void set_lights(gl::Program& p, bool shadows);
   void set_material(gl::Program& p, const Material& material, const LocalOptions& options);
-  float far_plane(const Camera& camera) const;
+  void set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view);
+  float far_plane(const glm::vec3& eye) const;
+  void draw_scene(const ScenePass& pass, const LocalOptions& options);
+  void update_environment(const ReflectionMap& settings);
+  void render_reflection_maps(const LocalOptions& options);
 };
 
 // Checks before any GL call: with no context ever made current the table is all null pointers.
@@ -141,7 +208,13 @@ static const Scene& with_gl_loaded(const Scene& scene) {
 
 LocalRenderer::LocalRenderer(const Scene& scene)
     : impl_(std::make_unique<Impl>(with_gl_loaded(scene))) {
-  for (const Mesh& mesh : scene.meshes) impl_->meshes.emplace_back(mesh);
+  for (const Mesh& mesh : scene.meshes) {
+    impl_->meshes.emplace_back(mesh);
+    Bounds bounds;
+    for (const glm::vec3& p : mesh.positions) bounds.grow(p);
+    impl_->centres.push_back(bounds.empty() ? glm::vec3(0.0f) : bounds.centre());
+  }
+  impl_->cubes.resize(scene.meshes.size());
   for (const Texture& texture : scene.textures) impl_->textures.push_back(upload_texture(texture));
 
   if (scene.area_lights.size() > size_t(max_area_lights)) {
@@ -161,12 +234,30 @@ const std::vector<std::string>& LocalRenderer::warnings() const { return impl_->
 const std::vector<AreaLight>& LocalRenderer::area_lights() const { return impl_->area_lights; }
 
 // ---- [uniforms] --------------------------------------------------------------------------------
-void LocalRenderer::Impl::set_lights(gl::Program& p) {
+// A light's shadow map for lighting.glsl's ShadowView (kind none without one).
+void LocalRenderer::Impl::set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view) {
+  const ShadowView none;
+  const ShadowView& v = view ? *view : none;
+  p.set(at + "kind", int(v.kind));
+  p.set(at + "layer", v.layer);
+  p.set(at + "origin", v.origin);
+  p.set(at + "direction", v.direction);
+  p.set(at + "matrix", v.matrix);
+  p.set(at + "texel", v.texel);
+}
+
+void LocalRenderer::Impl::set_lights(gl::Program& p, bool shadows) {
+  const std::vector<ShadowView>* light_views = shadows ? &shadow_maps->light_views() : nullptr;
+  const std::vector<ShadowView>* area_views = shadows ? &shadow_maps->area_views() : nullptr;
+  auto view = [](const std::vector<ShadowView>* views, size_t i) -> const ShadowView* {
+    return views && i < views->size() ? &(*views)[i] : nullptr;
+  };
   int count = 0, enabled = 0;
   for (const Light& light : scene.lights) {
     if (!light.enabled) continue;
     ++enabled;
     if (count == max_lights) continue;
+    set_shadow_view(p, fmt::format("u_lights[{}].shadow.", count), view(light_views, size_t(count)));
     const std::string at = fmt::format("u_lights[{}].", count++);
     p.set(at + "type", light_type_code(light.type));
     p.set(at + "intensity", glm::vec3(light.intensity));
@@ -190,6 +281,7 @@ void LocalRenderer::Impl::set_lights(gl::Program& p) {
     p.set(at + "position", area_lights[i].centroid);
     p.set(at + "normal", area_lights[i].normal);
     p.set(at + "power", glm::vec3(area_lights[i].radiance * area_lights[i].area));  // Le * A
+    set_shadow_view(p, at + "shadow.", view(area_views, i));
   }
   p.set("u_area_light_count", int(area_lights.size()));
 }
@@ -204,12 +296,14 @@ void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
   const bool textured = options.textures && material.kd_texture >= 0 &&
                         size_t(material.kd_texture) < textures.size();
   p.set("u_has_kd_texture", textured);
-  glActiveTexture(GL_TEXTURE0);
+  glActiveTexture(GL_TEXTURE0 + kd_unit);
   glBindTexture(GL_TEXTURE_2D, textured ? textures[size_t(material.kd_texture)] : 0);
+  p.set("u_kr", glm::vec3(material.kr));
+  p.set("u_kt", glm::vec3(material.kt));
 }
 
 // A finite far plane for cameras with zfar = 0: just past the farthest corner of the scene.
-float LocalRenderer::Impl::far_plane(const Camera& camera) const {
+float LocalRenderer::Impl::far_plane(const glm::vec3& eye) const {
   const Bounds bounds = scene.bounds();
   if (bounds.empty()) return 1000.0f;
   float farthest = 0.0f;
@@ -217,16 +311,14 @@ float LocalRenderer::Impl::far_plane(const Camera& camera) const {
     const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x,
                       corner & 2 ? bounds.max.y : bounds.min.y,
                       corner & 4 ? bounds.max.z : bounds.min.z);
-    farthest = std::max(farthest, glm::length(p - camera.position()));
+    farthest = std::max(farthest, glm::length(p - eye));
   }
-  return std::max(1.1f * farthest, 2.0f * camera.znear);
+  return std::max(1.1f * farthest, 1e-3f);
 }
 
-// ---- [draw and render] -------------------------------------------------------------------------
-void LocalRenderer::draw(const Camera& camera, int width, int height,
-                         const LocalOptions& options) {
-  Impl& s = *impl_;
-  glViewport(0, 0, width, height);
+// ---- [the scene pass] --------------------------------------------------------------------------
+// Draws every mesh (but pass.skip_mesh) into the bound framebuffer, already cleared.
+void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& options) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -234,37 +326,224 @@ void LocalRenderer::draw(const Camera& camera, int width, int height,
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
 
-  // glClearBuffer does not clamp, so a background radiance above 1 survives in a float target.
-  const float background[4] = {s.scene.background.r, s.scene.background.g,
-                               s.scene.background.b, 1.0f};
-  const float far_depth = 1.0f;
-  glClearBufferfv(GL_COLOR, 0, background);
-  glClearBufferfv(GL_DEPTH, 0, &far_depth);
-
-  gl::Program& p = s.program(options.shading);
+  gl::Program& p = program(options.shading);
   p.use();
-  // Vertical field of view is the camera's yfov whatever the output's aspect.
-  const glm::mat4 projection = camera.projection(float(width) / float(height),
-                                                 s.far_plane(camera));
-  p.set("u_view_projection", projection * camera.view());
-  p.set("u_eye", camera.position());
-  p.set("u_ambient", glm::vec3(s.scene.ambient));
+  p.set("u_view_projection", pass.view_projection);
+  p.set("u_eye", pass.eye);
+  p.set("u_ambient", glm::vec3(scene.ambient));
   p.set("u_ambient_on", options.ambient);
   p.set("u_diffuse_on", options.diffuse);
   p.set("u_specular_on", options.specular);
   p.set("u_emission_on", options.emission);
   p.set("u_blinn", options.blinn);
-  p.set("u_kd_texture", 0);  // texture unit 0
-  s.set_lights(p);
+  p.set("u_kd_texture", kd_unit);
 
-  for (size_t m = 0; m < s.meshes.size(); ++m) {
-    const int material = s.scene.meshes[m].material;
-    const bool known = material >= 0 && size_t(material) < s.scene.materials.size();
-    s.set_material(p, known ? s.scene.materials[size_t(material)] : Material{}, options);
-    s.meshes[m].draw();
+  // Slide 19. S_i: the shadow maps (already rendered for this frame).
+  const bool shadows = options.shadows.on && shadow_maps;
+  p.set("u_shadows_on", shadows);
+  p.set("u_shadow_maps", shadow_unit);
+  p.set("u_shadow_constant_bias", options.shadows.constant_bias);
+  p.set("u_shadow_slope_bias", options.shadows.slope_bias);
+  p.set("u_shadow_normal_offset", options.shadows.normal_offset);
+  glActiveTexture(GL_TEXTURE0 + shadow_unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, shadows ? shadow_maps->texture() : 0);
+  set_lights(p, shadows);
+  // kr Ir: the environment behind the cube maps.
+  p.set("u_reflection_map", reflection_unit);
+  p.set("u_environment", environment_unit);
+  p.set("u_has_environment", environment_texture != 0 && !environment_path.empty());
+  p.set("u_background", glm::vec3(scene.background));
+  glActiveTexture(GL_TEXTURE0 + environment_unit);
+  glBindTexture(GL_TEXTURE_2D, environment_texture);
+  // The fog.
+  p.set("u_fog_mode", pass.fog ? int(options.fog.mode) : int(FogMode::off));
+  p.set("u_fog_colour", glm::vec3(options.fog.colour));
+  p.set("u_fog_near", options.fog.near);
+  p.set("u_fog_far", options.fog.far);
+  p.set("u_fog_density", options.fog.density);
+
+  auto draw_mesh = [&](size_t m, bool transparent) {
+    const Material& material = material_of(m);
+    set_material(p, material, options);
+    const bool reflects = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
+    p.set("u_reflection_on", reflects);
+    glActiveTexture(GL_TEXTURE0 + reflection_unit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, reflects ? cubes[m].texture : 0);
+    p.set("u_transparent", transparent);
+    meshes[m].draw();
+  };
+
+  // Opaque first, with depth writes; the transparent ones wait.
+  std::vector<size_t> transparent;
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    if (int(m) == pass.skip_mesh) continue;
+    if (options.transparency.on && any(material_of(m).kt)) transparent.push_back(m);
+    else draw_mesh(m, false);
   }
-  glBindTexture(GL_TEXTURE_2D, 0);
+
+  // Then back to front, blended: pixel = (this surface's radiance) + kt * (pixel behind).
+  if (!transparent.empty()) {
+    std::stable_sort(transparent.begin(), transparent.end(), [&](size_t a, size_t b) {
+      return glm::length(centres[a] - pass.eye) > glm::length(centres[b] - pass.eye);
+    });
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // SRC1 = lighting.glsl's frag_transmittance
+    glDepthMask(GL_FALSE);               // what is behind stays visible to the next ones
+    glEnable(GL_CULL_FACE);
+    for (size_t m : transparent) {
+      glCullFace(GL_FRONT);  // its far side first...
+      draw_mesh(m, true);
+      glCullFace(GL_BACK);   // ...then its near side over it
+      draw_mesh(m, true);
+    }
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+
+  for (int unit : {kd_unit, shadow_unit, reflection_unit, environment_unit}) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
   glUseProgram(0);
+}
+
+// ---- [reflection maps] -------------------------------------------------------------------------
+// The environment image named by the options, read when the name changes (linear RGB float,
+// repeating around, clamped at the poles; no mipmaps: the lookup is at level 0).
+void LocalRenderer::Impl::update_environment(const ReflectionMap& settings) {
+  if (settings.environment == environment_path) return;
+  environment_path.clear();
+  environment = Image();
+  if (settings.environment.empty()) return;
+  environment = io::read_image(settings.environment);  // throws: the caller reports it
+  if (!environment_texture) glGenTextures(1, &environment_texture);
+  glBindTexture(GL_TEXTURE_2D, environment_texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, environment.width, environment.height, 0, GL_RGB, GL_FLOAT,
+               environment.pixels.data());  // row 0 = the top = t 0: the sky up
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  environment_path = settings.environment;
+}
+
+// A cube map around the centre of every mesh with kr > 0, the mesh itself left out: the world as
+// a mirror there would see it, with one bounce (the other mirrors appear without their own
+// reflections) and no fog. Cleared to alpha 0, so the lookup knows where nothing was seen.
+void LocalRenderer::Impl::render_reflection_maps(const LocalOptions& options) {
+  const int size = std::clamp(options.reflection.resolution, 8, 4096);
+  std::vector<size_t> reflective;
+  for (size_t m = 0; m < meshes.size(); ++m)
+    if (any(material_of(m).kr)) reflective.push_back(m);
+  if (reflective.size() > max_reflection_maps) {
+    if (!warned_reflections)
+      warnings.push_back(fmt::format("local models: {} objects have kr > 0; the first {} get a "
+                                     "reflection map", reflective.size(), max_reflection_maps));
+    warned_reflections = true;
+    reflective.resize(max_reflection_maps);
+  }
+  if (reflective.empty()) return;
+
+  if (!cube_framebuffer) glGenFramebuffers(1, &cube_framebuffer);
+  if (cube_depth_size != size) {
+    if (!cube_depth) glGenRenderbuffers(1, &cube_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, cube_depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    cube_depth_size = size;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, cube_framebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, cube_depth);
+  glViewport(0, 0, size, size);
+
+  for (size_t m : reflective) {
+    ReflectionCube& cube = cubes[m];
+    if (!cube.texture) glGenTextures(1, &cube.texture);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture);
+    if (cube.size != size) {
+      for (int face = 0; face < 6; ++face)
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA32F, size, size, 0, GL_RGBA,
+                     GL_FLOAT, nullptr);
+      glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+      cube.size = size;
+    }
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+
+    const glm::vec3 centre = centres[m];
+    const float far = far_plane(centre);
+    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, 1e-4f * far, far);
+    for (int face = 0; face < 6; ++face) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
+                             cube.texture, 0);
+      const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+      if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw Error(ErrorKind::gl, fmt::format("a {}x{} RGBA32F reflection-map face is incomplete (status "
+                                               "0x{:x}) on {}", size, size, status, gl_version_string()));
+      const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      const float far_depth = 1.0f;
+      glClearBufferfv(GL_COLOR, 0, nothing);
+      glClearBufferfv(GL_DEPTH, 0, &far_depth);
+      ScenePass pass;
+      pass.view_projection = projection * glm::lookAt(centre, centre + face_forward[face], face_up[face]);
+      pass.eye = centre;
+      pass.fog = false;
+      pass.reflections = false;
+      pass.skip_mesh = int(m);
+      draw_scene(pass, options);
+    }
+  }
+}
+
+// ---- [draw and render] -------------------------------------------------------------------------
+void LocalRenderer::draw(const Camera& camera, int width, int height,
+                         const LocalOptions& options) {
+  Impl& s = *impl_;
+  GLint target = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+
+  // 1. The shadow maps (S_i).
+  s.drew_shadows = options.shadows.on;
+  s.drawn_shadow_settings = options.shadows;
+  if (options.shadows.on) {
+    if (!s.shadow_maps) s.shadow_maps = std::make_unique<ShadowMaps>();
+    std::vector<bool> emissive;
+    for (size_t m = 0; m < s.meshes.size(); ++m) emissive.push_back(s.material_of(m).is_emissive());
+    s.shadow_maps->update(s.scene, s.area_lights, max_lights, options.shadows, s.meshes, emissive);
+  }
+  // 2. The reflection maps (kr Ir).
+  s.update_environment(options.reflection);
+  s.drew_reflections = options.reflection.on;
+  if (options.reflection.on) s.render_reflection_maps(options);
+
+  // 3. The picture.
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+  glViewport(0, 0, width, height);
+  glDisable(GL_SCISSOR_TEST);
+  // Rays that hit nothing see the background, or through fog the fog colour (f = 0 at infinity).
+  // glClearBuffer does not clamp, so a background radiance above 1 survives in a float target.
+  const Rgb clear = options.fog.mode != FogMode::off ? options.fog.colour : s.scene.background;
+  const float background[4] = {clear.r, clear.g, clear.b, 1.0f};
+  const float far_depth = 1.0f;
+  glDepthMask(GL_TRUE);
+  glClearBufferfv(GL_COLOR, 0, background);
+  glClearBufferfv(GL_DEPTH, 0, &far_depth);
+
+  ScenePass pass;
+  // Vertical field of view is the camera's yfov whatever the output's aspect.
+  pass.view_projection = camera.projection(float(width) / float(height), s.far_plane(camera.position())) *
+                         camera.view();
+  pass.eye = camera.position();
+  s.draw_scene(pass, options);
 }
 
 Image LocalRenderer::render(const Camera& camera, int width, int height,
@@ -279,6 +558,42 @@ Image LocalRenderer::render(const Camera& camera, int width, int height,
   Image image = s.target->read();
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   return image;
+}
+
+}  // namespace luz
+
+namespace luz {
+
+// ---- [for the CPU twin] ------------------------------------------------------------------------
+std::optional<ShadowLookup> LocalRenderer::shadow_lookup() const {
+  if (!impl_->drew_shadows || !impl_->shadow_maps) return std::nullopt;
+  return impl_->shadow_maps->lookup(impl_->drawn_shadow_settings);
+}
+
+ReflectionLookup LocalRenderer::reflection_lookup(int mesh) const {
+  const Impl& s = *impl_;
+  ReflectionLookup lookup;
+  lookup.background = s.scene.background;
+  if (!s.environment_path.empty()) lookup.environment = &s.environment;
+  if (!s.drew_reflections || mesh < 0 || size_t(mesh) >= s.cubes.size() || !s.cubes[size_t(mesh)].texture)
+    return lookup;
+  CubeMapData& cube = lookup.cube;
+  cube.size = s.cubes[size_t(mesh)].size;
+  const GLuint texture = s.cubes[size_t(mesh)].texture;
+  GLuint framebuffer = s.cube_framebuffer;
+  cube.texel = [texture, framebuffer](int face, int x, int y) {
+    GLint previous = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
+                           texture, 0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glm::vec4 value(0.0f);
+    glReadPixels(x, y, 1, 1, GL_RGBA, GL_FLOAT, &value.x);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));
+    return value;
+  };
+  return lookup;
 }
 
 }  // namespace luz

@@ -1,10 +1,13 @@
 #pragma once
 // The local-model rasteriser through OpenGL 3.3 core: flat, Gouraud and Phong shading of
-//   I = Ia*ka + sum_i IL_i * [kd*cos(theta) + ks*cos^n(alpha)]   (+ Le of emissive surfaces)
+//   I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)]   (+ Le of emissive surfaces)
+//       + kr*Ir + kt*It,   then the fog
+// (S_i, Ir, It and the fog only when their switches of LocalOptions are on: slide 19)
 // with IL_i = I_i * f_att(d_i) / pi for point and spot lights, E_perp / pi for directional ones,
 // and each emissive triangle lighting the scene as a point light at its centroid of intensity
 // Le * A * cos(theta_e) (SCENES.md).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,8 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "local/local_options.h"
+#include "local/reflection_maps.h"
+#include "local/shadow_maps.h"
 
 namespace luz {
 
@@ -27,6 +32,8 @@ public:
   LocalRenderer& operator=(const LocalRenderer&) = delete;
 
   // Draws into the currently bound framebuffer (the window's, or an FBO) of the given size.
+  // With shadows or reflection maps on, their passes run first (into their own framebuffers).
+  // Throws luz::Error when the environment image of options.reflection cannot be read.
   void draw(const Camera& camera, int width, int height, const LocalOptions& options);
 
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
@@ -39,6 +46,13 @@ public:
   // The emissive triangles as the shaders receive them (merged when there are more than 64),
   // for the CPU twin of the formula (local_terms.h).
   const std::vector<AreaLight>& area_lights() const;
+
+  // For the CPU twin (local_terms.h), what the last draw() looked up: its shadow maps (nullopt
+  // when it drew without), and the reflection of mesh `mesh` (its cube map when it has one, and
+  // the surroundings). Texels are read from the GPU on demand: the renderer's context must be
+  // current, and the lookups are valid until the next draw().
+  std::optional<ShadowLookup> shadow_lookup() const;
+  ReflectionLookup reflection_lookup(int mesh) const;
 
 private:
   struct Impl;

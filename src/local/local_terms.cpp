@@ -23,17 +23,21 @@ float cos_alpha(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, bool
   return std::max(glm::dot(R, V), 0.0f);
 }
 
-// lighting.glsl add_light(): IL [kd cos(theta) + ks cos^n(alpha)], switches applied.
-void add_light(TermValues& terms, LightTerm term, const Material& material, const glm::vec3& N,
-               const glm::vec3& L, const glm::vec3& V, const LocalOptions& options) {
+// lighting.glsl add_light(): S_i IL [kd cos(theta) + ks cos^n(alpha)], switches applied.
+void add_light(TermValues& terms, LightTerm term, const ShadowView* shadow, const ShadowLookup* shadows,
+               const Material& material, const glm::vec3& P, const glm::vec3& N, const glm::vec3& L,
+               const glm::vec3& V, const LocalOptions& options) {
   const float cos_theta = glm::dot(N, L);
   term.theta = angle_of(cos_theta);
   const float cos_a = cos_alpha(N, L, V, options.blinn);
   term.alpha = angle_of(cos_a);
   term.lit = cos_theta > 0.0f;
   if (term.lit) {  // behind the surface: no diffuse, no highlight
-    if (options.diffuse) term.diffuse = term.IL * material.kd * cos_theta;
-    if (options.specular) term.specular = term.IL * material.ks * std::pow(cos_a, material.shininess);
+    if (options.shadows.on && shadows && shadow)
+      term.S = shadow_factor(*shadows, *shadow, P, N, cos_theta);
+    if (options.diffuse) term.diffuse = term.S * term.IL * material.kd * cos_theta;
+    if (options.specular)
+      term.specular = term.S * term.IL * material.ks * std::pow(cos_a, material.shininess);
   }
   terms.diffuse += term.diffuse;
   terms.specular += term.specular;
@@ -44,7 +48,11 @@ void add_light(TermValues& terms, LightTerm term, const Material& material, cons
 
 TermValues evaluate_terms(const Scene& scene, const Material& material, const glm::vec3& P,
                           const glm::vec3& N, const glm::vec3& V, const LocalOptions& options,
-                          std::span<const AreaLight> area_lights) {
+                          std::span<const AreaLight> area_lights, const ShadowLookup* shadows) {
+  // The shadow view of shader light i / emitter i, when the maps have one.
+  auto view_of = [shadows](const std::vector<ShadowView>* views, size_t i) -> const ShadowView* {
+    return shadows && i < views->size() ? &(*views)[i] : nullptr;
+  };
   TermValues terms;
   if (options.ambient) terms.ambient = scene.ambient * material.ka;  // I_A = Ia ka
 
@@ -52,7 +60,8 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
   int count = 0;
   for (const Light& light : scene.lights) {
     if (!light.enabled) continue;
-    if (count++ == max_shader_lights) break;
+    if (count == max_shader_lights) break;
+    const size_t index = size_t(count++);
     LightTerm term;
     term.name = light.name;
     glm::vec3 L;
@@ -67,7 +76,8 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
       term.spot = light.spot_factor(-L);
       term.IL = light.intensity * term.f_att * term.spot / pi;
     }
-    add_light(terms, std::move(term), material, N, L, V, options);
+    add_light(terms, std::move(term), view_of(shadows ? &shadows->lights : nullptr, index), shadows,
+              material, P, N, L, V, options);
   }
 
   // lighting.glsl area_IL(): an emitter as a point light of intensity Le A cos(theta_e), 1/d^2.
@@ -84,7 +94,8 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
       term.spot = std::max(glm::dot(light.normal, -L), 0.0f);  // cos(theta_e): dark behind it
       term.IL = light.radiance * light.area * term.spot * term.f_att / pi;
     }
-    add_light(terms, std::move(term), material, N, L, V, options);
+    add_light(terms, std::move(term), view_of(shadows ? &shadows->area_lights : nullptr, i), shadows,
+              material, P, N, L, V, options);
   }
   return terms;
 }
@@ -94,11 +105,29 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
   return evaluate_terms(scene, material, P, N, V, options, scene.area_lights);
 }
 
+float fog_factor(const Fog& fog, float d) {
+  switch (fog.mode) {
+    case FogMode::off: return 1.0f;
+    case FogMode::linear: return std::clamp((fog.far - d) / std::max(fog.far - fog.near, 1e-6f), 0.0f, 1.0f);
+    case FogMode::exponential: return std::exp(-fog.density * d);
+  }
+  return 1.0f;
+}
+
+void add_reflection_and_fog(TermValues& terms, const Material& material, const LocalOptions& options,
+                            const ReflectionLookup& reflection, const glm::vec3& R, float d) {
+  const bool reflects = material.kr.r > 0.0f || material.kr.g > 0.0f || material.kr.b > 0.0f;
+  if (options.reflection.on && reflects) terms.reflection = material.kr * reflected_radiance(reflection, R);
+  terms.fog = fog_factor(options.fog, d);
+  terms.fog_colour = options.fog.colour;
+}
+
 Rgb radiance(const TermValues& terms, const Material& material, const LocalOptions& options,
              const Rgb& kd_texture_factor, bool emitting_side) {
   Rgb I = terms.ambient + terms.diffuse * kd_texture_factor + terms.specular;
   if (options.emission && emitting_side) I += material.emission;  // an emitter shows its own Le
-  return I;
+  I += terms.reflection;                                          // + kr Ir
+  return terms.fog * I + (1.0f - terms.fog) * terms.fog_colour;   // depth cueing
 }
 
 TermValues blend(const TermValues& a, const TermValues& b, const TermValues& c, const glm::vec3& w) {
@@ -115,6 +144,7 @@ TermValues blend(const TermValues& a, const TermValues& b, const TermValues& c, 
     t.d = w.x * t.d + w.y * tb.d + w.z * tc.d;
     t.f_att = w.x * t.f_att + w.y * tb.f_att + w.z * tc.f_att;
     t.spot = w.x * t.spot + w.y * tb.spot + w.z * tc.spot;
+    t.S = w.x * t.S + w.y * tb.S + w.z * tc.S;
     t.IL = w.x * t.IL + w.y * tb.IL + w.z * tc.IL;
     t.diffuse = w.x * t.diffuse + w.y * tb.diffuse + w.z * tc.diffuse;
     t.specular = w.x * t.specular + w.y * tb.specular + w.z * tc.specular;

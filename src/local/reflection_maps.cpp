@@ -1,0 +1,84 @@
+#include "local/reflection_maps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+
+namespace luz {
+namespace {
+
+constexpr float pi = 3.14159265358979f;
+
+// Bilinear weights as GL computes them: texel centres at (i + 1/2) / size.
+struct Taps {
+  int i0, i1;
+  float w;  // the weight of i1
+};
+
+Taps taps(float coordinate, int size, bool repeat) {
+  const float u = coordinate * float(size) - 0.5f;
+  const float floor_u = std::floor(u);
+  int i0 = int(floor_u), i1 = i0 + 1;
+  if (repeat) {
+    i0 = ((i0 % size) + size) % size;
+    i1 = ((i1 % size) + size) % size;
+  } else {
+    i0 = std::clamp(i0, 0, size - 1);
+    i1 = std::clamp(i1, 0, size - 1);
+  }
+  return {i0, i1, u - floor_u};
+}
+
+}  // namespace
+
+glm::vec4 sample_cube(const CubeMapData& cube, const glm::vec3& D) {
+  if (cube.size == 0 || !cube.texel) return glm::vec4(0.0f);
+  // The cube-map rule of the OpenGL specification (as shadow_maps.cpp cube_texel).
+  const glm::vec3 a = glm::abs(D);
+  int face = 0;
+  float sc = 0.0f, tc = 0.0f, ma = 1.0f;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = D.x >= 0.0f ? 0 : 1;
+    sc = D.x >= 0.0f ? -D.z : D.z;
+    tc = -D.y;
+    ma = a.x;
+  } else if (a.y >= a.z) {
+    face = D.y >= 0.0f ? 2 : 3;
+    sc = D.x;
+    tc = D.y >= 0.0f ? D.z : -D.z;
+    ma = a.y;
+  } else {
+    face = D.z >= 0.0f ? 4 : 5;
+    sc = D.z >= 0.0f ? D.x : -D.x;
+    tc = -D.y;
+    ma = a.z;
+  }
+  const Taps s = taps(0.5f * (sc / ma + 1.0f), cube.size, false);
+  const Taps t = taps(0.5f * (tc / ma + 1.0f), cube.size, false);
+  auto at = [&](int x, int y) { return cube.texel(face, x, y); };
+  return (1 - s.w) * (1 - t.w) * at(s.i0, t.i0) + s.w * (1 - t.w) * at(s.i1, t.i0) +
+         (1 - s.w) * t.w * at(s.i0, t.i1) + s.w * t.w * at(s.i1, t.i1);
+}
+
+Rgb sample_environment(const Image& environment, const glm::vec3& D) {
+  const glm::vec3 d = glm::normalize(D);
+  const float u = 0.5f + std::atan2(d.x, -d.z) / (2.0f * pi);
+  const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / pi;
+  const Taps s = taps(u, environment.width, true);
+  const Taps t = taps(v, environment.height, false);
+  return (1 - s.w) * (1 - t.w) * environment.at(s.i0, t.i0) + s.w * (1 - t.w) * environment.at(s.i1, t.i0) +
+         (1 - s.w) * t.w * environment.at(s.i0, t.i1) + s.w * t.w * environment.at(s.i1, t.i1);
+}
+
+Rgb reflected_radiance(const ReflectionLookup& lookup, const glm::vec3& R) {
+  const Rgb surroundings = lookup.environment ? sample_environment(*lookup.environment, R) : lookup.background;
+  if (lookup.cube.size == 0 || !lookup.cube.texel) return surroundings;
+  const glm::vec4 seen = sample_cube(lookup.cube, R);
+  // The cube was cleared to alpha 0 and every surface drawn with alpha 1; filtered, alpha is the
+  // share of the texel footprint that saw a surface.
+  return Rgb(seen) + (1.0f - seen.a) * surroundings;
+}
+
+}  // namespace luz
