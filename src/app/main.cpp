@@ -44,6 +44,40 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
 }
 
+// Flags of --model radiosity only; returned so main() can tell which were given.
+std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& settings) {
+  luz::RadiosityOptions& r = settings.radiosity;
+  std::vector<CLI::Option*> flags;
+  CLI::Option* shots = render.add_option_function<int>(
+      "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
+      "Radiosity: stop after N shots (lights included)")->check(CLI::PositiveNumber);
+  CLI::Option* converge = render.add_option_function<float>(
+      "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
+      "Radiosity: stop when the unshot power is below EPS x the emitted power (default 0.01)")
+      ->check(CLI::Range(1e-9, 1.0));
+  shots->excludes(converge);
+  flags = {shots, converge};
+  flags.push_back(render.add_option("--patch-size", r.patch_size,
+                                    "Radiosity: longest patch edge, metres (default: about 3000 patches)")
+                      ->check(CLI::PositiveNumber));
+  flags.push_back(render.add_option_function<int>(
+      "--hemicube-res",
+      [&r](int n) {
+        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
+        r.hemicube_res = n;
+      },
+      "Radiosity: hemicube resolution, pixels across its top face (64 .. 1024, even; default 128)")
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
+  flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
+                                  "Radiosity: add Cohen's ambient term for the light not yet shot"));
+  flags.push_back(render.add_flag("--flat-patches", r.flat_patches,
+                                  "Radiosity: one colour per patch instead of Gouraud shading"));
+  flags.push_back(render.add_flag("--outlines", r.outlines, "Radiosity: draw the patch edges"));
+  flags.push_back(render.add_option("--csv", settings.csv,
+                                    "Radiosity: write the unshot power after every shot to this CSV file"));
+  return flags;
+}
+
 // No display: say so and do what the viewer would have shown, as a file.
 int render_without_display(const std::string& scene) {
   const std::string out = std::filesystem::path(scene).stem().string() + ".png";
@@ -69,6 +103,7 @@ int main(int argc, char** argv) {
   RenderSettings settings;
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
   add_render_flags(*render, settings);
+  const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
 
   try {
     app.parse(argc, argv);
@@ -81,7 +116,11 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (render->parsed()) return luz::app::run_render(settings);
+  if (render->parsed()) {
+    for (const CLI::Option* flag : radiosity_flags)
+      if (flag->count() > 0) settings.radiosity_flags.push_back(flag->get_name());
+    return luz::app::run_render(settings);
+  }
 
   const std::string scene = viewer_scene.empty() ? luz::app::default_scene().string() : viewer_scene;
   if (!luz::gl::WindowContext::display_available()) return render_without_display(scene);

@@ -1,4 +1,5 @@
 #include "app/render_command.h"
+#include "app/radiosity_command.h"
 
 #include <chrono>
 #include <cmath>
@@ -57,6 +58,9 @@ bool parse_size(const std::string& text, int& width, int& height) {
 
 int run_render(const RenderSettings& settings) {
   try {
+    if (settings.model != "radiosity" && !settings.radiosity_flags.empty())
+      throw Error(ErrorKind::usage, fmt::format("{} only applies to --model radiosity",
+                                                settings.radiosity_flags.front()));
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
@@ -76,11 +80,16 @@ int run_render(const RenderSettings& settings) {
 
     const auto start = std::chrono::steady_clock::now();
     gl::OffscreenContext context;
-    LocalOptions options = settings.local;
-    options.shading = shading_of(settings.model);
-    LocalRenderer renderer(scene);
-    const Image image = renderer.render(camera, width, height, options);
-    for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+    Image image;
+    if (settings.model == "radiosity") {
+      image = render_radiosity(scene, camera, width, height, settings);
+    } else {
+      LocalOptions options = settings.local;
+      options.shading = shading_of(settings.model);
+      LocalRenderer renderer(scene);
+      image = renderer.render(camera, width, height, options);
+      for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+    }
     const float exposure = settings.exposure.value_or(scene.exposure);
     io::write_image(image, settings.out, exposure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,25 +2,30 @@
 // `luz render`: one picture of a scene, headless through OSMesa.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "local/local_options.h"
+#include "radiosity/radiosity_options.h"
 
 namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong
+  std::string model = "phong";   // flat | gouraud | phong | radiosity
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
   std::string camera;            // name or index; empty = the scene's first
   std::optional<float> exposure; // overrides the scene's
   LocalOptions local;
+  RadiosityOptions radiosity;
+  std::string csv;               // radiosity: the residual history, one row per shot
+  std::vector<std::string> radiosity_flags;  // radiosity-only flags given (usage error otherwise)
   bool quiet = false;
 };
 
 // The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "radiosity"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);
