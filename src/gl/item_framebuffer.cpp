@@ -63,4 +63,11 @@ void ItemFramebuffer::read(std::vector<uint32_t>& out) const {
   glReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.data());
 }
 
+void ItemFramebuffer::read_depth(std::vector<float>& out) const {
+  out.resize(size_t(width_) * size_t(height_));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+}
+
 }  // namespace luz::gl

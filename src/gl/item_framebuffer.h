@@ -25,6 +25,8 @@ public:
   void bind_and_clear() const;
   // Reads every ID, in GL's row order (row 0 at the BOTTOM), into `out` (resized).
   void read(std::vector<uint32_t>& out) const;
+  // Reads the window-space depth (0 near .. 1 far) in the same order.
+  void read_depth(std::vector<float>& out) const;
 
 private:
   int width_, height_;

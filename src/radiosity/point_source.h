@@ -11,6 +11,10 @@
 // without ever evaluating the cosine (the projection does it). Only front faces count.
 // The classroom attenuation 1/(c0 + c1 d + c2 d^2) is not physical; it scales each patch's flux
 // by f_att(d) d^2 at the patch centre (1 for the physical 1/d^2).
+//
+// A patch that covers fewer than kResolvedPixels pixels of the cube would alias (it is hit by
+// a pixel or missed): it gets the solid angle it should subtend, A cos(theta) / d^2 at its
+// centre, when the cube's depth buffer (as a shadow map) says its centre sees the light.
 #include <vector>
 
 #include "core/light.h"
@@ -24,6 +28,7 @@ namespace luz {
 class PointSource {
 public:
   static constexpr int kFaces = 6;  // +X, -X, +Y, -Y, +Z, -Z
+  static constexpr double kResolvedPixels = 32.0;
 
   // `resolution`: pixels across each cube face (same bounds as the hemicube's).
   PointSource(const PatchMesh& mesh, const PatchItems& items, int resolution);
@@ -45,7 +50,6 @@ private:
   gl::ItemFramebuffer target_;
   std::vector<uint32_t> ids_;
   std::vector<double> sums_;
-  std::vector<uint32_t> touched_;
   std::vector<FormFactor> result_;
   double emitted_ = 0.0;
 };
