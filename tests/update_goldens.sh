@@ -17,4 +17,11 @@ for scene in cornell_box phong_spheres whitted; do
       --out "$golden/$scene-$model.png"
   done
 done
+# Radiosity: the flags of radiosity_flags() in tests/test_snapshots.cpp.
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 120x120 -q \
+  --patch-size 0.1 --hemicube-res 64 --out "$golden/cornell_box-radiosity.png"
+"$luz" render "$root/scenes/phong_spheres.gltf" --model radiosity --size 160x120 -q \
+  --patch-size 0.1 --hemicube-res 64 --out "$golden/phong_spheres-radiosity.png"
+"$luz" render "$root/scenes/whitted.gltf" --model radiosity --size 160x120 -q \
+  --patch-size 0.25 --hemicube-res 64 --converge 0.02 --out "$golden/whitted-radiosity.png"
 echo "goldens written to $golden"
