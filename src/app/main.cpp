@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/bench_command.h"
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/viewer.h"
@@ -105,6 +106,20 @@ int main(int argc, char** argv) {
   add_render_flags(*render, settings);
   const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
 
+  // `luz bench radiosity`: one subcommand per benchmark under `bench`.
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, headless)");
+  bench->require_subcommand(1);
+  luz::app::RadiosityBenchSettings radiosity_bench;
+  CLI::App* bench_radiosity = bench->add_subcommand(
+      "radiosity", "Shots/s and time to converge on the Cornell box at about 1k, 4k, 16k, 64k patches");
+  bench_radiosity->add_option("--scene", radiosity_bench.scene, "Scene (default: the Cornell box)");
+  bench_radiosity->add_option("--patches", radiosity_bench.patches, "Target patch counts")
+      ->capture_default_str();
+  bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, "Hemicube resolution")
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
+  bench_radiosity->add_option("--seconds", radiosity_bench.seconds, "Time cap per patch count")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -116,6 +131,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
   if (render->parsed()) {
     for (const CLI::Option* flag : radiosity_flags)
       if (flag->count() > 0) settings.radiosity_flags.push_back(flag->get_name());
