@@ -86,7 +86,7 @@ void RadiosityRenderer::update(const RadianceField& field, const RadiosityOption
 }
 
 void RadiosityRenderer::draw(const Camera& camera, int width, int height,
-                             const RadiosityOptions& options) {
+                             const RadiosityOptions& options, int highlight) {
   Impl& s = *impl_;
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
@@ -107,6 +107,8 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
   s.program.set("u_view_projection",
                 camera.projection(float(width) / float(height), far) * camera.view());
   s.program.set("u_outline", false);
+  s.program.set("u_highlight", highlight);
+  s.program.set("u_highlight_colour", glm::vec3(4.0f, 0.0f, 4.0f));  // magenta, bright
   glBindVertexArray(s.vao);
   if (options.outlines) {  // push the filled patches back so the lines win the depth test
     glEnable(GL_POLYGON_OFFSET_FILL);
@@ -127,14 +129,14 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
 }
 
 Image RadiosityRenderer::render(const Camera& camera, int width, int height,
-                                const RadiosityOptions& options) {
+                                const RadiosityOptions& options, int highlight) {
   Impl& s = *impl_;
   if (!s.target || s.target->width() != width || s.target->height() != height)
     s.target = std::make_unique<gl::Framebuffer>(width, height);
   GLint previous = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
   s.target->bind();
-  draw(camera, width, height, options);
+  draw(camera, width, height, options, highlight);
   Image image = s.target->read();
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   return image;

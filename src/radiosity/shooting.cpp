@@ -98,6 +98,7 @@ void ProgressiveSolver::reset() {
 }
 
 // ---- [step 2: shoot a patch] -------------------------------------------------------------------
+// Step 2: patch i shoots its unshot radiosity to every patch its hemicube sees.
 void ProgressiveSolver::shoot(size_t i) {
   const Patch& shooter = mesh_.patches[i];
   const float rotation = options_.random_rotation
@@ -175,6 +176,8 @@ bool ProgressiveSolver::done() const {
   return options_.converge > 0.0f && unshot_fraction() < double(options_.converge);
 }
 
+// Step 4: repeat until no difference shows. One call is one shot, so the viewer can spend a time
+// budget per frame and redraw (step 3) between shots.
 bool ProgressiveSolver::step() {
   if (done()) return false;
   if (next_light_ < lights_.size()) {
@@ -197,6 +200,7 @@ void ProgressiveSolver::record(int shooter) {
 }
 
 // ---- [state] -----------------------------------------------------------------------------------
+// Step 3: display every patch with radiosity + unshot.
 std::vector<Rgb> ProgressiveSolver::displayed() const {
   std::vector<Rgb> b(radiosity_.size());
   for (size_t i = 0; i < b.size(); ++i) b[i] = radiosity_[i] + unshot_[i];  // step 3
