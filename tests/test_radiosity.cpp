@@ -471,6 +471,26 @@ TEST(VertexColours, NodalAveragingAcrossSmoothSurfacesNotAcrossCreases) {
   EXPECT_NEAR(field.at(mesh, 0, 0, {0.5f, 0.0f}).g, 1.5f, 1e-5f);
 }
 
+
+TEST(VertexColours, UnshotHeatMapShowsTheEmittersFirst) {
+  Scene scene;
+  const int grey = add_material(scene, 0.5f), lamp = add_material(scene, 0.5f, 1.0f);
+  const int materials[6] = {grey, lamp, grey, grey, grey, grey};
+  add_closed_box(scene, materials);
+  const PatchMesh mesh = PatchMesh::build(scene, 0.5f);
+  RadiosityOptions options;
+  options.hemicube_res = 64;
+  ProgressiveSolver solver(scene, mesh, options);
+  const RadianceField before = RadianceField::unshot_heat_map(solver);
+  for (size_t i = 0; i < mesh.size(); ++i) {
+    const bool emitter = mesh.patches[i].mesh == 1;
+    EXPECT_NEAR(before.patch[i].g, emitter ? 1.0f : 0.0f, 1e-5f) << i;  // yellow or black
+  }
+  ASSERT_TRUE(solver.step());
+  const RadianceField after = RadianceField::unshot_heat_map(solver);
+  EXPECT_EQ(after.patch[size_t(solver.last_shooter())], Rgb(0.0f)) << "the shooter has nothing left";
+}
+
 // ---- The Cornell box ---------------------------------------------------------------------------
 TEST(CornellBox, ConvergesBleedsColourAndLightsTheCeilingIndirectly) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");

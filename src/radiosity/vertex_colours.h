@@ -31,6 +31,10 @@ struct RadianceField {
   // The interpolated radiance at barycentrics (b1, b2) of source triangle `triangle` of scene
   // mesh `mesh` (point = A + b1 (B - A) + b2 (C - A)), as the Gouraud picture shows it.
   Rgb at(const PatchMesh& mesh, int scene_mesh, int triangle, glm::vec2 b) const;
+
+  // A false-colour map of the unshot power per patch (unshot x area, from dark blue through red
+  // to yellow, log scale over three decades below the largest), for the viewer's heat map.
+  static RadianceField unshot_heat_map(const ProgressiveSolver& solver);
 };
 
 }  // namespace luz
