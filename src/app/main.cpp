@@ -48,18 +48,21 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
 // Flags of --model radiosity only; returned so main() can tell which were given.
 std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& settings) {
   luz::RadiosityOptions& r = settings.radiosity;
+  const luz::RadiosityOptions defaults;  // the help quotes the struct's defaults, never its own
   std::vector<CLI::Option*> flags;
   CLI::Option* shots = render.add_option_function<int>(
       "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
       "Radiosity: stop after N shots (lights included)")->check(CLI::PositiveNumber);
   CLI::Option* converge = render.add_option_function<float>(
       "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
-      "Radiosity: stop when the unshot power is below EPS x the emitted power (default 0.01)")
+      fmt::format("Radiosity: stop when the unshot power is below EPS x the emitted power "
+                  "(default {})", defaults.converge))
       ->check(CLI::Range(1e-9, 1.0));
   shots->excludes(converge);
   flags = {shots, converge};
   flags.push_back(render.add_option("--patch-size", r.patch_size,
-                                    "Radiosity: longest patch edge, metres (default: about 3000 patches)")
+                                    fmt::format("Radiosity: longest patch edge, metres (default: "
+                                                "about {} patches)", defaults.target_patches))
                       ->check(CLI::PositiveNumber));
   flags.push_back(render.add_option_function<int>(
       "--hemicube-res",
@@ -67,7 +70,8 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
         if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
         r.hemicube_res = n;
       },
-      "Radiosity: hemicube resolution, pixels across its top face (64 .. 1024, even; default 128)")
+      fmt::format("Radiosity: hemicube resolution, pixels across its top face ({} .. {}, even; "
+                  "default {})", luz::kMinHemicubeRes, luz::kMaxHemicubeRes, defaults.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
   flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
                                   "Radiosity: add Cohen's ambient term for the light not yet shot"));
