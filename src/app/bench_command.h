@@ -4,14 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/radiosity_options.h"
+
 namespace luz::app {
 
 struct RadiosityBenchSettings {
   std::string scene;                                     // empty: the Cornell box that ships
   std::vector<int> patches = {1000, 4000, 16000, 64000}; // target patch counts
-  int hemicube_res = 128;
+  int hemicube_res = RadiosityOptions{}.hemicube_res;
   double seconds = 30.0;                                 // time cap per patch count
-  float converge = 0.01f;                                // "converged": unshot below this
+  float converge = RadiosityOptions{}.converge;          // "converged": unshot below this
 };
 
 // Prints a Markdown table to stdout; returns the exit code.
