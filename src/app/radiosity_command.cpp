@@ -56,10 +56,7 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings) {
   const RadiosityOptions& options = settings.radiosity;
-  const float size = options.patch_size > 0.0f
-                         ? options.patch_size
-                         : PatchMesh::patch_size_for(scene, size_t(std::max(1, options.target_patches)));
-  const PatchMesh mesh = PatchMesh::build(scene, size);
+  const PatchMesh mesh = PatchMesh::build(scene, options);
   ProgressiveSolver solver(scene, mesh, options);
   for (const std::string& warning : solver.warnings()) fmt::print(stderr, "warning: {}\n", warning);
 
@@ -78,7 +75,7 @@ Image render_radiosity(const Scene& scene, const Camera& camera, int width, int 
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
   if (!settings.quiet)
     fmt::print("radiosity: {} patches (longest edge {:.3g} m), hemicube {}, {} shots, unshot "
-               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.size(), size,
+               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.size(), mesh.max_edge,
                options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
                solver.history().back().seconds);
 

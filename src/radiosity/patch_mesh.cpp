@@ -164,6 +164,12 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge) {
   return result;
 }
 
+PatchMesh PatchMesh::build(const Scene& scene, const RadiosityOptions& options) {
+  return build(scene, options.patch_size > 0.0f
+                          ? options.patch_size
+                          : patch_size_for(scene, size_t(std::max(1, options.target_patches))));
+}
+
 float PatchMesh::patch_size_for(const Scene& scene, size_t target) {
   std::vector<std::pair<float, size_t>> meshes;  // longest edge, triangles
   float longest = 0.0f;

@@ -23,6 +23,7 @@
 
 #include "core/color.h"
 #include "core/scene.h"
+#include "radiosity/radiosity_options.h"
 
 namespace luz {
 
@@ -45,6 +46,8 @@ public:
   static PatchMesh build(const Scene& scene, float max_edge);
   // The patch size that gives about `target` patches (never fewer than the scene's triangles).
   static float patch_size_for(const Scene& scene, size_t target);
+  // With options.patch_size, or else the size for options.target_patches.
+  static PatchMesh build(const Scene& scene, const RadiosityOptions& options);
 
   std::vector<Patch> patches;
   std::vector<glm::vec3> vertices;  // shared corners of the patches
