@@ -91,6 +91,9 @@ public:
   const RowTimes& last_row_times() const { return row_times_; }
   double last_update_seconds() const { return update_seconds_; }
 
+  // The stopping rule, the rotation and the display switches may change between steps;
+  // patch size and hemicube resolution need a new mesh and solver.
+  RadiosityOptions& options() { return options_; }
   const RadiosityOptions& options() const { return options_; }
   const PatchMesh& mesh() const { return mesh_; }
   Hemicube& hemicube() { return hemicube_; }
