@@ -36,5 +36,17 @@ done
 "$luz" render "$root/scenes/cornell_box.gltf" --model phong --size 360x360 -q --shadows --out "$out/cornell_box-shadows.png"
 "$luz" render "$root/scenes/whitted.gltf" --model phong --size 480x360 -q --shadows --reflection-map --transparency \
   --out "$out/whitted-effects.png"
+# Radiosity (slides 29-40): converged, its patches, early with and without Cohen's ambient term.
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 360x360 -q --out "$out/cornell_box-radiosity.png"
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 360x360 -q --patch-size 0.05 \
+  --flat-patches --outlines --out "$out/cornell_box-radiosity-patches.png"
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 360x360 -q --shots 300 \
+  --out "$out/cornell_box-radiosity-300-shots.png"
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 360x360 -q --shots 300 \
+  --ambient-estimate --out "$out/cornell_box-radiosity-300-shots-ambient.png"
+"$luz" render "$root/scenes/whitted.gltf" --model radiosity --size 480x360 -q --patch-size 0.15 \
+  --out "$out/whitted-radiosity.png"
+"$luz" render "$root/scenes/phong_spheres.gltf" --model radiosity --size 480x360 -q \
+  --out "$out/phong_spheres-radiosity.png"
 "$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

@@ -30,4 +30,11 @@ for model in flat gouraud phong; do
     --shadows --transparency --reflection-map --fog linear --fog-near 6 --fog-far 24 \
     --out "$golden/local_effects-$model-effects.png"
 done
+# Radiosity: the flags of radiosity_flags() in tests/test_snapshots.cpp.
+"$luz" render "$root/scenes/cornell_box.gltf" --model radiosity --size 120x120 -q \
+  --patch-size 0.1 --hemicube-res 64 --out "$golden/cornell_box-radiosity.png"
+"$luz" render "$root/scenes/phong_spheres.gltf" --model radiosity --size 160x120 -q \
+  --patch-size 0.1 --hemicube-res 64 --out "$golden/phong_spheres-radiosity.png"
+"$luz" render "$root/scenes/whitted.gltf" --model radiosity --size 160x120 -q \
+  --patch-size 0.25 --hemicube-res 64 --converge 0.02 --out "$golden/whitted-radiosity.png"
 echo "goldens written to $golden"

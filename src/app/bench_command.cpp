@@ -72,7 +72,7 @@ double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, 
 
 }  // namespace
 
-void add_bench_flags(CLI::App& bench, BenchSettings& settings) {
+void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
   bench.add_option_function<std::string>(
       "--size",
       [&settings](const std::string& text) {
@@ -90,7 +90,7 @@ void add_bench_flags(CLI::App& bench, BenchSettings& settings) {
       ->delimiter(',')->capture_default_str();
 }
 
-int run_bench_whitted(const BenchSettings& settings) {
+int run_bench_whitted(const WhittedBenchSettings& settings) {
   try {
     fmt::print("luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}\n",
                settings.width, settings.height, settings.depth, settings.spp, settings.repeats,

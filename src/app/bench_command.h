@@ -1,14 +1,18 @@
 #pragma once
-// `luz bench whitted`: the tracer's time on shipped scenes, its rays per second of each kind, and
-// the same rays traced bare through Embree in the same run (the limit), as a ratio.
+// `luz bench WHAT`: timings, never pass/fail. One function per benchmark, each in its own file
+// (bench_command.cpp for the tracer, bench_radiosity.cpp); this header gathers their settings.
 #include <string>
 #include <vector>
+
+#include "radiosity/radiosity_options.h"
 
 namespace CLI { class App; }
 
 namespace luz::app {
 
-struct BenchSettings {
+// `luz bench whitted`: the tracer's time on shipped scenes, its rays per second of each kind, and
+// the same rays traced bare through Embree in the same run (the limit), as a ratio.
+struct WhittedBenchSettings {
   int width = 1920;
   int height = 1080;
   int depth = 5;
@@ -17,7 +21,19 @@ struct BenchSettings {
   std::vector<std::string> scenes{"whitted", "cornell_box"};  // shipped names or paths
 };
 
-void add_bench_flags(CLI::App& bench, BenchSettings& settings);
-int run_bench_whitted(const BenchSettings& settings);
+void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings);
+int run_bench_whitted(const WhittedBenchSettings& settings);
+
+// `luz bench radiosity`: shots per second and time to converge at several patch counts.
+struct RadiosityBenchSettings {
+  std::string scene;                                     // empty: the Cornell box that ships
+  std::vector<int> patches = {1000, 4000, 16000, 64000}; // target patch counts
+  int hemicube_res = RadiosityOptions{}.hemicube_res;
+  double seconds = 30.0;                                 // time cap per patch count
+  float converge = RadiosityOptions{}.converge;          // "converged": unshot below this
+};
+
+// Prints a Markdown table to stdout; returns the exit code.
+int run_radiosity_bench(const RadiosityBenchSettings& settings);
 
 }  // namespace luz::app

@@ -131,6 +131,44 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
   return flags;
 }
 
+// Flags of --model radiosity only; returned so main() can tell which were given.
+std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& settings) {
+  luz::RadiosityOptions& r = settings.radiosity;
+  const luz::RadiosityOptions defaults;  // the help quotes the struct's defaults, never its own
+  std::vector<CLI::Option*> flags;
+  CLI::Option* shots = render.add_option_function<int>(
+      "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
+      "Radiosity: stop after N shots (lights included)")->check(CLI::PositiveNumber);
+  CLI::Option* converge = render.add_option_function<float>(
+      "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
+      fmt::format("Radiosity: stop when the unshot power is below EPS x the emitted power "
+                  "(default {})", defaults.converge))
+      ->check(CLI::Range(1e-9, 1.0));
+  shots->excludes(converge);
+  flags = {shots, converge};
+  flags.push_back(render.add_option("--patch-size", r.patch_size,
+                                    fmt::format("Radiosity: longest patch edge, metres (default: "
+                                                "about {} patches)", defaults.target_patches))
+                      ->check(CLI::PositiveNumber));
+  flags.push_back(render.add_option_function<int>(
+      "--hemicube-res",
+      [&r](int n) {
+        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
+        r.hemicube_res = n;
+      },
+      fmt::format("Radiosity: hemicube resolution, pixels across its top face ({} .. {}, even; "
+                  "default {})", luz::kMinHemicubeRes, luz::kMaxHemicubeRes, defaults.hemicube_res))
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
+  flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
+                                  "Radiosity: add Cohen's ambient term for the light not yet shot"));
+  flags.push_back(render.add_flag("--flat-patches", r.flat_patches,
+                                  "Radiosity: one colour per patch instead of Gouraud shading"));
+  flags.push_back(render.add_flag("--outlines", r.outlines, "Radiosity: draw the patch edges"));
+  flags.push_back(render.add_option("--csv", settings.csv,
+                                    "Radiosity: write the unshot power after every shot to this CSV file"));
+  return flags;
+}
+
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
   fmt::print(stderr, "luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are unset "
@@ -164,12 +202,23 @@ int main(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
   add_render_flags(*render, settings);
   const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
+  const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
 
-  luz::app::BenchSettings bench_settings;
+  luz::app::WhittedBenchSettings bench_settings;
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
   bench->require_subcommand(1);
   CLI::App* bench_whitted = bench->add_subcommand("whitted", "The Whitted tracer against the same rays traced bare through Embree");
   luz::app::add_bench_flags(*bench_whitted, bench_settings);
+  luz::app::RadiosityBenchSettings radiosity_bench;
+  CLI::App* bench_radiosity = bench->add_subcommand(
+      "radiosity", "Shots/s and time to converge on the Cornell box at about 1k, 4k, 16k, 64k patches");
+  bench_radiosity->add_option("--scene", radiosity_bench.scene, "Scene (default: the Cornell box)");
+  bench_radiosity->add_option("--patches", radiosity_bench.patches, "Target patch counts")
+      ->capture_default_str();
+  bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, "Hemicube resolution")
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
+  bench_radiosity->add_option("--seconds", radiosity_bench.seconds, "Time cap per patch count")
+      ->check(CLI::PositiveNumber)->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -185,9 +234,12 @@ int main(int argc, char** argv) {
   if (render->parsed()) {
     for (const CLI::Option* flag : whitted_flags)
       if (flag->count() > 0) settings.whitted_only_flags.push_back(flag->get_name());
+    for (const CLI::Option* flag : radiosity_flags)
+      if (flag->count() > 0) settings.radiosity_only_flags.push_back(flag->get_name());
     return luz::app::run_render(settings);
   }
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
+  if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
 
   if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
   if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens

@@ -1,4 +1,5 @@
 #include "app/render_command.h"
+#include "app/radiosity_command.h"
 #include "app/render_whitted.h"
 
 #include <chrono>
@@ -104,6 +105,9 @@ int run_render(const RenderSettings& settings) {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
       throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                                 settings.local.fog.far, settings.local.fog.near));
+    if (settings.model != "radiosity" && !settings.radiosity_only_flags.empty())
+      throw Error(ErrorKind::usage, fmt::format("{}: only with --model radiosity",
+                                                settings.radiosity_only_flags.front()));
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
     if (settings.model != "whitted" && !settings.whitted_only_flags.empty())
@@ -130,6 +134,9 @@ int run_render(const RenderSettings& settings) {
     if (settings.model == "whitted") {
       traced = render_whitted(scene, camera, width, height, settings);  // no GL needed
       image = std::move(traced.image);
+    } else if (settings.model == "radiosity") {
+      gl::OffscreenContext context;
+      image = render_radiosity(scene, camera, width, height, settings);
     } else {
       gl::OffscreenContext context;
       LocalOptions options = settings.local;

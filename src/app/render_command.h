@@ -6,19 +6,23 @@
 #include <vector>
 
 #include "local/local_options.h"
+#include "radiosity/radiosity_options.h"
 #include "raytracing/whitted_options.h"
 
 namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong | whitted
+  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
   std::string camera;            // name or index; empty = the scene's first
   std::optional<float> exposure; // overrides the scene's
   LocalOptions local;
+  RadiosityOptions radiosity;
+  std::string csv;               // radiosity: the residual history, one row per shot
+  std::vector<std::string> radiosity_only_flags;  // radiosity-only flags given (usage error otherwise)
   bool quiet = false;
   // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`),
   // the pixel whose ray tree is written beside the image, and which whitted-only flags were given
@@ -29,7 +33,7 @@ struct RenderSettings {
 };
 
 // The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted"};
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);

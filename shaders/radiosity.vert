@@ -1,0 +1,14 @@
+#version 330 core
+// Radiosity display: the solved radiance B/pi per vertex (Gouraud) or per patch (flat), already
+// in the vertex colour; the rasteriser interpolates it (slide 39 step 3).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_radiance;
+
+uniform mat4 u_view_projection;
+
+out vec3 v_radiance;
+
+void main() {
+  v_radiance = a_radiance;
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+}

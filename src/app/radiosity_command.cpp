@@ -1,0 +1,87 @@
+#include "app/radiosity_command.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "core/error.h"
+#include "radiosity/patch_mesh.h"
+#include "radiosity/radiosity_renderer.h"
+#include "radiosity/shooting.h"
+#include "radiosity/vertex_colours.h"
+
+namespace luz::app {
+namespace {
+
+// 0 .. 1: shots against --shots, else the unshot fraction on a log scale down to --converge.
+double progress_of(const ProgressiveSolver& solver, const RadiosityOptions& options) {
+  double progress = 0.0;
+  if (options.max_shots > 0) progress = double(solver.shots()) / double(options.max_shots);
+  if (options.converge > 0.0f && solver.unshot_fraction() > 0.0)
+    progress = std::max(progress, std::log(solver.unshot_fraction()) / std::log(double(options.converge)));
+  return std::clamp(progress, 0.0, 1.0);
+}
+
+void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& options) {
+  constexpr int width = 30;
+  const int filled = int(std::lround(progress_of(solver, options) * width));
+  fmt::print(stderr, "\rradiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
+             std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
+             solver.shots(), 100.0 * solver.unshot_fraction());
+  std::fflush(stderr);
+}
+
+void write_csv(const std::string& path, const ProgressiveSolver& solver) {
+  const std::string temporary = path + ".part";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    out << "shot,unshot_power,fraction,seconds\n";
+    for (const ShotRecord& r : solver.history())
+      out << fmt::format("{},{:.9g},{:.9g},{:.6f}\n", r.shot, r.unshot_power, r.fraction, r.seconds);
+    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+}
+
+}  // namespace
+
+Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
+                       const RenderSettings& settings) {
+  const RadiosityOptions& options = settings.radiosity;
+  const PatchMesh mesh = PatchMesh::build(scene, options);
+  ProgressiveSolver solver(scene, mesh, options);
+  for (const std::string& warning : solver.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+
+  const bool bar = !settings.quiet && isatty(fileno(stderr));
+  auto last_draw = std::chrono::steady_clock::now();
+  while (solver.step()) {
+    if (bar && std::chrono::steady_clock::now() - last_draw > std::chrono::milliseconds(100)) {
+      draw_progress(solver, options);
+      last_draw = std::chrono::steady_clock::now();
+    }
+  }
+  if (bar) {
+    draw_progress(solver, options);
+    fmt::print(stderr, "\n");
+  }
+  if (!settings.csv.empty()) write_csv(settings.csv, solver);
+  if (!settings.quiet)
+    fmt::print("radiosity: {} patches (longest edge {:.3g} m), hemicube {}, {} shots, unshot "
+               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.size(), mesh.max_edge,
+               options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
+               solver.history().back().seconds);
+
+  RadiosityRenderer renderer(scene, mesh);
+  renderer.update(RadianceField::of(solver), options);
+  return renderer.render(camera, width, height, options);
+}
+
+}  // namespace luz::app

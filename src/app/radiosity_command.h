@@ -1,0 +1,16 @@
+#pragma once
+// `luz render --model radiosity`: mesh, solve by progressive shooting, draw. Separate from
+// render_command.cpp so each model's command code stays in its own file.
+#include "app/render_command.h"
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+
+namespace luz::app {
+
+// Needs a current GL context. Shows a progress bar on stderr when it is a terminal (unless
+// settings.quiet), writes settings.csv when given. Throws luz::Error.
+Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
+                       const RenderSettings& settings);
+
+}  // namespace luz::app

@@ -1,0 +1,86 @@
+#pragma once
+// Form factors by the hemicube (slide 37; Cohen and Greenberg, "The Hemi-Cube", SIGGRAPH 1985).
+//
+// From the centre of patch i, the scene is drawn onto the five faces of a half cube of
+// half-width 1 standing on the patch at height 1: the full top face and four half side faces.
+// Each pixel holds the ID of the nearest patch it sees (an item buffer). A pixel of area dA
+// at (x, y) on the top face subtends the delta form factor
+//     dF = dA / (pi (x^2 + y^2 + 1)^2),
+// and a pixel at (y, z) on a side face (z the height above the patch plane)
+//     dF = z dA / (pi (y^2 + z^2 + 1)^2).
+// F_ij is the sum of the delta form factors of the pixels that show patch j. The deltas are the
+// exact values at pixel centres and are never rescaled: their total over the hemicube is 1 only
+// up to the discretisation, and rescaling a row to sum to 1 would hide a wrong weighting.
+//
+// All five faces go into one atlas texture (3 res x res pixels, layout in face_rect()), read
+// back with a single glReadPixels per row.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "gl/item_framebuffer.h"
+#include "radiosity/item_buffer.h"
+#include "radiosity/patch_mesh.h"
+
+namespace luz {
+
+// One entry of a form-factor row: F_ij for patch j.
+struct FormFactor {
+  uint32_t patch = 0;
+  float value = 0.0f;
+};
+
+// Where a row's time goes, in seconds (for `luz bench radiosity`).
+struct RowTimes {
+  double draw = 0.0;        // drawing the five faces (until the GPU has finished)
+  double read = 0.0;        // glReadPixels of the atlas
+  double accumulate = 0.0;  // summing the delta form factors per patch
+};
+
+// Delta form factors of one pixel of area dA (half-width-1 hemicube), Cohen & Greenberg 1985.
+double top_delta_form_factor(double x, double y, double dA);
+double side_delta_form_factor(double y, double z, double dA);
+
+class Hemicube {
+public:
+  static constexpr int kFaces = 5;  // top, then the sides along +t, -t, +b, -b
+
+  // `items` (the patches on the GPU) must outlive the hemicube. `resolution`: pixels across the
+  // top face, even, kMinHemicubeRes .. kMaxHemicubeRes (throws luz::Error bad_value otherwise).
+  Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution);
+
+  // Row i of the form-factor matrix: F_ij of every patch j seen from the centre of patch i.
+  // `rotation` turns the hemicube about the patch normal (radians), to break aliasing.
+  // The result stays valid until the next call.
+  const std::vector<FormFactor>& row(size_t patch, float rotation = 0.0f);
+
+  int resolution() const { return res_; }
+  const RowTimes& last_times() const { return times_; }
+
+  // The last row's item buffer (IDs + 1, 0 = nothing), for an overlay: atlas pixels in GL row
+  // order (row 0 at the bottom), also as a GL_R32UI texture.
+  int atlas_width() const { return 3 * res_; }
+  int atlas_height() const { return res_; }
+  const std::vector<uint32_t>& item_buffer() const { return ids_; }
+  unsigned item_texture() const { return target_.id_texture(); }
+  struct Rect { int x, y, width, height; };
+  Rect face_rect(int face) const;
+  // The delta form factor of every atlas pixel (0 outside the faces), same layout.
+  const std::vector<float>& delta_form_factors() const { return weights_; }
+
+private:
+  const PatchMesh& mesh_;
+  const PatchItems& items_;
+  int res_;
+  float far_;
+  gl::ItemFramebuffer target_;
+  std::vector<float> weights_;
+  std::vector<uint32_t> ids_;
+  std::vector<double> sums_;       // per patch, zero between rows
+  std::vector<uint32_t> touched_;  // patches with a non-zero sum in this row
+  std::vector<FormFactor> row_;
+  RowTimes times_;
+};
+
+}  // namespace luz

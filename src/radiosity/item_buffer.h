@@ -1,0 +1,35 @@
+#pragma once
+// The patches on the GPU for item buffers: one non-indexed triangle list (patch i = triangle i)
+// and the program that writes patch ID + 1 per pixel (shaders/item_buffer.*). The hemicube and
+// the point sources draw the scene through it from their own viewpoints.
+#include <glm/mat4x4.hpp>
+
+#include "gl/functions.h"
+#include "gl/shader.h"
+#include "radiosity/patch_mesh.h"
+
+namespace luz {
+
+class PatchItems {
+public:
+  explicit PatchItems(const PatchMesh& mesh);  // needs a current GL context
+  ~PatchItems();
+  PatchItems(const PatchItems&) = delete;
+  PatchItems& operator=(const PatchItems&) = delete;
+
+  // Sets the GL state an item buffer needs (depth test, no blending, both faces rasterised) and
+  // makes the program current; then draw() once per face.
+  void begin() const;
+  void draw(const glm::mat4& view_projection) const;
+  void end() const;
+
+private:
+  mutable gl::Program program_{{"item_buffer.vert", "item_buffer.frag"}};
+  GLuint vao_ = 0, vbo_ = 0;
+  GLsizei vertex_count_ = 0;
+};
+
+// A unit vector perpendicular to n, so that (t, cross(n, t), n) is a right-handed frame.
+glm::vec3 any_tangent(const glm::vec3& n);
+
+}  // namespace luz

@@ -1,0 +1,78 @@
+#pragma once
+// The scene's triangles cut into radiosity patches (slide 32: "las superficies se dividen en
+// retazos de radiosidad constante").
+//
+// Every source triangle is split uniformly into n x n smaller triangles (n per glTF primitive,
+// from its longest edge and the patch size). Using one n for a whole primitive makes the
+// subdivision conforming: two triangles that share an edge put the same points on it, so there
+// are no T-junctions (no cracks or sparkles when the mesh is drawn, no gaps in the item buffer).
+// Points on a shared edge are computed from the edge's ends in a canonical order, so both
+// triangles get bit-identical coordinates.
+//
+// Vertices are shared exactly where the source mesh shares them: a smooth glTF surface (shared
+// vertex indices) shares its patch vertices and radiosity is averaged across it; a crease
+// (separate vertices, or separate primitives such as the walls of the Cornell box) is not.
+//
+// Front side: a patch emits and receives only on the side its normal points to, the side from
+// which its triangle is wound counter-clockwise (glTF's front face, which the loader keeps).
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/color.h"
+#include "core/scene.h"
+#include "radiosity/radiosity_options.h"
+
+namespace luz {
+
+struct Patch {
+  int mesh = 0;                 // source: Scene::meshes index ...
+  int triangle = 0;             // ... and triangle in it
+  uint32_t vertices[3] = {};    // into PatchMesh::vertices, counter-clockwise seen from the front
+  glm::vec3 centre{0.0f};       // centroid
+  glm::vec3 normal{0, 1, 0};    // unit, the front side
+  float area = 0.0f;            // m^2
+  float clearance = 0.0f;       // distance from the centroid to the nearest edge of the patch
+  Rgb rho{0.0f};                // diffuse reflectance kd
+  Rgb emission{0.0f};           // exitance E = pi * Le (W/m^2)
+};
+
+class PatchMesh {
+public:
+  PatchMesh() = default;
+  // Splits every triangle so that no patch edge is longer than `max_edge` metres.
+  static PatchMesh build(const Scene& scene, float max_edge);
+  // The patch size that gives about `target` patches (never fewer than the scene's triangles).
+  static float patch_size_for(const Scene& scene, size_t target);
+  // With options.patch_size, or else the size for options.target_patches.
+  static PatchMesh build(const Scene& scene, const RadiosityOptions& options);
+
+  std::vector<Patch> patches;
+  std::vector<glm::vec3> vertices;  // shared corners of the patches
+  float max_edge = 0.0f;
+
+  size_t size() const { return patches.size(); }
+  float total_area() const;
+  // Subdivisions per edge of the triangles of source mesh `mesh`.
+  int subdivisions(int mesh) const { return sources_[size_t(mesh)].n; }
+
+  // The patch holding the point of source triangle (mesh, triangle) at barycentrics
+  // (b1, b2) of its second and third vertex (point = A + b1 (B - A) + b2 (C - A)), and that
+  // point's barycentrics in the patch (weights of the patch's three vertices).
+  struct Location {
+    size_t patch = 0;
+    glm::vec3 weights{1.0f, 0.0f, 0.0f};
+  };
+  Location locate(int mesh, int triangle, glm::vec2 b) const;
+
+private:
+  struct Source {
+    int n = 1;                 // subdivisions per edge
+    size_t first_patch = 0;    // patches of triangle t start at first_patch + t * n * n
+  };
+  std::vector<Source> sources_;  // one per Scene::meshes entry
+};
+
+}  // namespace luz

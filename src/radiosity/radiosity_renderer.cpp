@@ -1,0 +1,145 @@
+#include "radiosity/radiosity_renderer.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "gl/framebuffer.h"
+#include "gl/functions.h"
+#include "gl/shader.h"
+
+namespace luz {
+
+struct RadiosityRenderer::Impl {
+  const Scene& scene;
+  const PatchMesh& mesh;
+  gl::Program program{{"radiosity.vert", "radiosity.frag"}};
+  GLuint vao = 0, positions = 0, colours = 0;
+  GLsizei vertex_count = 0;
+  float far = 1.0f;
+  std::unique_ptr<gl::Framebuffer> target;
+  std::vector<Rgb> corner_colours;
+
+  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m) {}
+  ~Impl() {
+    if (vao) glDeleteVertexArrays(1, &vao);
+    if (positions) glDeleteBuffers(1, &positions);
+    if (colours) glDeleteBuffers(1, &colours);
+  }
+};
+
+static const Scene& with_gl_loaded(const Scene& scene) {
+  if (!glCreateProgram)
+    throw Error(ErrorKind::gl, "the radiosity renderer needs a current OpenGL context made "
+                               "before it");
+  return scene;
+}
+
+RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
+    : impl_(std::make_unique<Impl>(with_gl_loaded(scene), mesh)) {
+  Impl& s = *impl_;
+  // Non-indexed: three corners per patch, so a flat picture can give each patch its own colour.
+  std::vector<glm::vec3> corners;
+  corners.reserve(3 * mesh.size());
+  Bounds bounds;
+  for (const Patch& p : mesh.patches)
+    for (const uint32_t v : p.vertices) {
+      corners.push_back(mesh.vertices[v]);
+      bounds.grow(mesh.vertices[v]);
+    }
+  s.vertex_count = GLsizei(corners.size());
+  s.corner_colours.assign(corners.size(), Rgb(0.0f));
+
+  glGenVertexArrays(1, &s.vao);
+  glBindVertexArray(s.vao);
+  glGenBuffers(1, &s.positions);
+  glBindBuffer(GL_ARRAY_BUFFER, s.positions);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data(),
+               GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glGenBuffers(1, &s.colours);
+  glBindBuffer(GL_ARRAY_BUFFER, s.colours);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(s.corner_colours.size() * sizeof(Rgb)),
+               s.corner_colours.data(), GL_DYNAMIC_DRAW);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Rgb), nullptr);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  s.far = bounds.empty() ? 1.0f : glm::length(bounds.extent());
+}
+
+RadiosityRenderer::~RadiosityRenderer() = default;
+
+void RadiosityRenderer::update(const RadianceField& field, const RadiosityOptions& options) {
+  Impl& s = *impl_;
+  for (size_t i = 0; i < s.mesh.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      s.corner_colours[3 * i + size_t(k)] =
+          options.flat_patches ? field.patch[i] : field.vertex[s.mesh.patches[i].vertices[k]];
+  glBindBuffer(GL_ARRAY_BUFFER, s.colours);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(s.corner_colours.size() * sizeof(Rgb)),
+                  s.corner_colours.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void RadiosityRenderer::draw(const Camera& camera, int width, int height,
+                             const RadiosityOptions& options, int highlight) {
+  Impl& s = *impl_;
+  glViewport(0, 0, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  const float background[4] = {s.scene.background.r, s.scene.background.g, s.scene.background.b,
+                               1.0f};
+  const float far_depth = 1.0f;
+  glClearBufferfv(GL_COLOR, 0, background);
+  glClearBufferfv(GL_DEPTH, 0, &far_depth);
+
+  // A finite far plane past the farthest patch from the camera.
+  const float far = glm::length(camera.position() - s.mesh.vertices.front()) + 2.0f * s.far;
+  s.program.use();
+  s.program.set("u_view_projection",
+                camera.projection(float(width) / float(height), far) * camera.view());
+  s.program.set("u_outline", false);
+  s.program.set("u_highlight", highlight);
+  s.program.set("u_highlight_colour", glm::vec3(4.0f, 0.0f, 4.0f));  // magenta, bright
+  glBindVertexArray(s.vao);
+  if (options.outlines) {  // push the filled patches back so the lines win the depth test
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+  }
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
+  if (options.outlines) {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    s.program.set("u_outline", true);
+    s.program.set("u_outline_colour", glm::vec3(0.02f));
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+Image RadiosityRenderer::render(const Camera& camera, int width, int height,
+                                const RadiosityOptions& options, int highlight) {
+  Impl& s = *impl_;
+  if (!s.target || s.target->width() != width || s.target->height() != height)
+    s.target = std::make_unique<gl::Framebuffer>(width, height);
+  GLint previous = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  s.target->bind();
+  draw(camera, width, height, options, highlight);
+  Image image = s.target->read();
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+  return image;
+}
+
+}  // namespace luz

@@ -1,0 +1,41 @@
+#pragma once
+// Draws a radiosity solution through GL: the patch mesh with the radiance B/pi of a
+// RadianceField, Gouraud-interpolated from the vertices (or flat per patch), optionally with the
+// patch outlines. Back sides of patches are black (they have no radiosity).
+#include <memory>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+#include "radiosity/patch_mesh.h"
+#include "radiosity/radiosity_options.h"
+#include "radiosity/vertex_colours.h"
+
+namespace luz {
+
+class RadiosityRenderer {
+public:
+  // Uploads the patch mesh to the current GL context (current for the renderer's lifetime).
+  // `scene` gives the background; both must outlive the renderer.
+  RadiosityRenderer(const Scene& scene, const PatchMesh& mesh);
+  ~RadiosityRenderer();
+  RadiosityRenderer(const RadiosityRenderer&) = delete;
+  RadiosityRenderer& operator=(const RadiosityRenderer&) = delete;
+
+  // New colours (after solver steps). Uses options.flat_patches to pick patch or vertex values.
+  void update(const RadianceField& field, const RadiosityOptions& options);
+
+  // Draws into the currently bound framebuffer of the given size. `highlight`: a patch drawn in
+  // a flat highlight colour (e.g. the solver's last shooter), -1 for none.
+  void draw(const Camera& camera, int width, int height, const RadiosityOptions& options,
+            int highlight = -1);
+  // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
+  Image render(const Camera& camera, int width, int height, const RadiosityOptions& options,
+               int highlight = -1);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace luz

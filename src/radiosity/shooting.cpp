@@ -1,0 +1,237 @@
+// Progressive refinement radiosity (slide 39; Cohen et al. 1988). See shooting.h.
+//
+// Sections: [powers] [construction and reset] [step 2: shoot a patch] [point lights]
+//           [the loop] [state]
+#include "radiosity/shooting.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+namespace luz {
+namespace {
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double mean(const Rgb& c) { return (double(c.r) + double(c.g) + double(c.b)) / 3.0; }
+
+// The solid angle a light sends its intensity into, sum(spot) over the sphere: 4 pi for a point
+// light; for a spot, the integral of its (axially symmetric) factor, 2 pi sin(theta) dtheta.
+double emitting_solid_angle(const Light& light) {
+  if (light.type != LightType::spot) return 4.0 * std::numbers::pi;
+  const int steps = 20000;
+  double total = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double theta = (k + 0.5) * std::numbers::pi / steps;
+    // A unit vector at angle theta from the spot's axis.
+    const glm::vec3 axis = light.direction;
+    const glm::vec3 side = any_tangent(axis);
+    const glm::vec3 direction = float(std::cos(theta)) * axis + float(std::sin(theta)) * side;
+    total += double(light.spot_factor(direction)) * 2.0 * std::numbers::pi * std::sin(theta) *
+             (std::numbers::pi / steps);
+  }
+  return total;
+}
+
+}  // namespace
+
+// ---- [powers] ----------------------------------------------------------------------------------
+double ProgressiveSolver::power(const Rgb& exitance, float area) {
+  return mean(exitance) * double(area);
+}
+
+// ---- [construction and reset] ------------------------------------------------------------------
+ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
+                                     const RadiosityOptions& options)
+    : scene_(scene), mesh_(mesh), options_(options), items_(mesh),
+      hemicube_(mesh, items_, options.hemicube_res) {
+  for (size_t k = 0; k < scene.lights.size(); ++k) {
+    const Light& light = scene.lights[k];
+    if (!light.enabled) continue;
+    if (light.type == LightType::directional) {
+      warnings_.push_back(fmt::format("radiosity: directional light \"{}\" is not shot (a light "
+                                      "at infinity has no place for a cube of item buffers); "
+                                      "it is ignored", light.name));
+      continue;
+    }
+    lights_.push_back(k);
+  }
+  if (!lights_.empty())
+    cube_ = std::make_unique<PointSource>(mesh, items_, options.hemicube_res);
+  double rho_area = 0.0, area = 0.0;
+  for (const Patch& p : mesh.patches) {
+    rho_area += mean(p.rho) * double(p.area);
+    area += double(p.area);
+  }
+  mean_rho_ = area > 0.0 ? rho_area / area : 0.0;
+  reset();
+}
+
+// Step 1: radiosity = 0, unshot = E for every patch.
+void ProgressiveSolver::reset() {
+  radiosity_.assign(mesh_.size(), Rgb(0.0f));
+  unshot_.resize(mesh_.size());
+  tally_ = EnergyTally{};
+  for (size_t i = 0; i < mesh_.size(); ++i) {
+    unshot_[i] = mesh_.patches[i].emission;
+    tally_.emitted += power(unshot_[i], mesh_.patches[i].area);
+  }
+  light_power_.clear();
+  for (const size_t k : lights_) {
+    const Light& light = scene_.lights[k];
+    light_power_.push_back(light.intensity * float(emitting_solid_angle(light)));
+    tally_.emitted += mean(light_power_.back());
+  }
+  next_light_ = 0;
+  shots_ = 0;
+  last_shooter_ = -1;
+  random_.seed(options_.seed);
+  history_.clear();
+  started_ = now_seconds();
+  record(-1);  // shot 0: everything unshot
+}
+
+// ---- [step 2: shoot a patch] -------------------------------------------------------------------
+// Step 2: patch i shoots its unshot radiosity to every patch its hemicube sees.
+void ProgressiveSolver::shoot(size_t i) {
+  const Patch& shooter = mesh_.patches[i];
+  const float rotation = options_.random_rotation
+      ? std::uniform_real_distribution<float>(0.0f, 2.0f * std::numbers::pi_v<float>)(random_)
+      : 0.0f;
+
+  // radiosidad[i] = radiosidad[i] + carga[i];  carga[i] = 0
+  // (the slide zeroes carga[i] before the loop that uses it: keep what is shot aside first)
+  const Rgb shot = unshot_[i];
+  radiosity_[i] += shot;
+  unshot_[i] = Rgb(0.0f);
+
+  // para cada j: calcular F_ji;  carga[j] = carga[j] + rho_j F_ji carga[i]
+  const std::vector<FormFactor>& row = hemicube_.row(i, rotation);
+  row_times_ = hemicube_.last_times();
+  const auto update_start = std::chrono::steady_clock::now();
+  const double shot_power = power(shot, shooter.area);
+  double row_sum = 0.0;
+  for (const FormFactor& f : row) {
+    const Patch& receiver = mesh_.patches[f.patch];
+    const float F_ji = f.value * shooter.area / receiver.area;  // reciprocity
+    unshot_[f.patch] += receiver.rho * F_ji * shot;
+    // Of the power F_ij * (shot * A_i) arriving at j, rho_j is reflected, the rest absorbed.
+    tally_.absorbed += double(f.value) * power((Rgb(1.0f) - receiver.rho) * shot, shooter.area);
+    row_sum += double(f.value);
+  }
+  tally_.escaped += (1.0 - row_sum) * shot_power;
+  update_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - update_start).count();
+  ++shots_;
+  record(int(i));
+}
+
+// ---- [point lights] ----------------------------------------------------------------------------
+// Patch j receives the flux Phi_j = I * omega_j (omega_j: its spot-weighted solid angle from the
+// light), so its irradiance is Phi_j / A_j and it gains rho_j Phi_j / A_j of unshot exitance.
+void ProgressiveSolver::shoot_light(size_t k) {
+  const Light& light = scene_.lights[lights_[k]];
+  const std::vector<FormFactor>& omegas = cube_->solid_angles(light);
+  row_times_ = RowTimes{};
+  double delivered = 0.0;
+  for (const FormFactor& f : omegas) {
+    const Patch& receiver = mesh_.patches[f.patch];
+    float attenuation = 1.0f;  // f_att(d) d^2: 1 for the physical 1/d^2
+    if (light.attenuation.classroom) {
+      const float d = glm::length(receiver.centre - light.position);
+      attenuation = light.attenuation.factor(d) * d * d;
+    }
+    const Rgb flux = light.intensity * (f.value * attenuation);
+    unshot_[f.patch] += receiver.rho * flux / receiver.area;
+    tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * flux);
+    delivered += mean(flux);
+  }
+  tally_.escaped += mean(light_power_[k]) - delivered;
+  ++shots_;
+  record(-1 - int(k));
+}
+
+// ---- [the loop] --------------------------------------------------------------------------------
+size_t ProgressiveSolver::most_unshot_patch() const {
+  size_t best = 0;
+  double best_power = -1.0;
+  for (size_t i = 0; i < unshot_.size(); ++i) {
+    const double p = power(unshot_[i], mesh_.patches[i].area);
+    if (p > best_power) {
+      best_power = p;
+      best = i;
+    }
+  }
+  return best;
+}
+
+bool ProgressiveSolver::done() const {
+  if (options_.max_shots > 0 && shots_ >= options_.max_shots) return true;
+  if (unshot_power() <= 0.0) return true;
+  return options_.converge > 0.0f && unshot_fraction() < double(options_.converge);
+}
+
+// Step 4: repeat until no difference shows. One call is one shot, so the viewer can spend a time
+// budget per frame and redraw (step 3) between shots.
+bool ProgressiveSolver::step() {
+  if (done()) return false;
+  if (next_light_ < lights_.size()) {
+    shoot_light(next_light_++);  // punctual lights first, each once
+    return true;
+  }
+  shoot(most_unshot_patch());
+  return true;
+}
+
+void ProgressiveSolver::record(int shooter) {
+  last_shooter_ = shooter;
+  ShotRecord r;
+  r.shot = shots_;
+  r.shooter = shooter;
+  r.unshot_power = unshot_power();
+  r.fraction = unshot_fraction();
+  r.seconds = now_seconds() - started_;
+  history_.push_back(r);
+}
+
+// ---- [state] -----------------------------------------------------------------------------------
+// Step 3: display every patch with radiosity + unshot.
+std::vector<Rgb> ProgressiveSolver::displayed() const {
+  std::vector<Rgb> b(radiosity_.size());
+  for (size_t i = 0; i < b.size(); ++i) b[i] = radiosity_[i] + unshot_[i];  // step 3
+  return b;
+}
+
+double ProgressiveSolver::unshot_power() const {
+  double total = 0.0;
+  for (size_t i = 0; i < unshot_.size(); ++i) total += power(unshot_[i], mesh_.patches[i].area);
+  for (size_t k = next_light_; k < lights_.size(); ++k) total += mean(light_power_[k]);
+  return total;
+}
+
+double ProgressiveSolver::unshot_fraction() const {
+  return tally_.emitted > 0.0 ? unshot_power() / tally_.emitted : 0.0;
+}
+
+EnergyTally ProgressiveSolver::energy() const {
+  EnergyTally t = tally_;
+  t.unshot = unshot_power();
+  return t;
+}
+
+Rgb ProgressiveSolver::ambient() const {
+  Rgb unshot_power_rgb(0.0f);
+  for (size_t i = 0; i < unshot_.size(); ++i) unshot_power_rgb += unshot_[i] * mesh_.patches[i].area;
+  for (size_t k = next_light_; k < lights_.size(); ++k) unshot_power_rgb += light_power_[k];
+  const float area = mesh_.total_area();
+  if (!(area > 0.0f) || mean_rho_ >= 1.0) return Rgb(0.0f);
+  // Cohen et al. 1988: ambient = R * sum(unshot_j A_j) / sum(A_j), R = 1 / (1 - rho_mean).
+  return unshot_power_rgb / area / float(1.0 - mean_rho_);
+}
+
+}  // namespace luz

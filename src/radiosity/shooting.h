@@ -1,0 +1,129 @@
+#pragma once
+// Progressive refinement radiosity, as slide 39 writes it (Cohen, Chen, Wallace and Greenberg,
+// "A Progressive Refinement Approach to Fast Radiosity Image Generation", SIGGRAPH 1988):
+//
+//   1. for every patch: radiosity = 0, unshot ("carga emisora") = E
+//   2. take the patch i with the most unshot power (unshot * area) and shoot it:
+//        radiosity[i] += unshot[i]; unshot[i] = 0;
+//        for every j: compute F_ji; unshot[j] += rho_j * F_ji * (what i shot)
+//   3. display every patch with radiosity + unshot
+//   4. repeat until no difference shows (the unshot power is a small part of the emitted one)
+//
+// F_ji comes from the hemicube row of the shooter, F_ij, by reciprocity: F_ji = F_ij A_i / A_j.
+// The scene's punctual lights are shot first, each once, as point sources (point_source.h).
+//
+// The solver steps on the thread that owns the GL context: step() is one shot, so the viewer
+// can spend a time budget per frame and show each step. All quantities are RGB exitances
+// (W/m^2) per patch; powers are those times the area, summed as the mean of R, G and B.
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/color.h"
+#include "core/scene.h"
+#include "radiosity/hemicube.h"
+#include "radiosity/item_buffer.h"
+#include "radiosity/patch_mesh.h"
+#include "radiosity/point_source.h"
+#include "radiosity/radiosity_options.h"
+
+namespace luz {
+
+// One row of the history: after shot `shot` (1-based), the unshot power left.
+struct ShotRecord {
+  int shot = 0;
+  int shooter = -1;           // patch index, or -1 - k for the scene's light k
+  double unshot_power = 0.0;  // W (mean of R, G, B)
+  double fraction = 0.0;      // unshot_power / emitted_power
+  double seconds = 0.0;       // since the solver started
+};
+
+// Where the emitted power has gone so far (W, mean of R, G, B). emitted = absorbed + unshot +
+// escaped at every step; escaped is what left the scene or hit the back of a patch (0 up to the
+// hemicube's discretisation in a closed room of front faces).
+struct EnergyTally {
+  double emitted = 0.0;
+  double absorbed = 0.0;
+  double unshot = 0.0;
+  double escaped = 0.0;
+};
+
+class ProgressiveSolver {
+public:
+  // Needs a current GL context (the hemicube draws through it) for its whole life. `mesh` and
+  // `scene` must outlive the solver. Directional lights are not shot (no position to put a
+  // cube at): warnings() says so.
+  ProgressiveSolver(const Scene& scene, const PatchMesh& mesh, const RadiosityOptions& options);
+
+  // Step 1 again: radiosity = 0, unshot = E, lights unshot, history cleared.
+  void reset();
+  // One shot: the next punctual light, else the patch with the most unshot power. Returns
+  // false (and shoots nothing) when done(): converged, out of shots, or nothing left to shoot.
+  bool step();
+  bool done() const;
+  // Step 2 for patch i (public so a test or the viewer can shoot a chosen patch).
+  void shoot(size_t i);
+  // Shoots the scene's light k as a point source.
+  void shoot_light(size_t k);
+
+  // ---- State ----
+  const std::vector<Rgb>& radiosity() const { return radiosity_; }
+  const std::vector<Rgb>& unshot() const { return unshot_; }
+  // Step 3: what each patch shows, radiosity + unshot (exitance B, W/m^2).
+  std::vector<Rgb> displayed() const;
+  // Cohen et al. 1988's ambient term: the unshot power spread over the scene's area, times
+  // 1 / (1 - mean reflectance) for its interreflections. A patch would show rho_i * ambient
+  // more once everything were shot.
+  Rgb ambient() const;
+  double unshot_power() const;
+  double emitted_power() const { return tally_.emitted; }
+  double unshot_fraction() const;
+  EnergyTally energy() const;
+  int shots() const { return shots_; }
+  int last_shooter() const { return last_shooter_; }  // patch, -1 - k for light k, or -1 before any
+  size_t lights_left() const { return lights_.size() - next_light_; }
+  const std::vector<ShotRecord>& history() const { return history_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  // Seconds spent in the last shot on drawing, reading back, accumulating (hemicube) and on
+  // updating the unshot values.
+  const RowTimes& last_row_times() const { return row_times_; }
+  double last_update_seconds() const { return update_seconds_; }
+
+  // The stopping rule, the rotation and the display switches may change between steps;
+  // patch size and hemicube resolution need a new mesh and solver.
+  RadiosityOptions& options() { return options_; }
+  const RadiosityOptions& options() const { return options_; }
+  const PatchMesh& mesh() const { return mesh_; }
+  Hemicube& hemicube() { return hemicube_; }
+
+private:
+  void record(int shooter);
+  size_t most_unshot_patch() const;
+  static double power(const Rgb& exitance, float area);
+
+  const Scene& scene_;
+  const PatchMesh& mesh_;
+  RadiosityOptions options_;
+  PatchItems items_;
+  Hemicube hemicube_;
+  std::unique_ptr<PointSource> cube_;  // made when the scene has punctual lights
+  std::vector<size_t> lights_;         // the scene's lights that shoot (enabled point and spot)
+  size_t next_light_ = 0;
+  std::vector<Rgb> light_power_;       // I * sum(spot d_omega), filled when each light shoots
+  double unshot_light_power_ = 0.0;    // estimate for lights not yet shot (I * 4 pi)
+  std::vector<Rgb> radiosity_, unshot_;
+  EnergyTally tally_;
+  int shots_ = 0;
+  int last_shooter_ = -1;
+  std::mt19937 random_;
+  std::vector<ShotRecord> history_;
+  std::vector<std::string> warnings_;
+  RowTimes row_times_;
+  double update_seconds_ = 0.0;
+  double started_ = 0.0;
+  double mean_rho_ = 0.0;
+};
+
+}  // namespace luz

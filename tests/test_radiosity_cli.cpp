@@ -1,0 +1,90 @@
+// `luz render --model radiosity` as a user calls it: its flags, their usage errors (exit 2),
+// the residual history in CSV, and `luz bench radiosity`'s table.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support.h"
+
+namespace luz {
+namespace {
+
+using test::run_luz;
+
+std::string cornell() { return (test::scene_dir() / "cornell_box.gltf").string(); }
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(RadiosityCli, HelpListsTheFlags) {
+  const auto help = run_luz({"render", "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"radiosity", "--shots", "--converge", "--patch-size", "--hemicube-res",
+                           "--ambient-estimate", "--csv"})
+    EXPECT_TRUE(contains(help.output, flag)) << flag;
+}
+
+TEST(RadiosityCli, RadiosityFlagsWithAnotherModelAreUsageErrors) {
+  test::ScratchDir dir;
+  for (const std::vector<std::string>& flag :
+       std::vector<std::vector<std::string>>{{"--shots", "5"}, {"--converge", "0.1"},
+                                             {"--patch-size", "0.1"}, {"--hemicube-res", "64"},
+                                             {"--ambient-estimate"}, {"--csv", "x.csv"}}) {
+    std::vector<std::string> args = {"render", cornell(), "--model", "phong", "--out",
+                                     (dir / "a.png").string()};
+    args.insert(args.end(), flag.begin(), flag.end());
+    const auto result = run_luz(args);
+    EXPECT_EQ(result.exit_code, 2) << flag[0] << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, flag[0])) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
+  }
+}
+
+TEST(RadiosityCli, BadValuesAreUsageErrors) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "a.png").string();
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{"--hemicube-res", "65"}, {"--hemicube-res", "32"},
+                                             {"--hemicube-res", "2048"}, {"--shots", "0"},
+                                             {"--patch-size", "-1"}, {"--converge", "0"},
+                                             {"--shots", "3", "--converge", "0.1"}}) {
+    std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
+    args.insert(args.end(), bad.begin(), bad.end());
+    EXPECT_EQ(run_luz(args).exit_code, 2) << bad[0] << " " << bad[1];
+  }
+}
+
+TEST(RadiosityCli, CsvHoldsOneRowPerShot) {
+  test::ScratchDir dir;
+  const auto result = run_luz({"render", cornell(), "--model", "radiosity", "--out",
+                               (dir / "a.png").string(), "--size", "64x64", "--patch-size", "0.2",
+                               "--hemicube-res", "64", "--shots", "40", "-q", "--csv",
+                               (dir / "history.csv").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output, "") << "-q prints nothing (no progress bar either)";
+  std::ifstream csv(dir / "history.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "shot,unshot_power,fraction,seconds");
+  int rows = 0;
+  double previous_fraction = 2.0;
+  while (std::getline(csv, line)) {
+    std::istringstream fields(line);
+    int shot = 0;
+    double power = 0, fraction = 0, seconds = 0;
+    char comma = 0;
+    fields >> shot >> comma >> power >> comma >> fraction >> comma >> seconds;
+    EXPECT_EQ(shot, rows) << line;
+    EXPECT_LE(fraction, previous_fraction) << line;
+    previous_fraction = fraction;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 41) << "shot 0 (nothing shot yet) and 40 shots";
+  EXPECT_GT(previous_fraction, 0.0);
+  EXPECT_LT(previous_fraction, 0.9) << "40 shots move most of the lamp's power";
+}
+
+}  // namespace
+}  // namespace luz
