@@ -12,6 +12,7 @@
 
 #include "app/panel.h"
 #include "app/ray_tree_drawing.h"
+#include "core/image.h"
 
 namespace luz::app {
 namespace {
@@ -89,10 +90,20 @@ void options(ViewerState& state) {
   ImGui::Checkbox("Blinn N·H [B]", &l.blinn);
 }
 
-std::string rgb(const Rgb& c) { return fmt::format("{:.2f} {:.2f} {:.2f}", c.r, c.g, c.b); }
-
 // One node and, indented under it, the rays its hit spawned.
-void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& children, int id) {
+std::string rgb(const Rgb& c) { return fmt::format("{:.3f} {:.3f} {:.3f}", c.r, c.g, c.b); }
+
+// A radiance as a swatch, encoded for the screen as the picture is (2^exposure, sRGB), its
+// numbers in the tooltip.
+void swatch(const char* id, const Rgb& radiance, float exposure) {
+  const float scale = std::exp2(exposure);
+  const ImVec4 shown(srgb_encode(radiance.r * scale), srgb_encode(radiance.g * scale), srgb_encode(radiance.b * scale), 1.0f);
+  const float side = ImGui::GetTextLineHeight();
+  ImGui::ColorButton(id, shown, ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(2.0f * side, side));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", rgb(radiance).c_str());
+}
+
+void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& children, int id, float exposure) {
   const rt::RayTreeNode& n = tree.nodes[size_t(id)];
   const bool shadow = n.kind == rt::RayKind::shadow;
   ImGui::TableNextRow();
@@ -108,16 +119,16 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   if (shadow) ImGui::Text("light %d: %s", n.light, n.hit ? "blocked" : "lit");
   else if (n.hit) ImGui::TextUnformatted(n.mesh.c_str());
   else ImGui::TextDisabled("background");
-  ImGui::TableNextColumn();
-  if (!shadow && n.hit) ImGui::TextUnformatted(rgb(n.local).c_str());
-  ImGui::TableNextColumn();
-  ImGui::TextUnformatted(rgb(n.contribution).c_str());
-  if (ImGui::IsItemHovered())  // the contribution cell: the ray itself
+  if (ImGui::IsItemHovered())  // the hit cell: the ray itself
     ImGui::SetTooltip("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s",
                       n.origin.x, n.origin.y, n.origin.z, n.direction.x, n.direction.y, n.direction.z, n.t,
                       n.material.c_str(), rgb(n.weight).c_str(), rgb(n.radiance).c_str());
+  ImGui::TableNextColumn();
+  if (!shadow && n.hit) swatch("local", n.local, exposure);
+  ImGui::TableNextColumn();
+  swatch("contribution", n.contribution, exposure);
   if (open && !children[size_t(id)].empty()) {
-    for (int child : children[size_t(id)]) node_row(tree, children, child);
+    for (int child : children[size_t(id)]) node_row(tree, children, child, exposure);
     ImGui::TreePop();
   }
 }
@@ -131,27 +142,31 @@ void ray_tree(ViewerState& state) {
   }
   const rt::RayTree& tree = *state.ray_tree;
   ImGui::Text("pixel (%d, %d): %zu rays, L = %s", tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
-  ImGui::SameLine();
   if (ImGui::SmallButton("clear [X]")) state.clear_ray_tree_requested = true;
   std::vector<std::vector<int>> children(tree.nodes.size());
   for (const rt::RayTreeNode& n : tree.nodes)
     if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_Resizable;
+                                ImGuiTableFlags_SizingStretchProp;
   const float height = ImGui::GetTextLineHeightWithSpacing() * float(std::min<size_t>(tree.nodes.size() + 1, 14));
+  // A narrower indent than the panel's: a tree of depth 5 still shows its kinds.
+  ImGui::PushStyleVar(ImGuiStyleVar_IndentSpacing, 0.6f * ImGui::GetFontSize());
   if (ImGui::BeginTable("ray tree", 5, flags, ImVec2(0.0f, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("ray");
-    ImGui::TableSetupColumn("d");
-    ImGui::TableSetupColumn("hit");
-    ImGui::TableSetupColumn("local");
-    ImGui::TableSetupColumn("contribution");
+    // Shares of the panel's width: the tree's indentation needs the most.
+    ImGui::TableSetupColumn("ray", ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch, 0.25f);
+    ImGui::TableSetupColumn("hit", ImGuiTableColumnFlags_WidthStretch, 1.5f);
+    ImGui::TableSetupColumn("local", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthStretch, 0.55f);
     ImGui::TableHeadersRow();
     for (const rt::RayTreeNode& n : tree.nodes)
-      if (n.parent < 0) node_row(tree, children, n.id);
+      if (n.parent < 0) node_row(tree, children, n.id, state.exposure);
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit; contribution: its share of L");
+  ImGui::PopStyleVar();
+  ImGui::TextDisabled("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
+  ImGui::TextDisabled("share: its contribution to L (hover for numbers)");
   ImGui::TreePop();
 }
 
