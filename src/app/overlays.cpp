@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include <fmt/format.h>
 #include <imgui.h>
 
 #include "app/shortcuts.h"
@@ -20,8 +21,17 @@ void draw_status_line(const ViewerState& state, float top, float width, float he
   ImGui::Begin("status", nullptr, fixed);
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
   const std::string camera = state.free_camera ? "free camera (C: back)" : scene.cameras[size_t(state.scene_camera)].name;
+  // Whitted's line says where the trace is: progress while it runs, rays per second at its end.
+  std::string model = info(state.model).label;
+  const TraceProgress& t = state.trace;
+  if (state.model == Model::whitted) {
+    if (t.phase == TracePhase::raster) model += " (raster view)";
+    else if (t.phase == TracePhase::tracing)
+      model += fmt::format(" tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
+    else model += fmt::format(" traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
+  }
   ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s",
-              info(state.model).label, state.frame_ms, scene.triangle_count(), int(lights),
+              model.c_str(), state.frame_ms, scene.triangle_count(), int(lights),
               scene.area_lights.size(), camera.c_str(), state.note.c_str());
   ImGui::End();
 }
@@ -41,9 +51,30 @@ void draw_help(bool& open, float x, float y) {
     row("left drag", "orbit around the scene");
     row("right drag", "pan");
     row("wheel", "zoom");
-    row("left click", "inspect the pixel: each term's value");
+    row("left click", "inspect the pixel: each term's value (Whitted: its ray tree)");
     row("drop a file", "load a .gltf / .glb scene");
     ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void draw_trace_hint(const ViewerState& state, float x, float y) {
+  const TraceProgress& t = state.trace;
+  if (state.model != Model::whitted || t.phase == TracePhase::done) return;
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+  ImGui::Begin("trace hint", nullptr, flags);
+  if (t.phase == TracePhase::tracing) {
+    const std::string label = fmt::format("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
+                                          t.done, t.total, t.seconds);
+    ImGui::ProgressBar(t.total > 0 ? float(t.done) / float(t.total) : 0.0f, ImVec2(0.0f, 0.0f), "");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(label.c_str());
+  } else {
+    ImGui::TextUnformatted("Whitted: the raster (Phong) view. Press Enter / click Render to trace this view");
   }
   ImGui::End();
 }

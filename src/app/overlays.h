@@ -1,6 +1,6 @@
 #pragma once
 // The small windows of the viewer besides the panel and the inspector: the status line, the
-// list of keys (F1) and the error of a scene that did not load.
+// list of keys (F1), Whitted's hint and progress, and the error of a scene that did not load.
 #include "app/viewer_state.h"
 
 namespace luz::app {
@@ -10,6 +10,10 @@ void draw_status_line(const ViewerState& state, float top, float width, float he
 
 // The shortcut table (shortcuts.h) and the mouse gestures, centred on (x, y).
 void draw_help(bool& open, float x, float y);
+
+// Whitted's model until its trace is done, at the top centre (x, y) of the picture: the hint to
+// trace the raster view, or the progress bar of the trace running.
+void draw_trace_hint(const ViewerState& state, float x, float y);
 
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);

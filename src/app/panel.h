@@ -10,6 +10,10 @@ namespace luz::app {
 // Draws the panel as a fixed window at the left of the window, `width` x `height` window units.
 void draw_panel(ViewerState& state, float width, float height);
 
+// Whitted's section (panel_whitted.cpp): Render, progress, counters, the tracer's switches and
+// the clicked pixel's ray tree.
+void whitted_section(ViewerState& state);
+
 // The formula of the local models with each term coloured, or greyed when it is off.
 void draw_local_formula(const LocalOptions& options, const Scene& scene);
 

@@ -12,18 +12,6 @@ namespace luz::app {
 
 namespace {
 
-// The --no-TERM switches and --blinn apply to the tracer's local part as to the rasteriser.
-rt::WhittedOptions options_of(const RenderSettings& settings) {
-  rt::WhittedOptions options = settings.whitted;
-  options.ambient = settings.local.ambient;
-  options.diffuse = settings.local.diffuse;
-  options.specular = settings.local.specular;
-  options.emission = settings.local.emission;
-  options.textures = settings.local.textures;
-  options.blinn = settings.local.blinn;
-  return options;
-}
-
 // "whitted [##########..........]  52%" on stderr, rewritten in place; only on a terminal.
 class ProgressBar {
 public:
@@ -48,6 +36,17 @@ private:
 
 }  // namespace
 
+rt::WhittedOptions tracer_options(const rt::WhittedOptions& whitted, const LocalOptions& local) {
+  rt::WhittedOptions options = whitted;
+  options.ambient = local.ambient;
+  options.diffuse = local.diffuse;
+  options.specular = local.specular;
+  options.emission = local.emission;
+  options.textures = local.textures;
+  options.blinn = local.blinn;
+  return options;
+}
+
 std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
   std::filesystem::path path = out;
   return path.replace_extension(".ray-tree.json");
@@ -61,7 +60,7 @@ WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width
       throw Error(ErrorKind::usage, fmt::format("--ray-tree {},{}: outside the {}x{} image", x, y,
                                                 width, height));
   }
-  const rt::WhittedOptions options = options_of(settings);
+  const rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
   rt::WhittedRenderer tracer(scene);
   ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO));
   WhittedResult result;

@@ -18,6 +18,10 @@ struct WhittedResult {
   std::optional<std::string> ray_tree;  // JSON, when --ray-tree was given
 };
 
+// The tracer's options as `luz render` and the viewer make them: the Whitted switches, with the
+// local terms' switches (--no-TERM, --blinn; the panel's term checkboxes) applied to its local part.
+rt::WhittedOptions tracer_options(const rt::WhittedOptions& whitted, const LocalOptions& local);
+
 // Throws luz::Error (usage) when the --ray-tree pixel lies outside the image.
 WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
                              const RenderSettings& settings);

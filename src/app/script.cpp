@@ -76,14 +76,20 @@ std::string check(const ScriptCommand& c) {
   if (c.verb == "set") {
     if (auto e = count(2, 2); !e.empty()) return e;
     if (a[0] == "exposure") return is_number(a[1]) ? "" : "`set exposure EV` takes a number";
+    for (const char* name : {"depth", "spp", "light-samples"})  // Whitted's numbers
+      if (a[0] == name)
+        return is_int(a[1]) && std::stoi(a[1]) >= (a[0] == "depth" ? 0 : 1)
+                   ? "" : fmt::format("`set {}` takes a whole number{}", name, a[0] == "depth" ? " >= 0" : " >= 1");
     if (a[0] == "fog")
       return a[1] == "off" || a[1] == "linear" || a[1] == "exponential"
                  ? "" : "`set fog` takes off, linear or exponential";
     for (const char* name : {"ambient", "diffuse", "specular", "emission", "textures", "blinn", "panel", "inspector",
-                             "shadows", "transparency", "reflection-map"})
+                             "shadows", "transparency", "reflection-map", "fresnel", "adaptive", "brute-force",
+                             "shadow-rays"})
       if (a[0] == name) return a[1] == "on" || a[1] == "off" ? "" : fmt::format("`set {}` takes on or off", name);
     return fmt::format("cannot set \"{}\" (ambient, diffuse, specular, emission, textures, blinn, "
-                       "panel, inspector, shadows, transparency, reflection-map, fog, exposure)", a[0]);
+                       "panel, inspector, shadows, transparency, reflection-map, fog, exposure, depth, spp, "
+                       "light-samples, fresnel, adaptive, brute-force, shadow-rays)", a[0]);
   }
   if (c.verb == "resize") {
     if (auto e = count(2, 2); !e.empty()) return e;
@@ -95,14 +101,23 @@ std::string check(const ScriptCommand& c) {
     if (auto e = count(1, 1); !e.empty()) return e;
     return a[0].ends_with(".json") ? "" : "the inspector dumps to a .json file";
   }
-  if (c.verb == "reload" || c.verb == "quit") return count(0, 0);
+  if (c.verb == "trace") {
+    if (auto e = count(0, 1); !e.empty()) return e;
+    return a.empty() || a[0] == "--no-wait" ? "" : fmt::format("unknown option \"{}\" (--no-wait)", a[0]);
+  }
+  if (c.verb == "dump-ray-tree" || c.verb == "dump-trace") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return a[0].ends_with(".json") ? "" : fmt::format("`{}` writes a .json file", c.verb);
+  }
+  if (c.verb == "reload" || c.verb == "quit" || c.verb == "wait-trace") return count(0, 0);
   return fmt::format("unknown command \"{}\"", c.verb);
 }
 
 // Commands whose effect the next command must see drawn: they end the frame.
 bool ends_frame(const std::string& verb) {
   return verb == "click" || verb == "drag" || verb == "screenshot" || verb == "resize" ||
-         verb == "load" || verb == "reload" || verb == "camera" || verb == "dump-inspector";
+         verb == "load" || verb == "reload" || verb == "camera" || verb == "dump-inspector" ||
+         verb == "trace" || verb == "wait-trace";
 }
 
 }  // namespace

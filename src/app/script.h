@@ -1,7 +1,8 @@
 #pragma once
 // `luz --script FILE`: a prepared demo, or a test, fed to the viewer one command per line:
 //   key 2 | key Shift+P           press a key (shortcuts.h names)
-//   click X Y                     left click at window coordinates (the inspector, the panel)
+//   click X Y                     left click at window coordinates (the inspector, the panel;
+//                                 in Whitted's model the pixel's ray tree)
 //   drag X0 Y0 X1 Y1 [right]      drag with the left (orbit) or right (pan) button
 //   scroll STEPS                  the mouse wheel over the picture (zoom)
 //   wait N                        let N frames pass
@@ -11,6 +12,14 @@
 //   set TERM on|off               ambient, diffuse, specular, emission, textures, blinn,
 //                                 panel, inspector
 //   set exposure EV
+//   set depth|spp|light-samples N Whitted's numbers (model 4)
+//   set fresnel|adaptive|brute-force|shadow-rays on|off   Whitted's switches
+//   trace [--no-wait]             trace the view in Whitted's model (as Enter) and wait for the
+//                                 last tile, or go on at once
+//   wait-trace                    wait until the trace running has finished
+//   dump-ray-tree FILE.json       the ray tree of the last pixel clicked in Whitted's model, as
+//                                 `luz render --ray-tree X,Y` writes it
+//   dump-trace FILE.json          the trace's phase, tiles done and counters
 //   resize W H                    the window, in window coordinates
 //   load FILE | reload            as dropping a file on the window / pressing R
 //   dump-inspector FILE.json      the inspector's values, for tests and handouts

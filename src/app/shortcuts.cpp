@@ -11,12 +11,14 @@ namespace {
 
 // Terms on the initials of their names (Ambient, Diffuse, Specular, Emission, Textures, Blinn);
 // flying on the arrows so that A, D and S stay the terms. Slide 19's switches where a letter of
-// their name is free: foG, sHadows, Opacity (transparency), Mirror (reflection map).
+// their name is free: foG, sHadows, Opacity (transparency), Mirror (reflection map). Whitted's
+// trace on Enter; Esc stays quit, so the trace is cancelled by Backspace (any camera move
+// cancels it too), and X crosses out the ray tree.
 constexpr Shortcut table[] = {
     {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
     {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
     {GLFW_KEY_3, 0, "3", Action::model_3, "Phong shading"},
-    {GLFW_KEY_4, 0, "4", Action::model_4, "Whitted ray tracing (not available yet)"},
+    {GLFW_KEY_4, 0, "4", Action::model_4, "Whitted ray tracing (the raster view until Enter)"},
     {GLFW_KEY_5, 0, "5", Action::model_5, "radiosity (not available yet)"},
     {GLFW_KEY_6, 0, "6", Action::model_6, "hybrid (not available yet)"},
     {GLFW_KEY_A, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
@@ -30,6 +32,9 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_H, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
     {GLFW_KEY_O, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
     {GLFW_KEY_M, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
+    {GLFW_KEY_ENTER, 0, "Enter", Action::trace_view, "Whitted: trace this view, tile by tile"},
+    {GLFW_KEY_BACKSPACE, 0, "Backspace", Action::cancel_trace, "Whitted: cancel the trace (back to the raster view)"},
+    {GLFW_KEY_X, 0, "X", Action::clear_ray_tree, "Whitted: clear the ray tree"},
     {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
     {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
     {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},
@@ -53,7 +58,7 @@ struct NamedKey {
 
 constexpr NamedKey named_keys[] = {
     {"esc", GLFW_KEY_ESCAPE},   {"escape", GLFW_KEY_ESCAPE}, {"tab", GLFW_KEY_TAB},
-    {"enter", GLFW_KEY_ENTER},  {"space", GLFW_KEY_SPACE},   {"left", GLFW_KEY_LEFT},
+    {"enter", GLFW_KEY_ENTER},  {"space", GLFW_KEY_SPACE},   {"backspace", GLFW_KEY_BACKSPACE},   {"left", GLFW_KEY_LEFT},
     {"right", GLFW_KEY_RIGHT},  {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},
     {"pageup", GLFW_KEY_PAGE_UP}, {"pagedown", GLFW_KEY_PAGE_DOWN},
     {"+", GLFW_KEY_EQUAL},      {"=", GLFW_KEY_EQUAL},       {"-", GLFW_KEY_MINUS},

@@ -18,6 +18,7 @@ enum class Action {
   scene_camera, next_camera,
   reload, screenshot, screenshot_with_panel,
   toggle_panel, toggle_inspector, help, quit,
+  trace_view, cancel_trace, clear_ray_tree,
 };
 
 struct Shortcut {

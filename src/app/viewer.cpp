@@ -23,15 +23,19 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "app/inspector.h"
 #include "app/orbit_camera.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "app/picking.h"
+#include "app/ray_tree_drawing.h"
+#include "app/render_whitted.h"
 #include "app/screenshot.h"
 #include "app/shortcuts.h"
 #include "app/viewer_state.h"
+#include "app/whitted_view.h"
 #include "core/error.h"
 #include "gl/framebuffer.h"
 #include "gl/shader.h"
@@ -89,7 +93,11 @@ public:
   int loop();  // until Esc, the window closes or the script quits; the exit code
 
   bool run(const ScriptCommand& command, std::string& error) override;
-  bool busy() const override { return scripted_click_frames_ > 0; }
+  // A click's press and release, or a `trace` the script waits for.
+  bool busy() const override {
+    const bool tracing = state_.trace_requested || (whitted_ && whitted_->phase() == TracePhase::tracing);
+    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing);
+  }
 
 private:
   void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
@@ -106,11 +114,15 @@ private:
   void apply(Action action);
   void set_model(Model model);
   void click(glm::vec2 p);
+  void pick_ray_tree(const Layout& l, glm::ivec2 pixel);
   void move_camera(DragButton button, glm::vec2 delta);
   void fly(float seconds);
 
   void frame();
   void draw_picture(const Layout& l);
+  rt::WhittedOptions tracer_options() const;
+  Fingerprint view_fingerprint(const Camera& camera, glm::ivec2 size) const;
+  void show_whitted(const Layout& l, const Camera& camera);
   void update_inspector(const Layout& l, const Camera& camera);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
@@ -129,6 +141,12 @@ private:
   Camera picked_with_;             // the view the pick was made in: moving the camera re-picks
   glm::ivec2 picked_size_{0};
   std::optional<InspectorReading> reading_;
+
+  // Whitted (model 4): the trace off the GL thread, made when first needed (it builds Embree's
+  // BVH), and the ray tree drawn over the picture.
+  std::unique_ptr<WhittedView> whitted_;
+  std::unique_ptr<RayTreeDrawing> tree_drawing_;
+  bool waiting_for_trace_ = false;  // the script's `trace` waits for the end
 
   DragButton drag_ = DragButton::none;
   glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};
@@ -230,6 +248,9 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
+  whitted_.reset();   // cancels a trace; the tree below belongs to the old scene too
+  state_.ray_tree.reset();
+  if (tree_drawing_) tree_drawing_->clear();
   pick_.reset();
   reading_.reset();
   state_.scene = std::make_unique<Scene>(std::move(loaded.scene));
@@ -344,6 +365,10 @@ void Viewer::click(glm::vec2 p) {
   const Layout l = layout();
   if (!l.in_view(p) || l.view_pixels.x <= 0 || l.view_pixels.y <= 0) return;
   const glm::ivec2 pixel = l.pixel_of(p);
+  if (state_.model == Model::whitted) {
+    pick_ray_tree(l, pixel);
+    return;
+  }
   const Camera camera = current_camera();
   pick_ = picker_->pick(camera, l.view_pixels.x, l.view_pixels.y, pixel.x, pixel.y);
   picked_with_ = camera;
@@ -355,6 +380,26 @@ void Viewer::click(glm::vec2 p) {
     reading_.reset();
     state_.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
   }
+}
+
+// Slide 24: the clicked pixel's ray tree, traced here on the GL thread (a few dozen rays), listed
+// in the panel and drawn over the picture until another click, X, or a new scene.
+void Viewer::pick_ray_tree(const Layout& l, glm::ivec2 pixel) {
+  pick_.reset();  // the local model's inspector is not Whitted's
+  reading_.reset();
+  if (!whitted_) whitted_ = std::make_unique<WhittedView>(*state_.scene);
+  const Camera camera = current_camera();
+  if (whitted_->showing() && whitted_->fingerprint() != view_fingerprint(camera, l.view_pixels))
+    whitted_->cancel();  // an edit not seen yet by the frame: the trace must not read the old scene
+  rt::RayTree tree = whitted_->trace_pixel(*state_.scene, camera, l.view_pixels.x, l.view_pixels.y, pixel.x,
+                                           pixel.y, tracer_options());
+  if (!tree_drawing_) tree_drawing_ = std::make_unique<RayTreeDrawing>();
+  tree_drawing_->set(tree, *state_.scene);
+  if (!tree.nodes.empty() && tree.nodes[0].hit)
+    for (size_t m = 0; m < state_.scene->meshes.size(); ++m)
+      if (state_.scene->meshes[m].name == tree.nodes[0].mesh) state_.selected_material = state_.scene->meshes[m].material;
+  state_.note = fmt::format("ray tree of pixel ({}, {}): {} rays", pixel.x, pixel.y, tree.nodes.size());
+  state_.ray_tree = std::move(tree);
 }
 
 // ---- [actions] ---------------------------------------------------------------------------------
@@ -429,6 +474,12 @@ void Viewer::apply(Action action) {
     case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
     case Action::toggle_inspector: state_.show_inspector = !state_.show_inspector; break;
     case Action::help: state_.show_help = !state_.show_help; break;
+    case Action::trace_view:
+      if (state_.model != Model::whitted) set_model(Model::whitted);
+      state_.trace_requested = true;
+      break;
+    case Action::cancel_trace: state_.cancel_trace_requested = true; break;
+    case Action::clear_ray_tree: state_.clear_ray_tree_requested = true; break;
     case Action::quit: quit_ = true; break;
   }
 }
@@ -468,10 +519,54 @@ bool Viewer::run(const ScriptCommand& c, std::string& error) {
   } else if (c.verb == "model") {
     for (const ModelInfo& m : models())
       if (a[0] == m.name) set_model(m.model);
+  } else if (c.verb == "trace") {  // as Enter; without --no-wait the script waits for the end
+    apply(Action::trace_view);
+    waiting_for_trace_ = a.empty();
+  } else if (c.verb == "wait-trace") {
+    waiting_for_trace_ = true;
+  } else if (c.verb == "dump-ray-tree") {
+    if (!state_.ray_tree) {
+      error = "there is no ray tree: click a pixel in the Whitted model first";
+      return false;
+    }
+    std::ofstream out(a[0]);
+    out << state_.ray_tree->to_json() << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the ray tree", a[0]);
+      return false;
+    }
+  } else if (c.verb == "dump-trace") {
+    const TraceProgress& t = state_.trace;
+    nlohmann::json j;
+    j["phase"] = t.phase == TracePhase::raster ? "raster" : t.phase == TracePhase::tracing ? "tracing" : "done";
+    j["cancelled"] = t.cancelled;
+    j["tiles"] = {t.done, t.total};
+    j["seconds"] = t.seconds;
+    for (int k = 0; k < rt::kRayKinds; ++k) j["rays"][rt::to_string(rt::RayKind(k))] = t.counters.rays[size_t(k)];
+    j["intersection_tests"] = t.counters.intersection_tests;
+    std::ofstream out(a[0]);
+    out << j.dump(2) << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the trace's state", a[0]);
+      return false;
+    }
   } else if (c.verb == "set") {
     LocalOptions& o = state_.local;
+    rt::WhittedOptions& w = state_.whitted;
     if (a[0] == "exposure") {
       state_.exposure = std::stof(a[1]);
+    } else if (a[0] == "depth") {
+      w.max_depth = std::stoi(a[1]);
+    } else if (a[0] == "spp") {
+      w.spp = std::stoi(a[1]);
+    } else if (a[0] == "light-samples") {
+      w.light_samples = std::stoi(a[1]);
+    } else if (a[0] == "fresnel" || a[0] == "adaptive" || a[0] == "brute-force" || a[0] == "shadow-rays") {
+      const bool on = a[1] == "on";
+      if (a[0] == "fresnel") w.fresnel = on;
+      if (a[0] == "adaptive") w.sampling = on ? rt::Sampling::adaptive : rt::Sampling::stratified;
+      if (a[0] == "brute-force") w.brute_force = on;
+      if (a[0] == "shadow-rays") w.shadows = on;
     } else if (a[0] == "fog") {
       o.fog.mode = a[1] == "linear" ? FogMode::linear : a[1] == "exponential" ? FogMode::exponential : FogMode::off;
     } else {
@@ -513,9 +608,14 @@ void Viewer::draw_picture(const Layout& l) {
   if (!picture_ || picture_->width() != size.x || picture_->height() != size.y)
     picture_ = std::make_unique<gl::Framebuffer>(size.x, size.y);
   const Camera camera = current_camera();
-  picture_->bind();
-  renderer_->draw(camera, size.x, size.y, state_.local);
-  update_inspector(l, camera);
+  if (state_.model == Model::whitted) {
+    show_whitted(l, camera);
+  } else {
+    if (whitted_) whitted_->cancel();  // another model was chosen (key or panel)
+    picture_->bind();
+    renderer_->draw(camera, size.x, size.y, state_.local);
+    update_inspector(l, camera);
+  }
 
   // The display pass: radiance -> exposure -> sRGB, pixel for pixel into the window.
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -532,6 +632,76 @@ void Viewer::draw_picture(const Layout& l) {
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
+}
+
+rt::WhittedOptions Viewer::tracer_options() const {
+  return app::tracer_options(state_.whitted, state_.local);
+}
+
+Fingerprint Viewer::view_fingerprint(const Camera& camera, glm::ivec2 size) const {
+  return {camera.to_world, camera.yfov, size.x, size.y, tracer_options(), editable_values(*state_.scene)};
+}
+
+// Whitted's picture: the raster (Phong) view until a trace is asked for; then the traced tiles
+// over it as they come; back to the raster view when anything the trace depends on changes. The
+// ray tree is drawn over either.
+void Viewer::show_whitted(const Layout& l, const Camera& camera) {
+  const glm::ivec2 size = l.view_pixels;
+  if (state_.cancel_trace_requested) {
+    state_.cancel_trace_requested = false;
+    if (whitted_ && whitted_->cancel()) state_.note = "trace cancelled: back to the raster view";
+  }
+  if (state_.clear_ray_tree_requested) {
+    state_.clear_ray_tree_requested = false;
+    state_.ray_tree.reset();
+    if (tree_drawing_) tree_drawing_->clear();
+  }
+  if (state_.trace_requested && whitted_) whitted_->cancel();  // a fresh raster picture under the new trace
+  if (whitted_ && whitted_->showing() && whitted_->fingerprint() != view_fingerprint(camera, size)) {
+    if (whitted_->cancel()) state_.note = "the view changed: trace cancelled, back to the raster view";
+    else state_.note = "the view changed: back to the raster view (Enter traces it)";
+  }
+
+  if (!whitted_ || !whitted_->showing()) {
+    // The local model with the lecture's Phong shading, whatever flat / Gouraud was last used.
+    LocalOptions raster = state_.local;
+    raster.shading = Shading::phong;
+    picture_->bind();
+    renderer_->draw(camera, size.x, size.y, raster);
+  }
+  if (state_.trace_requested) {
+    state_.trace_requested = false;
+    if (!whitted_) whitted_ = std::make_unique<WhittedView>(*state_.scene);
+    whitted_->start(*state_.scene, camera, size.x, size.y, tracer_options(), *picture_);
+    state_.note = fmt::format("tracing {}x{}", size.x, size.y);
+  }
+  if (whitted_ && whitted_->showing()) {
+    const TracePhase before = whitted_->phase();
+    whitted_->update();
+    if (before == TracePhase::tracing && whitted_->phase() == TracePhase::done)
+      state_.note = fmt::format("traced in {:.2f} s", whitted_->seconds());
+    // The traced picture's colour over the picture; its depth stays the raster's of this very
+    // view (the trace is cancelled when the view changes), which the ray tree is tested against.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, whitted_->picture().id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture_->id());
+    glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    picture_->bind();
+  }
+  if (state_.ray_tree && tree_drawing_)
+    tree_drawing_->draw(camera, size.x, size.y, picture_far_plane(camera, *state_.scene), std::exp2(state_.exposure),
+                        l.scale.y);
+
+  TraceProgress& t = state_.trace;
+  if (whitted_) {
+    t.phase = whitted_->phase();
+    t.cancelled = whitted_->cancelled();
+    t.done = whitted_->tiles_done();
+    t.total = whitted_->tiles_total();
+    t.seconds = whitted_->seconds();
+    t.counters = whitted_->counters();
+  } else {
+    t = TraceProgress{};
+  }
 }
 
 void Viewer::update_inspector(const Layout& l, const Camera& camera) {
@@ -662,6 +832,7 @@ void Viewer::draw_windows(const Layout& l) {
     draw->AddLine(ImVec2(at.x, at.y - r), ImVec2(at.x, at.y + r), IM_COL32(255, 60, 200, 255), 2.0f);
   }
 
+  draw_trace_hint(state_, view_middle, 8.0f * ui_scale_);
   if (state_.show_help) draw_help(state_.show_help, view_middle, 0.45f * l.window.y);
   if (!state_.error.empty()) draw_load_error(state_, view_middle, 0.5f * l.window.y, l.window.x - l.view_origin.x);
 }

@@ -3,13 +3,13 @@
 namespace luz::app {
 namespace {
 
-// Whitted, radiosity and the hybrid are being written in their own issues; they flip
+// Radiosity and the hybrid are being written in their own issues; they flip
 // `available` when they land (and add their section in panel.cpp).
 constexpr ModelInfo table[] = {
     {Model::flat, "flat", "flat", true},
     {Model::gouraud, "gouraud", "Gouraud", true},
     {Model::phong, "phong", "Phong", true},
-    {Model::whitted, "whitted", "Whitted", false},
+    {Model::whitted, "whitted", "Whitted", true},
     {Model::radiosity, "radiosity", "radiosity", false},
     {Model::hybrid, "hybrid", "hybrid", false},
 };

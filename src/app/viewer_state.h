@@ -5,12 +5,16 @@
 // lights and materials, which the panel edits in place.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "core/scene.h"
 #include "local/local_options.h"
+#include "raytracing/counters.h"
+#include "raytracing/ray_tree.h"
+#include "raytracing/whitted_options.h"
 
 namespace luz::app {
 
@@ -26,6 +30,17 @@ struct ModelInfo {
 // The models on keys 1..6, in that order.
 std::span<const ModelInfo> models();
 const ModelInfo& info(Model model);
+
+// Whitted's picture: the raster view until a trace is asked for, then the tiles as they come.
+enum class TracePhase { raster, tracing, done };
+
+struct TraceProgress {
+  TracePhase phase = TracePhase::raster;
+  bool cancelled = false;  // the last trace stopped before its end (the view changed)
+  int done = 0, total = 0; // tiles
+  double seconds = 0.0;
+  rt::Counters counters;   // of the finished trace
+};
 
 // The panel's split of a light's RGB intensity into a colour and a scalar intensity.
 struct LightEdit {
@@ -44,6 +59,13 @@ struct ViewerState {
   bool free_camera = false;             // the orbit camera moved away from it
   int selected_material = -1;           // the panel's material section (-1: none yet)
 
+  // Whitted (model 4): the tracer's switches, the struct `luz render --model whitted` fills (its
+  // local terms and Blinn come from `local`, as the command takes them from the --no-TERM flags),
+  // the trace's progress, and the ray tree of the last clicked pixel (slide 24).
+  rt::WhittedOptions whitted;
+  TraceProgress trace;
+  std::optional<rt::RayTree> ray_tree;
+
   bool show_panel = true;
   bool show_help = false;
   bool show_inspector = true;
@@ -54,6 +76,9 @@ struct ViewerState {
   bool emitters_changed = false;   // an Le was edited: the area lights must be found again
   bool reload = false;
   bool back_to_scene_camera = false;
+  bool trace_requested = false;    // Enter, the Render button
+  bool cancel_trace_requested = false;
+  bool clear_ray_tree_requested = false;
 
   // For the status line.
   double frame_ms = 0.0;

@@ -33,6 +33,9 @@ struct WhittedOptions {
   float adaptive_threshold = 0.05f;  // adaptive: corners differing by more (sRGB-encoded) split
 
   int tile_size = 16;       // pixels per side of a tile, the unit of parallel work and progress
+
+  // The viewer tells a stale picture by it (options edited since the trace started).
+  bool operator==(const WhittedOptions&) const = default;
 };
 
 // The effective maximum depth (0 counts as 1, see max_depth).

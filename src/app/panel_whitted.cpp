@@ -1,0 +1,188 @@
+// The panel's Whitted section (model 4): the formula with its rays, the Render button, progress
+// and counters, the tracer's switches (the rt::WhittedOptions `luz render --model whitted` fills),
+// and the clicked pixel's ray tree (slide 24) as an indented list.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "app/panel.h"
+#include "app/ray_tree_drawing.h"
+#include "core/image.h"
+
+namespace luz::app {
+namespace {
+
+ImVec4 colour_of(rt::RayKind kind, bool blocked = false) {
+  const glm::vec3 c = ray_colour(kind, blocked);
+  return ImVec4(c.r, c.g, c.b, 1.0f);
+}
+
+void progress_and_counters(ViewerState& state) {
+  const TraceProgress& t = state.trace;
+  if (t.phase == TracePhase::tracing) {
+    if (ImGui::Button("cancel  [Backspace]")) state.cancel_trace_requested = true;
+  } else if (ImGui::Button(t.phase == TracePhase::done ? "render again  [Enter]" : "Render this view  [Enter]")) {
+    state.trace_requested = true;
+  }
+  const float fraction = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
+  const std::string label = t.phase == TracePhase::raster
+                                ? (t.cancelled ? fmt::format("cancelled at {}/{} tiles: raster view", t.done, t.total)
+                                               : std::string("raster view (Phong): not traced"))
+                                : fmt::format("{}/{} tiles  {:.2f} s", t.done, t.total, t.seconds);
+  ImGui::ProgressBar(t.phase == TracePhase::raster && !t.cancelled ? 0.0f : fraction, ImVec2(-1.0f, 0.0f),
+                     label.c_str());
+  if (t.phase != TracePhase::done) return;
+  const rt::Counters& c = t.counters;
+  // Two columns by hand: what, then its value at a fixed indent.
+  const float column = 12.0f * ImGui::GetFontSize();
+  auto row = [column](const ImVec4& colour, const std::string& what, const std::string& value) {
+    ImGui::TextColored(colour, "%s", what.c_str());
+    ImGui::SameLine(column);
+    ImGui::TextUnformatted(value.c_str());
+  };
+  for (int k = 0; k < rt::kRayKinds; ++k)
+    row(colour_of(rt::RayKind(k)), fmt::format("{} rays", rt::to_string(rt::RayKind(k))),
+        fmt::format("{}", c.rays[size_t(k)]));
+  const ImVec4 plain = ImGui::GetStyle().Colors[ImGuiCol_Text];
+  row(plain, "ray-triangle tests",
+      c.intersection_tests > 0 ? fmt::format("{}", c.intersection_tests) : std::string("not counted (Embree)"));
+  row(plain, "time", fmt::format("{:.3f} s", c.seconds));
+  row(plain, "rays per second", fmt::format("{:.2f} M", c.rays_per_second() / 1e6));
+}
+
+void options(ViewerState& state) {
+  rt::WhittedOptions& o = state.whitted;
+  ImGui::SliderInt("max depth", &o.max_depth, 0, 10);
+  ImGui::TextDisabled("primary ray: depth 1; a hit at depth d spawns R and T while d < max");
+  bool adaptive = o.sampling == rt::Sampling::adaptive;
+  ImGui::BeginDisabled(adaptive);
+  int root = std::clamp(int(std::lround(std::sqrt(float(std::max(o.spp, 1))))), 1, 8);
+  const std::string spp = fmt::format("{} ({}x{} jittered)", root * root, root, root);
+  if (ImGui::SliderInt("samples / pixel", &root, 1, 8, spp.c_str())) o.spp = root * root;  // squares only
+  ImGui::EndDisabled();
+  if (ImGui::Checkbox("adaptive supersampling (Whitted)", &adaptive))
+    o.sampling = adaptive ? rt::Sampling::adaptive : rt::Sampling::stratified;
+  if (adaptive) {
+    ImGui::SliderInt("levels", &o.adaptive_levels, 0, 4);
+    ImGui::DragFloat("threshold (sRGB)", &o.adaptive_threshold, 0.002f, 0.0f, 1.0f, "%.3f");
+  }
+  ImGui::Checkbox("Fresnel: kr + kt·F, kt·(1 - F)", &o.fresnel);
+  ImGui::Checkbox("shadow rays S_i", &o.shadows);
+  ImGui::SliderInt("samples per emitter", &o.light_samples, 1, 64);
+  ImGui::TextDisabled("1: its centroid; N: N-rooks over its area (soft shadows)");
+  ImGui::Checkbox("brute force (every triangle, counted)", &o.brute_force);
+  // The local part's terms: the same switches (and keys) as the local models'.
+  LocalOptions& l = state.local;
+  ImGui::Checkbox("Ia·ka [A]", &l.ambient);
+  ImGui::SameLine();
+  ImGui::Checkbox("kd [D]", &l.diffuse);
+  ImGui::SameLine();
+  ImGui::Checkbox("ks [S]", &l.specular);
+  ImGui::SameLine();
+  ImGui::Checkbox("Le [E]", &l.emission);
+  ImGui::Checkbox("kd texture [T]", &l.textures);
+  ImGui::SameLine();
+  ImGui::Checkbox("Blinn N·H [B]", &l.blinn);
+}
+
+// One node and, indented under it, the rays its hit spawned.
+std::string rgb(const Rgb& c) { return fmt::format("{:.3f} {:.3f} {:.3f}", c.r, c.g, c.b); }
+
+// A radiance as a swatch, encoded for the screen as the picture is (2^exposure, sRGB), its
+// numbers in the tooltip.
+void swatch(const char* id, const Rgb& radiance, float exposure) {
+  const float scale = std::exp2(exposure);
+  const ImVec4 shown(srgb_encode(radiance.r * scale), srgb_encode(radiance.g * scale), srgb_encode(radiance.b * scale), 1.0f);
+  const float side = ImGui::GetTextLineHeight();
+  ImGui::ColorButton(id, shown, ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(2.0f * side, side));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", rgb(radiance).c_str());
+}
+
+void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& children, int id, float exposure) {
+  const rt::RayTreeNode& n = tree.nodes[size_t(id)];
+  const bool shadow = n.kind == rt::RayKind::shadow;
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth;
+  if (children[size_t(id)].empty()) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_of(n.kind, shadow && n.hit));
+  const bool open = ImGui::TreeNodeEx(reinterpret_cast<void*>(intptr_t(id)), flags, "%s", rt::to_string(n.kind));
+  ImGui::PopStyleColor();
+  ImGui::TableNextColumn();
+  ImGui::Text("%d", n.depth);
+  ImGui::TableNextColumn();
+  if (shadow) ImGui::Text("light %d: %s", n.light, n.hit ? "blocked" : "lit");
+  else if (n.hit) ImGui::TextUnformatted(n.mesh.c_str());
+  else ImGui::TextDisabled("background");
+  if (ImGui::IsItemHovered())  // the hit cell: the ray itself
+    ImGui::SetTooltip("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s",
+                      n.origin.x, n.origin.y, n.origin.z, n.direction.x, n.direction.y, n.direction.z, n.t,
+                      n.material.c_str(), rgb(n.weight).c_str(), rgb(n.radiance).c_str());
+  ImGui::TableNextColumn();
+  if (!shadow && n.hit) swatch("local", n.local, exposure);
+  ImGui::TableNextColumn();
+  swatch("contribution", n.contribution, exposure);
+  if (open && !children[size_t(id)].empty()) {
+    for (int child : children[size_t(id)]) node_row(tree, children, child, exposure);
+    ImGui::TreePop();
+  }
+}
+
+void ray_tree(ViewerState& state) {
+  if (!ImGui::TreeNodeEx("ray tree (slide 24)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!state.ray_tree) {
+    ImGui::TextDisabled("click a pixel: its rays are drawn over the scene");
+    ImGui::TreePop();
+    return;
+  }
+  const rt::RayTree& tree = *state.ray_tree;
+  ImGui::Text("pixel (%d, %d): %zu rays, L = %s", tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
+  if (ImGui::SmallButton("clear [X]")) state.clear_ray_tree_requested = true;
+  std::vector<std::vector<int>> children(tree.nodes.size());
+  for (const rt::RayTreeNode& n : tree.nodes)
+    if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_SizingStretchProp;
+  const float height = ImGui::GetTextLineHeightWithSpacing() * float(std::min<size_t>(tree.nodes.size() + 1, 14));
+  // A narrower indent than the panel's: a tree of depth 5 still shows its kinds.
+  ImGui::PushStyleVar(ImGuiStyleVar_IndentSpacing, 0.6f * ImGui::GetFontSize());
+  if (ImGui::BeginTable("ray tree", 5, flags, ImVec2(0.0f, height))) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    // Shares of the panel's width: the tree's indentation needs the most.
+    ImGui::TableSetupColumn("ray", ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch, 0.25f);
+    ImGui::TableSetupColumn("hit", ImGuiTableColumnFlags_WidthStretch, 1.5f);
+    ImGui::TableSetupColumn("local", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableHeadersRow();
+    for (const rt::RayTreeNode& n : tree.nodes)
+      if (n.parent < 0) node_row(tree, children, n.id, state.exposure);
+    ImGui::EndTable();
+  }
+  ImGui::PopStyleVar();
+  ImGui::TextDisabled("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
+  ImGui::TextDisabled("share: its contribution to L (hover for numbers)");
+  ImGui::TreePop();
+}
+
+}  // namespace
+
+void whitted_section(ViewerState& state) {
+  ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
+  ImGui::TextUnformatted("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
+  ImGui::Spacing();
+  progress_and_counters(state);
+  ImGui::Spacing();
+  ray_tree(state);
+  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
+    options(state);
+    ImGui::TreePop();
+  }
+}
+
+}  // namespace luz::app
