@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
+#include "raytracing/diffuse_source.h"
 
 namespace luz::app {
 
@@ -18,9 +19,11 @@ struct WhittedResult {
   std::optional<std::string> ray_tree;  // JSON, when --ray-tree was given
 };
 
-// Throws luz::Error (usage) when the --ray-tree pixel lies outside the image.
+// Throws luz::Error (usage) when the --ray-tree pixel lies outside the image. With `diffuse`
+// (the hybrid, render_hybrid.h) the tracer takes the diffuse part of every hit from it.
 WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
-                             const RenderSettings& settings);
+                             const RenderSettings& settings,
+                             const rt::DiffuseSource* diffuse = nullptr);
 
 // Where --ray-tree's JSON goes: beside the image, `<out without extension>.ray-tree.json`.
 std::filesystem::path ray_tree_path(const std::filesystem::path& out);
