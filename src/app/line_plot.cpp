@@ -43,6 +43,7 @@ constexpr Glyph kFont[] = {
     {'/', {0x20, 0x10, 0x08, 0x04, 0x02}}, {'=', {0x14, 0x14, 0x14, 0x14, 0x14}},
     {'|', {0x00, 0x00, 0x7F, 0x00, 0x00}}, {',', {0x00, 0x80, 0x60, 0x00, 0x00}},
     {'+', {0x08, 0x08, 0x3E, 0x08, 0x08}}, {':', {0x00, 0x36, 0x36, 0x00, 0x00}},
+    {'*', {0x14, 0x08, 0x3E, 0x08, 0x14}},
 };
 
 const Glyph* glyph_of(char c) {
@@ -150,7 +151,12 @@ Image plot(const std::vector<PlotPanel>& panels, int panel_width, int height) {
         // Clamped to the frame: a curve leaving the bottom stays on its edge.
         const glm::ivec2 q(std::clamp(x_of(std::max(p.x, panel.x_min)), left, right),
                            std::clamp(y_of(std::clamp(p.y, panel.y_min, panel.y_max)), top, bottom));
-        if (has_previous) line(image, previous, q, series.colour);
+        // A staircase: a method's value holds until its next iteration ends, so a Jacobi sweep
+        // shows as nothing changing for N rows, then a drop.
+        if (has_previous) {
+          line(image, previous, {q.x, previous.y}, series.colour);
+          line(image, {q.x, previous.y}, q, series.colour);
+        }
         previous = q;
         has_previous = true;
       }

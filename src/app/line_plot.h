@@ -26,7 +26,7 @@ struct PlotPanel {
   std::vector<PlotSeries> series;
 };
 
-// Panels side by side, each `panel_width` x `height` pixels, a legend of the first panel's
+// Each series is drawn as a staircase (a value holds until the next point). Panels side by side, each `panel_width` x `height` pixels, a legend of the first panel's
 // series under them.
 Image plot(const std::vector<PlotPanel>& panels, int panel_width, int height);
 
