@@ -48,5 +48,14 @@ done
   --out "$out/whitted-radiosity.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model radiosity --size 480x360 -q \
   --out "$out/phong_spheres-radiosity.png"
+# The hybrid (slides 41-43) on the Cornell spheres, beside radiosity and Whitted alone; the
+# radiosity solution is the same in the first and the last (3000 patches, 1% unshot).
+spheres="$root/scenes/cornell_spheres.gltf"
+"$luz" render "$spheres" --model radiosity --size 360x360 -q --out "$out/cornell_spheres-radiosity.png"
+"$luz" render "$spheres" --model whitted --spp 4 --fresnel --size 360x360 -q --out "$out/cornell_spheres-whitted.png"
+"$luz" render "$spheres" --model hybrid --spp 4 --fresnel --size 360x360 -q --out "$out/cornell_spheres-hybrid.png"
+# Slide 36: the four solvers' curves on the Cornell box (400 patches, 20 sweeps' worth of rows).
+"$luz" solvers "$root/scenes/cornell_box.gltf" -q --csv "$out/solvers-cornell_box.csv" \
+  --png "$out/solvers-cornell_box.png"
 "$root/docs/make_viewer_picture.sh" "$luz"
 echo "pictures in $out"

@@ -20,6 +20,7 @@ Sections
   [BUILDER]   GltfBuilder: buffers, accessors, materials, meshes, nodes, cameras, lights
   [GEOMETRY]  quads oriented by a wanted normal, UV spheres
   [CORNELL]   cornell_box.gltf   (Cornell Program of Computer Graphics, measured data)
+  [CORNELL SPHERES] cornell_spheres.gltf (the box with a mirror and a glass sphere: the hybrid)
   [SPHERES]   phong_spheres.gltf (ks along the columns, Phong exponent n along the rows)
   [WHITTED]   whitted.gltf       (Whitted 1980, "An Improved Illumination Model for Shaded Display")
   [EFFECTS]   local_effects.gltf (slide 19's other possibilities of the local models, one each)
@@ -35,7 +36,7 @@ import struct
 import sys
 
 GENERATOR = "luz scenes/generate.py"
-SCENE_FILES = ("cornell_box", "phong_spheres", "whitted", "local_effects")
+SCENE_FILES = ("cornell_box", "phong_spheres", "whitted", "local_effects", "cornell_spheres")
 
 
 # ==== [VECTORS] ================================================================================
@@ -488,8 +489,8 @@ def cornell_exposure():
     return round(ev * 2.0) / 2.0                                                    # 0.5
 
 
-def cornell_box():
-    g = GltfBuilder("cornell_box")
+def cornell_box(name="cornell_box", blocks=True):
+    g = GltfBuilder(name)
     materials = {
         "white": g.material("white", CORNELL_WHITE, ks=0.0),
         "red": g.material("red", CORNELL_RED, ks=0.0),
@@ -511,6 +512,8 @@ def cornell_box():
 
     # Blocks: one primitive per face, normals out of the block.
     for name, faces in (("short_block", CORNELL_SHORT_BLOCK), ("tall_block", CORNELL_TALL_BLOCK)):
+        if not blocks:
+            break
         block_centre = centroid([p for _, corners in faces for p in corners])
         primitives = [(quad_geometry(corners, sub(centroid(corners), block_centre)),
                        materials["white"]) for _, corners in faces]
@@ -529,6 +532,38 @@ def cornell_box():
     # shadows dark (~15 % of the lit floor) but not holes. Radiosity and hybrid ignore it.
     g.scene_extras(ambient=(0.02, 0.02, 0.02), background=(0.0, 0.0, 0.0),
                    exposure=cornell_exposure())
+    return g
+
+
+# ==== [CORNELL SPHERES] ========================================================================
+# The Cornell box without its blocks, a mirror sphere at the back on the left (red) side and a
+# glass sphere in front on the right, resting on the floor: the placement of H. W. Jensen's
+# classic pictures ("Global Illumination using Photon Maps", 1996), the standard demonstration of
+# why diffuse interreflection (radiosity) and mirror and glass (rays) are combined: radiosity
+# alone shows two dull spheres, Whitted alone a black ceiling and mirrored walls without their
+# colour bleeding; the hybrid shows both.
+
+SPHERES_RADIUS_MM = 110.0
+MIRROR_SPHERE_MM = (390.0, SPHERES_RADIUS_MM, 370.0)
+GLASS_SPHERE_MM = (175.0, SPHERES_RADIUS_MM, 190.0)
+# Few enough triangles that radiosity (at least one patch per triangle) stays quick to solve.
+CORNELL_SPHERE_SEGMENTS, CORNELL_SPHERE_RINGS = 32, 20
+
+
+def cornell_spheres():
+    g = cornell_box("cornell_spheres", blocks=False)
+    # Mirror: kd + kr = 0.95, a tight highlight of the lamp.
+    mirror = g.material("mirror", (0.05, 0.05, 0.05), ks=0.4, shininess=300.0,
+                        roughness=roughness_for_shininess(300.0), kr=0.9)
+    # Glass: kd + kr + kt = 0.97, eta 1.5 (the --fresnel switch splits kt further).
+    glass = g.material("glass", (0.02, 0.02, 0.02), ks=0.5, shininess=400.0,
+                       roughness=roughness_for_shininess(400.0), kr=0.05, kt=0.9, ior=1.5,
+                       transmission_extension=True)
+    radius = SPHERES_RADIUS_MM * MM
+    for name, centre, material in (("mirror_sphere", MIRROR_SPHERE_MM, mirror),
+                                   ("glass_sphere", GLASS_SPHERE_MM, glass)):
+        sphere = g.geometry(*uv_sphere(radius, CORNELL_SPHERE_SEGMENTS, CORNELL_SPHERE_RINGS))
+        g.mesh_node(name, g.mesh(name, [(sphere, material)]), scale(centre, MM))
     return g
 
 
@@ -977,7 +1012,7 @@ def main(argv):
 
     if args.check is None:
         os.makedirs(args.out, exist_ok=True)
-        for build in (cornell_box, phong_spheres, whitted, local_effects):
+        for build in (cornell_box, phong_spheres, whitted, local_effects, cornell_spheres):
             build().write(args.out)
         folder = args.out
     else:

@@ -29,7 +29,9 @@ constexpr const char* kScenes[] = {"cornell_box", "phong_spheres", "whitted", "l
 constexpr const char* kModels[] = {"flat", "gouraud", "phong"};
 
 // Small pictures at each camera's aspect ratio; update_goldens.sh uses the same sizes.
-std::string size_of(const std::string& scene) { return scene == "cornell_box" ? "120x120" : "160x120"; }
+std::string size_of(const std::string& scene) {
+  return scene == "cornell_box" || scene == "cornell_spheres" ? "120x120" : "160x120";
+}
 
 // Every switch of slide 19 on, as the local_effects golden and the README's picture have them.
 const std::vector<std::string> kEffectFlags = {"--shadows", "--transparency", "--reflection-map", "--fog", "linear",
@@ -114,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, Snapshot,
 
 // The Whitted tracer (default settings: depth 5, 1 sample per pixel, centroid area lights) is
 // deterministic, so the same golden tolerance holds; update_goldens.sh renders the same list.
-constexpr const char* kTracedScenes[] = {"whitted", "cornell_box"};
+constexpr const char* kTracedScenes[] = {"whitted", "cornell_box", "cornell_spheres"};
 constexpr const char* kTracedModels[] = {"whitted"};
 INSTANTIATE_TEST_SUITE_P(Traced, Snapshot,
                          testing::Combine(testing::ValuesIn(kTracedScenes), testing::ValuesIn(kTracedModels)),
@@ -126,6 +128,7 @@ INSTANTIATE_TEST_SUITE_P(Traced, Snapshot,
 std::vector<std::string> radiosity_flags(const std::string& scene) {
   if (scene == "cornell_box") return {"--patch-size", "0.1", "--hemicube-res", "64"};
   if (scene == "whitted") return {"--patch-size", "0.25", "--hemicube-res", "64", "--converge", "0.02"};
+  if (scene == "cornell_spheres") return {"--patch-size", "0.12", "--hemicube-res", "64", "--converge", "0.02"};
   return {"--patch-size", "0.1", "--hemicube-res", "64"};
 }
 
@@ -155,8 +158,22 @@ TEST_P(RadiositySnapshot, MatchesItsGolden) {
 
 // The slide-19 plate is for the local models (its sun is not shot, and its spheres alone make
 // some 17k patches): radiosity's snapshots are the three lecture scenes.
-constexpr const char* kRadiosityScenes[] = {"cornell_box", "phong_spheres", "whitted"};
+constexpr const char* kRadiosityScenes[] = {"cornell_box", "phong_spheres", "whitted", "cornell_spheres"};
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, RadiositySnapshot, testing::ValuesIn(kRadiosityScenes));
+
+// ---- Hybrid (slides 41-43) -------------------------------------------------------------------
+// The radiosity solve with radiosity_flags(), then the tracer at its defaults; deterministic
+// (seeded hemicube rotations, seeded samples), so the golden tolerance above holds.
+class HybridSnapshot : public testing::TestWithParam<const char*> {};
+
+TEST_P(HybridSnapshot, MatchesItsGolden) {
+  const std::string scene = GetParam();
+  test::ScratchDir dir;
+  expect_golden(render(dir, scene, "hybrid", ".png", radiosity_flags(scene)), scene + "-hybrid");
+}
+
+constexpr const char* kHybridScenes[] = {"cornell_spheres"};
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridSnapshot, testing::ValuesIn(kHybridScenes));
 
 float red_over_green(const Rgb& c) { return c.r / c.g; }
 

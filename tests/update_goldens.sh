@@ -18,9 +18,9 @@ for scene in cornell_box phong_spheres whitted local_effects; do
   done
 done
 # The Whitted tracer (kTracedScenes in tests/test_snapshots.cpp), default settings.
-for scene in whitted cornell_box; do
+for scene in whitted cornell_box cornell_spheres; do
   size=160x120
-  [ "$scene" = cornell_box ] && size=120x120
+  [ "$scene" = cornell_box ] || [ "$scene" = cornell_spheres ] && size=120x120
   "$luz" render "$root/scenes/$scene.gltf" --model whitted --size "$size" -q \
     --out "$golden/$scene-whitted.png"
 done
@@ -37,4 +37,9 @@ done
   --patch-size 0.1 --hemicube-res 64 --out "$golden/phong_spheres-radiosity.png"
 "$luz" render "$root/scenes/whitted.gltf" --model radiosity --size 160x120 -q \
   --patch-size 0.25 --hemicube-res 64 --converge 0.02 --out "$golden/whitted-radiosity.png"
+"$luz" render "$root/scenes/cornell_spheres.gltf" --model radiosity --size 120x120 -q \
+  --patch-size 0.12 --hemicube-res 64 --converge 0.02 --out "$golden/cornell_spheres-radiosity.png"
+# The hybrid (HybridSnapshot in tests/test_snapshots.cpp): the radiosity flags, tracer defaults.
+"$luz" render "$root/scenes/cornell_spheres.gltf" --model hybrid --size 120x120 -q \
+  --patch-size 0.12 --hemicube-res 64 --converge 0.02 --out "$golden/cornell_spheres-hybrid.png"
 echo "goldens written to $golden"

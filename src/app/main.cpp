@@ -11,6 +11,7 @@
 
 #include "app/bench_command.h"
 #include "app/render_command.h"
+#include "app/solvers_command.h"
 #include "app/resources.h"
 #include "app/script.h"
 #include "app/viewer.h"
@@ -98,10 +99,10 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
   luz::rt::WhittedOptions& w = settings.whitted;
   std::vector<CLI::Option*> flags;
   flags.push_back(render.add_option("--depth", w.max_depth,
-      "whitted: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
+      "whitted/hybrid: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
       "reflected or transmitted rays)")->check(CLI::Range(0, 64))->capture_default_str());
   flags.push_back(render.add_option("--spp", w.spp,
-      "whitted: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...")
+      "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...")
       ->check(CLI::Validator([](std::string& text) {
         int n = 0;
         if (!CLI::detail::lexical_cast(text, n) || !luz::rt::is_square(n) || n > 4096)
@@ -109,16 +110,16 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
         return std::string();
       }, "SQUARE"))->capture_default_str());
   flags.push_back(render.add_flag_callback("--adaptive", [&w] { w.sampling = luz::rt::Sampling::adaptive; },
-      "whitted: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of --spp)"));
+      "whitted/hybrid: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of --spp)"));
   flags.push_back(render.add_flag("--fresnel", w.fresnel,
-      "whitted: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"));
+      "whitted/hybrid: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"));
   flags.push_back(render.add_option("--light-samples", w.light_samples,
-      "whitted: shadow rays per emissive triangle (1: its centroid; N: soft shadows)")
+      "whitted/hybrid: shadow rays per emissive triangle (1: its centroid; N: soft shadows)")
       ->check(CLI::Range(1, 1024))->capture_default_str());
   flags.push_back(render.add_flag("--brute-force", w.brute_force,
-      "whitted: test every ray against every triangle instead of Embree's BVH (counts the tests)"));
+      "whitted/hybrid: test every ray against every triangle instead of Embree's BVH (counts the tests)"));
   flags.push_back(render.add_flag_callback("--no-shadows", [&w] { w.shadows = false; },
-      "whitted: no shadow rays (every light unoccluded)"));
+      "whitted/hybrid: no shadow rays (every light unoccluded)"));
   flags.push_back(render.add_option_function<std::string>(
       "--ray-tree",
       [&settings](const std::string& text) {
@@ -127,7 +128,7 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
           throw CLI::ValidationError("--ray-tree", "expected a pixel X,Y, e.g. 320,240");
         settings.ray_tree = std::make_pair(x, y);
       },
-      "whitted: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"));
+      "whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"));
   return flags;
 }
 
@@ -138,16 +139,16 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
   std::vector<CLI::Option*> flags;
   CLI::Option* shots = render.add_option_function<int>(
       "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
-      "Radiosity: stop after N shots (lights included)")->check(CLI::PositiveNumber);
+      "radiosity/hybrid: stop after N shots (lights included)")->check(CLI::PositiveNumber);
   CLI::Option* converge = render.add_option_function<float>(
       "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
-      fmt::format("Radiosity: stop when the unshot power is below EPS x the emitted power "
+      fmt::format("radiosity/hybrid: stop when the unshot power is below EPS x the emitted power "
                   "(default {})", defaults.converge))
       ->check(CLI::Range(1e-9, 1.0));
   shots->excludes(converge);
   flags = {shots, converge};
   flags.push_back(render.add_option("--patch-size", r.patch_size,
-                                    fmt::format("Radiosity: longest patch edge, metres (default: "
+                                    fmt::format("radiosity/hybrid: longest patch edge, metres (default: "
                                                 "about {} patches)", defaults.target_patches))
                       ->check(CLI::PositiveNumber));
   flags.push_back(render.add_option_function<int>(
@@ -156,16 +157,16 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
         if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
         r.hemicube_res = n;
       },
-      fmt::format("Radiosity: hemicube resolution, pixels across its top face ({} .. {}, even; "
+      fmt::format("radiosity/hybrid: hemicube resolution, pixels across its top face ({} .. {}, even; "
                   "default {})", luz::kMinHemicubeRes, luz::kMaxHemicubeRes, defaults.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
   flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
-                                  "Radiosity: add Cohen's ambient term for the light not yet shot"));
+                                  "radiosity/hybrid: add Cohen's ambient term for the light not yet shot"));
   flags.push_back(render.add_flag("--flat-patches", r.flat_patches,
-                                  "Radiosity: one colour per patch instead of Gouraud shading"));
-  flags.push_back(render.add_flag("--outlines", r.outlines, "Radiosity: draw the patch edges"));
+                                  "radiosity: one colour per patch instead of Gouraud shading"));
+  flags.push_back(render.add_flag("--outlines", r.outlines, "radiosity: draw the patch edges"));
   flags.push_back(render.add_option("--csv", settings.csv,
-                                    "Radiosity: write the unshot power after every shot to this CSV file"));
+                                    "radiosity/hybrid: write the unshot power after every shot to this CSV file"));
   return flags;
 }
 
@@ -200,9 +201,40 @@ int main(int argc, char** argv) {
 
   RenderSettings settings;
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
+  render->footer("--model hybrid (slides 41-43) takes the whitted flags and the radiosity flags "
+                 "(all but --flat-patches and --outlines): the diffuse part of every hit from the "
+                 "radiosity solution, highlights, kr*Ir and kt*It from rays, no ambient term.");
   add_render_flags(*render, settings);
   const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
   const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
+
+  luz::app::SolversSettings solvers_settings;
+  CLI::App* solvers = app.add_subcommand(
+      "solvers", "Slide 36: Jacobi, Gauss-Seidel and Southwell on the full form-factor matrix, beside "
+                 "slide 39's shooting; writes their convergence curves");
+  solvers->add_option("SCENE", solvers_settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+  solvers->add_option("--csv", solvers_settings.csv,
+                      "Curves as CSV: method,iteration,rows,seconds,residual,error")->required();
+  solvers->add_option("--png", solvers_settings.png, "Plot of the curves (residual and error against rows)");
+  CLI::Option* solver_patch_size = solvers->add_option("--patch-size", solvers_settings.patch_size,
+                                                       "Longest patch edge, metres")->check(CLI::PositiveNumber);
+  CLI::Option* solver_patches = solvers->add_option("--patches", solvers_settings.patches,
+      fmt::format("About this many patches (at most {})", luz::app::kMaxSolverPatches))
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  solver_patch_size->excludes(solver_patches);
+  solvers->add_option_function<int>(
+      "--hemicube-res",
+      [&solvers_settings](int n) {
+        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
+        solvers_settings.hemicube_res = n;
+      },
+      fmt::format("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
+                  luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes));
+  solvers->add_option("--iterations", solvers_settings.iterations,
+                      "Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows")
+      ->check(CLI::Range(1, 10000))->capture_default_str();
+  solvers->add_flag("-q,--quiet", solvers_settings.quiet, "Print nothing on success");
 
   luz::app::WhittedBenchSettings bench_settings;
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
@@ -238,6 +270,7 @@ int main(int argc, char** argv) {
       if (flag->count() > 0) settings.radiosity_only_flags.push_back(flag->get_name());
     return luz::app::run_render(settings);
   }
+  if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
 

@@ -53,11 +53,9 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
 
 }  // namespace
 
-Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
-                       const RenderSettings& settings) {
-  const RadiosityOptions& options = settings.radiosity;
-  const PatchMesh mesh = PatchMesh::build(scene, options);
-  ProgressiveSolver solver(scene, mesh, options);
+void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& settings) {
+  const RadiosityOptions& options = solver.options();
+  const PatchMesh& mesh = solver.mesh();
   for (const std::string& warning : solver.warnings()) fmt::print(stderr, "warning: {}\n", warning);
 
   const bool bar = !settings.quiet && isatty(fileno(stderr));
@@ -78,6 +76,14 @@ Image render_radiosity(const Scene& scene, const Camera& camera, int width, int 
                "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.size(), mesh.max_edge,
                options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
                solver.history().back().seconds);
+}
+
+Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
+                       const RenderSettings& settings) {
+  const RadiosityOptions& options = settings.radiosity;
+  const PatchMesh mesh = PatchMesh::build(scene, options);
+  ProgressiveSolver solver(scene, mesh, options);
+  run_radiosity_solver(solver, settings);
 
   RadiosityRenderer renderer(scene, mesh);
   renderer.update(RadianceField::of(solver), options);

@@ -5,11 +5,16 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
+#include "radiosity/shooting.h"
 
 namespace luz::app {
 
 // Needs a current GL context. Shows a progress bar on stderr when it is a terminal (unless
 // settings.quiet), writes settings.csv when given. Throws luz::Error.
+// Steps `solver` to its stopping rule with that progress bar, then writes settings.csv and the
+// summary line (the hybrid solves its radiosity the same way).
+void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& settings);
+
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings);
 

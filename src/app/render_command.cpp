@@ -1,5 +1,6 @@
 #include "app/render_command.h"
 #include "app/radiosity_command.h"
+#include "app/render_hybrid.h"
 #include "app/render_whitted.h"
 
 #include <chrono>
@@ -105,13 +106,18 @@ int run_render(const RenderSettings& settings) {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
       throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                                 settings.local.fog.far, settings.local.fog.near));
-    if (settings.model != "radiosity" && !settings.radiosity_only_flags.empty())
-      throw Error(ErrorKind::usage, fmt::format("{}: only with --model radiosity",
-                                                settings.radiosity_only_flags.front()));
+    // The hybrid takes both models' flags, except the radiosity picture's own display switches.
+    const bool hybrid = settings.model == "hybrid";
+    for (const std::string& flag : settings.radiosity_only_flags) {
+      const bool display_only = flag == "--flat-patches" || flag == "--outlines";
+      if (settings.model != "radiosity" && (!hybrid || display_only))
+        throw Error(ErrorKind::usage, fmt::format("{}: only with --model radiosity{}", flag,
+                                                  display_only ? "" : " or hybrid"));
+    }
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
-    if (settings.model != "whitted" && !settings.whitted_only_flags.empty())
-      throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted",
+    if (settings.model != "whitted" && !hybrid && !settings.whitted_only_flags.empty())
+      throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted or hybrid",
                                                 settings.whitted_only_flags.front()));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
@@ -133,6 +139,9 @@ int run_render(const RenderSettings& settings) {
     WhittedResult traced;
     if (settings.model == "whitted") {
       traced = render_whitted(scene, camera, width, height, settings);  // no GL needed
+      image = std::move(traced.image);
+    } else if (hybrid) {
+      traced = render_hybrid(scene, camera, width, height, settings);
       image = std::move(traced.image);
     } else if (settings.model == "radiosity") {
       gl::OffscreenContext context;

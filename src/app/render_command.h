@@ -13,7 +13,7 @@ namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity
+  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity | hybrid
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
@@ -22,7 +22,8 @@ struct RenderSettings {
   LocalOptions local;
   RadiosityOptions radiosity;
   std::string csv;               // radiosity: the residual history, one row per shot
-  std::vector<std::string> radiosity_only_flags;  // radiosity-only flags given (usage error otherwise)
+  std::vector<std::string> radiosity_only_flags;  // radiosity flags given (usage error unless
+                                                  // radiosity or hybrid)
   bool quiet = false;
   // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`),
   // the pixel whose ray tree is written beside the image, and which whitted-only flags were given
@@ -33,7 +34,7 @@ struct RenderSettings {
 };
 
 // The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity"};
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity", "hybrid"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);

@@ -1,6 +1,8 @@
 #include "app/render_whitted.h"
 
 #include <cstdio>
+#include <string>
+#include <utility>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -15,7 +17,7 @@ namespace {
 // "whitted [##########..........]  52%" on stderr, rewritten in place; only on a terminal.
 class ProgressBar {
 public:
-  explicit ProgressBar(bool on) : on_(on) {}
+  ProgressBar(bool on, std::string label) : on_(on), label_(std::move(label)) {}
   void update(int done, int total) {
     if (!on_) return;
     const int percent = total > 0 ? 100 * done / total : 100;
@@ -23,7 +25,7 @@ public:
     shown_ = percent;
     constexpr int width = 40;
     const int filled = width * percent / 100;
-    fmt::print(stderr, "\rwhitted [{}{}] {:3}%", std::string(size_t(filled), '#'),
+    fmt::print(stderr, "\r{} [{}{}] {:3}%", label_, std::string(size_t(filled), '#'),
                std::string(size_t(width - filled), '.'), percent);
     if (done == total) fmt::print(stderr, "\n");
     std::fflush(stderr);
@@ -31,6 +33,7 @@ public:
 
 private:
   bool on_;
+  std::string label_;
   int shown_ = -1;
 };
 
@@ -53,16 +56,17 @@ std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
 }
 
 WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
-                             const RenderSettings& settings) {
+                             const RenderSettings& settings, const rt::DiffuseSource* diffuse) {
   if (settings.ray_tree) {
     const auto [x, y] = *settings.ray_tree;
     if (x < 0 || y < 0 || x >= width || y >= height)
       throw Error(ErrorKind::usage, fmt::format("--ray-tree {},{}: outside the {}x{} image", x, y,
                                                 width, height));
   }
-  const rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
+  rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
+  options.diffuse_source = diffuse;
   rt::WhittedRenderer tracer(scene);
-  ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO));
+  ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO), settings.model);
   WhittedResult result;
   result.image = tracer.render(camera, width, height, options,
                                [&bar](const rt::TileDone& done) { bar.update(done.done, done.total); });

@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
+#include "raytracing/diffuse_source.h"
 
 namespace luz::app {
 
@@ -22,9 +23,11 @@ struct WhittedResult {
 // local terms' switches (--no-TERM, --blinn; the panel's term checkboxes) applied to its local part.
 rt::WhittedOptions tracer_options(const rt::WhittedOptions& whitted, const LocalOptions& local);
 
-// Throws luz::Error (usage) when the --ray-tree pixel lies outside the image.
+// Throws luz::Error (usage) when the --ray-tree pixel lies outside the image. With `diffuse`
+// (the hybrid, render_hybrid.h) the tracer takes the diffuse part of every hit from it.
 WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
-                             const RenderSettings& settings);
+                             const RenderSettings& settings,
+                             const rt::DiffuseSource* diffuse = nullptr);
 
 // Where --ray-tree's JSON goes: beside the image, `<out without extension>.ray-tree.json`.
 std::filesystem::path ray_tree_path(const std::filesystem::path& out);

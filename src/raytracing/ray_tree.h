@@ -27,6 +27,7 @@ struct RayTreeNode {
   int light = -1;         // shadow rays: index into Scene::lights, or lights + area light index
   Rgb weight{1.0f};       // what the parent multiplies this ray's radiance by (kr, kt, 1/spp; S_i)
   Rgb local{0.0f};        // the local part at the hit: Ia*ka + sum S_i IL_i [...] + Le
+                          // (hybrid: B/pi + sum S_i IL_i ks cos^n(alpha))
   Rgb radiance{0.0f};     // what the ray returns (shadow ray: the light's term if unblocked)
   Rgb contribution{0.0f}; // its share of the pixel: the weights down the tree x radiance
 };

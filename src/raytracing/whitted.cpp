@@ -72,14 +72,29 @@ Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb
 
 // ---- [Color] ------------------------------------------------------------------------------------
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
+// Hybrid (options_.diffuse_source set):
+// I = B/pi (radiosity, interpolated)  + sum_i S_i * IL_i * ks*cos^n(alpha)  + kr*Ir + kt*It
 Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared) {
   const Material& o = *p.material;
   const glm::vec3 V = -ray.direction;
 
-  // "color := color ambiental"
-  Rgb color = options_.ambient ? scene_.ambient * o.ka : Rgb(0.0f);
-  // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
-  if (options_.emission && p.front) color += o.emission;
+  Rgb color(0.0f);
+  if (!options_.diffuse_source) {
+    // "color := color ambiental"
+    if (options_.ambient) color = scene_.ambient * o.ka;
+    // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
+    if (options_.emission && p.front) color += o.emission;
+  } else if (options_.diffuse && p.front) {
+    // The hybrid (slides 41-43): the diffuse part comes from the radiosity solution, B/pi
+    // interpolated across the patches, which already holds everything view-independent:
+    // Le (B = E + rho H with E = pi Le), the direct light of every source with its shadows, and
+    // the interreflections Whitted's model lacks (so no ambient term). Only a surface's front
+    // receives and emits in radiosity; a back face adds nothing here, as the radiosity picture
+    // draws it black. The rest below is view-dependent and comes from rays: the lights add only
+    // their highlights IL ks cos^n(alpha) (add_light leaves kd out), then kr*Ir and kt*It, whose
+    // hits are shaded by this same rule.
+    color = options_.diffuse_source->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
+  }
   // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's
   // term (the renderer may have prepared the terms and traced the shadow rays already).
   if (prepared) {
@@ -174,7 +189,8 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
   const Material& o = *p.material;
   Rgb term(0.0f);
-  if (options_.diffuse) term += IL * kd_at(p) * cos_theta;  // I_D = IL kd cos(theta)
+  // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
+  if (options_.diffuse && !options_.diffuse_source) term += IL * kd_at(p) * cos_theta;
   if (options_.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
     const float cos_alpha = options_.blinn
@@ -255,6 +271,7 @@ SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
   // The hit point from the barycentrics: its error is a few ULPs of the vertices' coordinates,
   // which is what offset_origin's offsets are sized for (o + t d would add t's error).
   p.position = w * p0 + hit.u * p1 + hit.v * p2;
+  p.barycentrics = glm::vec2(hit.u, hit.v);
   const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));  // counter-clockwise front
   p.front = glm::dot(face, ray.direction) < 0.0f;
   p.geometric = p.front ? face : -face;

@@ -20,6 +20,7 @@
 #include "core/camera.h"
 #include "core/scene.h"
 #include "raytracing/counters.h"
+#include "raytracing/diffuse_source.h"
 #include "raytracing/intersector.h"
 #include "raytracing/ray.h"
 #include "raytracing/ray_tree.h"
@@ -35,6 +36,7 @@ struct SurfacePoint {
   glm::vec3 N{0.0f};         // unit shading normal (interpolated), turned to the ray's side
   bool front = true;         // the ray hit the counter-clockwise (glTF front) face
   glm::vec2 uv{0.0f};
+  glm::vec2 barycentrics{0.0f};  // (u, v) of the hit: point = A + u (B - A) + v (C - A)
   const Material* material = nullptr;
   int mesh = -1;
   int triangle = -1;

@@ -1,0 +1,29 @@
+#include "hybrid/radiosity_diffuse.h"
+
+#include <cassert>
+#include <utility>
+
+namespace luz::hybrid {
+
+RadiosityDiffuse::RadiosityDiffuse(const PatchMesh& mesh, RadianceField field)
+    : mesh_(mesh), field_(std::move(field)) {
+  assert(field_.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
+}
+
+void RadiosityDiffuse::update(RadianceField field) {
+  assert(field.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
+  field_ = std::move(field);
+}
+
+Rgb RadiosityDiffuse::diffuse_radiance(int mesh, int triangle, glm::vec2 barycentrics) const {
+  // B/pi at the hit, Gouraud-interpolated from the patch's vertices (nodal averages), as the
+  // radiosity picture shows that point.
+  return field_.at(mesh_, mesh, triangle, barycentrics);
+}
+
+rt::WhittedOptions hybrid_options(rt::WhittedOptions options, const rt::DiffuseSource& source) {
+  options.diffuse_source = &source;
+  return options;
+}
+
+}  // namespace luz::hybrid
