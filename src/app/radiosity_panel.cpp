@@ -59,10 +59,11 @@ void unshot_plot(RadiosityState& r) {
   for (const float v : s.plot) low = std::min(low, v);
   low = std::floor(low * 2.0f - 0.25f) / 2.0f;  // a little room under the lowest point
   const float high = 0.1f;
-  const std::string overlay = fmt::format("unshot {:.2f} % after {} shots", 100.0 * s.unshot_fraction, s.shots);
-  ImGui::TextDisabled("unshot power / emitted (log scale) against shots");
-  ImGui::PlotLines("##unshot", s.plot.data(), int(s.plot.size()), 0, overlay.c_str(), low, high,
+  ImGui::TextDisabled("unshot power / emitted (log scale) against shots 0 .. %d", s.shots);
+  ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));  // brighter than the default grey
+  ImGui::PlotLines("##unshot", s.plot.data(), int(s.plot.size()), 0, nullptr, low, high,
                    ImVec2(ImGui::GetContentRegionAvail().x, 6.0f * ImGui::GetFontSize()));  // 1.86: no -1
+  ImGui::PopStyleColor();
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   s.plot_min = glm::vec2(min.x, min.y);
   s.plot_max = glm::vec2(max.x, max.y);

@@ -25,7 +25,7 @@ bool RadiosityView::built_for(const RadiosityOptions& o) const {
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------
-void RadiosityView::advance(RadiosityState& state) {
+void RadiosityView::advance(RadiosityState& state, float exposure) {
   RadiosityDrive& drive = state.drive;
   // Everything but the mesh and the hemicube may change between shots (shooting.h).
   RadiosityOptions& o = solver_.options();
@@ -95,11 +95,21 @@ void RadiosityView::advance(RadiosityState& state) {
   // Step 3: what every patch shows, uploaded again after the shots (or a change of display).
   const bool display_changed = drive.heat_map != heat_map_shown_ ||
                                o.flat_patches != shown_with_.flat_patches ||
-                               o.ambient_estimate != shown_with_.ambient_estimate;
+                               o.ambient_estimate != shown_with_.ambient_estimate ||
+                               (drive.heat_map && exposure != exposure_shown_);
   if (colours_stale_ || display_changed) {
-    renderer_.update(drive.heat_map ? RadianceField::unshot_heat_map(solver_) : RadianceField::of(solver_), o);
+    RadianceField field = drive.heat_map ? RadianceField::unshot_heat_map(solver_) : RadianceField::of(solver_);
+    if (drive.heat_map) {
+      // The display pass multiplies by 2^exposure: divide it out here so the ramp's colours are
+      // those of RadianceField::unshot_heat_map whatever the scene's exposure.
+      const float undo = std::exp2(-exposure);
+      for (Rgb& c : field.patch) c *= undo;
+      for (Rgb& c : field.vertex) c *= undo;
+    }
+    renderer_.update(field, o);
     colours_stale_ = false;
     heat_map_shown_ = drive.heat_map;
+    exposure_shown_ = exposure;
     shown_with_ = o;
   }
   // The overlay: the item buffer of the last patch that shot (lights shoot through their own cube).

@@ -37,7 +37,8 @@ public:
   bool built_for(const RadiosityOptions& options) const;
 
   // This frame's shooting (see above). Fills state.status; clears the requests it did.
-  void advance(RadiosityState& state);
+  // `exposure`: the viewer's, taken out of the heat map so its ramp shows as it is.
+  void advance(RadiosityState& state, float exposure);
 
   // The picture into the bound framebuffer, width x height pixels.
   void draw(const Camera& camera, int width, int height, const RadiosityState& state);
@@ -60,6 +61,7 @@ private:
 
   bool colours_stale_ = true;     // the solution changed since the colours were uploaded
   bool heat_map_shown_ = false;   // what the uploaded colours are ...
+  float exposure_shown_ = 0.0f;
   RadiosityOptions shown_with_;   // ... and with which display switches
   int item_view_shot_ = -1;       // the shot whose item buffer the overlay shows
 

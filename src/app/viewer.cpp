@@ -775,7 +775,7 @@ void Viewer::show_radiosity(const Layout& l, const Camera& camera) {
     }
   }
   const bool was_running = r.drive.running;
-  radiosity_->advance(r);
+  radiosity_->advance(r, state_.exposure);
   if (was_running && !r.drive.running && r.status.done)
     state_.note = fmt::format("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
                               100.0 * r.status.unshot_fraction);
