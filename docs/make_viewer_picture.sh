@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's pictures of the viewer, made by scripted runs of the viewer itself: the Cornell
-# box (docs/viewer_picture.txt) and a ray tree over Whitted's scene
-# (docs/whitted_viewer_picture.txt), in a 1280x760 window, under Xvfb when there is no display.
+# box (docs/viewer_picture.txt), a ray tree over Whitted's scene
+# (docs/whitted_viewer_picture.txt) and radiosity spreading in the Cornell box
+# (docs/radiosity_viewer_picture.txt), in a 1280x760 window, under Xvfb when there is no display.
 # Usage: docs/make_viewer_picture.sh [LUZ_BINARY]   (default: build/luz)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,4 +22,5 @@ run() {  # run SCRIPT SCENE
 }
 run viewer_picture.txt cornell_box.gltf
 run whitted_viewer_picture.txt whitted.gltf
-echo "pictures in $out: viewer.png, whitted-ray-tree.png"
+run radiosity_viewer_picture.txt cornell_box.gltf
+echo "pictures in $out: viewer.png, whitted-ray-tree.png, radiosity-viewer.png"

@@ -178,7 +178,7 @@ TEST_F(ViewerRun, AClickOnThePanelSwitchesToBlinn) {
 }
 
 TEST_F(ViewerRun, ModelsThatHaveNotLandedKeepTheCurrentOne) {
-  EXPECT_EQ(json_of(file("after-key-5.json"))["shading"], "phong");
+  EXPECT_EQ(json_of(file("after-key-6.json"))["shading"], "phong");
 }
 
 TEST_F(ViewerRun, OrbitingMovesTheView) {

@@ -103,6 +103,36 @@ TEST(ViewerShortcuts, KeysMapToActions) {
       }
 }
 
+TEST(ViewerScript, RadiosityCommandsAreCheckedBeforeAnyWindow) {
+  const Script script = parse_script_text(
+      "model radiosity\nradiosity run\nradiosity pause\nradiosity reset\nradiosity step 3\n"
+      "radiosity patch-size 0.1\nradiosity hemicube 256\nradiosity budget 20\nradiosity heat-map on\n"
+      "radiosity outlines off\nwait-shots 50\ndump-patch p.json\ndump-radiosity r.json\n",
+      "demo.txt");
+  EXPECT_EQ(script.commands.size(), 13u);
+  EXPECT_EQ(script.commands[4].args, (std::vector<std::string>{"step", "3"}));
+  EXPECT_NE(error_of("radiosity step 0\n").find("demo.txt:1: `radiosity step N` takes N >= 1"), std::string::npos);
+  EXPECT_EQ(error_of("radiosity hemicube 100\n"), "");  // even and in range, as --hemicube-res takes it
+  EXPECT_NE(error_of("radiosity hemicube 63\n").find("even"), std::string::npos);
+  EXPECT_NE(error_of("radiosity hemicube 2048\n").find("64 .. 1024"), std::string::npos);
+  EXPECT_NE(error_of("radiosity run now\n").find("takes no value"), std::string::npos);
+  EXPECT_NE(error_of("radiosity heat-map maybe\n").find("on or off"), std::string::npos);
+  EXPECT_NE(error_of("radiosity sparkle on\n").find("unknown radiosity setting"), std::string::npos);
+  EXPECT_NE(error_of("wait-shots\n").find("takes 1 argument"), std::string::npos);
+  EXPECT_NE(error_of("dump-patch p.txt\n").find(".json"), std::string::npos);
+}
+
+TEST(ViewerShortcuts, RadiositysKeys) {
+  int key = 0, mods = 0;
+  ASSERT_TRUE(parse_key(".", key, mods));
+  EXPECT_EQ(action_for(key, mods), Action::radiosity_step);
+  ASSERT_TRUE(parse_key("space", key, mods));
+  EXPECT_EQ(action_for(key, mods), Action::radiosity_run);
+  EXPECT_EQ(action_for(GLFW_KEY_0, 0), Action::radiosity_reset);
+  EXPECT_EQ(action_for(GLFW_KEY_A, GLFW_MOD_SHIFT), Action::toggle_ambient_estimate);
+  EXPECT_EQ(action_for(GLFW_KEY_A, 0), Action::toggle_ambient);  // A stays the local ambient term
+}
+
 TEST(ViewerCommand, ABadScriptIsAUsageErrorBeforeAnyWindow) {
   test::ScratchDir dir;
   const auto script = dir / "demo.txt";

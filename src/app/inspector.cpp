@@ -214,4 +214,42 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
   ImGui::End();
 }
 
+// Slide 39's quantities of one patch, as the solver holds them: what it emits, reflects, has
+// shot and has still to shoot, and what step 3 displays (B = radiosity + unshot, drawn as B/pi).
+void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open) {
+  ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
+  if (!ImGui::Begin("Inspector: patch", &open, ImGuiWindowFlags_NoFocusOnAppearing)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::Text("patch %zu of %s, triangle %d, material \"%s\"", r.patch,
+              scene.meshes[size_t(r.mesh)].name.c_str(), r.triangle, r.material.c_str());
+  ImGui::Text("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)", double(r.centre.x), double(r.centre.y),
+              double(r.centre.z), double(r.normal.x), double(r.normal.y), double(r.normal.z));
+  ImGui::TextDisabled("after %d shots; exitances in W/m², radiance in W/(m² sr)", r.shots);
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (ImGui::BeginTable("patch", 2, flags)) {
+    auto row = [](const char* name, const Rgb& value) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      ImGui::TableNextColumn();
+      rgb_cell(value);
+    };
+    row("E = π Le (emitted)", r.E);
+    row("ρ = kd", r.rho);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("area A");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g m²", double(r.area));
+    row("radiosity (shot)", r.radiosity);
+    row("unshot", r.unshot);
+    row("B = radiosity + unshot", r.B);
+    row("B / π (drawn)", r.radiance);
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
 }  // namespace luz::app

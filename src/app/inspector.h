@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/picking.h"
+#include "app/radiosity_state.h"
 #include "core/scene.h"
 #include "local/local_options.h"
 #include "local/local_terms.h"
@@ -47,5 +48,8 @@ nlohmann::json to_json(const Scene& scene, const InspectorReading& reading);
 
 // The inspector window (Dear ImGui). `open` goes false when the user closes it.
 void draw_inspector(const Scene& scene, const InspectorReading& reading, bool& open);
+
+// Radiosity's inspector: the clicked patch's E, rho, area, radiosity, unshot, B and B/pi.
+void draw_patch_inspector(const Scene& scene, const PatchReading& reading, bool& open);
 
 }  // namespace luz::app

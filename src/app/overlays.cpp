@@ -30,6 +30,11 @@ void draw_status_line(const ViewerState& state, float top, float width, float he
       model += fmt::format(" tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
     else model += fmt::format(" traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
   }
+  // Radiosity's: how far the shooting has got.
+  const RadiosityStatus& r = state.radiosity.status;
+  if (state.model == Model::radiosity && r.built)
+    model += fmt::format(" shot {}, {:.2f}% unshot{}", r.shots, 100.0 * r.unshot_fraction,
+                         state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
   ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s",
               model.c_str(), state.frame_ms, scene.triangle_count(), int(lights),
               scene.area_lights.size(), camera.c_str(), state.note.c_str());
@@ -51,7 +56,7 @@ void draw_help(bool& open, float x, float y) {
     row("left drag", "orbit around the scene");
     row("right drag", "pan");
     row("wheel", "zoom");
-    row("left click", "inspect the pixel: each term's value (Whitted: its ray tree)");
+    row("left click", "inspect the pixel: each term's value (Whitted: its ray tree; radiosity: the patch)");
     row("drop a file", "load a .gltf / .glb scene");
     ImGui::EndTable();
   }

@@ -15,6 +15,11 @@ void draw_help(bool& open, float x, float y);
 // trace the raster view, or the progress bar of the trace running.
 void draw_trace_hint(const ViewerState& state, float x, float y);
 
+// Radiosity: the last shooter's hemicube (its five item-buffer faces, unfolded, a false colour
+// per patch ID), `side` window units across, in a window whose top-right corner is (right, top)
+// (radiosity_panel.cpp).
+void draw_item_buffer_window(ViewerState& state, float right, float top, float side);
+
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);
 

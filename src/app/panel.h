@@ -14,6 +14,10 @@ void draw_panel(ViewerState& state, float width, float height);
 // the clicked pixel's ray tree.
 void whitted_section(ViewerState& state);
 
+// Radiosity's section (radiosity_panel.cpp): run, pause, one shot, reset; counters and the plot
+// of unshot power against shots; the time budget, stopping rule, mesh, hemicube and display.
+void radiosity_section(ViewerState& state);
+
 // The formula of the local models with each term coloured, or greyed when it is off.
 void draw_local_formula(const LocalOptions& options, const Scene& scene);
 

@@ -8,6 +8,7 @@
 
 #include "app/shortcuts.h"
 #include "core/error.h"
+#include "radiosity/radiosity_options.h"
 
 namespace luz::app {
 namespace {
@@ -26,6 +27,30 @@ bool is_number(const std::string& text) {
   } catch (...) {
     return false;
   }
+}
+
+// `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
+std::string check_radiosity(const ScriptCommand& c) {
+  const auto& a = c.args;
+  if (a.empty()) return "`radiosity` takes run, pause, reset, step N, patch-size M, hemicube N, budget MS or a switch";
+  const std::string& what = a[0];
+  if (what == "run" || what == "pause" || what == "reset")
+    return a.size() == 1 ? "" : fmt::format("`radiosity {}` takes no value", what);
+  if (a.size() != 2) return fmt::format("`radiosity {}` takes one value", what);
+  const std::string& value = a[1];
+  if (what == "step") return is_int(value) && std::stoi(value) >= 1 ? "" : "`radiosity step N` takes N >= 1";
+  if (what == "patch-size")
+    return is_number(value) && std::stof(value) >= 0.0f ? "" : "`radiosity patch-size M` takes metres >= 0 (0: auto)";
+  if (what == "hemicube") {
+    const bool fits = is_int(value) && std::stoi(value) >= kMinHemicubeRes && std::stoi(value) <= kMaxHemicubeRes &&
+                      std::stoi(value) % 2 == 0;
+    return fits ? "" : fmt::format("`radiosity hemicube N` takes an even N in {} .. {}", kMinHemicubeRes, kMaxHemicubeRes);
+  }
+  if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
+  for (const char* name : {"heat-map", "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer", "rotation"})
+    if (what == name) return value == "on" || value == "off" ? "" : fmt::format("`radiosity {}` takes on or off", name);
+  return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, budget, "
+                     "heat-map, outlines, flat-patches, ambient-estimate, shooter, item-buffer, rotation)", what);
 }
 
 // The arguments a verb takes: "" when they are right, else what is wrong.
@@ -109,6 +134,15 @@ std::string check(const ScriptCommand& c) {
     if (auto e = count(1, 1); !e.empty()) return e;
     return a[0].ends_with(".json") ? "" : fmt::format("`{}` writes a .json file", c.verb);
   }
+  if (c.verb == "radiosity") return check_radiosity(c);
+  if (c.verb == "wait-shots") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return is_int(a[0]) && std::stoi(a[0]) >= 1 ? "" : "`wait-shots N` takes a number of shots >= 1";
+  }
+  if (c.verb == "dump-patch" || c.verb == "dump-radiosity") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return a[0].ends_with(".json") ? "" : fmt::format("`{}` writes a .json file", c.verb);
+  }
   if (c.verb == "reload" || c.verb == "quit" || c.verb == "wait-trace") return count(0, 0);
   return fmt::format("unknown command \"{}\"", c.verb);
 }
@@ -117,7 +151,8 @@ std::string check(const ScriptCommand& c) {
 bool ends_frame(const std::string& verb) {
   return verb == "click" || verb == "drag" || verb == "screenshot" || verb == "resize" ||
          verb == "load" || verb == "reload" || verb == "camera" || verb == "dump-inspector" ||
-         verb == "trace" || verb == "wait-trace";
+         verb == "trace" || verb == "wait-trace" || verb == "radiosity" || verb == "wait-shots" ||
+         verb == "dump-patch" || verb == "dump-radiosity";
 }
 
 }  // namespace

@@ -20,6 +20,13 @@
 //   dump-ray-tree FILE.json       the ray tree of the last pixel clicked in Whitted's model, as
 //                                 `luz render --ray-tree X,Y` writes it
 //   dump-trace FILE.json          the trace's phase, tiles done and counters
+//   radiosity run|pause|reset     model 5's loop (as Space, and 0); `radiosity step N`: N shots
+//   radiosity patch-size M | hemicube N   a new mesh / hemicube (remesh: the solve restarts)
+//   radiosity budget MS           shooting time per frame
+//   radiosity heat-map|outlines|flat-patches|ambient-estimate|shooter|item-buffer|rotation on|off
+//   wait-shots N                  run the solver and pause at exactly N shots (or when it is done)
+//   dump-patch FILE.json          the clicked patch (E, rho, area, radiosity, unshot, B, B/pi)
+//   dump-radiosity FILE.json      shots, unshot fraction, patches, where the plot is, ...
 //   resize W H                    the window, in window coordinates
 //   load FILE | reload            as dropping a file on the window / pressing R
 //   dump-inspector FILE.json      the inspector's values, for tests and handouts

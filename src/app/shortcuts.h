@@ -19,6 +19,8 @@ enum class Action {
   reload, screenshot, screenshot_with_panel,
   toggle_panel, toggle_inspector, help, quit,
   trace_view, cancel_trace, clear_ray_tree,
+  radiosity_run, radiosity_step, radiosity_reset,
+  toggle_heat_map, toggle_patches, toggle_ambient_estimate,
 };
 
 struct Shortcut {

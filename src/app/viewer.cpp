@@ -30,6 +30,7 @@
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "app/picking.h"
+#include "app/radiosity_view.h"
 #include "app/ray_tree_drawing.h"
 #include "app/render_whitted.h"
 #include "app/screenshot.h"
@@ -93,10 +94,13 @@ public:
   int loop();  // until Esc, the window closes or the script quits; the exit code
 
   bool run(const ScriptCommand& command, std::string& error) override;
-  // A click's press and release, or a `trace` the script waits for.
+  // A click's press and release, a `trace` the script waits for, or radiosity shots it asked for
+  // (`radiosity step N`, `wait-shots N`).
   bool busy() const override {
     const bool tracing = state_.trace_requested || (whitted_ && whitted_->phase() == TracePhase::tracing);
-    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing);
+    const RadiosityState& r = state_.radiosity;
+    const bool shooting = state_.model == Model::radiosity && (r.steps > 0 || r.stop_at > 0 || r.remesh);
+    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing) || shooting;
   }
 
 private:
@@ -123,6 +127,9 @@ private:
   rt::WhittedOptions tracer_options() const;
   Fingerprint view_fingerprint(const Camera& camera, glm::ivec2 size) const;
   void show_whitted(const Layout& l, const Camera& camera);
+  void show_radiosity(const Layout& l, const Camera& camera);
+  bool run_radiosity(const ScriptCommand& command, std::string& error);
+  void draw_radiosity_windows(const Layout& l);
   void update_inspector(const Layout& l, const Camera& camera);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
@@ -146,6 +153,10 @@ private:
   // BVH), and the ray tree drawn over the picture.
   std::unique_ptr<WhittedView> whitted_;
   std::unique_ptr<RayTreeDrawing> tree_drawing_;
+
+  // Radiosity (model 5): mesh, solver and renderer, made when the model is first shown and again
+  // after a remesh, a new scene or an edited Le.
+  std::unique_ptr<RadiosityView> radiosity_;
   bool waiting_for_trace_ = false;  // the script's `trace` waits for the end
 
   DragButton drag_ = DragButton::none;
@@ -249,6 +260,8 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
   whitted_.reset();   // cancels a trace; the tree below belongs to the old scene too
+  radiosity_.reset();  // its solver keeps the old scene
+  state_.radiosity.patch.reset();
   state_.ray_tree.reset();
   if (tree_drawing_) tree_drawing_->clear();
   pick_.reset();
@@ -378,6 +391,7 @@ void Viewer::click(glm::vec2 p) {
     state_.show_inspector = true;
   } else {
     reading_.reset();
+    state_.radiosity.patch.reset();
     state_.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
   }
 }
@@ -480,6 +494,32 @@ void Viewer::apply(Action action) {
       break;
     case Action::cancel_trace: state_.cancel_trace_requested = true; break;
     case Action::clear_ray_tree: state_.clear_ray_tree_requested = true; break;
+    // Radiosity: running and stepping show model 5 (as Enter shows Whitted's); the switches only
+    // change what it will display.
+    case Action::radiosity_run:
+      if (state_.model != Model::radiosity) set_model(Model::radiosity);
+      state_.radiosity.drive.running = !state_.radiosity.drive.running;
+      state_.note = state_.radiosity.drive.running ? "radiosity: running" : "radiosity: paused";
+      break;
+    case Action::radiosity_step:
+      if (state_.model != Model::radiosity) set_model(Model::radiosity);
+      state_.radiosity.drive.running = false;
+      state_.radiosity.steps += 1;
+      break;
+    case Action::radiosity_reset:
+      state_.radiosity.reset = true;
+      state_.note = "radiosity: reset (step 1: unshot = E)";
+      break;
+    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, "radiosity heat map"); break;
+    case Action::toggle_patches: {
+      RadiosityOptions& r = state_.radiosity.options;
+      r.flat_patches = r.outlines = !(r.flat_patches && r.outlines);
+      state_.note = r.outlines ? "radiosity: flat patches, outlined" : "radiosity: Gouraud";
+      break;
+    }
+    case Action::toggle_ambient_estimate:
+      toggle(state_.radiosity.options.ambient_estimate, "radiosity ambient estimate");
+      break;
     case Action::quit: quit_ = true; break;
   }
 }
@@ -535,6 +575,9 @@ bool Viewer::run(const ScriptCommand& c, std::string& error) {
       error = fmt::format("{}: cannot write the ray tree", a[0]);
       return false;
     }
+  } else if (c.verb == "radiosity" || c.verb == "wait-shots" || c.verb == "dump-patch" ||
+             c.verb == "dump-radiosity") {
+    return run_radiosity(c, error);
   } else if (c.verb == "dump-trace") {
     const TraceProgress& t = state_.trace;
     nlohmann::json j;
@@ -612,8 +655,12 @@ void Viewer::draw_picture(const Layout& l) {
     show_whitted(l, camera);
   } else {
     if (whitted_) whitted_->cancel();  // another model was chosen (key or panel)
-    picture_->bind();
-    renderer_->draw(camera, size.x, size.y, state_.local);
+    if (state_.model == Model::radiosity) {
+      show_radiosity(l, camera);
+    } else {
+      picture_->bind();
+      renderer_->draw(camera, size.x, size.y, state_.local);
+    }
     update_inspector(l, camera);
   }
 
@@ -704,6 +751,108 @@ void Viewer::show_whitted(const Layout& l, const Camera& camera) {
   }
 }
 
+// Radiosity: the solver steps here, on the GL thread, within the frame's budget; the picture is
+// the solution so far (vertex colours uploaded after the shots), the shooter highlighted.
+void Viewer::show_radiosity(const Layout& l, const Camera& camera) {
+  RadiosityState& r = state_.radiosity;
+  if (!radiosity_ || r.remesh) {
+    r.remesh = false;
+    radiosity_.reset();  // the old solver's GL objects go before the new ones are made
+    r.status = RadiosityStatus{};
+    r.patch.reset();
+    try {
+      radiosity_ = std::make_unique<RadiosityView>(*state_.scene, r.options);
+      state_.note = fmt::format("radiosity: {} patches, hemicube {}", radiosity_->mesh().size(), r.options.hemicube_res);
+    } catch (const Error& error) {
+      state_.note = error.what();
+      fmt::print(stderr, "luz: {}\n", error.what());
+      r.drive.running = false;
+      r.steps = r.stop_at = 0;
+      picture_->bind();
+      const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+      glClearBufferfv(GL_COLOR, 0, black);
+      return;
+    }
+  }
+  const bool was_running = r.drive.running;
+  radiosity_->advance(r, state_.exposure);
+  if (was_running && !r.drive.running && r.status.done)
+    state_.note = fmt::format("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
+                              100.0 * r.status.unshot_fraction);
+  picture_->bind();
+  radiosity_->draw(camera, l.view_pixels.x, l.view_pixels.y, r);
+}
+
+bool Viewer::run_radiosity(const ScriptCommand& c, std::string& error) {
+  const auto& a = c.args;
+  RadiosityState& r = state_.radiosity;
+  if (c.verb == "wait-shots") {
+    if (state_.model != Model::radiosity) {
+      error = "`wait-shots` runs the radiosity solver: choose it first (`model radiosity`)";
+      return false;
+    }
+    r.stop_at = std::stoi(a[0]);
+    r.drive.running = true;
+  } else if (c.verb == "dump-patch" || c.verb == "dump-radiosity") {
+    if (c.verb == "dump-patch" && !r.patch) {
+      error = "no patch is inspected: click a surface in the radiosity model first";
+      return false;
+    }
+    std::ofstream out(a[0]);
+    out << (c.verb == "dump-patch" ? to_json(*r.patch) : to_json(r)).dump(2) << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the radiosity values", a[0]);
+      return false;
+    }
+  } else if (a[0] == "run") {
+    r.drive.running = true;
+  } else if (a[0] == "pause") {
+    r.drive.running = false;
+  } else if (a[0] == "reset") {
+    r.reset = true;
+  } else if (a[0] == "step") {
+    r.drive.running = false;
+    r.steps += std::stoi(a[1]);
+  } else if (a[0] == "patch-size") {
+    r.options.patch_size = std::stof(a[1]);
+    r.remesh = true;
+  } else if (a[0] == "hemicube") {
+    r.options.hemicube_res = std::stoi(a[1]);
+    r.remesh = true;
+  } else if (a[0] == "budget") {
+    r.drive.by_time = true;
+    r.drive.budget_ms = std::stof(a[1]);
+  } else {
+    const bool on = a[1] == "on";
+    if (a[0] == "heat-map") r.drive.heat_map = on;
+    if (a[0] == "outlines") r.options.outlines = on;
+    if (a[0] == "flat-patches") r.options.flat_patches = on;
+    if (a[0] == "ambient-estimate") r.options.ambient_estimate = on;
+    if (a[0] == "shooter") r.drive.show_shooter = on;
+    if (a[0] == "item-buffer") r.drive.show_item_buffer = on;
+    if (a[0] == "rotation") r.options.random_rotation = on;
+  }
+  return true;
+}
+
+// The patch inspector at the bottom of the picture, on the side away from the clicked point, and
+// the shooter's hemicube in the top-right corner.
+void Viewer::draw_radiosity_windows(const Layout& l) {
+  const float margin = 8.0f * ui_scale_;
+  if (pick_ && state_.radiosity.patch && state_.show_inspector) {
+    const glm::vec2 at = l.window_of(glm::ivec2(pick_->x, pick_->y));
+    const bool right = at.x > 0.5f * (l.view_origin.x + l.window.x);
+    ImGui::SetNextWindowPos(ImVec2(right ? l.view_origin.x + margin : l.window.x - margin, l.window.y - l.status - margin),
+                            ImGuiCond_Always, ImVec2(right ? 0.0f : 1.0f, 1.0f));
+    draw_patch_inspector(*state_.scene, *state_.radiosity.patch, state_.show_inspector);
+    const float r = 7.0f * ui_scale_;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddLine(ImVec2(at.x - r, at.y), ImVec2(at.x + r, at.y), IM_COL32(255, 60, 200, 255), 2.0f);
+    draw->AddLine(ImVec2(at.x, at.y - r), ImVec2(at.x, at.y + r), IM_COL32(255, 60, 200, 255), 2.0f);
+  }
+  draw_item_buffer_window(state_, l.window.x - margin, margin, 200.0f * ui_scale_);
+}
+
 void Viewer::update_inspector(const Layout& l, const Camera& camera) {
   if (!pick_) return;
   // The camera or the picture's size changed: the clicked pixel now shows another point.
@@ -715,8 +864,14 @@ void Viewer::update_inspector(const Layout& l, const Camera& camera) {
     picture_->bind();
     if (!pick_) {
       reading_.reset();
+      state_.radiosity.patch.reset();
       return;
     }
+  }
+  if (state_.model == Model::radiosity) {  // the patch's values, live as the shots go on
+    reading_.reset();
+    if (radiosity_) state_.radiosity.patch = radiosity_->read(*pick_);
+    return;
   }
   // The shadow maps and the reflection map the picture was drawn with, read texel by texel.
   const std::optional<ShadowLookup> shadows = renderer_->shadow_lookup();
@@ -752,6 +907,7 @@ void Viewer::frame() {
     state_.emitters_changed = false;
     state_.scene->find_area_lights();
     rebuild_renderer();
+    radiosity_.reset();  // the patches' E come from the scene's Le when meshed
   }
   if (state_.reload) {
     state_.reload = false;
@@ -833,6 +989,7 @@ void Viewer::draw_windows(const Layout& l) {
   }
 
   draw_trace_hint(state_, view_middle, 8.0f * ui_scale_);
+  if (state_.model == Model::radiosity) draw_radiosity_windows(l);
   if (state_.show_help) draw_help(state_.show_help, view_middle, 0.45f * l.window.y);
   if (!state_.error.empty()) draw_load_error(state_, view_middle, 0.5f * l.window.y, l.window.x - l.view_origin.x);
 }

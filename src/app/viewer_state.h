@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "app/radiosity_state.h"
 #include "local/local_options.h"
 #include "raytracing/counters.h"
 #include "raytracing/ray_tree.h"
@@ -65,6 +66,10 @@ struct ViewerState {
   rt::WhittedOptions whitted;
   TraceProgress trace;
   std::optional<rt::RayTree> ray_tree;
+
+  // Radiosity (model 5): the options `luz render --model radiosity` fills, how the viewer drives
+  // the solver, what the panel shows of it and its requests (radiosity_state.h).
+  RadiosityState radiosity;
 
   bool show_panel = true;
   bool show_help = false;

@@ -1,0 +1,216 @@
+// The panel's radiosity section (model 5) and the small window with the last shot's hemicube.
+// The section follows slide 39: the loop's controls (run, pause, one shot, back to step 1), how
+// far it has got (shots, unshot power, its plot against the shots), then the settings: how much
+// of each frame goes to shooting, when to stop, the mesh and the hemicube (slide 37, 40), and
+// what step 3 displays.
+//
+// Sections: [the loop] [the plot] [settings] [display] [the section] [the item-buffer window]
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "app/overlays.h"
+#include "app/panel.h"
+
+namespace luz::app {
+namespace {
+
+const ImVec4 shooter_colour(1.0f, 0.35f, 1.0f, 1.0f);  // the renderer's magenta highlight
+
+// ---- [the loop] --------------------------------------------------------------------------------
+void loop_controls(RadiosityState& r) {
+  const RadiosityStatus& s = r.status;
+  if (ImGui::Button(r.drive.running ? "pause  [Space]" : "run  [Space]", ImVec2(9.0f * ImGui::GetFontSize(), 0.0f)))
+    r.drive.running = !r.drive.running;
+  ImGui::SameLine();
+  if (ImGui::Button("one shot  [.]")) r.steps += 1;
+  ImGui::SameLine();
+  if (ImGui::Button("reset  [0]")) r.reset = true;
+
+  // Counters in two columns: what, then its value at a fixed indent.
+  const float column = 9.0f * ImGui::GetFontSize();
+  auto row = [column](const char* what, const std::string& value) {
+    ImGui::TextUnformatted(what);
+    ImGui::SameLine(column);
+    ImGui::TextUnformatted(value.c_str());
+  };
+  row("shots", fmt::format("{}{}", s.shots, s.done ? "  (done: the stopping rule holds)" : ""));
+  row("unshot power", fmt::format("{:.3f} % of the emitted", 100.0 * s.unshot_fraction));
+  row("shots / s", r.drive.running ? fmt::format("{:.0f}", s.shots_per_second) : std::string("paused"));
+  row("patches", fmt::format("{}  (longest edge {:.3g} m)", s.patches, s.patch_size));
+  ImGui::TextUnformatted("shooter");
+  ImGui::SameLine(column);
+  if (s.shooter.empty()) ImGui::TextDisabled("none yet (step 1: unshot = E)");
+  else ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
+}
+
+// ---- [the plot] --------------------------------------------------------------------------------
+// log10 of the unshot fraction against the shots: the straight-ish fall of progressive
+// refinement reads better on a log scale, with a faint line at every decade (100 %, 10 %, ...)
+// and the stopping level dashed.
+void unshot_plot(RadiosityState& r) {
+  RadiosityStatus& s = r.status;
+  const float stop = r.options.converge > 0.0f ? std::log10(r.options.converge) : -3.0f;
+  float low = stop;
+  for (const float v : s.plot) low = std::min(low, v);
+  low = std::floor(low * 2.0f - 0.25f) / 2.0f;  // a little room under the lowest point
+  const float high = 0.1f;
+  ImGui::TextDisabled("unshot power / emitted (log scale) against shots 0 .. %d", s.shots);
+  ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));  // brighter than the default grey
+  ImGui::PlotLines("##unshot", s.plot.data(), int(s.plot.size()), 0, nullptr, low, high,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 6.0f * ImGui::GetFontSize()));  // 1.86: no -1
+  ImGui::PopStyleColor();
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  s.plot_min = glm::vec2(min.x, min.y);
+  s.plot_max = glm::vec2(max.x, max.y);
+
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float top = min.y + style.FramePadding.y, bottom = max.y - style.FramePadding.y;
+  auto y_of = [&](float v) { return bottom - (v - low) / (high - low) * (bottom - top); };
+  for (int decade = 0; decade >= int(std::ceil(low)); --decade) {
+    const float y = y_of(float(decade));
+    draw->AddLine(ImVec2(min.x, y), ImVec2(max.x, y), IM_COL32(255, 255, 255, 40));
+    const std::string label = decade >= -2 ? fmt::format("{:g} %", 100.0 * std::pow(10.0, decade))
+                                           : fmt::format("1e{} ", decade);
+    draw->AddText(ImVec2(min.x + style.FramePadding.x, y - ImGui::GetFontSize()), IM_COL32(200, 200, 200, 160),
+                  label.c_str());
+  }
+  if (r.options.converge > 0.0f) {
+    const float y = y_of(stop);
+    for (float x = min.x; x < max.x; x += 8.0f)
+      draw->AddLine(ImVec2(x, y), ImVec2(std::min(x + 4.0f, max.x), y), IM_COL32(120, 220, 120, 200), 1.5f);
+  }
+}
+
+// ---- [settings] --------------------------------------------------------------------------------
+void drive_settings(RadiosityState& r) {
+  RadiosityDrive& d = r.drive;
+  int by_time = d.by_time ? 1 : 0;
+  ImGui::TextUnformatted("each frame:");
+  ImGui::SameLine();
+  ImGui::RadioButton("time budget", &by_time, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("shots", &by_time, 0);
+  d.by_time = by_time == 1;
+  if (d.by_time) ImGui::SliderFloat("ms of shooting / frame", &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
+  else ImGui::SliderInt("shots / frame", &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
+
+  RadiosityOptions& o = r.options;
+  int by_shots = o.max_shots > 0 ? 1 : 0;
+  ImGui::TextUnformatted("stop:");
+  ImGui::SameLine();
+  ImGui::RadioButton("unshot below", &by_shots, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("after shots", &by_shots, 1);
+  if (by_shots == 1) {
+    if (o.max_shots <= 0) o.max_shots = std::max(r.status.shots, 100);
+    ImGui::DragInt("shots##stop", &o.max_shots, 5.0f, 1, 1000000);
+    o.max_shots = std::max(o.max_shots, 1);
+    o.converge = 0.0f;  // as `luz render --shots N`
+  } else {
+    if (o.converge <= 0.0f) o.converge = RadiosityOptions{}.converge;
+    o.max_shots = 0;
+    float percent = 100.0f * o.converge;
+    ImGui::SliderFloat("% of the emitted power", &percent, 0.01f, 50.0f, "%.2f %%", ImGuiSliderFlags_Logarithmic);
+    o.converge = std::clamp(percent, 0.01f, 50.0f) / 100.0f;
+  }
+}
+
+void mesh_settings(RadiosityState& r) {
+  RadiosityOptions& o = r.options;
+  ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, 0.0f, 10.0f, o.patch_size > 0.0f ? "%.3f" : "auto");
+  o.patch_size = std::max(o.patch_size, 0.0f);
+  if (o.patch_size == 0.0f) ImGui::TextDisabled("auto: about %d patches", o.target_patches);
+  int res_index = std::clamp(int(std::lround(std::log2(float(o.hemicube_res)))) - 6, 0, 4);
+  ImGui::Combo("hemicube (pixels)", &res_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
+  o.hemicube_res = 64 << res_index;
+  // A new mesh or hemicube is a new solve: only on request, so a drag does not restart it.
+  const bool pending = r.status.remesh_pending;
+  if (pending) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.7f, 0.45f, 0.1f, 1.0f));
+  if (ImGui::Button("remesh and restart")) r.remesh = true;
+  if (pending) ImGui::PopStyleColor();
+  ImGui::SameLine();
+  ImGui::TextDisabled(pending ? "to apply the new size" : "also applies kd, Le, light edits");
+  ImGui::Checkbox("turn the hemicube at random each shot", &o.random_rotation);
+  ImGui::TextDisabled("(seeded: the same shots give the same picture)");
+}
+
+// ---- [display] ---------------------------------------------------------------------------------
+void display_settings(RadiosityState& r) {
+  RadiosityOptions& o = r.options;
+  RadiosityDrive& d = r.drive;
+  int flat = o.flat_patches ? 1 : 0;
+  ImGui::RadioButton("Gouraud (vertex B/π)", &flat, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("flat patches", &flat, 1);
+  o.flat_patches = flat == 1;
+  ImGui::Checkbox("patch outlines", &o.outlines);
+  ImGui::SameLine();
+  ImGui::TextDisabled("[L]: flat + outlines");
+  ImGui::Checkbox("ambient estimate ρ·ambient  [Shift+A]", &o.ambient_estimate);
+  ImGui::Checkbox("heat map of unshot power  [U]", &d.heat_map);
+  if (d.heat_map) ImGui::TextDisabled("unshot x area: blue, red, yellow over 3 decades");
+  ImGui::PushStyleColor(ImGuiCol_CheckMark, shooter_colour);
+  ImGui::Checkbox("the shooter in magenta", &d.show_shooter);
+  ImGui::PopStyleColor();
+  ImGui::Checkbox("its hemicube's item buffer (window)", &d.show_item_buffer);
+}
+
+}  // namespace
+
+// ---- [the section] -----------------------------------------------------------------------------
+void radiosity_section(ViewerState& state) {
+  RadiosityState& r = state.radiosity;
+  ImGui::TextDisabled("progressive refinement, slide 39; B/π drawn (slide 39 step 3)");
+  ImGui::TextUnformatted("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j");
+  ImGui::Spacing();
+  loop_controls(r);
+  unshot_plot(r);
+  if (ImGui::TreeNodeEx("shooting, stopping, mesh", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drive_settings(r);
+    mesh_settings(r);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNodeEx("display", ImGuiTreeNodeFlags_DefaultOpen)) {
+    display_settings(r);
+    ImGui::TreePop();
+  }
+}
+
+// ---- [the item-buffer window] ------------------------------------------------------------------
+void draw_item_buffer_window(ViewerState& state, float right, float top, float side) {
+  RadiosityState& r = state.radiosity;
+  r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
+  if (!r.drive.show_item_buffer) return;
+  ImGui::SetNextWindowPos(ImVec2(right, top), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoCollapse;
+  ImGui::Begin("item buffer of the shooter's hemicube", &r.drive.show_item_buffer, flags);
+  const RadiosityStatus& s = r.status;
+  if (s.item_view_texture != 0) {
+    ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
+    // The cross's texture is drawn bottom-up by GL: flip v so its top face's +b is up.
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(s.item_view_texture)), ImVec2(side, side),
+                 ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
+    r.status.item_view_min = glm::vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y);
+    r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
+    ImGui::TextDisabled("top face, 4 half faces folded out; a colour per patch");
+    ImGui::TextDisabled("black: no patch (an open side) or a patch's back");
+  } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
+    ImGui::TextUnformatted(s.shooter.c_str());
+    ImGui::TextDisabled("a point light: shot through a cube of 6 item buffers");
+  } else {
+    ImGui::TextDisabled("no patch has shot yet");
+    ImGui::Dummy(ImVec2(side, 0.0f));
+  }
+  ImGui::End();
+}
+
+}  // namespace luz::app

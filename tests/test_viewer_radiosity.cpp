@@ -1,0 +1,226 @@
+// Radiosity in a real window (issue 5): tests/viewer/radiosity.txt is played on
+// scenes/cornell_box.gltf by the `viewer_radiosity_script` CTest fixture (Xvfb, Mesa's software
+// GL, as tests/viewer/run_viewer_script.sh does for the classroom script); these tests check what
+// it left. Skipped only when xvfb-run is missing (setup.sh installs it).
+//
+// Tolerances, in 8-bit sRGB codes:
+// - "the picture changes": more than 10% of the values move by more than 8 codes;
+// - "more light on the ceiling": the mean code of two ceiling patches of the picture, either
+//   side of the lamp, rises by more than 20 (it is near black while only the lamp has shot);
+// - the converged picture against `luz render --model radiosity` with the same patch size,
+//   hemicube and stopping rule: the same number of shots (the solver is deterministic, its
+//   hemicube turns are seeded), then test_viewer.cpp's two-GL-contexts tolerance: mean
+//   difference <= 0.5 code, 99.5% of values within 2 codes;
+// - the dumped patch: B = radiosity + unshot and B/pi to float rounding (1e-6 relative), E = pi Le
+//   and rho = kd of the scene's material (1e-6 relative);
+// - the plot: more than 1% of the pixels of its frame differ by more than 8 codes between 5 and 300
+//   shots (the frame, its scale and decade labels stay: only the curve can differ).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "io/gltf_loader.h"
+#include "io/image_io.h"
+#include "support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path run_dir = LUZ_VIEWER_RADIOSITY_RUN_DIR;
+
+struct Codes {
+  int width = 0, height = 0;
+  std::vector<int> values;  // r, g, b per pixel, row 0 at the top
+  int at(int x, int y, int c) const { return values[(size_t(y) * width + x) * 3 + c]; }
+};
+
+Codes codes(const fs::path& png) {
+  const Image image = io::read_image(png);
+  Codes out{image.width, image.height, {}};
+  for (const Rgb& p : image.pixels)
+    for (int c = 0; c < 3; ++c) out.values.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
+  return out;
+}
+
+nlohmann::json json_of(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+double share_moved(const Codes& a, const Codes& b, int by) {
+  EXPECT_EQ(a.values.size(), b.values.size());
+  size_t moved = 0;
+  for (size_t i = 0; i < a.values.size() && i < b.values.size(); ++i) moved += std::abs(a.values[i] - b.values[i]) > by;
+  return double(moved) / double(a.values.size());
+}
+
+// The mean code over a rectangle of the picture [x0, x1) x [y0, y1).
+double mean_code(const Codes& c, int x0, int y0, int x1, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      for (int k = 0; k < 3; ++k) sum += c.at(x, y, k);
+  return sum / (3.0 * (x1 - x0) * (y1 - y0));
+}
+
+// Two patches of the ceiling, either side of the lamp, in picture pixels (the window's 1280x760
+// less the 440 of the panel: the lamp spans about x 355..485, y 90..117).
+double ceiling(const Codes& c) { return 0.5 * (mean_code(c, 120, 40, 300, 75) + mean_code(c, 540, 40, 720, 75)); }
+
+fs::path scene() { return test::scene_dir() / "cornell_box.gltf"; }
+
+const Material& material_named(const Scene& s, const std::string& name) {
+  for (const Material& m : s.materials)
+    if (m.name == name) return m;
+  ADD_FAILURE() << "no material " << name;
+  return s.materials.front();
+}
+
+void expect_rgb_near(const nlohmann::json& value, const Rgb& expected, const char* what) {
+  for (int c = 0; c < 3; ++c) {
+    const float v = value[c];
+    EXPECT_NEAR(v, expected[c], 1e-6f * std::max(1.0f, std::abs(expected[c]))) << what << " channel " << c;
+  }
+}
+
+class ViewerRadiosity : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (!fs::exists(run_dir / "done")) {
+      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
+      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_radiosity_script test)";
+    }
+  }
+  static fs::path file(const std::string& name) { return run_dir / name; }
+};
+
+TEST_F(ViewerRadiosity, WaitShotsPausesAtExactlyThatCount) {
+  EXPECT_EQ(json_of(file("start.json"))["shots"], 0);
+  const nlohmann::json early = json_of(file("early.json")), later = json_of(file("later.json"));
+  EXPECT_EQ(early["shots"], 5);
+  EXPECT_EQ(later["shots"], 300);
+  EXPECT_FALSE(later["running"].get<bool>());
+  EXPECT_EQ(later["patches"], 884);  // `radiosity patch-size 0.1` remeshed the box
+  EXPECT_LT(later["unshot_fraction"].get<double>(), early["unshot_fraction"].get<double>());
+  // One point per shot, shot 0 included.
+  EXPECT_EQ(later["plot_points"], 301);
+  // Key '.' shoots once more; key 0 is slide 39's step 1 again.
+  EXPECT_EQ(json_of(file("one-more.json"))["shots"], 301);
+  const nlohmann::json reset = json_of(file("reset.json"));
+  EXPECT_EQ(reset["shots"], 0);
+  EXPECT_EQ(reset["unshot_fraction"], 1.0);
+  EXPECT_EQ(reset["plot_points"], 1);
+}
+
+TEST_F(ViewerRadiosity, TheLightSpreadsAsTheShotsGoOn) {
+  const Codes early = codes(file("early.png")), later = codes(file("later.png"));
+  EXPECT_GT(share_moved(early, later, 8), 0.10);
+  const double before = ceiling(early), after = ceiling(later);
+  EXPECT_GT(after, before + 20.0) << "ceiling after 5 shots " << before << ", after 300 " << after;
+  // Back at shot 0 only the lamp shows: darker than after five shots of it.
+  EXPECT_LT(mean_code(codes(file("reset.png")), 0, 0, early.width, early.height),
+            mean_code(early, 0, 0, early.width, early.height));
+  // The heat map is another picture altogether.
+  EXPECT_GT(share_moved(later, codes(file("heat.png")), 8), 0.5);
+}
+
+TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
+  const nlohmann::json converged = json_of(file("converged.json"));
+  EXPECT_TRUE(converged["done"].get<bool>());
+  EXPECT_LT(converged["unshot_fraction"].get<double>(), 0.01);
+
+  const Codes viewer = codes(file("converged.png"));
+  test::ScratchDir dir;
+  const fs::path out = dir / "render.png";
+  const auto result = test::run_luz({"render", scene().string(), "--model", "radiosity", "--patch-size", "0.1",
+                                     "--hemicube-res", "128", "--converge", "0.01", "--size",
+                                     std::to_string(viewer.width) + "x" + std::to_string(viewer.height), "--out",
+                                     out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::smatch shots;
+  ASSERT_TRUE(std::regex_search(result.output, shots, std::regex("(\\d+) shots"))) << result.output;
+  EXPECT_EQ(converged["shots"].get<int>(), std::stoi(shots[1])) << result.output;
+
+  const Codes render = codes(out);
+  ASSERT_EQ(render.values.size(), viewer.values.size());
+  double total = 0;
+  size_t within = 0;
+  for (size_t i = 0; i < render.values.size(); ++i) {
+    const int difference = std::abs(render.values[i] - viewer.values[i]);
+    total += difference;
+    within += difference <= 2;
+  }
+  EXPECT_LE(total / double(render.values.size()), 0.5);
+  EXPECT_GE(double(within) / double(render.values.size()), 0.995);
+}
+
+TEST_F(ViewerRadiosity, TheClickedPatchShowsSlide39sQuantities) {
+  const Scene s = io::load_gltf(scene()).scene;
+  for (const char* name : {"lamp.json", "wall.json"}) {
+    const nlohmann::json p = json_of(file(name));
+    SCOPED_TRACE(name);
+    EXPECT_EQ(p["shots"], 300);
+    const Material& m = material_named(s, p["material"]);
+    expect_rgb_near(p["E"], std::numbers::pi_v<float> * m.emission, "E = pi Le");
+    expect_rgb_near(p["rho"], m.kd, "rho = kd");
+    Rgb sum, B;
+    for (int c = 0; c < 3; ++c) {
+      sum[c] = p["radiosity"][c].get<float>() + p["unshot"][c].get<float>();
+      B[c] = p["B"][c];
+    }
+    expect_rgb_near(p["B"], sum, "B = radiosity + unshot");
+    expect_rgb_near(p["B_over_pi"], B / std::numbers::pi_v<float>, "B / pi");
+    EXPECT_GT(p["area"].get<float>(), 0.0f);
+  }
+  const nlohmann::json lamp = json_of(file("lamp.json")), wall = json_of(file("wall.json"));
+  EXPECT_EQ(lamp["material"], "light");
+  EXPECT_GT(lamp["E"][0].get<float>(), 1.0f);  // it emits
+  EXPECT_EQ(wall["material"], "red");
+  EXPECT_EQ(wall["E"][0].get<float>(), 0.0f);
+  EXPECT_GT(wall["radiosity"][0].get<float>(), 0.0f);  // it has shot what the lamp gave it
+}
+
+TEST_F(ViewerRadiosity, ThePanelPlotsTheUnshotPowerAndTheItemBufferIsShown) {
+  const Codes early = codes(file("early-panel.png")), later = codes(file("later-panel.png"));
+  const nlohmann::json state = json_of(file("later.json"));
+  const int x0 = state["plot_rect"][0], y0 = state["plot_rect"][1], x1 = state["plot_rect"][2], y1 = state["plot_rect"][3];
+  ASSERT_GT(x1 - x0, 100);
+  ASSERT_GT(y1 - y0, 40);
+  EXPECT_EQ(json_of(file("early.json"))["plot_rect"], state["plot_rect"]);  // the same frame
+  // The scale is the same (down to below the 1% stop), so only the curve can change.
+  size_t differ = 0, pixels = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x, ++pixels)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(early.at(x, y, c) - later.at(x, y, c)) > 8) {
+          ++differ;
+          break;
+        }
+  EXPECT_GT(double(differ) / double(pixels), 0.01) << differ << " of " << pixels;
+
+  // The item buffer's cross: many false colours, one per patch seen.
+  ASSERT_TRUE(state["item_view_shown"].get<bool>());
+  const int ix0 = state["item_view_rect"][0], iy0 = state["item_view_rect"][1];
+  const int ix1 = state["item_view_rect"][2], iy1 = state["item_view_rect"][3];
+  ASSERT_GT(ix1 - ix0, 50);
+  std::set<int> colours;
+  for (int y = iy0; y < iy1; ++y)
+    for (int x = ix0; x < ix1; ++x) colours.insert((later.at(x, y, 0) << 16) | (later.at(x, y, 1) << 8) | later.at(x, y, 2));
+  EXPECT_GT(colours.size(), 100u);
+}
+
+}  // namespace
+}  // namespace luz
