@@ -22,7 +22,6 @@
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
-#include "gl/offscreen_context.h"
 #include "hybrid/radiosity_diffuse.h"
 #include "io/gltf_loader.h"
 #include "radiosity/patch_mesh.h"
@@ -33,18 +32,6 @@
 
 namespace luz {
 namespace {
-
-class GlEnvironment : public ::testing::Environment {
-public:
-  void SetUp() override { context_ = std::make_unique<gl::OffscreenContext>(); }
-  void TearDown() override { context_.reset(); }
-
-private:
-  std::unique_ptr<gl::OffscreenContext> context_;
-};
-
-[[maybe_unused]] ::testing::Environment* const gl_environment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 
 constexpr int kSize = 120;
 

@@ -29,26 +29,12 @@
 
 #include "core/error.h"
 #include "core/scene.h"
-#include "gl/offscreen_context.h"
 #include "gl/shader.h"
 #include "gl/window_context.h"
 #include "local/local_renderer.h"
 
 namespace luz {
 namespace {
-
-// ---- One OpenGL context for the test binary -------------------------------------------------
-class GlEnvironment : public ::testing::Environment {
-public:
-  void SetUp() override { context_ = std::make_unique<gl::OffscreenContext>(); }
-  void TearDown() override { context_.reset(); }
-
-private:
-  std::unique_ptr<gl::OffscreenContext> context_;
-};
-
-[[maybe_unused]] ::testing::Environment* const gl_environment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 
 // ---- The quad seen from above -----------------------------------------------------------------
 constexpr int size = 96;                // image width and height, pixels

@@ -28,7 +28,6 @@
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
-#include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
 #include "radiosity/hemicube.h"
 #include "radiosity/patch_mesh.h"
@@ -41,18 +40,6 @@ namespace luz {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-class GlEnvironment : public ::testing::Environment {
-public:
-  void SetUp() override { context_ = std::make_unique<gl::OffscreenContext>(); }
-  void TearDown() override { context_.reset(); }
-
-private:
-  std::unique_ptr<gl::OffscreenContext> context_;
-};
-
-[[maybe_unused]] ::testing::Environment* const gl_environment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 
 // ---- Scenes built here ------------------------------------------------------------------------
 // A quad as one mesh of two triangles, counter-clockwise seen from its front.

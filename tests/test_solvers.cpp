@@ -19,25 +19,12 @@
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
-#include "gl/offscreen_context.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/solver_comparison.h"
 #include "radiosity/system_solvers.h"
 
 namespace luz {
 namespace {
-
-class GlEnvironment : public ::testing::Environment {
-public:
-  void SetUp() override { context_ = std::make_unique<gl::OffscreenContext>(); }
-  void TearDown() override { context_.reset(); }
-
-private:
-  std::unique_ptr<gl::OffscreenContext> context_;
-};
-
-[[maybe_unused]] ::testing::Environment* const gl_environment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 
 // Two unit patches facing each other with F_12 = F_21 = 1/2, rho = 1/2, E = (1, 0):
 //   B_1 = 1 + B_2 / 4,  B_2 = B_1 / 4   =>   B_1 = 16/15, B_2 = 4/15.

@@ -17,7 +17,6 @@
 #include <gtest/gtest.h>
 
 #include "core/image.h"
-#include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
 #include "raytracing/renderer.h"
@@ -25,18 +24,6 @@
 
 namespace luz {
 namespace {
-
-class GlEnvironment : public ::testing::Environment {
-public:
-  void SetUp() override { context_ = std::make_unique<gl::OffscreenContext>(); }
-  void TearDown() override { context_.reset(); }
-
-private:
-  std::unique_ptr<gl::OffscreenContext> context_;
-};
-
-[[maybe_unused]] ::testing::Environment* const gl_environment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 
 struct Case {
   const char* scene;
