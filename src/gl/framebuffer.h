@@ -2,6 +2,7 @@
 // An offscreen render target: RGBA32F colour (linear radiance, unclamped) and a depth buffer.
 #include "core/image.h"
 #include "gl/functions.h"
+#include "gl/render_target.h"
 
 namespace luz::gl {
 
@@ -9,14 +10,13 @@ class Framebuffer {
 public:
   // Throws luz::Error (kind gl) when the driver cannot make a complete float framebuffer.
   Framebuffer(int width, int height);
-  ~Framebuffer();
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
 
   int width() const { return width_; }
   int height() const { return height_; }
-  GLuint id() const { return fbo_; }
-  GLuint colour_texture() const { return colour_; }
+  GLuint id() const { return target_.fbo; }
+  GLuint colour_texture() const { return target_.colour; }
 
   // Binds it for drawing and reading, with the viewport covering it.
   void bind() const;
@@ -25,7 +25,7 @@ public:
 
 private:
   int width_, height_;
-  GLuint fbo_ = 0, colour_ = 0, depth_ = 0;
+  RenderTarget target_;
 };
 
 }  // namespace luz::gl

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gl/functions.h"
+#include "gl/render_target.h"
 
 namespace luz::gl {
 
@@ -13,13 +14,12 @@ class ItemFramebuffer {
 public:
   // Throws luz::Error (kind gl) when the driver cannot make a complete R32UI framebuffer.
   ItemFramebuffer(int width, int height);
-  ~ItemFramebuffer();
   ItemFramebuffer(const ItemFramebuffer&) = delete;
   ItemFramebuffer& operator=(const ItemFramebuffer&) = delete;
 
   int width() const { return width_; }
   int height() const { return height_; }
-  GLuint id_texture() const { return ids_; }  // for an overlay (usampler2D)
+  GLuint id_texture() const { return target_.colour; }  // for an overlay (usampler2D)
 
   // Binds it for drawing and clears IDs to 0 and depth to the far plane.
   void bind_and_clear() const;
@@ -30,7 +30,7 @@ public:
 
 private:
   int width_, height_;
-  GLuint fbo_ = 0, ids_ = 0, depth_ = 0;
+  RenderTarget target_;
 };
 
 }  // namespace luz::gl
