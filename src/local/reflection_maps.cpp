@@ -1,5 +1,7 @@
 #include "local/reflection_maps.h"
 
+#include "local/cube_face.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,28 +37,10 @@ Taps taps(float coordinate, int size, bool repeat) {
 
 glm::vec4 sample_cube(const CubeMapData& cube, const glm::vec3& D) {
   if (cube.size == 0 || !cube.texel) return glm::vec4(0.0f);
-  // The cube-map rule of the OpenGL specification (as shadow_maps.cpp cube_texel).
-  const glm::vec3 a = glm::abs(D);
-  int face = 0;
-  float sc = 0.0f, tc = 0.0f, ma = 1.0f;
-  if (a.x >= a.y && a.x >= a.z) {
-    face = D.x >= 0.0f ? 0 : 1;
-    sc = D.x >= 0.0f ? -D.z : D.z;
-    tc = -D.y;
-    ma = a.x;
-  } else if (a.y >= a.z) {
-    face = D.y >= 0.0f ? 2 : 3;
-    sc = D.x;
-    tc = D.y >= 0.0f ? D.z : -D.z;
-    ma = a.y;
-  } else {
-    face = D.z >= 0.0f ? 4 : 5;
-    sc = D.z >= 0.0f ? D.x : -D.x;
-    tc = -D.y;
-    ma = a.z;
-  }
-  const Taps s = taps(0.5f * (sc / ma + 1.0f), cube.size, false);
-  const Taps t = taps(0.5f * (tc / ma + 1.0f), cube.size, false);
+  const CubeFacePoint p = cube_face_point(D);
+  const int face = p.face;
+  const Taps s = taps(p.s, cube.size, false);
+  const Taps t = taps(p.t, cube.size, false);
   auto at = [&](int x, int y) { return cube.texel(face, x, y); };
   return (1 - s.w) * (1 - t.w) * at(s.i0, t.i0) + s.w * (1 - t.w) * at(s.i1, t.i0) +
          (1 - s.w) * t.w * at(s.i0, t.i1) + s.w * t.w * at(s.i1, t.i1);

@@ -4,6 +4,8 @@
 // Sections: [the CPU twin] [layout] [the GL maps]
 #include "local/shadow_maps.h"
 
+#include "local/cube_face.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,31 +22,11 @@ namespace luz {
 
 // ---- [the CPU twin] ----------------------------------------------------------------------------
 glm::ivec3 cube_texel(const glm::vec3& D, int size) {
-  // OpenGL 3.3 core specification, table 3.21 (8.19 in 4.x): the major axis picks the face, sc and
-  // tc are the coordinates on it. The faces were rendered with the view matrices of face_view(),
-  // whose image axes are exactly these sc and tc.
-  const glm::vec3 a = glm::abs(D);
-  int face = 0;
-  float sc = 0.0f, tc = 0.0f, ma = 1.0f;
-  if (a.x >= a.y && a.x >= a.z) {
-    face = D.x >= 0.0f ? 0 : 1;
-    sc = D.x >= 0.0f ? -D.z : D.z;
-    tc = -D.y;
-    ma = a.x;
-  } else if (a.y >= a.z) {
-    face = D.y >= 0.0f ? 2 : 3;
-    sc = D.x;
-    tc = D.y >= 0.0f ? D.z : -D.z;
-    ma = a.y;
-  } else {
-    face = D.z >= 0.0f ? 4 : 5;
-    sc = D.z >= 0.0f ? D.x : -D.x;
-    tc = -D.y;
-    ma = a.z;
-  }
-  const float s = 0.5f * (sc / ma + 1.0f), t = 0.5f * (tc / ma + 1.0f);
-  return {std::clamp(int(std::floor(s * float(size))), 0, size - 1),
-          std::clamp(int(std::floor(t * float(size))), 0, size - 1), face};
+  // The faces were rendered with the view matrices of face_view(), whose image axes are exactly
+  // the specification's sc and tc.
+  const CubeFacePoint p = cube_face_point(D);
+  return {std::clamp(int(std::floor(p.s * float(size))), 0, size - 1),
+          std::clamp(int(std::floor(p.t * float(size))), 0, size - 1), p.face};
 }
 
 float shadow_factor(const ShadowLookup& maps, const ShadowView& view, const glm::vec3& P,
