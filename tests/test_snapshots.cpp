@@ -137,27 +137,11 @@ class RadiositySnapshot : public testing::TestWithParam<const char*> {};
 TEST_P(RadiositySnapshot, MatchesItsGolden) {
   const std::string scene = GetParam();
   test::ScratchDir dir;
-  const Image image = render(dir, scene, "radiosity", ".png", radiosity_flags(scene));
-  const fs::path golden_path = test::test_data_dir() / "golden" / (scene + "-radiosity.png");
-  ASSERT_TRUE(fs::exists(golden_path)) << golden_path << " is missing: run the update-goldens target";
-  const Image golden = io::read_image(golden_path);
-  ASSERT_EQ(image.width, golden.width);
-  ASSERT_EQ(image.height, golden.height);
-  double total = 0.0;
-  int far_off = 0;
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const float codes = 255.0f * std::abs(srgb_encode(image.pixels[i][c]) - srgb_encode(golden.pixels[i][c]));
-      total += codes;
-      far_off += codes > 16.0f;
-    }
-  const double channels = 3.0 * double(image.pixels.size());
-  EXPECT_LE(total / channels, 1.0) << "mean difference in 8-bit codes";
-  EXPECT_LE(double(far_off) / channels, 0.005) << "share of values off by more than 16 codes";
+  expect_golden(render(dir, scene, "radiosity", ".png", radiosity_flags(scene)), scene + "-radiosity");
 }
 
 // The slide-19 plate is for the local models (its sun is not shot, and its spheres alone make
-// some 17k patches): radiosity's snapshots are the three lecture scenes.
+// some 17k patches): radiosity's snapshots are the lecture scenes.
 constexpr const char* kRadiosityScenes[] = {"cornell_box", "phong_spheres", "whitted", "cornell_spheres"};
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, RadiositySnapshot, testing::ValuesIn(kRadiosityScenes));
 
