@@ -15,7 +15,8 @@ namespace {
 // trace on Enter; Esc stays quit, so the trace is cancelled by Backspace (any camera move
 // cancels it too), and X crosses out the ray tree. Radiosity's loop on Space (run / pause), '.'
 // (one shot) and 0 (back to shot 0, slide 39 step 1); its display on U (Unshot heat map), L
-// (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term).
+// (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
+// window of solvers on J, for Jacobi, the first of them.
 constexpr Shortcut table[] = {
     {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
     {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
@@ -43,6 +44,7 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_U, 0, "U", Action::toggle_heat_map, "radiosity: heat map of the unshot power on / off"},
     {GLFW_KEY_L, 0, "L", Action::toggle_patches, "radiosity: flat patches with outlines / Gouraud"},
     {GLFW_KEY_A, GLFW_MOD_SHIFT, "Shift+A", Action::toggle_ambient_estimate, "radiosity: ambient estimate on / off"},
+    {GLFW_KEY_J, 0, "J", Action::toggle_solvers, "slide 36: the system solved four ways, curves live (window)"},
     {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
     {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
     {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},

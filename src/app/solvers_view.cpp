@@ -202,10 +202,10 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
 }  // namespace
 
 // ---- [the window] ------------------------------------------------------------------------------
-void SolversView::draw(SolversState& state, float x, float y, float width) const {
+void SolversView::draw(SolversState& state, float x, float y, float width, float height) const {
   SolversState::Status& s = state.status;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
   if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
@@ -241,8 +241,10 @@ void SolversView::draw(SolversState& state, float x, float y, float width) const
       ImGui::SameLine(11.0f * ImGui::GetFontSize());
       ImGui::Text("%6zu rows   residual %.1e   error %.1e", last.rows, last.residual, last.error);
     }
-    const float plot_width = ImGui::GetContentRegionAvail().x;
-    const ImVec2 size(plot_width, 0.55f * plot_width);
+    // The two plots share what is left of the window, the caption's three lines kept below.
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const float lines = 3.5f * ImGui::GetTextLineHeightWithSpacing();
+    const ImVec2 size(room.x, std::max(0.5f * (room.y - lines), 8.0f * ImGui::GetFontSize()));
     glm::vec2 min0, max0, min1, max1;
     log_plot(*race_, true, size, min0, max0);
     log_plot(*race_, false, size, min1, max1);

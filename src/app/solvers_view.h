@@ -35,7 +35,8 @@ public:
 
   void advance(SolversState& state);
   // The window (ImGui only); `open` is cleared by its close button.
-  void draw(SolversState& state, float x, float y, float width) const;
+  // First shown at (x, y), width x height window units; the class may move and resize it.
+  void draw(SolversState& state, float x, float y, float width, float height) const;
 
   const SolverComparison* comparison() const { return race_.get(); }
 

@@ -35,6 +35,7 @@
 #include "app/render_whitted.h"
 #include "app/screenshot.h"
 #include "app/shortcuts.h"
+#include "app/solvers_view.h"
 #include "app/viewer_state.h"
 #include "app/whitted_view.h"
 #include "core/error.h"
@@ -102,7 +103,9 @@ public:
     const RadiosityState& r = state_.radiosity;
     const bool solving = state_.model == Model::radiosity || state_.model == Model::hybrid;
     const bool shooting = solving && (r.steps > 0 || r.stop_at > 0 || r.remesh);
-    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing) || shooting;
+    const SolversState& s = state_.solvers;
+    const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
+    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing) || shooting || solving_system;
   }
 
 private:
@@ -170,6 +173,9 @@ private:
   // Whitted picture from a hybrid one when the model is switched.
   std::unique_ptr<hybrid::RadiosityDiffuse> diffuse_;
   Model traced_model_ = Model::whitted;
+
+  // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
+  std::unique_ptr<SolversView> solvers_;
 
   DragButton drag_ = DragButton::none;
   glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};
@@ -275,6 +281,10 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   whitted_.reset();   // cancels a trace; the tree below belongs to the old scene too
   diffuse_.reset();
   radiosity_.reset();  // its solver keeps the old scene
+  solvers_.reset();    // so does the comparison
+  state_.solvers.status = {};
+  state_.solvers.running = false;
+  state_.solvers.run_to_rows = 0;
   state_.radiosity.patch.reset();
   state_.ray_tree.reset();
   if (tree_drawing_) tree_drawing_->clear();
@@ -538,6 +548,7 @@ void Viewer::apply(Action action) {
     case Action::toggle_ambient_estimate:
       toggle(state_.radiosity.options.ambient_estimate, "radiosity ambient estimate");
       break;
+    case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
     case Action::quit: quit_ = true; break;
   }
 }
@@ -596,6 +607,28 @@ bool Viewer::run(const ScriptCommand& c, std::string& error) {
   } else if (c.verb == "radiosity" || c.verb == "wait-shots" || c.verb == "dump-patch" ||
              c.verb == "dump-radiosity") {
     return run_radiosity(c, error);
+  } else if (c.verb == "solvers") {
+    SolversState& s = state_.solvers;
+    if (a[0] == "open") s.open = true;
+    if (a[0] == "close") s.open = false;
+    if (a[0] == "run") s.open = s.running = true;
+    if (a[0] == "pause") s.running = false;
+    if (a[0] == "reset") s.reset = true;
+    if (a[0] == "budget") s.budget_ms = std::stof(a[1]);
+    if (a[0] == "patches") {
+      s.target_patches = std::stoi(a[1]);
+      s.reset = true;
+    }
+  } else if (c.verb == "wait-solver-rows") {
+    state_.solvers.open = true;
+    state_.solvers.run_to_rows = size_t(std::stoul(a[0]));
+  } else if (c.verb == "dump-solvers") {
+    std::ofstream out(a[0]);
+    out << to_json(state_.solvers, solvers_.get()).dump(2) << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the solvers' curves", a[0]);
+      return false;
+    }
   } else if (c.verb == "dump-trace") {
     const TraceProgress& t = state_.trace;
     nlohmann::json j;
@@ -982,6 +1015,12 @@ void Viewer::frame() {
     state_.back_to_scene_camera = false;
     to_scene_camera();
   }
+  // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
+  const SolversState& s = state_.solvers;
+  if (s.open || s.run_to_rows > 0 || s.reset) {
+    if (!solvers_) solvers_ = std::make_unique<SolversView>(*state_.scene);
+    solvers_->advance(state_.solvers);
+  }
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
@@ -1055,6 +1094,10 @@ void Viewer::draw_windows(const Layout& l) {
 
   draw_trace_hint(state_, view_middle, 8.0f * ui_scale_);
   if (state_.model == Model::radiosity) draw_radiosity_windows(l);
+  state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
+  if (state_.solvers.open && solvers_)
+    solvers_->draw(state_.solvers, l.view_origin.x + 8.0f * ui_scale_, 8.0f * ui_scale_,
+                   0.62f * (l.window.x - l.view_origin.x), l.window.y - l.status - 16.0f * ui_scale_);
   if (state_.show_help) draw_help(state_.show_help, view_middle, 0.45f * l.window.y);
   if (!state_.error.empty()) draw_load_error(state_, view_middle, 0.5f * l.window.y, l.window.x - l.view_origin.x);
 }
