@@ -230,8 +230,8 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   if (ImGui::InputInt("patches (reset)", &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
 
   if (race_) {
-    ImGui::Text("%zu patches; the matrix: %zu hemicubes in %.2f s; rows used: %zu of %zu%s", s.patches, s.patches,
-                s.matrix_seconds, s.rows, s.max_rows, s.done ? " (done)" : "");
+    ImGui::Text("%zu patches, matrix in %.2f s; rows %zu / %zu%s", s.patches, s.matrix_seconds, s.rows, s.max_rows,
+                s.done ? " (done)" : "");
     // The legend, with where each method has got.
     for (const Method m : kMethods) {
       const SolverSample& last = race_->curve(m).back();
