@@ -177,10 +177,6 @@ TEST_F(ViewerRun, AClickOnThePanelSwitchesToBlinn) {
   EXPECT_GT(blinn["I_S"][0].get<double>(), phong["I_S"][0].get<double>());
 }
 
-TEST_F(ViewerRun, ModelsThatHaveNotLandedKeepTheCurrentOne) {
-  EXPECT_EQ(json_of(file("after-key-6.json"))["shading"], "phong");
-}
-
 TEST_F(ViewerRun, OrbitingMovesTheView) {
   const Codes before = codes(file("phong.png")), moved = codes(file("moved.png"));
   ASSERT_EQ(before.values.size(), moved.values.size());

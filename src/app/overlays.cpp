@@ -24,15 +24,15 @@ void draw_status_line(const ViewerState& state, float top, float width, float he
   // Whitted's line says where the trace is: progress while it runs, rays per second at its end.
   std::string model = info(state.model).label;
   const TraceProgress& t = state.trace;
-  if (state.model == Model::whitted) {
-    if (t.phase == TracePhase::raster) model += " (raster view)";
+  if (state.model == Model::whitted || state.model == Model::hybrid) {
+    if (t.phase == TracePhase::raster) model += state.model == Model::hybrid ? " (radiosity picture)" : " (raster view)";
     else if (t.phase == TracePhase::tracing)
       model += fmt::format(" tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
     else model += fmt::format(" traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
   }
   // Radiosity's: how far the shooting has got.
   const RadiosityStatus& r = state.radiosity.status;
-  if (state.model == Model::radiosity && r.built)
+  if ((state.model == Model::radiosity || (state.model == Model::hybrid && t.phase == TracePhase::raster)) && r.built)
     model += fmt::format(" shot {}, {:.2f}% unshot{}", r.shots, 100.0 * r.unshot_fraction,
                          state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
   ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s",
@@ -65,7 +65,8 @@ void draw_help(bool& open, float x, float y) {
 
 void draw_trace_hint(const ViewerState& state, float x, float y) {
   const TraceProgress& t = state.trace;
-  if (state.model != Model::whitted || t.phase == TracePhase::done) return;
+  const bool hybrid = state.model == Model::hybrid;
+  if ((state.model != Model::whitted && !hybrid) || t.phase == TracePhase::done) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -78,8 +79,14 @@ void draw_trace_hint(const ViewerState& state, float x, float y) {
     ImGui::ProgressBar(t.total > 0 ? float(t.done) / float(t.total) : 0.0f, ImVec2(0.0f, 0.0f), "");
     ImGui::SameLine();
     ImGui::TextUnformatted(label.c_str());
-  } else {
+  } else if (!hybrid) {
     ImGui::TextUnformatted("Whitted: the raster (Phong) view. Press Enter / click Render to trace this view");
+  } else if (state.trace_requested) {  // the viewer solves radiosity first (see Viewer::show_traced)
+    const RadiosityStatus& r = state.radiosity.status;
+    ImGui::Text("hybrid: solving radiosity first (shot %d, %.2f %% unshot); the trace starts when it stops",
+                r.shots, 100.0 * r.unshot_fraction);
+  } else {
+    ImGui::TextUnformatted("hybrid: the radiosity picture. Press Enter / click Render to trace its highlights");
   }
   ImGui::End();
 }

@@ -147,7 +147,7 @@ struct ModelSection {
 // A model that lands adds its line here (and sets `available` in viewer_state.cpp).
 constexpr ModelSection sections[] = {
     {Model::flat, local_section},   {Model::gouraud, local_section}, {Model::phong, local_section},
-    {Model::whitted, whitted_section}, {Model::radiosity, radiosity_section},     {Model::hybrid, nullptr},
+    {Model::whitted, whitted_section}, {Model::radiosity, radiosity_section},     {Model::hybrid, hybrid_section},
 };
 
 void model_header(ViewerState& state) {

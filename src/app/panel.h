@@ -14,6 +14,9 @@ void draw_panel(ViewerState& state, float width, float height);
 // the clicked pixel's ray tree.
 void whitted_section(ViewerState& state);
 
+// The hybrid's section (panel_whitted.cpp): the radiosity solution it reads, then Whitted's.
+void hybrid_section(ViewerState& state);
+
 // Radiosity's section (radiosity_panel.cpp): run, pause, one shot, reset; counters and the plot
 // of unshot power against shots; the time budget, stopping rule, mesh, hemicube and display.
 void radiosity_section(ViewerState& state);

@@ -1,6 +1,7 @@
 // The panel's Whitted section (model 4): the formula with its rays, the Render button, progress
 // and counters, the tracer's switches (the rt::WhittedOptions `luz render --model whitted` fills),
-// and the clicked pixel's ray tree (slide 24) as an indented list.
+// and the clicked pixel's ray tree (slide 24) as an indented list. The hybrid's section (model 6)
+// is the same with radiosity's state on top: the same tracer renders it.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -29,10 +30,11 @@ void progress_and_counters(ViewerState& state) {
   } else if (ImGui::Button(t.phase == TracePhase::done ? "render again  [Enter]" : "Render this view  [Enter]")) {
     state.trace_requested = true;
   }
+  const char* untraced = state.model == Model::hybrid ? "radiosity" : "raster (Phong)";
   const float fraction = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
   const std::string label = t.phase == TracePhase::raster
-                                ? (t.cancelled ? fmt::format("cancelled at {}/{} tiles: raster view", t.done, t.total)
-                                               : std::string("raster view (Phong): not traced"))
+                                ? (t.cancelled ? fmt::format("cancelled at {}/{} tiles: {} view", t.done, t.total, untraced)
+                                               : fmt::format("{} view: not traced", untraced))
                                 : fmt::format("{}/{} tiles  {:.2f} s", t.done, t.total, t.seconds);
   ImGui::ProgressBar(t.phase == TracePhase::raster && !t.cancelled ? 0.0f : fraction, ImVec2(-1.0f, 0.0f),
                      label.c_str());
@@ -76,15 +78,22 @@ void options(ViewerState& state) {
   ImGui::SliderInt("samples per emitter", &o.light_samples, 1, 64);
   ImGui::TextDisabled("1: its centroid; N: N-rooks over its area (soft shadows)");
   ImGui::Checkbox("brute force (every triangle, counted)", &o.brute_force);
-  // The local part's terms: the same switches (and keys) as the local models'.
+  // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
+  // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
   LocalOptions& l = state.local;
-  ImGui::Checkbox("Ia·ka [A]", &l.ambient);
-  ImGui::SameLine();
-  ImGui::Checkbox("kd [D]", &l.diffuse);
-  ImGui::SameLine();
-  ImGui::Checkbox("ks [S]", &l.specular);
-  ImGui::SameLine();
-  ImGui::Checkbox("Le [E]", &l.emission);
+  if (state.model == Model::hybrid) {
+    ImGui::Checkbox("B/π [D]", &l.diffuse);
+    ImGui::SameLine();
+    ImGui::Checkbox("ks [S]", &l.specular);
+  } else {
+    ImGui::Checkbox("Ia·ka [A]", &l.ambient);
+    ImGui::SameLine();
+    ImGui::Checkbox("kd [D]", &l.diffuse);
+    ImGui::SameLine();
+    ImGui::Checkbox("ks [S]", &l.specular);
+    ImGui::SameLine();
+    ImGui::Checkbox("Le [E]", &l.emission);
+  }
   ImGui::Checkbox("kd texture [T]", &l.textures);
   ImGui::SameLine();
   ImGui::Checkbox("Blinn N·H [B]", &l.blinn);
@@ -165,7 +174,8 @@ void ray_tree(ViewerState& state) {
     ImGui::EndTable();
   }
   ImGui::PopStyleVar();
-  ImGui::TextDisabled("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
+  ImGui::TextDisabled(state.model == Model::hybrid ? "local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit"
+                                                  : "local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
   ImGui::TextDisabled("share: its contribution to L (hover for numbers)");
   ImGui::TreePop();
 }
@@ -175,6 +185,26 @@ void ray_tree(ViewerState& state) {
 void whitted_section(ViewerState& state) {
   ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
   ImGui::TextUnformatted("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
+  ImGui::Spacing();
+  progress_and_counters(state);
+  ImGui::Spacing();
+  ray_tree(state);
+  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
+    options(state);
+    ImGui::TreePop();
+  }
+}
+
+void hybrid_section(ViewerState& state) {
+  ImGui::TextDisabled("radiosity's diffuse light + ray-traced highlights (slides 41-43)");
+  ImGui::TextUnformatted("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It");
+  // Which radiosity solution the trace reads: the viewer's, as model 5 left it.
+  const RadiosityStatus& r = state.radiosity.status;
+  if (!r.built) ImGui::TextDisabled("radiosity: not solved yet (solved to the stopping rule first)");
+  else
+    ImGui::Text("radiosity: %zu patches, %d shots, %.2f %% unshot%s", r.patches, r.shots, 100.0 * r.unshot_fraction,
+                state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
+  ImGui::TextDisabled("model 5 [5] steps, resets and remeshes it; a trace reads it as it is");
   ImGui::Spacing();
   progress_and_counters(state);
   ImGui::Spacing();

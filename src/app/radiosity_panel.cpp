@@ -180,6 +180,8 @@ void radiosity_section(ViewerState& state) {
     display_settings(r);
     ImGui::TreePop();
   }
+  // Slide 36 beside slide 39: why shooting shows a usable picture first.
+  if (ImGui::Button("slide 36: the system solved four ways  [J]")) state.solvers.open = !state.solvers.open;
 }
 
 // ---- [the item-buffer window] ------------------------------------------------------------------

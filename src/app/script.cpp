@@ -53,6 +53,19 @@ std::string check_radiosity(const ScriptCommand& c) {
                      "heat-map, outlines, flat-patches, ambient-estimate, shooter, item-buffer, rotation)", what);
 }
 
+// `solvers WHAT [VALUE]`: slide 36's window.
+std::string check_solvers(const ScriptCommand& c) {
+  const auto& a = c.args;
+  if (a.empty()) return "`solvers` takes open, close, run, pause, reset, budget MS or patches N";
+  const std::string& what = a[0];
+  if (what == "open" || what == "close" || what == "run" || what == "pause" || what == "reset")
+    return a.size() == 1 ? "" : fmt::format("`solvers {}` takes no value", what);
+  if (a.size() != 2) return fmt::format("`solvers {}` takes one value", what);
+  if (what == "budget") return is_number(a[1]) && std::stof(a[1]) > 0.0f ? "" : "`solvers budget MS` takes milliseconds > 0";
+  if (what == "patches") return is_int(a[1]) && std::stoi(a[1]) >= 10 ? "" : "`solvers patches N` takes N >= 10";
+  return fmt::format("unknown solvers setting \"{}\" (open, close, run, pause, reset, budget, patches)", what);
+}
+
 // The arguments a verb takes: "" when they are right, else what is wrong.
 std::string check(const ScriptCommand& c) {
   const auto& a = c.args;
@@ -143,6 +156,15 @@ std::string check(const ScriptCommand& c) {
     if (auto e = count(1, 1); !e.empty()) return e;
     return a[0].ends_with(".json") ? "" : fmt::format("`{}` writes a .json file", c.verb);
   }
+  if (c.verb == "solvers") return check_solvers(c);
+  if (c.verb == "wait-solver-rows") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return is_int(a[0]) && std::stoi(a[0]) >= 1 ? "" : "`wait-solver-rows N` takes a number of rows >= 1";
+  }
+  if (c.verb == "dump-solvers") {
+    if (auto e = count(1, 1); !e.empty()) return e;
+    return a[0].ends_with(".json") ? "" : "`dump-solvers` writes a .json file";
+  }
   if (c.verb == "reload" || c.verb == "quit" || c.verb == "wait-trace") return count(0, 0);
   return fmt::format("unknown command \"{}\"", c.verb);
 }
@@ -152,7 +174,8 @@ bool ends_frame(const std::string& verb) {
   return verb == "click" || verb == "drag" || verb == "screenshot" || verb == "resize" ||
          verb == "load" || verb == "reload" || verb == "camera" || verb == "dump-inspector" ||
          verb == "trace" || verb == "wait-trace" || verb == "radiosity" || verb == "wait-shots" ||
-         verb == "dump-patch" || verb == "dump-radiosity";
+         verb == "dump-patch" || verb == "dump-radiosity" || verb == "solvers" || verb == "wait-solver-rows" ||
+         verb == "dump-solvers";
 }
 
 }  // namespace

@@ -15,14 +15,15 @@ namespace {
 // trace on Enter; Esc stays quit, so the trace is cancelled by Backspace (any camera move
 // cancels it too), and X crosses out the ray tree. Radiosity's loop on Space (run / pause), '.'
 // (one shot) and 0 (back to shot 0, slide 39 step 1); its display on U (Unshot heat map), L
-// (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term).
+// (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
+// window of solvers on J, for Jacobi, the first of them.
 constexpr Shortcut table[] = {
     {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
     {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
     {GLFW_KEY_3, 0, "3", Action::model_3, "Phong shading"},
     {GLFW_KEY_4, 0, "4", Action::model_4, "Whitted ray tracing (the raster view until Enter)"},
     {GLFW_KEY_5, 0, "5", Action::model_5, "radiosity (progressive refinement)"},
-    {GLFW_KEY_6, 0, "6", Action::model_6, "hybrid (not available yet)"},
+    {GLFW_KEY_6, 0, "6", Action::model_6, "hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"},
     {GLFW_KEY_A, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
     {GLFW_KEY_D, 0, "D", Action::toggle_diffuse, "diffuse term I_D on / off"},
     {GLFW_KEY_S, 0, "S", Action::toggle_specular, "specular term I_S on / off"},
@@ -34,15 +35,16 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_H, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
     {GLFW_KEY_O, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
     {GLFW_KEY_M, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
-    {GLFW_KEY_ENTER, 0, "Enter", Action::trace_view, "Whitted: trace this view, tile by tile"},
-    {GLFW_KEY_BACKSPACE, 0, "Backspace", Action::cancel_trace, "Whitted: cancel the trace (back to the raster view)"},
-    {GLFW_KEY_X, 0, "X", Action::clear_ray_tree, "Whitted: clear the ray tree"},
+    {GLFW_KEY_ENTER, 0, "Enter", Action::trace_view, "Whitted / hybrid: trace this view, tile by tile"},
+    {GLFW_KEY_BACKSPACE, 0, "Backspace", Action::cancel_trace, "Whitted / hybrid: cancel the trace (back to the raster / radiosity view)"},
+    {GLFW_KEY_X, 0, "X", Action::clear_ray_tree, "Whitted / hybrid: clear the ray tree"},
     {GLFW_KEY_SPACE, 0, "Space", Action::radiosity_run, "radiosity: run / pause the shooting"},
     {GLFW_KEY_PERIOD, 0, ".", Action::radiosity_step, "radiosity: one shot"},
     {GLFW_KEY_0, 0, "0", Action::radiosity_reset, "radiosity: reset (shot 0: unshot = E)"},
     {GLFW_KEY_U, 0, "U", Action::toggle_heat_map, "radiosity: heat map of the unshot power on / off"},
     {GLFW_KEY_L, 0, "L", Action::toggle_patches, "radiosity: flat patches with outlines / Gouraud"},
     {GLFW_KEY_A, GLFW_MOD_SHIFT, "Shift+A", Action::toggle_ambient_estimate, "radiosity: ambient estimate on / off"},
+    {GLFW_KEY_J, 0, "J", Action::toggle_solvers, "slide 36: the system solved four ways, curves live (window)"},
     {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
     {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
     {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},

@@ -21,6 +21,7 @@ enum class Action {
   trace_view, cancel_trace, clear_ray_tree,
   radiosity_run, radiosity_step, radiosity_reset,
   toggle_heat_map, toggle_patches, toggle_ambient_estimate,
+  toggle_solvers,
 };
 
 struct Shortcut {

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/line_plot.h"
+#include "app/solvers_view.h"
 #include "core/error.h"
 #include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
@@ -19,26 +20,6 @@
 
 namespace luz::app {
 namespace {
-
-Rgb colour_of(Method method) {
-  switch (method) {
-    case Method::jacobi: return {0.85f, 0.1f, 0.1f};
-    case Method::gauss_seidel: return {0.1f, 0.25f, 0.9f};
-    case Method::southwell: return {0.1f, 0.6f, 0.1f};
-    case Method::shooting: return {0.95f, 0.55f, 0.0f};
-  }
-  return Rgb(0.0f);
-}
-
-const char* label_of(Method method) {
-  switch (method) {
-    case Method::jacobi: return "Jacobi";
-    case Method::gauss_seidel: return "Gauss-Seidel";
-    case Method::southwell: return "Southwell";
-    case Method::shooting: return "shooting (slide 39)";
-  }
-  return "?";
-}
 
 // Written beside its final name and renamed: it appears whole or not at all.
 void write_csv(const std::string& path, const SolverComparison& race) {
@@ -75,7 +56,7 @@ Image plot_curves(const SolverComparison& race, size_t patches) {
     panel.y_max = 2.0;
     panel.y_min = std::max(std::pow(10.0, std::floor(std::log10(smallest))), 1e-12);
     for (const Method m : kMethods) {
-      PlotSeries series{label_of(m), colour_of(m), {}};
+      PlotSeries series{method_label(m), method_colour(m), {}};
       for (const SolverSample& s : race.curve(m))
         // Rows 0 has no place on a log axis: the start is drawn at 1 row.
         series.points.push_back({double(std::max<size_t>(s.rows, 1)), k == 0 ? s.residual : s.error});

@@ -35,12 +35,14 @@
 #include "app/render_whitted.h"
 #include "app/screenshot.h"
 #include "app/shortcuts.h"
+#include "app/solvers_view.h"
 #include "app/viewer_state.h"
 #include "app/whitted_view.h"
 #include "core/error.h"
 #include "gl/framebuffer.h"
 #include "gl/shader.h"
 #include "gl/window_context.h"
+#include "hybrid/radiosity_diffuse.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
 
@@ -99,8 +101,11 @@ public:
   bool busy() const override {
     const bool tracing = state_.trace_requested || (whitted_ && whitted_->phase() == TracePhase::tracing);
     const RadiosityState& r = state_.radiosity;
-    const bool shooting = state_.model == Model::radiosity && (r.steps > 0 || r.stop_at > 0 || r.remesh);
-    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing) || shooting;
+    const bool solving = state_.model == Model::radiosity || state_.model == Model::hybrid;
+    const bool shooting = solving && (r.steps > 0 || r.stop_at > 0 || r.remesh);
+    const SolversState& s = state_.solvers;
+    const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
+    return scripted_click_frames_ > 0 || (waiting_for_trace_ && tracing) || shooting || solving_system;
   }
 
 private:
@@ -126,8 +131,11 @@ private:
   void draw_picture(const Layout& l);
   rt::WhittedOptions tracer_options() const;
   Fingerprint view_fingerprint(const Camera& camera, glm::ivec2 size) const;
-  void show_whitted(const Layout& l, const Camera& camera);
+  void show_traced(const Layout& l, const Camera& camera);
+  void draw_untraced(const Layout& l, const Camera& camera);
+  bool refresh_diffuse();
   void show_radiosity(const Layout& l, const Camera& camera);
+  void drop_radiosity();
   bool run_radiosity(const ScriptCommand& command, std::string& error);
   void draw_radiosity_windows(const Layout& l);
   void update_inspector(const Layout& l, const Camera& camera);
@@ -158,6 +166,16 @@ private:
   // after a remesh, a new scene or an edited Le.
   std::unique_ptr<RadiosityView> radiosity_;
   bool waiting_for_trace_ = false;  // the script's `trace` waits for the end
+
+  // The hybrid (model 6): the same WhittedView traces it, reading radiosity_'s solution through
+  // diffuse_ (which refers to radiosity_'s mesh). diffuse_ is updated only while no trace runs,
+  // and goes (after the trace is cancelled) whenever radiosity_ does. `traced_model_` tells a
+  // Whitted picture from a hybrid one when the model is switched.
+  std::unique_ptr<hybrid::RadiosityDiffuse> diffuse_;
+  Model traced_model_ = Model::whitted;
+
+  // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
+  std::unique_ptr<SolversView> solvers_;
 
   DragButton drag_ = DragButton::none;
   glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};
@@ -229,6 +247,7 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
 }
 
 Viewer::~Viewer() {
+  whitted_.reset();  // a hybrid trace reads diffuse_ and radiosity_'s mesh: join it before they go
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -260,7 +279,12 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
   whitted_.reset();   // cancels a trace; the tree below belongs to the old scene too
+  diffuse_.reset();
   radiosity_.reset();  // its solver keeps the old scene
+  solvers_.reset();    // so does the comparison
+  state_.solvers.status = {};
+  state_.solvers.running = false;
+  state_.solvers.run_to_rows = 0;
   state_.radiosity.patch.reset();
   state_.ray_tree.reset();
   if (tree_drawing_) tree_drawing_->clear();
@@ -378,7 +402,7 @@ void Viewer::click(glm::vec2 p) {
   const Layout l = layout();
   if (!l.in_view(p) || l.view_pixels.x <= 0 || l.view_pixels.y <= 0) return;
   const glm::ivec2 pixel = l.pixel_of(p);
-  if (state_.model == Model::whitted) {
+  if (state_.model == Model::whitted || state_.model == Model::hybrid) {
     pick_ray_tree(l, pixel);
     return;
   }
@@ -405,6 +429,10 @@ void Viewer::pick_ray_tree(const Layout& l, glm::ivec2 pixel) {
   const Camera camera = current_camera();
   if (whitted_->showing() && whitted_->fingerprint() != view_fingerprint(camera, l.view_pixels))
     whitted_->cancel();  // an edit not seen yet by the frame: the trace must not read the old scene
+  if (state_.model == Model::hybrid && !refresh_diffuse()) {
+    state_.note = "hybrid: no radiosity solution yet to trace with";
+    return;
+  }
   rt::RayTree tree = whitted_->trace_pixel(*state_.scene, camera, l.view_pixels.x, l.view_pixels.y, pixel.x,
                                            pixel.y, tracer_options());
   if (!tree_drawing_) tree_drawing_ = std::make_unique<RayTreeDrawing>();
@@ -488,8 +516,8 @@ void Viewer::apply(Action action) {
     case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
     case Action::toggle_inspector: state_.show_inspector = !state_.show_inspector; break;
     case Action::help: state_.show_help = !state_.show_help; break;
-    case Action::trace_view:
-      if (state_.model != Model::whitted) set_model(Model::whitted);
+    case Action::trace_view:  // Whitted's trace, or the hybrid's when it is shown
+      if (state_.model != Model::whitted && state_.model != Model::hybrid) set_model(Model::whitted);
       state_.trace_requested = true;
       break;
     case Action::cancel_trace: state_.cancel_trace_requested = true; break;
@@ -520,6 +548,7 @@ void Viewer::apply(Action action) {
     case Action::toggle_ambient_estimate:
       toggle(state_.radiosity.options.ambient_estimate, "radiosity ambient estimate");
       break;
+    case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
     case Action::quit: quit_ = true; break;
   }
 }
@@ -578,6 +607,28 @@ bool Viewer::run(const ScriptCommand& c, std::string& error) {
   } else if (c.verb == "radiosity" || c.verb == "wait-shots" || c.verb == "dump-patch" ||
              c.verb == "dump-radiosity") {
     return run_radiosity(c, error);
+  } else if (c.verb == "solvers") {
+    SolversState& s = state_.solvers;
+    if (a[0] == "open") s.open = true;
+    if (a[0] == "close") s.open = false;
+    if (a[0] == "run") s.open = s.running = true;
+    if (a[0] == "pause") s.running = false;
+    if (a[0] == "reset") s.reset = true;
+    if (a[0] == "budget") s.budget_ms = std::stof(a[1]);
+    if (a[0] == "patches") {
+      s.target_patches = std::stoi(a[1]);
+      s.reset = true;
+    }
+  } else if (c.verb == "wait-solver-rows") {
+    state_.solvers.open = true;
+    state_.solvers.run_to_rows = size_t(std::stoul(a[0]));
+  } else if (c.verb == "dump-solvers") {
+    std::ofstream out(a[0]);
+    out << to_json(state_.solvers, solvers_.get()).dump(2) << '\n';
+    if (!out) {
+      error = fmt::format("{}: cannot write the solvers' curves", a[0]);
+      return false;
+    }
   } else if (c.verb == "dump-trace") {
     const TraceProgress& t = state_.trace;
     nlohmann::json j;
@@ -651,8 +702,8 @@ void Viewer::draw_picture(const Layout& l) {
   if (!picture_ || picture_->width() != size.x || picture_->height() != size.y)
     picture_ = std::make_unique<gl::Framebuffer>(size.x, size.y);
   const Camera camera = current_camera();
-  if (state_.model == Model::whitted) {
-    show_whitted(l, camera);
+  if (state_.model == Model::whitted || state_.model == Model::hybrid) {
+    show_traced(l, camera);
   } else {
     if (whitted_) whitted_->cancel();  // another model was chosen (key or panel)
     if (state_.model == Model::radiosity) {
@@ -682,53 +733,60 @@ void Viewer::draw_picture(const Layout& l) {
 }
 
 rt::WhittedOptions Viewer::tracer_options() const {
-  return app::tracer_options(state_.whitted, state_.local);
+  const rt::WhittedOptions whitted = app::tracer_options(state_.whitted, state_.local);
+  if (state_.model == Model::hybrid && diffuse_) return hybrid::hybrid_options(whitted, *diffuse_);
+  return whitted;
 }
 
 Fingerprint Viewer::view_fingerprint(const Camera& camera, glm::ivec2 size) const {
   return {camera.to_world, camera.yfov, size.x, size.y, tracer_options(), editable_values(*state_.scene)};
 }
 
-// Whitted's picture: the raster (Phong) view until a trace is asked for; then the traced tiles
-// over it as they come; back to the raster view when anything the trace depends on changes. The
-// ray tree is drawn over either.
-void Viewer::show_whitted(const Layout& l, const Camera& camera) {
+// Whitted's and the hybrid's picture: the untraced view (Whitted: the raster Phong view; the
+// hybrid: the radiosity picture) until a trace is asked for; then the traced tiles over it as
+// they come; back to the untraced view when anything the trace depends on changes. The ray tree
+// is drawn over either.
+void Viewer::show_traced(const Layout& l, const Camera& camera) {
   const glm::ivec2 size = l.view_pixels;
+  const bool hybrid = state_.model == Model::hybrid;
   if (state_.cancel_trace_requested) {
     state_.cancel_trace_requested = false;
-    if (whitted_ && whitted_->cancel()) state_.note = "trace cancelled: back to the raster view";
+    if (whitted_ && whitted_->cancel()) state_.note = "trace cancelled: back to the untraced view";
   }
   if (state_.clear_ray_tree_requested) {
     state_.clear_ray_tree_requested = false;
     state_.ray_tree.reset();
     if (tree_drawing_) tree_drawing_->clear();
   }
-  if (state_.trace_requested && whitted_) whitted_->cancel();  // a fresh raster picture under the new trace
-  if (whitted_ && whitted_->showing() && whitted_->fingerprint() != view_fingerprint(camera, size)) {
-    if (whitted_->cancel()) state_.note = "the view changed: trace cancelled, back to the raster view";
-    else state_.note = "the view changed: back to the raster view (Enter traces it)";
+  if (state_.trace_requested && whitted_) whitted_->cancel();  // a fresh untraced picture under the new trace
+  // A remesh replaces the mesh a hybrid trace reads (done by show_radiosity below).
+  if (hybrid && state_.radiosity.remesh && whitted_) whitted_->cancel();
+  if (whitted_ && whitted_->showing() &&
+      (traced_model_ != state_.model || whitted_->fingerprint() != view_fingerprint(camera, size))) {
+    if (whitted_->cancel()) state_.note = "the view changed: trace cancelled, back to the untraced view";
+    else state_.note = "the view changed: back to the untraced view (Enter traces it)";
   }
 
-  if (!whitted_ || !whitted_->showing()) {
-    // The local model with the lecture's Phong shading, whatever flat / Gouraud was last used.
-    LocalOptions raster = state_.local;
-    raster.shading = Shading::phong;
-    picture_->bind();
-    renderer_->draw(camera, size.x, size.y, raster);
-  }
-  if (state_.trace_requested) {
+  if (!whitted_ || !whitted_->showing()) draw_untraced(l, camera);
+  // The hybrid traces over the viewer's radiosity solution: while the solver is still running to
+  // its stopping rule (the first solve, or a run asked for), the trace waits for it.
+  const bool solving = hybrid && (!radiosity_ || state_.radiosity.drive.running);
+  if (state_.trace_requested && !solving) {
     state_.trace_requested = false;
     if (!whitted_) whitted_ = std::make_unique<WhittedView>(*state_.scene);
-    whitted_->start(*state_.scene, camera, size.x, size.y, tracer_options(), *picture_);
-    state_.note = fmt::format("tracing {}x{}", size.x, size.y);
+    if (!hybrid || refresh_diffuse()) {
+      whitted_->start(*state_.scene, camera, size.x, size.y, tracer_options(), *picture_);
+      traced_model_ = state_.model;
+      state_.note = fmt::format("tracing {}x{}", size.x, size.y);
+    }
   }
   if (whitted_ && whitted_->showing()) {
     const TracePhase before = whitted_->phase();
     whitted_->update();
     if (before == TracePhase::tracing && whitted_->phase() == TracePhase::done)
       state_.note = fmt::format("traced in {:.2f} s", whitted_->seconds());
-    // The traced picture's colour over the picture; its depth stays the raster's of this very
-    // view (the trace is cancelled when the view changes), which the ray tree is tested against.
+    // The traced picture's colour over the picture; its depth stays the untraced one's of this
+    // very view (the trace is cancelled when the view changes), which the ray tree is tested against.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, whitted_->picture().id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture_->id());
     glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -751,13 +809,53 @@ void Viewer::show_whitted(const Layout& l, const Camera& camera) {
   }
 }
 
+// What a trace starts from and what shows until then.
+void Viewer::draw_untraced(const Layout& l, const Camera& camera) {
+  if (state_.model == Model::whitted) {
+    // The local model with the lecture's Phong shading, whatever flat / Gouraud was last used.
+    LocalOptions raster = state_.local;
+    raster.shading = Shading::phong;
+    picture_->bind();
+    renderer_->draw(camera, l.view_pixels.x, l.view_pixels.y, raster);
+    return;
+  }
+  // The hybrid: the radiosity picture, stepping as in model 5 (the first time, meshed and run
+  // to the stopping rule: "computed first when there is none"). It shows B/pi as the trace will
+  // read it, so model 5's heat map and shooter highlight are left out here.
+  const bool first = !radiosity_;
+  RadiosityDrive& drive = state_.radiosity.drive;
+  const bool heat_map = drive.heat_map, shooter = drive.show_shooter;
+  drive.heat_map = drive.show_shooter = false;
+  show_radiosity(l, camera);
+  drive.heat_map = heat_map;
+  drive.show_shooter = shooter;
+  if (first && radiosity_ && !radiosity_->solver().done()) drive.running = true;
+}
+
+// The hybrid's diffuse part takes the viewer's radiosity solution as it is now. Only while no
+// trace runs (a running one reads it); false when there is no solution to take.
+bool Viewer::refresh_diffuse() {
+  if (!radiosity_) return false;
+  if (whitted_ && whitted_->phase() == TracePhase::tracing) return diffuse_ != nullptr;
+  if (diffuse_) diffuse_->update(RadianceField::of(radiosity_->solver()));
+  else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(radiosity_->mesh(), RadianceField::of(radiosity_->solver()));
+  return true;
+}
+
+// The radiosity solution goes (a remesh, an edited Le): first the hybrid trace that reads it.
+void Viewer::drop_radiosity() {
+  if (whitted_ && traced_model_ == Model::hybrid) whitted_->cancel();
+  diffuse_.reset();
+  radiosity_.reset();
+}
+
 // Radiosity: the solver steps here, on the GL thread, within the frame's budget; the picture is
 // the solution so far (vertex colours uploaded after the shots), the shooter highlighted.
 void Viewer::show_radiosity(const Layout& l, const Camera& camera) {
   RadiosityState& r = state_.radiosity;
   if (!radiosity_ || r.remesh) {
     r.remesh = false;
-    radiosity_.reset();  // the old solver's GL objects go before the new ones are made
+    drop_radiosity();  // the old solver's GL objects go before the new ones are made
     r.status = RadiosityStatus{};
     r.patch.reset();
     try {
@@ -787,8 +885,8 @@ bool Viewer::run_radiosity(const ScriptCommand& c, std::string& error) {
   const auto& a = c.args;
   RadiosityState& r = state_.radiosity;
   if (c.verb == "wait-shots") {
-    if (state_.model != Model::radiosity) {
-      error = "`wait-shots` runs the radiosity solver: choose it first (`model radiosity`)";
+    if (state_.model != Model::radiosity && state_.model != Model::hybrid) {
+      error = "`wait-shots` runs the radiosity solver: choose it first (`model radiosity` or `model hybrid`)";
       return false;
     }
     r.stop_at = std::stoi(a[0]);
@@ -907,7 +1005,7 @@ void Viewer::frame() {
     state_.emitters_changed = false;
     state_.scene->find_area_lights();
     rebuild_renderer();
-    radiosity_.reset();  // the patches' E come from the scene's Le when meshed
+    drop_radiosity();  // the patches' E come from the scene's Le when meshed
   }
   if (state_.reload) {
     state_.reload = false;
@@ -916,6 +1014,12 @@ void Viewer::frame() {
   if (state_.back_to_scene_camera) {
     state_.back_to_scene_camera = false;
     to_scene_camera();
+  }
+  // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
+  const SolversState& s = state_.solvers;
+  if (s.open || s.run_to_rows > 0 || s.reset) {
+    if (!solvers_) solvers_ = std::make_unique<SolversView>(*state_.scene);
+    solvers_->advance(state_.solvers);
   }
 
   ImGui_ImplOpenGL3_NewFrame();
@@ -990,6 +1094,10 @@ void Viewer::draw_windows(const Layout& l) {
 
   draw_trace_hint(state_, view_middle, 8.0f * ui_scale_);
   if (state_.model == Model::radiosity) draw_radiosity_windows(l);
+  state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
+  if (state_.solvers.open && solvers_)
+    solvers_->draw(state_.solvers, l.view_origin.x + 8.0f * ui_scale_, 8.0f * ui_scale_,
+                   0.62f * (l.window.x - l.view_origin.x), l.window.y - l.status - 16.0f * ui_scale_);
   if (state_.show_help) draw_help(state_.show_help, view_middle, 0.45f * l.window.y);
   if (!state_.error.empty()) draw_load_error(state_, view_middle, 0.5f * l.window.y, l.window.x - l.view_origin.x);
 }

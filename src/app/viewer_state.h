@@ -12,6 +12,7 @@
 
 #include "core/scene.h"
 #include "app/radiosity_state.h"
+#include "app/solvers_state.h"
 #include "local/local_options.h"
 #include "raytracing/counters.h"
 #include "raytracing/ray_tree.h"
@@ -70,6 +71,10 @@ struct ViewerState {
   // Radiosity (model 5): the options `luz render --model radiosity` fills, how the viewer drives
   // the solver, what the panel shows of it and its requests (radiosity_state.h).
   RadiosityState radiosity;
+
+  // Slide 36 (the J window): the system solved by Jacobi, Gauss-Seidel, Southwell and shooting
+  // side by side, on a coarse mesh of its own (solvers_state.h).
+  SolversState solvers;
 
   bool show_panel = true;
   bool show_help = false;

@@ -1,0 +1,124 @@
+// Slide 36's window in a real window (issue 6): tests/viewer/solvers.txt is played on
+// scenes/cornell_box.gltf by the `viewer_solvers_script` CTest fixture (Xvfb, Mesa's software GL);
+// these tests check the curves it dumped and the plots it drew. Skipped only when xvfb-run is
+// missing.
+//
+// Tolerances: the residuals of Jacobi and Gauss-Seidel never rise from one sweep to the next
+// (the system is diagonally dominant, both converge monotonically; 1e-12 relative for rounding);
+// "the plot changes": more than 1% of the pixels inside the plots' rectangle move by more than 8
+// codes between 20 rows and 1200 rows (the frames, grids and labels stay: only the curves can).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "io/image_io.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path run_dir = LUZ_VIEWER_SOLVERS_RUN_DIR;
+
+nlohmann::json json_of(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+class ViewerSolvers : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (!fs::exists(run_dir / "done")) {
+      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
+      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_solvers_script test)";
+    }
+  }
+  static fs::path file(const std::string& name) { return run_dir / name; }
+};
+
+// The error of a curve's last sample with at most `rows` rows used.
+double error_at(const nlohmann::json& curve, size_t rows) {
+  double error = 1.0;
+  for (const auto& sample : curve)
+    if (sample["rows"].get<size_t>() <= rows) error = sample["error"].get<double>();
+  return error;
+}
+
+TEST_F(ViewerSolvers, AllFourMethodsRunSideBySide) {
+  const nlohmann::json start = json_of(file("start.json")), later = json_of(file("later.json"));
+  EXPECT_EQ(start["phase"], "ready");
+  EXPECT_EQ(start["rows"], 0);  // opened paused: nothing stepped before `wait-solver-rows`
+  EXPECT_EQ(later["phase"], "ready");
+  EXPECT_FALSE(later["running"].get<bool>());
+  EXPECT_GT(later["patches"].get<int>(), 300);
+  EXPECT_LT(later["patches"].get<int>(), 500);  // about the window's 400
+  for (const char* method : {"jacobi", "gauss-seidel", "southwell", "shooting"}) {
+    SCOPED_TRACE(method);
+    ASSERT_TRUE(later["curves"].contains(method));
+    EXPECT_GE(later["curves"][method].back()["rows"].get<size_t>(), 1200u);
+  }
+}
+
+TEST_F(ViewerSolvers, ShootingShowsAUsablePictureFirst) {
+  const nlohmann::json later = json_of(file("later.json"));
+  const size_t n = later["patches"].get<size_t>();
+  const nlohmann::json& curves = later["curves"];
+  // One sweep's worth of rows: Jacobi has just shown its first iterate, the shooting has shot n times.
+  const double jacobi = error_at(curves["jacobi"], n), shooting = error_at(curves["shooting"], n);
+  EXPECT_LT(shooting, jacobi) << "after " << n << " rows";
+  // A sweep uses all n rows, a shot one.
+  for (const auto& sample : curves["jacobi"]) EXPECT_EQ(sample["rows"].get<size_t>() % n, 0u);
+  EXPECT_EQ(curves["shooting"].size(), curves["shooting"].back()["rows"].get<size_t>() + 1);
+}
+
+TEST_F(ViewerSolvers, JacobiAndGaussSeidelResidualsNeverRise) {
+  const nlohmann::json later = json_of(file("later.json"));
+  for (const char* method : {"jacobi", "gauss-seidel"}) {
+    SCOPED_TRACE(method);
+    const nlohmann::json& curve = later["curves"][method];
+    ASSERT_GE(curve.size(), 3u);
+    for (size_t i = 1; i < curve.size(); ++i) {
+      const double before = curve[i - 1]["residual"], after = curve[i]["residual"];
+      EXPECT_LE(after, before * (1.0 + 1e-12)) << "sweep " << i;
+    }
+  }
+}
+
+TEST_F(ViewerSolvers, ThePlotsGrowAsTheyRun) {
+  const nlohmann::json later = json_of(file("later.json"));
+  const auto& r = later["plot"];
+  const float x0 = r[0], y0 = r[1], x1 = r[2], y1 = r[3];
+  ASSERT_GT(x1 - x0, 100.0f);
+  ASSERT_GT(y1 - y0, 100.0f);
+  const Image early = io::read_image(file("early-panel.png")), late = io::read_image(file("later-panel.png"));
+  ASSERT_EQ(early.width, late.width);
+  ASSERT_GE(early.width, int(x1));
+  ASSERT_GE(early.height, int(y1));
+  size_t moved = 0, total = 0;
+  for (int y = int(y0); y < int(y1); ++y)
+    for (int x = int(x0); x < int(x1); ++x, ++total)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(255.0f * (srgb_encode(early.at(x, y)[c]) - srgb_encode(late.at(x, y)[c]))) > 8.0f) {
+          ++moved;
+          break;
+        }
+  EXPECT_GT(double(moved) / double(total), 0.01);
+}
+
+TEST_F(ViewerSolvers, AboveTheLimitItRefusesAndSaysWhy) {
+  const nlohmann::json refused = json_of(file("refused.json"));
+  EXPECT_EQ(refused["phase"], "refused");
+  EXPECT_GT(refused["patches"].get<int>(), 5000);
+  EXPECT_NE(refused["message"].get<std::string>().find("at most 5000"), std::string::npos);
+  EXPECT_TRUE(refused["curves"].empty());
+}
+
+}  // namespace
+}  // namespace luz
