@@ -188,8 +188,14 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
   }
   draw->PushClipRect(a, b, true);
   for (const Method m : kMethods) {
+    // A staircase, as `luz solvers` draws it: a method's value holds until its next iteration
+    // ends, so a Jacobi sweep shows as nothing changing for N rows, then a drop.
     std::vector<ImVec2> points;
-    for (const SolverSample& s : race.curve(m)) points.push_back(at(double(s.rows), residual ? s.residual : s.error));
+    for (const SolverSample& s : race.curve(m)) {
+      const ImVec2 q = at(double(s.rows), residual ? s.residual : s.error);
+      if (!points.empty()) points.push_back(ImVec2(q.x, points.back().y));
+      points.push_back(q);
+    }
     if (points.size() == 1) draw->AddCircleFilled(points[0], 2.5f, on_dark(m));
     else draw->AddPolyline(points.data(), int(points.size()), on_dark(m), 0, 2.0f);
   }
