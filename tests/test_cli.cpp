@@ -49,6 +49,12 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   const auto jpg = run_luz({"render", cornell(), "--out", (dir / "x.jpg").string()});
   EXPECT_EQ(jpg.exit_code, 2);
   EXPECT_TRUE(contains(jpg.output, "x.jpg"));
+  // Slide 19's switches belong to the local models: with another model they are a usage error
+  // that names the flag, never silently ignored.
+  const auto fog = run_luz({"render", cornell(), "--out", out, "--model", "whitted", "--fog", "linear"});
+  EXPECT_EQ(fog.exit_code, 2);
+  EXPECT_TRUE(contains(fog.output, "--fog"));
+  EXPECT_EQ(run_luz({"render", cornell(), "--out", out, "--model", "radiosity", "--shadows"}).exit_code, 2);
   const auto camera = run_luz({"render", cornell(), "--out", out, "--camera", "nowhere"});
   EXPECT_EQ(camera.exit_code, 2);
   EXPECT_TRUE(contains(camera.output, "nowhere"));

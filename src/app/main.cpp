@@ -25,7 +25,9 @@ using luz::app::RenderSettings;
 
 // Slide 19's "other possibilities" of the local models: each a switch of LocalOptions, off unless
 // its flag is given (distance attenuation and spot distributions belong to the scene's lights).
-void add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
+// Returns them so main() can tell which were given: they are a usage error with the other models.
+std::vector<CLI::Option*> add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
+  const size_t before = render.get_options().size();
   const std::map<std::string, luz::FogMode> fog_modes = {{"linear", luz::FogMode::linear},
                                                          {"exponential", luz::FogMode::exponential}};
   render.add_option("--fog", local.fog.mode, "Atmospheric attenuation (depth cueing) toward the fog colour")
@@ -62,9 +64,12 @@ void add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
       ->check(CLI::Range(8, 4096));
   render.add_option("--environment", local.reflection.environment,
                     "Equirectangular image of the surroundings, seen in reflections where no object is");
+  const std::vector<CLI::Option*> all = render.get_options();
+  return {all.begin() + std::ptrdiff_t(before), all.end()};
 }
 
-void add_render_flags(CLI::App& render, RenderSettings& settings) {
+// Returns the flags of slide 19's switches (see add_effect_flags).
+std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
   render.add_option("--model", settings.model, "Illumination model")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kModels), std::end(luz::app::kModels))))
@@ -89,8 +94,8 @@ void add_render_flags(CLI::App& render, RenderSettings& settings) {
   switch_off("--no-emission", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
   switch_off("--no-textures", settings.local.textures, "Ignore baseColorTexture");
   render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
-  add_effect_flags(render, settings.local);
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+  return add_effect_flags(render, settings.local);
 }
 
 // The tracer's flags (--model whitted). Returns them so main() can tell which were given: they
@@ -204,7 +209,7 @@ int main(int argc, char** argv) {
   render->footer("--model hybrid (slides 41-43) takes the whitted flags and the radiosity flags "
                  "(all but --flat-patches and --outlines): the diffuse part of every hit from the "
                  "radiosity solution, highlights, kr*Ir and kt*It from rays, no ambient term.");
-  add_render_flags(*render, settings);
+  const std::vector<CLI::Option*> effect_flags = add_render_flags(*render, settings);
   const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
   const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
 
@@ -268,6 +273,8 @@ int main(int argc, char** argv) {
       if (flag->count() > 0) settings.whitted_only_flags.push_back(flag->get_name());
     for (const CLI::Option* flag : radiosity_flags)
       if (flag->count() > 0) settings.radiosity_only_flags.push_back(flag->get_name());
+    for (const CLI::Option* flag : effect_flags)
+      if (flag->count() > 0) settings.local_only_flags.push_back(flag->get_name());
     return luz::app::run_render(settings);
   }
   if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);

@@ -116,6 +116,10 @@ int run_render(const RenderSettings& settings) {
     }
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
+    const bool local = settings.model == "flat" || settings.model == "gouraud" || settings.model == "phong";
+    if (!local && !settings.local_only_flags.empty())
+      throw Error(ErrorKind::usage, fmt::format("{}: only with --model flat, gouraud or phong (slide 19's "
+                                                "switches of the local models)", settings.local_only_flags.front()));
     if (settings.model != "whitted" && !hybrid && !settings.whitted_only_flags.empty())
       throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted or hybrid",
                                                 settings.whitted_only_flags.front()));

@@ -20,6 +20,8 @@ struct RenderSettings {
   std::string camera;            // name or index; empty = the scene's first
   std::optional<float> exposure; // overrides the scene's
   LocalOptions local;
+  std::vector<std::string> local_only_flags;  // slide 19's switches given (usage error unless
+                                              // flat, gouraud or phong)
   RadiosityOptions radiosity;
   std::string csv;               // radiosity: the residual history, one row per shot
   std::vector<std::string> radiosity_only_flags;  // radiosity flags given (usage error unless
