@@ -1,4 +1,4 @@
-// The viewer in a real window: tests/viewer/classroom.txt is played by the `viewer_script` CTest
+// The viewer in a real window: tests/viewer/classroom.txt is played by the `viewer_classroom_script` CTest
 // fixture (tests/viewer/run_viewer_script.sh: Xvfb, Mesa's software GL); these tests check what
 // it left behind: screenshots with and without the panel, and the inspector's values as JSON.
 // They are skipped only when xvfb-run is missing (setup.sh installs it, so CI runs them).
@@ -21,45 +21,24 @@
 #include "core/image.h"
 #include "io/image_io.h"
 #include "support.h"
+#include "viewer_support.h"
 
 namespace luz {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture ran the script
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script  // where the fixture ran the script
 constexpr int window_width = 1280, window_height = 760;  // the script's --size
 
-// An 8-bit sRGB picture, as the PNG holds it.
-struct Codes {
-  int width = 0, height = 0;
-  std::vector<int> values;  // r, g, b per pixel, row 0 at the top
-  int at(int x, int y, int c) const { return values[(size_t(y) * width + x) * 3 + c]; }
-};
-
-Codes codes(const fs::path& png) {
-  const Image image = io::read_image(png);  // decoded to linear; encode back to the codes
-  Codes out{image.width, image.height, {}};
-  for (const Rgb& p : image.pixels)
-    for (int c = 0; c < 3; ++c) out.values.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
-  return out;
-}
-
-nlohmann::json json_of(const fs::path& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
-
-bool xvfb_available() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+using test::Codes;
+using test::codes;
+using test::json_of;
+using test::share_moved;
 
 class ViewerRun : public ::testing::Test {
 protected:
-  void SetUp() override {
-    if (!fs::exists(run_dir / "done")) {
-      if (!xvfb_available()) GTEST_SKIP() << "xvfb-run is missing: the viewer cannot be run headless";
-      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_script test)";
-    }
-  }
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 
@@ -194,22 +173,12 @@ TEST_F(ViewerRun, TheScreenshotIsWhatLuzRenderMakesWithTheSameSettings) {
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", (test::scene_dir() / "phong_spheres.gltf").string(),
                                      "--model", "gouraud", "--no-diffuse", "--size",
-                                     std::to_string(viewer.width) + "x" + std::to_string(viewer.height),
+                                     viewer.size(),
                                      "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const Codes render = codes(out);
-  ASSERT_EQ(render.width, viewer.width);
-  ASSERT_EQ(render.height, viewer.height);
-  double total = 0;
-  size_t within = 0;
-  for (size_t i = 0; i < render.values.size(); ++i) {
-    const int difference = std::abs(render.values[i] - viewer.values[i]);
-    total += difference;
-    if (difference <= 2) ++within;
-  }
+  test::expect_same_picture(render, viewer);
   const double n = double(render.values.size());
-  EXPECT_LE(total / n, 0.5);
-  EXPECT_GE(double(within) / n, 0.995);
 
   // And the comparison can tell settings apart: the Phong screenshot is another picture.
   const Codes phong = codes(file("phong.png"));

@@ -28,49 +28,24 @@
 #include "core/image.h"
 #include "io/image_io.h"
 #include "support.h"
+#include "viewer_support.h"
 
 namespace luz {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_HYBRID_RUN_DIR;
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
 
-std::vector<int> codes(const fs::path& png, int& width, int& height) {
-  const Image image = io::read_image(png);
-  width = image.width;
-  height = image.height;
-  std::vector<int> out;
-  for (const Rgb& p : image.pixels)
-    for (int c = 0; c < 3; ++c) out.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
-  return out;
-}
-
-std::vector<int> codes(const fs::path& png) {
-  int w = 0, h = 0;
-  return codes(png, w, h);
-}
-
-nlohmann::json json_of(const fs::path& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
-
-double share_moved(const std::vector<int>& a, const std::vector<int>& b, int by) {
-  EXPECT_EQ(a.size(), b.size());
-  size_t moved = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i) moved += std::abs(a[i] - b[i]) > by;
-  return double(moved) / double(a.size());
-}
+using test::Codes;
+using test::codes;
+using test::json_of;
+using test::expect_same_picture;
+using test::share_moved;
 
 class ViewerHybrid : public ::testing::Test {
 protected:
-  void SetUp() override {
-    if (!fs::exists(run_dir / "done")) {
-      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
-      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_hybrid_script test)";
-    }
-  }
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 
@@ -87,7 +62,7 @@ TEST_F(ViewerHybrid, KeySixSolvesRadiosityFirstWhenThereIsNone) {
 }
 
 TEST_F(ViewerHybrid, UntracedItShowsTheRadiosityPicture) {
-  const std::vector<int> untraced = codes(file("untraced.png"));
+  const Codes untraced = codes(file("untraced.png"));
   EXPECT_EQ(share_moved(untraced, codes(file("radiosity.png")), 0), 0.0);
   // Backspace cancelled a trace: the radiosity picture is back, the trace says so.
   const nlohmann::json cancelled = json_of(file("cancelled.json"));
@@ -104,32 +79,21 @@ TEST_F(ViewerHybrid, TracedItIsWhatLuzRenderMakes) {
   EXPECT_GT(traced["rays"]["reflected"].get<int>(), 0);
   EXPECT_GT(traced["rays"]["transmitted"].get<int>(), 0);
 
-  int width = 0, height = 0;
-  const std::vector<int> viewer = codes(file("traced.png"), width, height);
+  const Codes viewer = codes(file("traced.png"));
   EXPECT_GT(share_moved(codes(file("untraced.png")), viewer, 8), 0.05);
 
   test::ScratchDir dir;
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", (test::scene_dir() / "cornell_spheres.gltf").string(), "--model",
                                      "hybrid", "--patch-size", "0.15", "--hemicube-res", "128", "--converge", "0.01",
-                                     "--size", std::to_string(width) + "x" + std::to_string(height), "--out",
+                                     "--size", viewer.size(), "--out",
                                      out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::smatch shots;
   ASSERT_TRUE(std::regex_search(result.output, shots, std::regex("(\\d+) shots"))) << result.output;
   EXPECT_EQ(json_of(file("solved.json"))["shots"].get<int>(), std::stoi(shots[1])) << result.output;
 
-  const std::vector<int> render = codes(out);
-  ASSERT_EQ(render.size(), viewer.size());
-  double total = 0;
-  size_t within = 0;
-  for (size_t i = 0; i < render.size(); ++i) {
-    const int difference = std::abs(render[i] - viewer[i]);
-    total += difference;
-    within += difference <= 2;
-  }
-  EXPECT_LE(total / double(render.size()), 0.5);
-  EXPECT_GE(double(within) / double(render.size()), 0.995);
+  expect_same_picture(codes(out), viewer);
 }
 
 TEST_F(ViewerHybrid, AClickGivesTheHybridsRayTree) {

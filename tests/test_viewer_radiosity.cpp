@@ -33,39 +33,19 @@
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "support.h"
+#include "viewer_support.h"
 
 namespace luz {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_RADIOSITY_RUN_DIR;
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
 
-struct Codes {
-  int width = 0, height = 0;
-  std::vector<int> values;  // r, g, b per pixel, row 0 at the top
-  int at(int x, int y, int c) const { return values[(size_t(y) * width + x) * 3 + c]; }
-};
-
-Codes codes(const fs::path& png) {
-  const Image image = io::read_image(png);
-  Codes out{image.width, image.height, {}};
-  for (const Rgb& p : image.pixels)
-    for (int c = 0; c < 3; ++c) out.values.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
-  return out;
-}
-
-nlohmann::json json_of(const fs::path& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
-
-double share_moved(const Codes& a, const Codes& b, int by) {
-  EXPECT_EQ(a.values.size(), b.values.size());
-  size_t moved = 0;
-  for (size_t i = 0; i < a.values.size() && i < b.values.size(); ++i) moved += std::abs(a.values[i] - b.values[i]) > by;
-  return double(moved) / double(a.values.size());
-}
+using test::Codes;
+using test::codes;
+using test::json_of;
+using test::share_moved;
 
 // The mean code over a rectangle of the picture [x0, x1) x [y0, y1).
 double mean_code(const Codes& c, int x0, int y0, int x1, int y1) {
@@ -98,12 +78,7 @@ void expect_rgb_near(const nlohmann::json& value, const Rgb& expected, const cha
 
 class ViewerRadiosity : public ::testing::Test {
 protected:
-  void SetUp() override {
-    if (!fs::exists(run_dir / "done")) {
-      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
-      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_radiosity_script test)";
-    }
-  }
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 
@@ -147,24 +122,14 @@ TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", scene().string(), "--model", "radiosity", "--patch-size", "0.1",
                                      "--hemicube-res", "128", "--converge", "0.01", "--size",
-                                     std::to_string(viewer.width) + "x" + std::to_string(viewer.height), "--out",
+                                     viewer.size(), "--out",
                                      out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::smatch shots;
   ASSERT_TRUE(std::regex_search(result.output, shots, std::regex("(\\d+) shots"))) << result.output;
   EXPECT_EQ(converged["shots"].get<int>(), std::stoi(shots[1])) << result.output;
 
-  const Codes render = codes(out);
-  ASSERT_EQ(render.values.size(), viewer.values.size());
-  double total = 0;
-  size_t within = 0;
-  for (size_t i = 0; i < render.values.size(); ++i) {
-    const int difference = std::abs(render.values[i] - viewer.values[i]);
-    total += difference;
-    within += difference <= 2;
-  }
-  EXPECT_LE(total / double(render.values.size()), 0.5);
-  EXPECT_GE(double(within) / double(render.values.size()), 0.995);
+  test::expect_same_picture(codes(out), viewer);
 }
 
 TEST_F(ViewerRadiosity, TheClickedPatchShowsSlide39sQuantities) {

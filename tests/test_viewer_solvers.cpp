@@ -19,27 +19,20 @@
 
 #include "core/image.h"
 #include "io/image_io.h"
+#include "viewer_support.h"
 
 namespace luz {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_SOLVERS_RUN_DIR;
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
 
-nlohmann::json json_of(const fs::path& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
+using test::json_of;
 
 class ViewerSolvers : public ::testing::Test {
 protected:
-  void SetUp() override {
-    if (!fs::exists(run_dir / "done")) {
-      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
-      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_solvers_script test)";
-    }
-  }
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 

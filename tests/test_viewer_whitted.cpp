@@ -30,32 +30,19 @@
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "support.h"
+#include "viewer_support.h"
 
 namespace luz {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_WHITTED_RUN_DIR;
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
 
-struct Codes {
-  int width = 0, height = 0;
-  std::vector<int> values;  // r, g, b per pixel, row 0 at the top
-  int at(int x, int y, int c) const { return values[(size_t(y) * width + x) * 3 + c]; }
-};
-
-Codes codes(const fs::path& png) {
-  const Image image = io::read_image(png);
-  Codes out{image.width, image.height, {}};
-  for (const Rgb& p : image.pixels)
-    for (int c = 0; c < 3; ++c) out.values.push_back(int(std::lround(255.0f * srgb_encode(p[c]))));
-  return out;
-}
-
-nlohmann::json json_of(const fs::path& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
+using test::Codes;
+using test::codes;
+using test::json_of;
+using test::share_moved;
 
 int largest_difference(const Codes& a, const Codes& b) {
   EXPECT_EQ(a.values.size(), b.values.size());
@@ -69,14 +56,8 @@ fs::path scene() { return test::scene_dir() / "whitted.gltf"; }
 
 class ViewerWhitted : public ::testing::Test {
 protected:
-  void SetUp() override {
-    if (!fs::exists(run_dir / "done")) {
-      if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is missing";
-      FAIL() << "the scripted viewer did not finish in " << run_dir << " (see the viewer_whitted_script test)";
-    }
-  }
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
-  static std::string size_of(const Codes& c) { return std::to_string(c.width) + "x" + std::to_string(c.height); }
 };
 
 TEST_F(ViewerWhitted, BeforeATraceTheModelShowsTheRasterView) {
@@ -88,7 +69,7 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   const Codes viewer = codes(file("traced.png"));
   test::ScratchDir dir;
   const fs::path out = dir / "render.png";
-  const auto result = test::run_luz({"render", scene().string(), "--model", "whitted", "--size", size_of(viewer),
+  const auto result = test::run_luz({"render", scene().string(), "--model", "whitted", "--size", viewer.size(),
                                      "-q", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_EQ(largest_difference(viewer, codes(out)), 0);
@@ -114,20 +95,10 @@ TEST_F(ViewerWhitted, MovingTheCameraCancelsTheTraceAndReturnsToTheRasterView) {
   EXPECT_LE(largest_difference(after, codes(file("raster.png"))), 1);
   test::ScratchDir dir;
   const fs::path out = dir / "phong.png";
-  const auto result = test::run_luz({"render", scene().string(), "--model", "phong", "--size", size_of(after), "-q",
+  const auto result = test::run_luz({"render", scene().string(), "--model", "phong", "--size", after.size(), "-q",
                                      "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const Codes render = codes(out);
-  ASSERT_EQ(render.values.size(), after.values.size());
-  double total = 0;
-  size_t within = 0;
-  for (size_t i = 0; i < render.values.size(); ++i) {
-    const int difference = std::abs(render.values[i] - after.values[i]);
-    total += difference;
-    within += difference <= 2;
-  }
-  EXPECT_LE(total / double(render.values.size()), 0.5);
-  EXPECT_GE(double(within) / double(render.values.size()), 0.995);
+  test::expect_same_picture(codes(out), after);
 }
 
 TEST_F(ViewerWhitted, TheClickedPixelsRayTreeIsLuzRendersRayTree) {
