@@ -180,11 +180,9 @@ void ray_tree(ViewerState& state) {
   ImGui::TreePop();
 }
 
-}  // namespace
-
-void whitted_section(ViewerState& state) {
-  ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
-  ImGui::TextUnformatted("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
+// What Whitted's and the hybrid's sections share: the trace's progress and counters, the ray
+// tree of the clicked pixel, and the tracer's switches.
+void traced_view(ViewerState& state) {
   ImGui::Spacing();
   progress_and_counters(state);
   ImGui::Spacing();
@@ -193,6 +191,14 @@ void whitted_section(ViewerState& state) {
     options(state);
     ImGui::TreePop();
   }
+}
+
+}  // namespace
+
+void whitted_section(ViewerState& state) {
+  ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
+  ImGui::TextUnformatted("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
+  traced_view(state);
 }
 
 void hybrid_section(ViewerState& state) {
@@ -205,14 +211,7 @@ void hybrid_section(ViewerState& state) {
     ImGui::Text("radiosity: %zu patches, %d shots, %.2f %% unshot%s", r.patches, r.shots, 100.0 * r.unshot_fraction,
                 state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
   ImGui::TextDisabled("model 5 [5] steps, resets and remeshes it; a trace reads it as it is");
-  ImGui::Spacing();
-  progress_and_counters(state);
-  ImGui::Spacing();
-  ray_tree(state);
-  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
-    options(state);
-    ImGui::TreePop();
-  }
+  traced_view(state);
 }
 
 }  // namespace luz::app
