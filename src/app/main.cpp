@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/bench_command.h"
+#include "app/compare_command.h"
 #include "app/render_command.h"
 #include "app/render_path.h"
 #include "app/solvers_command.h"
@@ -245,6 +246,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000))->capture_default_str();
   solvers->add_flag("-q,--quiet", solvers_settings.quiet, "Print nothing on success");
 
+  luz::app::CompareSettings compare_settings;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels");
+  luz::app::add_compare_flags(*compare, compare_settings);
+
   luz::app::WhittedBenchSettings bench_settings;
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
   bench->require_subcommand(1);
@@ -284,6 +290,7 @@ int main(int argc, char** argv) {
     return luz::app::run_render(settings);
   }
   if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);
+  if (compare->parsed()) return luz::app::run_compare(compare_settings);
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
 
