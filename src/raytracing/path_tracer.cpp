@@ -148,11 +148,14 @@ public:
         L += throughput * m.emission * w;
       }
 
+      // Next-event estimation. At the last depth no BSDF ray follows to find the emitters, so the
+      // light sample then stands alone (MIS weight 1).
+      const bool last = depth >= max_depth;
       const Bsdf bsdf(surfaces_.kd_at(p), m.ks, m.shininess, m.kr, m.kt, m.ior, p.N, V, p.front);
-      if (bsdf.has_smooth_part()) L += throughput * direct_light(p, bsdf, random);
+      if (bsdf.has_smooth_part()) L += throughput * direct_light(p, bsdf, random, last);
 
       // "si d < máxima": the next ray, from the BSDF.
-      if (depth >= max_depth) break;
+      if (last) break;
       const float u_lobe = random.next(), u1 = random.next(), u2 = random.next();
       const std::optional<BsdfSample> s = bsdf.sample(u_lobe, u1, u2);
       if (!s) break;
@@ -181,8 +184,9 @@ private:
 
   // ---- [lights] ---------------------------------------------------------------------------------
   // Next-event estimation at p: sum over the punctual lights of f cos(theta) E_i (the delta
-  // lights' irradiance, SCENES.md's units), plus one emissive triangle's estimate.
-  Rgb direct_light(const SurfacePoint& p, const Bsdf& bsdf, Random& random) {
+  // lights' irradiance, SCENES.md's units), plus one emissive triangle's estimate, weighed by
+  // MIS against the BSDF ray unless `alone`.
+  Rgb direct_light(const SurfacePoint& p, const Bsdf& bsdf, Random& random, bool alone) {
     Rgb sum(0.0f);
     for (const Light& light : scene_.lights) {
       if (!light.enabled) continue;
@@ -231,7 +235,7 @@ private:
     const float light_pdf = area_pdf * d * d / cos_e;  // the same density per solid angle
     const Rgb f = bsdf.eval(L);
     if (max_of(f) <= 0.0f || !visible(p, L, d)) return sum;
-    const float w = power_heuristic(light_pdf, bsdf.pdf(L));
+    const float w = alone ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(L));
     return sum + f * area.radiance * (cos_theta * w / light_pdf);
   }
 
