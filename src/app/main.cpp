@@ -11,6 +11,7 @@
 
 #include "app/bench_command.h"
 #include "app/render_command.h"
+#include "app/render_grid.h"
 #include "app/solvers_command.h"
 #include "app/resources.h"
 #include "app/script.h"
@@ -71,8 +72,9 @@ std::vector<CLI::Option*> add_effect_flags(CLI::App& render, luz::LocalOptions& 
 // Returns the flags of slide 19's switches (see add_effect_flags).
 std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
-  render.add_option("--model", settings.model, "Illumination model")
-      ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kModels), std::end(luz::app::kModels))))
+  render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
+      ->check(CLI::Validator([](std::string& text) { return luz::app::model_option_problem(text); },
+                             "MODEL[,MODEL...]"))
       ->capture_default_str();
   render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
       ->required();
