@@ -6,5 +6,5 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 find src -name '*.cpp' -o -name '*.h' | LC_ALL=C sort |
-  xgettext --files-from=- --language=C++ --from-code=UTF-8 --keyword=tr --add-comments=TRANSLATORS \
+  xgettext --files-from=- --language=C++ --from-code=UTF-8 --keyword=tr --keyword=trf --add-comments=TRANSLATORS \
            --package-name=luz --no-location --sort-output --output="$1"

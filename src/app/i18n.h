@@ -12,6 +12,9 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
+
+#include <fmt/format.h>
 
 namespace luz::i18n {
 
@@ -62,8 +65,16 @@ Language language();
 // when the catalogue lacks it. xgettext extracts the ids from tr("...") (po/README.md).
 const char* tr(const char* id);
 
+// fmt::format with a translated format string: trf("{} shots", n). The translation must keep
+// the {} fields (the tests check every catalogue entry formats with its id's arguments).
+template <typename... Args>
+std::string trf(const char* id, Args&&... args) {
+  return fmt::format(fmt::runtime(tr(id)), std::forward<Args>(args)...);
+}
+
 }  // namespace luz::i18n
 
 namespace luz::app {
-using i18n::tr;  // the app's code writes tr("..."), the keyword xgettext is given
+using i18n::tr;  // the app's code writes tr("...") and trf("..."), the keywords xgettext is given
+using i18n::trf;
 }  // namespace luz::app

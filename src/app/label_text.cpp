@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <stb_truetype.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 
 namespace luz::app {
@@ -43,11 +44,11 @@ LabelFont::LabelFont(const fs::path& file) : face_(std::make_unique<Face>()) {
   std::ifstream in(file, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::file_missing,
-                fmt::format("{}: the label font cannot be read (Debian: fonts-dejavu-core)", file.string()));
+                trf("{}: the label font cannot be read (Debian: fonts-dejavu-core)", file.string()));
   face_->bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   const int offset = stbtt_GetFontOffsetForIndex(face_->bytes.data(), 0);
   if (offset < 0 || !stbtt_InitFont(&face_->info, face_->bytes.data(), offset))
-    throw Error(ErrorKind::bad_value, fmt::format("{}: not a TrueType font", file.string()));
+    throw Error(ErrorKind::bad_value, trf("{}: not a TrueType font", file.string()));
 }
 
 LabelFont::~LabelFont() = default;

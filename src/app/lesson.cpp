@@ -136,34 +136,34 @@ public:
 
   void only_keys(const json& object, const std::string& pointer, const std::string& what,
                  const std::vector<std::string>& allowed) const {
-    if (!object.is_object()) fail(pointer, fmt::format("{} must be an object", what));
+    if (!object.is_object()) fail(pointer, trf("{} must be an object", what));
     for (const auto& [key, value] : object.items())
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-        fail(pointer + "/" + key, fmt::format("{}: unknown key \"{}\" (known: {})", what, key, fmt::join(allowed, ", ")));
+        fail(pointer + "/" + key, trf("{}: unknown key \"{}\" (known: {})", what, key, fmt::join(allowed, ", ")));
   }
 
   LessonText text(const json& object, const std::string& pointer, const std::string& what) const {
-    if (!object.is_object()) fail(pointer, fmt::format("{} must be an object with \"es\" and \"en\"", what));
+    if (!object.is_object()) fail(pointer, trf("{} must be an object with \"es\" and \"en\"", what));
     only_keys(object, pointer, what, {"es", "en"});
     LessonText out;
     for (const char* language : {"es", "en"}) {
-      if (!object.contains(language)) fail(pointer, fmt::format("{}: the \"{}\" text is missing", what, language));
+      if (!object.contains(language)) fail(pointer, trf("{}: the \"{}\" text is missing", what, language));
       const json& value = object[language];
       if (!value.is_string() || value.get<std::string>().empty())
-        fail(pointer + "/" + language, fmt::format("{}: \"{}\" must be a text that is not empty", what, language));
+        fail(pointer + "/" + language, trf("{}: \"{}\" must be a text that is not empty", what, language));
       (std::string(language) == "es" ? out.es : out.en) = value.get<std::string>();
     }
     return out;
   }
 
   bool boolean(const json& value, const std::string& pointer, const std::string& what) const {
-    if (!value.is_boolean()) fail(pointer, fmt::format("{} must be true or false", what));
+    if (!value.is_boolean()) fail(pointer, trf("{} must be true or false", what));
     return value.get<bool>();
   }
 
   long integer(const json& value, const std::string& pointer, const std::string& what, long low, long high) const {
     if (!value.is_number_integer() || value.get<long>() < low || value.get<long>() > high)
-      fail(pointer, fmt::format("{} must be a whole number in {} .. {}", what, low, high));
+      fail(pointer, trf("{} must be a whole number in {} .. {}", what, low, high));
     return value.get<long>();
   }
 
@@ -171,15 +171,15 @@ public:
                 bool low_open = false) const {
     const bool fits = value.is_number() && std::isfinite(value.get<double>()) &&
                       (low_open ? value.get<double>() > low : value.get<double>() >= low) && value.get<double>() <= high;
-    if (!fits) fail(pointer, fmt::format("{} must be a number in {}{} .. {}]", what, low_open ? "(" : "[", low, high));
+    if (!fits) fail(pointer, trf("{} must be a number in {}{} .. {}]", what, low_open ? "(" : "[", low, high));
     return value.get<double>();
   }
 
   std::string one_of(const json& value, const std::string& pointer, const std::string& what,
                      const std::vector<std::string>& names) const {
     if (!value.is_string() || std::find(names.begin(), names.end(), value.get<std::string>()) == names.end())
-      fail(pointer, fmt::format("{} must be one of {}{}", what, fmt::join(names, ", "),
-                                value.is_string() ? fmt::format(" (not \"{}\")", value.get<std::string>()) : ""));
+      fail(pointer, trf("{} must be one of {}{}", what, fmt::join(names, ", "),
+                                value.is_string() ? trf(" (not \"{}\")", value.get<std::string>()) : ""));
     return value.get<std::string>();
   }
 
@@ -246,7 +246,7 @@ void whitted(const Reader& r, const json& step, const std::string& at, int line,
   long spp = d.spp;
   if (given.contains("spp")) {
     spp = r.integer(given["spp"], w + "/spp", "whitted: spp", 1, 4096);
-    if (!rt::is_square(int(spp))) r.fail(w + "/spp", "whitted: spp must be a square: 1, 4, 9, 16, ...");
+    if (!rt::is_square(int(spp))) r.fail(w + "/spp", tr("whitted: spp must be a square: 1, 4, 9, 16, ..."));
   }
   const long samples = given.contains("light-samples")
                            ? r.integer(given["light-samples"], w + "/light-samples", "whitted: light-samples", 1, 1024)
@@ -285,7 +285,7 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
   long hemicube = o.hemicube_res;
   if (given.contains("hemicube")) {
     hemicube = r.integer(given["hemicube"], p + "/hemicube", "radiosity: hemicube", kMinHemicubeRes, kMaxHemicubeRes);
-    if (hemicube % 2 != 0) r.fail(p + "/hemicube", "radiosity: hemicube must be even");
+    if (hemicube % 2 != 0) r.fail(p + "/hemicube", tr("radiosity: hemicube must be even"));
   }
   out.push_back(command(line, "radiosity", {"patch-size", fmt::format("{}", float(size))}));
   out.push_back(command(line, "radiosity", {"hemicube", std::to_string(hemicube)}));
@@ -298,23 +298,23 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
              std::vector<ScriptCommand>& out) {
   if (!step.contains("actions")) return;
   const json& list = step["actions"];
-  if (!list.is_array()) r.fail(at + "/actions", "actions must be a list");
+  if (!list.is_array()) r.fail(at + "/actions", tr("actions must be a list"));
   const bool solves = model == "radiosity" || model == "hybrid";
   const bool traces = model == "whitted" || model == "hybrid";
   auto need = [&](bool ok, const std::string& pointer, const std::string& action, const char* models) {
-    if (!ok) r.fail(pointer, fmt::format("action \"{}\" needs the model {} (this step shows {})", action, models, model));
+    if (!ok) r.fail(pointer, trf("action \"{}\" needs the model {} (this step shows {})", action, models, model));
   };
   for (size_t i = 0; i < list.size(); ++i) {
     const std::string a = fmt::format("{}/actions/{}", at, i);
     const json& action = list[i];
     if (action.is_string()) {
-      const std::string name = r.one_of(action, a, "an action",
+      const std::string name = r.one_of(action, a, tr("an action"),
                                         {"run-solver", "pause-solver", "reset-solver", "trace", "open-solvers", "run-solvers"});
       if (name.ends_with("-solver")) {
-        need(solves, a, name, "radiosity or hybrid");
+        need(solves, a, name, tr("radiosity or hybrid"));
         out.push_back(command(line, "radiosity", {name.substr(0, name.find('-'))}));
       } else if (name == "trace") {
-        need(traces, a, name, "whitted or hybrid");
+        need(traces, a, name, tr("whitted or hybrid"));
         out.push_back(command(line, "trace", {"--no-wait"}));  // the class watches the tiles come
       } else {
         out.push_back(command(line, "solvers", {name.substr(0, name.find('-'))}));
@@ -322,21 +322,21 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
       continue;
     }
     if (!action.is_object() || action.size() != 1)
-      r.fail(a, "an action is a name (run-solver, trace, ...) or one of {\"shots\": N}, {\"solver-steps\": N}, {\"click\": [X, Y]}");
+      r.fail(a, tr("an action is a name (run-solver, trace, ...) or one of {\"shots\": N}, {\"solver-steps\": N}, {\"click\": [X, Y]}"));
     const std::string key = action.begin().key();
     const json& value = action.begin().value();
     if (key == "shots" || key == "solver-steps") {
-      need(solves, a, key, "radiosity or hybrid");
+      need(solves, a, key, tr("radiosity or hybrid"));
       const long n = r.integer(value, a + "/" + key, key, 1, 1000000);
       out.push_back(key == "shots" ? command(line, "wait-shots", {std::to_string(n)})
                                    : command(line, "radiosity", {"step", std::to_string(n)}));
     } else if (key == "click") {
-      if (!value.is_array() || value.size() != 2) r.fail(a + "/click", "click takes [X, Y], window coordinates");
+      if (!value.is_array() || value.size() != 2) r.fail(a + "/click", tr("click takes [X, Y], window coordinates"));
       const long x = r.integer(value[0], a + "/click/0", "click X", 0, 16384);
       const long y = r.integer(value[1], a + "/click/1", "click Y", 0, 16384);
       out.push_back(command(line, "click", {std::to_string(x), std::to_string(y)}));
     } else {
-      r.fail(a + "/" + key, fmt::format("unknown action \"{}\" (shots, solver-steps, click)", key));
+      r.fail(a + "/" + key, trf("unknown action \"{}\" (shots, solver-steps, click)", key));
     }
   }
 }
@@ -344,40 +344,40 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
 LessonStep read_step(const Reader& r, const json& step, size_t index, const std::filesystem::path& folder,
                      const LessonStep* before) {
   const std::string at = fmt::format("/steps/{}", index);
-  r.only_keys(step, at, fmt::format("step {}", index + 1),
+  r.only_keys(step, at, trf("step {}", index + 1),
               {"slide", "title", "text", "scene", "camera", "model", "exposure", "terms", "effects", "whitted",
                "radiosity", "panes", "actions"});
   LessonStep out;
-  if (!step.contains("slide")) r.fail(at, fmt::format("step {}: \"slide\" is missing", index + 1));
+  if (!step.contains("slide")) r.fail(at, trf("step {}: \"slide\" is missing", index + 1));
   out.slide = int(r.integer(step["slide"], at + "/slide", "slide", 1, kLectureSlides));
   for (const char* key : {"title", "text"})
-    if (!step.contains(key)) r.fail(at, fmt::format("step {}: \"{}\" is missing", index + 1, key));
+    if (!step.contains(key)) r.fail(at, trf("step {}: \"{}\" is missing", index + 1, key));
   out.title = r.text(step["title"], at + "/title", "title");
   out.text = r.text(step["text"], at + "/text", "text");
 
   if (step.contains("scene")) {
-    if (!step["scene"].is_string()) r.fail(at + "/scene", "scene must be a file name");
+    if (!step["scene"].is_string()) r.fail(at + "/scene", tr("scene must be a file name"));
     const std::filesystem::path scene = (folder / step["scene"].get<std::string>()).lexically_normal();
     if (!std::filesystem::is_regular_file(scene))
-      r.fail(at + "/scene", fmt::format("scene {} does not exist", scene.string()));
+      r.fail(at + "/scene", trf("scene {} does not exist", scene.string()));
     out.scene = scene.string();
   } else if (before) {
     out.scene = before->scene;
   } else {
-    r.fail(at, "the first step must name a \"scene\"");
+    r.fail(at, tr("the first step must name a \"scene\""));
   }
   if (step.contains("camera")) {
     const json& camera = step["camera"];
     if (camera.is_number_integer()) out.camera = std::to_string(r.integer(camera, at + "/camera", "camera", 0, 1000));
     else if (camera.is_string() && !camera.get<std::string>().empty() &&
              camera.get<std::string>().find_first_of(" \t") == std::string::npos) out.camera = camera.get<std::string>();
-    else r.fail(at + "/camera", "camera is an index or a name without spaces");
+    else r.fail(at + "/camera", tr("camera is an index or a name without spaces"));
   } else if (before && before->scene == out.scene) {
     out.camera = before->camera;
   }
   if (step.contains("model")) out.model = r.one_of(step["model"], at + "/model", "model", model_names());
   else if (before) out.model = before->model;
-  else r.fail(at, "the first step must name a \"model\"");
+  else r.fail(at, tr("the first step must name a \"model\""));
 
   const int line = out.line = r.line(at);
   std::vector<ScriptCommand>& c = out.commands;
@@ -394,9 +394,9 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
   if (step.contains("panes")) {
     const json& panes = step["panes"];
     if (!panes.is_array() || (panes.size() != 2 && panes.size() != 4))
-      r.fail(at + "/panes", "panes lists 2 or 4 models");
+      r.fail(at + "/panes", tr("panes lists 2 or 4 models"));
     for (size_t i = 0; i < panes.size(); ++i)
-      out.panes.push_back(r.one_of(panes[i], fmt::format("{}/panes/{}", at, i), "a pane's model", model_names()));
+      out.panes.push_back(r.one_of(panes[i], fmt::format("{}/panes/{}", at, i), tr("a pane's model"), model_names()));
   }
   c.push_back(command(line, "panes", {out.panes.empty() ? out.model : fmt::format("{}", fmt::join(out.panes, ","))}));
   actions(r, step, at, line, out.model, c);
@@ -413,7 +413,7 @@ Lesson parse_lesson_text(const std::string& text, const std::filesystem::path& n
     // nlohmann counts bytes; the message's own position text is dropped for our FILE:LINE.
     std::string what = error.what();
     if (const size_t colon = what.find("syntax error"); colon != std::string::npos) what = what.substr(colon);
-    throw Error(ErrorKind::usage, fmt::format("{}:{}: not JSON: {}", name.string(), line_of_byte(text, error.byte), what));
+    throw Error(ErrorKind::usage, trf("{}:{}: not JSON: {}", name.string(), line_of_byte(text, error.byte), what));
   }
   const char* furthest = text.data();
   LineRecorder recorder(text, &furthest);
@@ -423,11 +423,11 @@ Lesson parse_lesson_text(const std::string& text, const std::filesystem::path& n
 
   Lesson lesson;
   lesson.file = name;
-  r.only_keys(document, "", "the lesson", {"title", "steps"});
-  if (!document.contains("title")) r.fail("", "the lesson's \"title\" is missing");
-  lesson.title = r.text(document["title"], "/title", "the lesson's title");
+  r.only_keys(document, "", tr("the lesson"), {"title", "steps"});
+  if (!document.contains("title")) r.fail("", tr("the lesson's \"title\" is missing"));
+  lesson.title = r.text(document["title"], "/title", tr("the lesson's title"));
   if (!document.contains("steps") || !document["steps"].is_array() || document["steps"].empty())
-    r.fail(document.contains("steps") ? "/steps" : "", "the lesson needs \"steps\", a list of at least one step");
+    r.fail(document.contains("steps") ? "/steps" : "", tr("the lesson needs \"steps\", a list of at least one step"));
   const std::filesystem::path folder = name.parent_path();
   const json& steps = document["steps"];
   for (size_t i = 0; i < steps.size(); ++i)
@@ -437,10 +437,19 @@ Lesson parse_lesson_text(const std::string& text, const std::filesystem::path& n
 
 Lesson parse_lesson(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(ErrorKind::usage, fmt::format("{}: cannot read the lesson", file.string()));
+  if (!in) throw Error(ErrorKind::usage, trf("{}: cannot read the lesson", file.string()));
   std::ostringstream text;
   text << in.rdbuf();
   return parse_lesson_text(text.str(), file);
+}
+
+std::filesystem::path default_lesson() {
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error)
+    for (const std::filesystem::path& folder : {exe.parent_path() / "lessons", exe.parent_path() / "../share/luz/lessons"})
+      if (std::filesystem::is_regular_file(folder / "sintesis.json", error)) return folder / "sintesis.json";
+  return std::filesystem::path(LUZ_LESSON_DIR) / "sintesis.json";
 }
 
 std::optional<std::string> lesson_verb_problem(const ScriptCommand& c) {
@@ -493,6 +502,14 @@ std::vector<ScriptCommand> LessonPlayer::go_to(size_t index) {
   return out;
 }
 
+Script LessonPlayer::opening_script(size_t index) {
+  Script script;
+  script.file = lesson_.file;
+  for (ScriptCommand& c : go_to(index))
+    if (c.verb != "panes") script.commands.push_back(std::move(c));
+  return script;
+}
+
 nlohmann::json LessonPlayer::to_json(i18n::Language language) const {
   const LessonStep& s = step();
   json j;
@@ -517,7 +534,7 @@ bool LessonPlayer::run(const ScriptCommand& c, std::vector<ScriptCommand>& to_ru
     if (a[0] == "goto") {
       const size_t n = size_t(std::stoul(a[1]));
       if (n < 1 || n > size()) {
-        error = fmt::format("the lesson has steps 1 .. {}, not {}", size(), n);
+        error = trf("the lesson has steps 1 .. {}, not {}", size(), n);
         return false;
       }
       to_run = go_to(n - 1);
@@ -528,7 +545,7 @@ bool LessonPlayer::run(const ScriptCommand& c, std::vector<ScriptCommand>& to_ru
     std::ofstream out(a[0]);
     out << to_json(i18n::language()).dump(2) << '\n';
     if (!out) {
-      error = fmt::format("{}: cannot write the lesson's step", a[0]);
+      error = trf("{}: cannot write the lesson's step", a[0]);
       return false;
     }
   }

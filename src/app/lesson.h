@@ -62,6 +62,10 @@ struct Lesson {
 Lesson parse_lesson(const std::filesystem::path& file);
 Lesson parse_lesson_text(const std::string& text, const std::filesystem::path& name);
 
+// lessons/sintesis.json: next to the binary (an installed or copied tree), else in the source
+// tree the build was configured from.
+std::filesystem::path default_lesson();
+
 // The verbs a lesson adds to the script language. `lesson next|prev|goto N` (N counts steps
 // from 1), `lang es|en`, `dump-lesson FILE.json`. Returns std::nullopt when `command` is not one
 // of them, else "" when its arguments are right or what is wrong with them.
@@ -91,6 +95,10 @@ public:
   // Runs a lesson verb (see lesson_verb_problem): `to_run` receives the commands a move needs;
   // false with `error` set when a file cannot be written or N is not a step.
   bool run(const ScriptCommand& command, std::vector<ScriptCommand>& to_run, std::string& error);
+
+  // The commands of go_to(index) as a script for the viewer of today, which shows one picture:
+  // `panes` is left out of it.
+  Script opening_script(size_t index);
 
 private:
   Lesson lesson_;

@@ -31,21 +31,21 @@ bool any_of(const std::vector<std::string>& models, auto predicate) {
 void check_flags(const RenderSettings& settings, const std::vector<std::string>& models) {
   if (settings.ray_tree) throw Error(ErrorKind::usage, "--ray-tree: only with a single --model whitted or hybrid");
   if (!settings.local_only_flags.empty() && !any_of(models, is_local))
-    throw Error(ErrorKind::usage, fmt::format("{}: only when a pane is flat, gouraud or phong",
+    throw Error(ErrorKind::usage, trf("{}: only when a pane is flat, gouraud or phong",
                                               settings.local_only_flags.front()));
   const auto traced = [](const std::string& m) { return m == "whitted" || m == "hybrid"; };
   if (!settings.whitted_only_flags.empty() && !any_of(models, traced))
-    throw Error(ErrorKind::usage, fmt::format("{}: only when a pane is whitted or hybrid",
+    throw Error(ErrorKind::usage, trf("{}: only when a pane is whitted or hybrid",
                                               settings.whitted_only_flags.front()));
   for (const std::string& flag : settings.radiosity_only_flags) {
     const bool display_only = flag == "--flat-patches" || flag == "--outlines";
     const auto takes = [&](const std::string& m) { return m == "radiosity" || (m == "hybrid" && !display_only); };
     if (!any_of(models, takes))
-      throw Error(ErrorKind::usage, fmt::format("{}: only when a pane is radiosity{}", flag,
+      throw Error(ErrorKind::usage, trf("{}: only when a pane is radiosity{}", flag,
                                                 display_only ? "" : " or hybrid"));
   }
   if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
-    throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+    throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                               settings.local.fog.far, settings.local.fog.near));
 }
 
@@ -84,10 +84,10 @@ std::vector<std::string> parse_model_list(const std::string& text) {
   for (const std::string& model : models)
     if (std::find_if(std::begin(kModels), std::end(kModels), [&](const char* m) { return model == m; }) ==
         std::end(kModels))
-      throw Error(ErrorKind::usage, fmt::format("--model {}: unknown model \"{}\" (flat, gouraud, phong, "
+      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" (flat, gouraud, phong, "
                                                 "whitted, radiosity, hybrid)", text, model));
   if (models.size() != 2 && models.size() != 4)
-    throw Error(ErrorKind::usage, fmt::format("--model {}: side by side takes 2 or 4 models, not {}", text,
+    throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
                                               models.size()));
   return models;
 }
@@ -103,7 +103,7 @@ std::string model_option_problem(const std::string& text) {
   }
   for (const char* model : kModels)
     if (text == model) return "";
-  return fmt::format("unknown model \"{}\" (flat, gouraud, phong, whitted, radiosity, hybrid, or 2 or 4 of "
+  return trf("unknown model \"{}\" (flat, gouraud, phong, whitted, radiosity, hybrid, or 2 or 4 of "
                      "them separated by commas)", text);
 }
 
@@ -145,7 +145,7 @@ int run_render_grid(const RenderSettings& settings) {
     const std::vector<std::string> models = parse_model_list(settings.model);
     check_flags(settings, models);
     if (!io::is_supported_output(settings.out))
-      throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
+      throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     const LabelFont font;
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
@@ -154,7 +154,7 @@ int run_render_grid(const RenderSettings& settings) {
     if (!settings.camera.empty()) {
       camera_index = scene.find_camera(settings.camera);
       if (camera_index < 0)
-        throw Error(ErrorKind::usage, fmt::format("{}: no camera \"{}\"", settings.scene, settings.camera));
+        throw Error(ErrorKind::usage, trf("{}: no camera \"{}\"", settings.scene, settings.camera));
     }
     const Camera& camera = scene.cameras[size_t(camera_index)];
     int width = settings.width, height = settings.height;
