@@ -62,7 +62,7 @@ void set_language(Language language);
 Language language();
 
 // The current language's text for `id` (an English message id in the sources), or `id` itself
-// when the catalogue lacks it. xgettext extracts the ids from tr("...") (po/README.md).
+// when the catalogue lacks it. xgettext extracts the ids from tr("...") (docs/classroom.md).
 const char* tr(const char* id);
 
 // fmt::format with a translated format string: trf("{} shots", n). The translation must keep

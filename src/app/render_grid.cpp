@@ -179,8 +179,8 @@ int run_render_grid(const RenderSettings& settings) {
     io::write_image(sheet, settings.out, exposure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet)
-      fmt::print("{}: {} {}x{} panes ({}x{} each), camera \"{}\", exposure {:+g} EV, {:.3f} s\n", settings.out,
-                 settings.model, layout.columns, layout.rows, width, height, camera.name, exposure, seconds);
+      fmt::print("{}\n", trf("{}: {} {}x{} panes ({}x{} each), camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
+                              settings.model, layout.columns, layout.rows, width, height, camera.name, exposure, seconds));
     return 0;
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());
