@@ -2,6 +2,7 @@
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,7 +12,10 @@
 
 #include "app/bench_command.h"
 #include "app/compare_command.h"
+#include "app/i18n.h"
+#include "app/lesson.h"
 #include "app/render_command.h"
+#include "app/render_grid.h"
 #include "app/render_path.h"
 #include "app/solvers_command.h"
 #include "app/resources.h"
@@ -73,8 +77,9 @@ std::vector<CLI::Option*> add_effect_flags(CLI::App& render, luz::LocalOptions& 
 // Returns the flags of slide 19's switches (see add_effect_flags).
 std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
-  render.add_option("--model", settings.model, "Illumination model")
-      ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kModels), std::end(luz::app::kModels))))
+  render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
+      ->check(CLI::Validator([](std::string& text) { return luz::app::model_option_problem(text); },
+                             "MODEL[,MODEL...]"))
       ->capture_default_str();
   render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
       ->required();
@@ -190,13 +195,23 @@ int no_display(const std::string& scene) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The catalogue follows LC_ALL / LC_MESSAGES / LANG, and --lang over them. No setlocale():
+  // the C locale keeps the decimal point that scenes and flags are read with.
+  luz::i18n::set_language(luz::i18n::language_from_environment());
   CLI::App app{"Luz: an interactive lab for realistic image synthesis (\"Síntesis realista de imágenes\").\n"
                "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships)."};
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", "luz " LUZ_VERSION);
   app.footer("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error.");
+  const auto lang = [](const std::string& name) { luz::i18n::set_language(*luz::i18n::parse_language(name)); };
+  app.add_option_function<std::string>("--lang", lang, "Language of the messages and labels: es or en "
+                                       "(default: from LC_ALL, LC_MESSAGES, LANG)")
+      ->check(CLI::IsMember({"es", "en"}));
   luz::app::ViewerSettings viewer;
   std::string script_file;
+  std::optional<std::string> lesson_file;
+  app.add_option("--lesson", lesson_file, "Open a lesson (default: lessons/sintesis.json) at its first step")
+      ->expected(0, 1)->default_str("");
   app.add_option("SCENE", viewer.scene, "glTF scene for the viewer");
   app.add_option("--script", script_file,
                  "Run the viewer from a script of commands (key, click, screenshot, ...; see README)");
@@ -213,6 +228,8 @@ int main(int argc, char** argv) {
   render->footer("--model hybrid (slides 41-43) takes the whitted flags and the radiosity flags "
                  "(all but --flat-patches and --outlines): the diffuse part of every hit from the "
                  "radiosity solution, highlights, kr*Ir and kt*It from rays, no ambient term.");
+  render->add_option_function<std::string>("--lang", lang, "Language of the messages and the panes' labels: es or en")
+      ->check(CLI::IsMember({"es", "en"}));
   const std::vector<CLI::Option*> effect_flags = add_render_flags(*render, settings);
   const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
   const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
@@ -294,10 +311,24 @@ int main(int argc, char** argv) {
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
 
+  if (lesson_file) {  // a malformed lesson is a usage error, found before any window opens
+    try {
+      luz::app::LessonPlayer lesson(luz::app::parse_lesson(lesson_file->empty() ? luz::app::default_lesson()
+                                                                                  : std::filesystem::path(*lesson_file)));
+      viewer.scene = lesson.step().scene;
+      viewer.script = lesson.opening_script(0);
+    } catch (const luz::Error& error) {
+      fmt::print(stderr, "luz: {}\n", error.what());
+      return 2;
+    }
+  }
   if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
   if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens
     try {
-      viewer.script = luz::app::parse_script(script_file);
+      luz::app::Script script = luz::app::parse_script(script_file);
+      if (viewer.script)  // after the lesson's first step
+        script.commands.insert(script.commands.begin(), viewer.script->commands.begin(), viewer.script->commands.end());
+      viewer.script = std::move(script);
     } catch (const luz::Error& error) {
       fmt::print(stderr, "luz: {}\n", error.what());
       return 2;

@@ -1,5 +1,6 @@
 #include "app/render_command.h"
 #include "app/radiosity_command.h"
+#include "app/render_grid.h"
 #include "app/render_hybrid.h"
 #include "app/render_path.h"
 #include "app/render_whitted.h"
@@ -103,6 +104,7 @@ bool parse_rgb(const std::string& text, Rgb& colour) {
 }
 
 int run_render(const RenderSettings& settings) {
+  if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
       throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",

@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/inspector.h"
+#include "app/ui_glyphs.h"
 #include "app/orbit_camera.h"
 #include "app/overlays.h"
 #include "app/panel.h"
@@ -229,7 +230,8 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   ui_scale_ = std::max(content / pixels_per_unit, 1.0f);
   // The formula needs Greek letters, sub- and superscripts: DejaVu Sans has them (Debian's
   // fonts-dejavu-core); without it ImGui's own font shows '?' for those.
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x1D62, 0x1D62, 0x2070, 0x209F, 0x2200, 0x22FF, 0};
+  static_assert(sizeof(ImWchar) == sizeof(kUiGlyphRanges[0]));
+  const ImWchar* ranges = kUiGlyphRanges;
   if (std::filesystem::exists(font_file)) {
     io.Fonts->AddFontFromFileTTF(font_file, font_size * content, nullptr, ranges);
   } else {

@@ -1,0 +1,191 @@
+#include "app/render_grid.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "app/i18n.h"
+#include "app/radiosity_command.h"
+#include "app/render_hybrid.h"
+#include "app/render_whitted.h"
+#include "core/error.h"
+#include "gl/offscreen_context.h"
+#include "io/gltf_loader.h"
+#include "io/image_io.h"
+#include "local/local_renderer.h"
+
+namespace luz::app {
+namespace {
+
+bool is_local(const std::string& model) { return model == "flat" || model == "gouraud" || model == "phong"; }
+
+bool any_of(const std::vector<std::string>& models, auto predicate) {
+  return std::any_of(models.begin(), models.end(), predicate);
+}
+
+// A flag given for one model must reach at least one pane; else it is the same usage error as
+// with a single model.
+void check_flags(const RenderSettings& settings, const std::vector<std::string>& models) {
+  if (settings.ray_tree) throw Error(ErrorKind::usage, "--ray-tree: only with a single --model whitted or hybrid");
+  if (!settings.local_only_flags.empty() && !any_of(models, is_local))
+    throw Error(ErrorKind::usage, trf("{}: only when a pane is flat, gouraud or phong",
+                                              settings.local_only_flags.front()));
+  const auto traced = [](const std::string& m) { return m == "whitted" || m == "hybrid"; };
+  if (!settings.whitted_only_flags.empty() && !any_of(models, traced))
+    throw Error(ErrorKind::usage, trf("{}: only when a pane is whitted or hybrid",
+                                              settings.whitted_only_flags.front()));
+  for (const std::string& flag : settings.radiosity_only_flags) {
+    const bool display_only = flag == "--flat-patches" || flag == "--outlines";
+    const auto takes = [&](const std::string& m) { return m == "radiosity" || (m == "hybrid" && !display_only); };
+    if (!any_of(models, takes))
+      throw Error(ErrorKind::usage, trf("{}: only when a pane is radiosity{}", flag,
+                                                display_only ? "" : " or hybrid"));
+  }
+  if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
+    throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+                                              settings.local.fog.far, settings.local.fog.near));
+}
+
+Shading shading_of(const std::string& model) {
+  if (model == "flat") return Shading::flat;
+  if (model == "gouraud") return Shading::gouraud;
+  return Shading::phong;
+}
+
+// One pane: exactly what `luz render --model MODEL` computes for the same flags and size.
+Image render_pane(const Scene& scene, const Camera& camera, int width, int height, RenderSettings pane) {
+  if (pane.model == "whitted") return render_whitted(scene, camera, width, height, pane).image;
+  if (pane.model == "hybrid") return render_hybrid(scene, camera, width, height, pane).image;
+  gl::OffscreenContext context;
+  if (pane.model == "radiosity") return render_radiosity(scene, camera, width, height, pane);
+  LocalOptions options = pane.local;
+  options.shading = shading_of(pane.model);
+  LocalRenderer renderer(scene);
+  Image image = renderer.render(camera, width, height, options);
+  for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+  return image;
+}
+
+}  // namespace
+
+bool is_model_list(const std::string& text) { return text.find(',') != std::string::npos; }
+
+std::vector<std::string> parse_model_list(const std::string& text) {
+  std::vector<std::string> models;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    models.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  for (const std::string& model : models)
+    if (std::find_if(std::begin(kModels), std::end(kModels), [&](const char* m) { return model == m; }) ==
+        std::end(kModels))
+      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" (flat, gouraud, phong, "
+                                                "whitted, radiosity, hybrid)", text, model));
+  if (models.size() != 2 && models.size() != 4)
+    throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
+                                              models.size()));
+  return models;
+}
+
+std::string model_option_problem(const std::string& text) {
+  if (is_model_list(text)) {
+    try {
+      parse_model_list(text);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "";
+  }
+  for (const char* model : kModels)
+    if (text == model) return "";
+  return trf("unknown model \"{}\" (flat, gouraud, phong, whitted, radiosity, hybrid, or 2 or 4 of "
+                     "them separated by commas)", text);
+}
+
+GridLayout grid_layout(size_t panes) { return panes <= 2 ? GridLayout{int(panes), 1} : GridLayout{2, 2}; }
+
+std::string model_label(const std::string& model) {
+  if (model == "flat") return tr("flat");
+  if (model == "gouraud") return tr("Gouraud");
+  if (model == "phong") return tr("Phong");
+  if (model == "whitted") return tr("Whitted");
+  if (model == "radiosity") return tr("radiosity");
+  if (model == "hybrid") return tr("hybrid");
+  return model;
+}
+
+// Big enough to read on a printed page, whatever the pane's size.
+float label_pixel_height(int pane_height) { return std::max(12.0f, float(pane_height) / 16.0f); }
+
+LabelBox label_box(const LabelFont& font, const std::string& label, int pane_height) {
+  const float size = label_pixel_height(pane_height);
+  const LabelFont::Extent extent = font.measure(label, size);
+  const int pad = int(std::ceil(0.3f * size));
+  return {0, 0, extent.width + 2 * pad, extent.ascent + extent.descent + 2 * pad};
+}
+
+void draw_label(Image& pane, const LabelFont& font, const std::string& label, float exposure) {
+  const LabelBox box = label_box(font, label, pane.height);
+  for (int y = box.y; y < std::min(box.y + box.height, pane.height); ++y)
+    for (int x = box.x; x < std::min(box.x + box.width, pane.width); ++x) pane.at(x, y) *= 0.25f;
+  // The PNG multiplies by 2^exposure: this radiance comes out white.
+  const Rgb white(std::exp2(-exposure));
+  const float size = label_pixel_height(pane.height);
+  const int pad = int(std::ceil(0.3f * size));
+  font.draw(pane, box.x + pad, box.y + pad, label, size, white);
+}
+
+int run_render_grid(const RenderSettings& settings) {
+  try {
+    const std::vector<std::string> models = parse_model_list(settings.model);
+    check_flags(settings, models);
+    if (!io::is_supported_output(settings.out))
+      throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
+    const LabelFont font;
+    io::LoadedScene loaded = io::load_gltf(settings.scene);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    const Scene& scene = loaded.scene;
+    int camera_index = 0;
+    if (!settings.camera.empty()) {
+      camera_index = scene.find_camera(settings.camera);
+      if (camera_index < 0)
+        throw Error(ErrorKind::usage, trf("{}: no camera \"{}\"", settings.scene, settings.camera));
+    }
+    const Camera& camera = scene.cameras[size_t(camera_index)];
+    int width = settings.width, height = settings.height;
+    if (width <= 0) {
+      height = kDefaultPaneHeight;
+      width = std::max(1, int(std::lround(float(height) * (camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f))));
+    }
+    const float exposure = settings.exposure.value_or(scene.exposure);
+    const GridLayout layout = grid_layout(models.size());
+
+    const auto start = std::chrono::steady_clock::now();
+    Image sheet(layout.columns * width, layout.rows * height);
+    for (size_t i = 0; i < models.size(); ++i) {
+      RenderSettings pane = settings;
+      pane.model = models[i];
+      Image image = render_pane(scene, camera, width, height, pane);
+      draw_label(image, font, model_label(models[i]), exposure);
+      const int left = int(i) % layout.columns * width, top = int(i) / layout.columns * height;
+      for (int y = 0; y < height; ++y)
+        std::copy_n(&image.at(0, y), width, &sheet.at(left, top + y));
+    }
+    io::write_image(sheet, settings.out, exposure);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!settings.quiet)
+      fmt::print("{}\n", trf("{}: {} {}x{} panes ({}x{} each), camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
+                              settings.model, layout.columns, layout.rows, width, height, camera.name, exposure, seconds));
+    return 0;
+  } catch (const Error& error) {
+    fmt::print(stderr, "luz: {}\n", error.what());
+    return error.kind == ErrorKind::usage ? 2 : 1;
+  }
+}
+
+}  // namespace luz::app
