@@ -98,6 +98,11 @@ TEST(PathCli, SameSeedSameFileAndMoreTimeLessNoise) {
   EXPECT_NE(a.first.pixels, c.first.pixels);
   // --time with --spp as the cap: passes until either is reached; 64 samples in 60 s here.
   const auto timed = render("t", {"--spp", "64", "--time", "60"});
+  // A time shorter than one pass still renders one.
+  const auto instant = render("i", {"--time", "0.001"});
+  double lit = 0.0;
+  for (const Rgb& c : instant.first.pixels) lit += c.g;
+  EXPECT_GT(lit, 0.0);
   double noise_a = 0.0, noise_t = 0.0;
   for (size_t i = 0; i < a.second.pixels.size(); ++i) {
     noise_a += a.second.pixels[i].g;

@@ -148,7 +148,8 @@ Scene direct_light_scene() {
   scene.materials.push_back(lamp);
   scene.meshes.push_back(test::quad("floor", {-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
   scene.meshes.push_back(test::box("block", {-0.4f, 0, -0.4f}, {0.4f, 0.8f, 0.4f}, 1));
-  scene.meshes.push_back(test::quad("lamp", {0.5f, 2.0f, -1.0f}, {0, 0, 0.6f}, {0.6f, 0, 0}, 2));
+  // Wound so that a x b points down: the lamp emits toward the floor.
+  scene.meshes.push_back(test::quad("lamp", {0.5f, 2.0f, -1.0f}, {0.6f, 0, 0}, {0, 0, 0.6f}, 2));
   Light point;
   point.position = {-1.5f, 2.0f, 1.0f};
   point.intensity = Rgb(3.0f);
@@ -232,6 +233,8 @@ TEST(PathTracer, DepthOneEqualsWhittedsDirectLight) {
   whitted.light_samples = 4096;  // N-rooks over the lamp: its own error ~1e-4 here
   PathOptions path;
   path.max_depth = 1;
+  ASSERT_EQ(scene.area_lights.size(), size_t(2));
+  ASSERT_LT(scene.area_lights[0].normal.y, 0.0f);  // the lamp faces the floor
   const RayComparison r = compare_with_whitted(scene, camera, 24, 18, whitted, path, 256, 2e-3);
   ASSERT_EQ(r.pixels, 24 * 18);
   // At most 3 of the 1296 pixel-channels outside 4.5 errors (expected: fewer than 0.01).

@@ -57,7 +57,7 @@ int text_width(const std::string& text, int scale) { return int(text.size()) * 4
 
 // The heat map above a legend: a colour bar from -range to +range, labelled at both ends and 0.
 Image with_legend(const Image& heatmap, float range) {
-  const int scale = std::max(1, heatmap.width / 200);
+  const int scale = std::max(2, heatmap.width / 160);  // font pixels: legible at any size
   const int bar = 8 * scale, label = 7 * scale, margin = 2 * scale;
   Image out(heatmap.width, heatmap.height + margin + bar + label + margin, Rgb(0.0f));
   for (int y = 0; y < heatmap.height; ++y)

@@ -111,7 +111,7 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
   luz::rt::WhittedOptions& w = settings.whitted;
   std::vector<CLI::Option*> flags;
   flags.push_back(render.add_option("--depth", w.max_depth,
-      "whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
+      "whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; path: default 16; 1 or 0: no "
       "reflected or transmitted rays)")->check(CLI::Range(0, 64))->capture_default_str());
   flags.push_back(render.add_option("--spp", w.spp,
       "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...; path: any N (default 16)")

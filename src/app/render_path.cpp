@@ -67,12 +67,13 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
                         std::string(size_t(bar - bar * percent / 100), '.'), percent, spp));
     });
   } else {
-    // Passes of one sample per pixel until the time is up (a pass that starts finishes).
+    // Passes of one sample per pixel until the time is up (a pass that starts finishes; the
+    // first always runs, so the picture is never empty).
     const int cap = spp_given ? spp : std::numeric_limits<int>::max();
-    while (film.min_samples() < cap && since(start) < *seconds) {
+    do {
       tracer.add_samples(film, camera, options, 1);
       shown(fmt::format("path {:.1f} / {:g} s  {} spp", since(start), *seconds, film.min_samples()));
-    }
+    } while (film.min_samples() < cap && since(start) < *seconds);
   }
   if (progress) fmt::print(stderr, "\n");
 
