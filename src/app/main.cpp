@@ -77,7 +77,7 @@ std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& set
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
   render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
       ->check(CLI::Validator([](std::string& text) { return luz::app::model_option_problem(text); },
-                             "MODEL[,MODEL...]"))
+                             fmt::format("{{{}}}[,...]", fmt::join(luz::app::kModels, ","))))
       ->capture_default_str();
   render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
       ->required();
