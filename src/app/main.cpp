@@ -182,9 +182,10 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
 
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
-  fmt::print(stderr, "luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are unset "
-                     "or unreachable).\nluz: for pictures without a display use `luz render`, e.g.\n"
-                     "  luz render {} --model phong --out picture.png\n(see `luz render --help`)\n", scene);
+  fmt::print(stderr, "{}", luz::i18n::trf("luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are "
+                                          "unset or unreachable).\nluz: for pictures without a display use `luz "
+                                          "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
+                                          "`luz render --help`)\n", scene));
   return 1;
 }
 
