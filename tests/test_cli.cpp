@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "core/image.h"
 #include "io/image_io.h"
@@ -175,10 +176,41 @@ TEST(Cli, EachTermSwitchesOff) {
   EXPECT_GT(render({}), render({"--no-emission"}));                         // the lamp shows its Le
 }
 
+// The Cornell box with a second camera, "side_camera", 0.2 m to the left of the first one: a
+// scene where ignoring --camera would show.
+fs::path cornell_with_two_cameras(const test::ScratchDir& dir) {
+  std::ifstream in(cornell());
+  nlohmann::json doc = nlohmann::json::parse(in);
+  doc["cameras"].push_back(doc["cameras"][0]);
+  doc["cameras"][1]["name"] = "side_camera";
+  nlohmann::json node = {{"name", "side_camera"}, {"camera", 1}, {"rotation", {0.0, 1.0, 0.0, 0.0}},
+                         {"translation", {0.078, 0.273, -0.8}}};
+  doc["nodes"].push_back(node);
+  doc["scenes"][0]["nodes"].push_back(doc["nodes"].size() - 1);
+  const fs::path path = dir / "two_cameras.gltf";
+  std::ofstream(path) << doc.dump();
+  fs::copy_file(test::scene_dir() / "cornell_box.bin", dir / "cornell_box.bin");
+  return path;
+}
+
 TEST(Cli, CameraByIndex) {
   test::ScratchDir dir;
-  const auto result = run_luz({"render", cornell(), "--camera", "0", "--size", "16x16", "--out", (dir / "c.png").string()});
-  EXPECT_EQ(result.exit_code, 0) << result.output;
+  const std::string scene = cornell_with_two_cameras(dir).string();
+  const auto render = [&](const std::vector<std::string>& camera, const std::string& name) {
+    std::vector<std::string> args = {"render", scene, "--size", "24x24", "--out", (dir / name).string()};
+    args.insert(args.end(), camera.begin(), camera.end());
+    const auto result = run_luz(args);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return io::read_image(dir / name).pixels;
+  };
+  const auto first = render({"--camera", "0"}, "0.png");
+  const auto second = render({"--camera", "1"}, "1.png");
+  EXPECT_EQ(render({}, "default.png"), first) << "the first camera is the default";
+  EXPECT_EQ(render({"--camera", "side_camera"}, "by_name.png"), second) << "index 1 is side_camera";
+  EXPECT_NE(first, second) << "the two cameras see different pictures";
+  const auto beyond = run_luz({"render", scene, "--camera", "2", "--out", (dir / "2.png").string()});
+  EXPECT_EQ(beyond.exit_code, 2) << beyond.output;
+  EXPECT_TRUE(contains(beyond.output, "no camera \"2\"")) << beyond.output;
 }
 
 // Issue 3: with no display the viewer says so, points to `luz render` and exits 1; it writes

@@ -2,6 +2,7 @@
 // (exit 2), the counters, the ray tree JSON beside the image.
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -94,6 +95,24 @@ TEST(WhittedCli, RendersPrintsTheCountersAndWritesTheRayTree) {
                               "--out", (dir / "q.png").string()});
   EXPECT_EQ(quiet.exit_code, 0);
   EXPECT_EQ(quiet.output, "");
+}
+
+// The bench traces what it says: its --spp is validated as luz render's (a square, else the
+// stratified grid would trace fewer samples than the header announces).
+TEST(WhittedCli, BenchRefusesASampleCountThatIsNotASquare) {
+  for (const char* spp : {"3", "0", "8", "4097", "x"}) {
+    const auto result = run_luz({"bench", "whitted", "--size", "8x6", "--repeats", "1", "--spp", spp,
+                                 "--scenes", "whitted"});
+    EXPECT_EQ(result.exit_code, 2) << spp << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, "--spp")) << result.output;
+    EXPECT_FALSE(contains(result.output, "ratio")) << "nothing benchmarked";
+  }
+  const auto four = run_luz({"bench", "whitted", "--size", "8x6", "--repeats", "1", "--spp", "4",
+                             "--depth", "1", "--scenes", "whitted"});
+  ASSERT_EQ(four.exit_code, 0) << four.output;
+  EXPECT_TRUE(contains(four.output, "4 spp")) << four.output;
+  // At depth 1 every traced ray but the shadow rays is primary: 8 x 6 pixels x 4 samples.
+  EXPECT_TRUE(std::regex_search(four.output, std::regex("primary +192 rays"))) << four.output;
 }
 
 TEST(WhittedCli, BenchPrintsTheRatioToBareEmbree) {

@@ -134,6 +134,50 @@ TEST(WhittedTracer, TotalInternalReflectionGivesKtToTheReflectedRay) {
   EXPECT_NEAR(fresnel.nodes[2].weight.r, 0.9f * 0.96f, 1e-5f);
 }
 
+// ---- With Fresnel, the reflected share at oblique incidence is Fresnel's formula ----------------
+// A glass slab (kr 0.05, kt 0.9, ior 1.5) seen from outside at 60 and 85 degrees, and a glass
+// cube seen from inside at 30 degrees (below the critical 41.8): the reflected ray weighs
+// kr + kt F(theta) and the transmitted one kt (1 - F(theta)), F from the sine and tangent forms
+// worked here in double precision (F(60) = 0.089, F(85) = 0.61: far from F(0) = 0.04).
+double fresnel_sines(double ti, double n1, double n2) {
+  const double tt = std::asin(n1 * std::sin(ti) / n2);
+  const double rs = std::pow(std::sin(ti - tt) / std::sin(ti + tt), 2);
+  const double rp = std::pow(std::tan(ti - tt) / std::tan(ti + tt), 2);
+  return 0.5 * (rs + rp);
+}
+
+TEST(WhittedTracer, FresnelSplitsKtByTheAngleOfIncidence) {
+  Scene scene;
+  Material glass = test::matte(Rgb(0.0f));
+  glass.kr = Rgb(0.05f);
+  glass.kt = Rgb(0.9f);
+  glass.ior = 1.5f;
+  scene.materials.push_back(glass);
+  scene.meshes.push_back(test::box("slab", {-50, -50, -1}, {50, 50, 0}, 0));
+  scene.meshes.push_back(test::box("cube", {-1, -1, 10}, {1, 1, 12}, 0));
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 2;
+  options.fresnel = true;
+  const auto expect_split = [&](const glm::vec3& eye, const glm::vec3& direction, double F) {
+    // The centre pixel of a 3x3 image looks exactly along the camera's axis.
+    const RayTree tree = tracer.trace_pixel(test::look_at(eye, eye + direction), 3, 3, 1, 1, options);
+    ASSERT_EQ(tree.nodes.size(), 3u) << tree.to_json();
+    EXPECT_EQ(tree.nodes[1].kind, RayKind::reflected);
+    EXPECT_NEAR(tree.nodes[1].weight.r, 0.05 + 0.9 * F, 1e-5);
+    EXPECT_EQ(tree.nodes[2].kind, RayKind::transmitted);
+    EXPECT_NEAR(tree.nodes[2].weight.r, 0.9 * (1.0 - F), 1e-5);
+  };
+  for (const double deg : {60.0, 85.0}) {
+    SCOPED_TRACE(testing::Message() << "outside, " << deg << " degrees");
+    const double t = deg * pi / 180;
+    expect_split({0, 0, 2}, {float(std::sin(t)), 0, float(-std::cos(t))}, fresnel_sines(t, 1.0, 1.5));
+  }
+  SCOPED_TRACE("inside, 30 degrees");
+  const double t = 30.0 * pi / 180;
+  expect_split({-0.5f, 0, 11}, {float(std::sin(t)), 0, float(std::cos(t))}, fresnel_sines(t, 1.5, 1.0));
+}
+
 // ---- Energy never grows along a path ------------------------------------------------------------
 // In every ray tree of the shipped scenes, with and without Fresnel: a hit's secondary rays
 // weigh at most 1 together, so each ray's share of the pixel is at most its parent's.

@@ -24,6 +24,7 @@
 #include "core/error.h"
 #include "io/gltf_loader.h"
 #include "raytracing/renderer.h"
+#include "raytracing/sampling.h"
 
 namespace luz::app {
 
@@ -83,7 +84,12 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
   bench.add_option("--depth", settings.depth, "Maximum ray depth (slide 26)")
       ->check(CLI::Range(1, 64))->capture_default_str();
   bench.add_option("--spp", settings.spp, "Samples per pixel (a square)")
-      ->check(CLI::Range(1, 4096))->capture_default_str();
+      ->check(CLI::Validator([](std::string& text) {  // as luz render's --spp
+        int n = 0;
+        if (!CLI::detail::lexical_cast(text, n) || !rt::is_square(n) || n > 4096)
+          return std::string("expected a square number of samples: 1, 4, 9, 16, ... (at most 4096)");
+        return std::string();
+      }, "SQUARE"))->capture_default_str();
   bench.add_option("--repeats", settings.repeats, "Best of this many runs")
       ->check(CLI::Range(1, 100))->capture_default_str();
   bench.add_option("--scenes", settings.scenes, "Shipped scene names or glTF paths")

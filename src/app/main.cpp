@@ -11,10 +11,12 @@
 #include <fmt/format.h>
 
 #include "app/bench_command.h"
+#include "app/compare_command.h"
 #include "app/i18n.h"
 #include "app/lesson.h"
 #include "app/render_command.h"
 #include "app/render_grid.h"
+#include "app/render_path.h"
 #include "app/solvers_command.h"
 #include "app/resources.h"
 #include "app/script.h"
@@ -109,14 +111,16 @@ std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& se
   luz::rt::WhittedOptions& w = settings.whitted;
   std::vector<CLI::Option*> flags;
   flags.push_back(render.add_option("--depth", w.max_depth,
-      "whitted/hybrid: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
+      "whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no "
       "reflected or transmitted rays)")->check(CLI::Range(0, 64))->capture_default_str());
   flags.push_back(render.add_option("--spp", w.spp,
-      "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...")
+      "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...; path: any N (default 16)")
       ->check(CLI::Validator([](std::string& text) {
         int n = 0;
-        if (!CLI::detail::lexical_cast(text, n) || !luz::rt::is_square(n) || n > 4096)
-          return std::string("expected a square number of samples: 1, 4, 9, 16, ... (at most 4096)");
+        // Whitted needs a square (checked with the model, check_path_flags); path takes any.
+        if (!CLI::detail::lexical_cast(text, n) || n < 1 || n > (1 << 20))
+          return std::string("expected a number of samples per pixel (whitted/hybrid: a square "
+                             "1, 4, 9, 16, ... at most 4096; path: 1 .. 1048576)");
         return std::string();
       }, "SQUARE"))->capture_default_str());
   flags.push_back(render.add_flag_callback("--adaptive", [&w] { w.sampling = luz::rt::Sampling::adaptive; },
@@ -230,6 +234,7 @@ int main(int argc, char** argv) {
   const std::vector<CLI::Option*> effect_flags = add_render_flags(*render, settings);
   const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
   const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
+  const std::vector<CLI::Option*> path_flags = luz::app::add_path_flags(*render, settings.path);
 
   luz::app::SolversSettings solvers_settings;
   CLI::App* solvers = app.add_subcommand(
@@ -258,6 +263,11 @@ int main(int argc, char** argv) {
                       "Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows")
       ->check(CLI::Range(1, 10000))->capture_default_str();
   solvers->add_flag("-q,--quiet", solvers_settings.quiet, "Print nothing on success");
+
+  luz::app::CompareSettings compare_settings;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels");
+  luz::app::add_compare_flags(*compare, compare_settings);
 
   luz::app::WhittedBenchSettings bench_settings;
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
@@ -293,9 +303,12 @@ int main(int argc, char** argv) {
       if (flag->count() > 0) settings.radiosity_only_flags.push_back(flag->get_name());
     for (const CLI::Option* flag : effect_flags)
       if (flag->count() > 0) settings.local_only_flags.push_back(flag->get_name());
+    for (const CLI::Option* flag : path_flags)
+      if (flag->count() > 0) settings.path_only_flags.push_back(flag->get_name());
     return luz::app::run_render(settings);
   }
   if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);
+  if (compare->parsed()) return luz::app::run_compare(compare_settings);
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
 

@@ -2,6 +2,7 @@
 #include "app/radiosity_command.h"
 #include "app/render_grid.h"
 #include "app/render_hybrid.h"
+#include "app/render_path.h"
 #include "app/render_whitted.h"
 
 #include <chrono>
@@ -122,9 +123,12 @@ int run_render(const RenderSettings& settings) {
     if (!local && !settings.local_only_flags.empty())
       throw Error(ErrorKind::usage, fmt::format("{}: only with --model flat, gouraud or phong (slide 19's "
                                                 "switches of the local models)", settings.local_only_flags.front()));
-    if (settings.model != "whitted" && !hybrid && !settings.whitted_only_flags.empty())
-      throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted or hybrid",
-                                                settings.whitted_only_flags.front()));
+    const bool path = settings.model == "path";
+    for (const std::string& flag : settings.whitted_only_flags)
+      if (settings.model != "whitted" && !hybrid && !(path && (flag == "--spp" || flag == "--depth")))
+        throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted or hybrid{}", flag,
+                                                  flag == "--spp" || flag == "--depth" ? " or path" : ""));
+    check_path_flags(settings);
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
     const Scene& scene = loaded.scene;
@@ -148,6 +152,9 @@ int run_render(const RenderSettings& settings) {
       image = std::move(traced.image);
     } else if (hybrid) {
       traced = render_hybrid(scene, camera, width, height, settings);
+      image = std::move(traced.image);
+    } else if (path) {
+      traced = render_path_model(scene, camera, width, height, settings);
       image = std::move(traced.image);
     } else if (settings.model == "radiosity") {
       gl::OffscreenContext context;

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/render_path.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
 #include "raytracing/whitted_options.h"
@@ -13,7 +14,7 @@ namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity | hybrid
+  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity | hybrid | path
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
@@ -33,10 +34,13 @@ struct RenderSettings {
   rt::WhittedOptions whitted;
   std::optional<std::pair<int, int>> ray_tree;
   std::vector<std::string> whitted_only_flags;
+  // --model path: its own flags (it shares --spp and --depth with whitted), and which were given.
+  PathFlags path;
+  std::vector<std::string> path_only_flags;
 };
 
 // The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity", "hybrid"};
+inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity", "hybrid", "path"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);

@@ -83,6 +83,7 @@ public:
   Rgb color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared = nullptr);
 
   SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
+  Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
   // (not traced): punctual lights and the samples of the emissive triangles.
   void light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out);
@@ -99,7 +100,6 @@ private:
   Rgb shadowed(std::span<const LightSample> lights, const bool* blocked);
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
                  float distance, int light, std::vector<LightSample>& out) const;
-  Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture
   int begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
 
   const Scene& scene_;

@@ -1,0 +1,143 @@
+#include "app/render_path.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/render_command.h"
+#include "app/render_whitted.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "raytracing/path_tracer.h"
+#include "raytracing/sampling.h"
+
+namespace luz::app {
+
+std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
+  return {
+      render.add_option("--seed", flags.seed,
+                        "path: seed of the random numbers (the same seed gives the same picture)")
+          ->capture_default_str(),
+      render.add_option("--time", flags.seconds,
+                        "path: render passes of one sample per pixel until SECONDS are up "
+                        "(with --spp: at most that many samples)")
+          ->check(CLI::Range(0.001, 1e7)),
+      render.add_option("--error-out", flags.error_out,
+                        "path: write the per-pixel standard error of the mean to this .exr"),
+  };
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+PathResult render_path(const Scene& scene, const Camera& camera, int width, int height,
+                       const rt::PathOptions& options, std::optional<double> seconds,
+                       bool spp_given, bool progress) {
+  const auto start = Clock::now();
+  rt::PathRenderer tracer(scene);
+  rt::PathFilm film(width, height);
+  const int spp = std::max(1, options.spp);
+  const auto shown = [&](const std::string& line) {
+    if (!progress) return;
+    fmt::print(stderr, "\r{}\x1b[K", line);
+    std::fflush(stderr);
+  };
+
+  if (!seconds) {
+    // One pass of spp samples, the bar advancing tile by tile.
+    int last = -1;
+    tracer.add_samples(film, camera, options, spp, [&](const rt::Tile&, int done, int total) {
+      const int percent = 100 * done / total;
+      if (percent == last) return;
+      last = percent;
+      constexpr int bar = 40;
+      shown(fmt::format("path [{}{}] {:3}%  {} spp", std::string(size_t(bar * percent / 100), '#'),
+                        std::string(size_t(bar - bar * percent / 100), '.'), percent, spp));
+    });
+  } else {
+    // Passes of one sample per pixel until the time is up (a pass that starts finishes).
+    const int cap = spp_given ? spp : std::numeric_limits<int>::max();
+    while (film.min_samples() < cap && since(start) < *seconds) {
+      tracer.add_samples(film, camera, options, 1);
+      shown(fmt::format("path {:.1f} / {:g} s  {} spp", since(start), *seconds, film.min_samples()));
+    }
+  }
+  if (progress) fmt::print(stderr, "\n");
+
+  PathResult result;
+  result.mean = film.mean();
+  result.standard_error = film.standard_error();
+  result.spp = film.min_samples();
+  result.seconds = since(start);
+  double error = 0.0;
+  for (const Rgb& e : result.standard_error.pixels) error += double(e.r + e.g + e.b) / 3.0;
+  error /= double(std::max<size_t>(1, result.standard_error.pixels.size()));
+  const double samples = double(width) * double(height) * double(result.spp);
+  result.summary = fmt::format("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
+                               "error {:.4g}\n", result.spp, rt::max_depth_of(options), options.seed,
+                               samples / std::max(result.seconds, 1e-9), error);
+  return result;
+}
+
+namespace {
+
+bool given(const std::vector<std::string>& flags, const char* flag) {
+  return std::find(flags.begin(), flags.end(), flag) != flags.end();
+}
+
+}  // namespace
+
+void check_path_flags(const RenderSettings& settings) {
+  const bool path = settings.model == "path";
+  if (!path && !settings.path_only_flags.empty())
+    throw Error(ErrorKind::usage,
+                fmt::format("{}: only with --model path", settings.path_only_flags.front()));
+  if (!path && given(settings.whitted_only_flags, "--spp") &&
+      (!rt::is_square(settings.whitted.spp) || settings.whitted.spp > 4096))
+    throw Error(ErrorKind::usage, fmt::format("--spp {}: expected a square number of samples: 1, 4, "
+                                              "9, 16, ... (at most 4096)", settings.whitted.spp));
+  if (path && !settings.path.error_out.empty()) {
+    std::string extension = std::filesystem::path(settings.path.error_out).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension != ".exr")
+      throw Error(ErrorKind::usage, fmt::format("--error-out {}: the standard error is written as "
+                                                ".exr (linear float)", settings.path.error_out));
+  }
+}
+
+WhittedResult render_path_model(const Scene& scene, const Camera& camera, int width, int height,
+                                const RenderSettings& settings) {
+  rt::PathOptions options;
+  options.textures = settings.local.textures;
+  options.seed = settings.path.seed;
+  // --spp and --depth are the Whitted tracer's flags too; unless given, the path tracer's
+  // own defaults hold.
+  const bool spp_given = given(settings.whitted_only_flags, "--spp");
+  if (spp_given) options.spp = settings.whitted.spp;
+  if (given(settings.whitted_only_flags, "--depth")) options.max_depth = settings.whitted.max_depth;
+  const PathResult path = render_path(scene, camera, width, height, options, settings.path.seconds,
+                                      spp_given, !settings.quiet && isatty(STDERR_FILENO));
+  if (!settings.path.error_out.empty())
+    io::write_image(path.standard_error, settings.path.error_out, 0.0f);
+  WhittedResult result;
+  result.image = path.mean;
+  result.summary = path.summary;
+  if (!settings.path.error_out.empty())
+    result.summary += fmt::format("standard error: {}\n", settings.path.error_out);
+  return result;
+}
+
+}  // namespace luz::app

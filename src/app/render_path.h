@@ -1,0 +1,55 @@
+#pragma once
+// `luz render --model path`: the path tracer of src/raytracing (slide 14's equation, the
+// reference model), for a number of samples per pixel or until a time is up, with the mean
+// picture and the per-pixel standard error of that mean.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+#include "raytracing/path_options.h"
+
+namespace CLI { class App; class Option; }
+
+namespace luz::app {
+
+struct RenderSettings;
+struct WhittedResult;
+
+// The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
+struct PathFlags {
+  uint32_t seed = 0;
+  std::optional<double> seconds;  // --time: passes of one sample per pixel until it is up
+  std::string error_out;          // --error-out FILE.exr: the standard error per pixel
+};
+
+// Declares --seed, --time and --error-out on `render`; returns them so that the command can
+// tell which were given (a usage error with another model).
+std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags);
+
+struct PathResult {
+  Image mean;            // the picture: the mean of the samples
+  Image standard_error;  // per pixel and channel, of that mean
+  int spp = 0;           // samples per pixel taken
+  double seconds = 0.0;
+  std::string summary;   // one line for the end of the run
+};
+
+// Renders `options.spp` samples per pixel, or with `seconds` passes of one sample per pixel
+// until the time is up (options.spp then caps the count when `spp_given`). Shows progress on
+// stderr when `progress` (a terminal).
+PathResult render_path(const Scene& scene, const Camera& camera, int width, int height,
+                       const rt::PathOptions& options, std::optional<double> seconds,
+                       bool spp_given, bool progress);
+
+// The command's side (render_command.cpp): a usage error (luz::Error) when a path flag comes
+// with another model, --error-out is not an .exr, or another model's --spp is not a square
+// (the path tracer takes any number); and the render itself, which writes --error-out and
+// returns the mean with its summary line.
+void check_path_flags(const RenderSettings& settings);
+WhittedResult render_path_model(const Scene& scene, const Camera& camera, int width, int height,
+                                const RenderSettings& settings);
+
+}  // namespace luz::app
