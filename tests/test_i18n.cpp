@@ -223,7 +223,7 @@ TEST(Locale, NumbersAreReadTheSameWhateverTheLocale) {
   const std::filesystem::path locales = dir / "locales";
   std::filesystem::create_directories(locales);
   ASSERT_EQ(shell("localedef -i de_DE -f UTF-8 " + (locales / "de_DE.UTF-8").string() + " >/dev/null 2>&1"), 0)
-      << "localedef and Debian's locales data make the test's German locale";
+      << "localedef (libc-bin) and the locale sources of Debian's locales package make the test's German locale";
   // The locale is real: in this process it turns the decimal point into a comma.
   setenv("LOCPATH", locales.c_str(), 1);
   ASSERT_NE(std::setlocale(LC_NUMERIC, "de_DE.UTF-8"), nullptr);

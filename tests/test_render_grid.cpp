@@ -81,9 +81,11 @@ TEST(RenderGrid, UsageErrors) {
   const Case cases[] = {
       {{"--model", "flat,gouraud,phong"}, "2 or 4 models, not 3"},
       {{"--model", "flat,goraud"}, "unknown model \"goraud\""},
-      {{"--model", "flat,phong", "--depth", "2"}, "--depth: only when a pane is whitted or hybrid"},
+      {{"--model", "flat,phong", "--depth", "2"}, "--depth: only when a pane is whitted, hybrid or path"},
       {{"--model", "flat,whitted", "--ray-tree", "3,3"}, "--ray-tree: only with a single"},
       {{"--model", "whitted,radiosity", "--shadows"}, "--shadows: only when a pane is flat, gouraud or phong"},
+      {{"--model", "flat,whitted", "--spp", "5"}, "--spp 5: expected a square"},
+      {{"--model", "flat,whitted", "--seed", "3"}, "--seed: only when a pane is path"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"render", scene(), "--out", out, "--lang", "en"};

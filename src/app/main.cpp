@@ -79,7 +79,7 @@ std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& set
   render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
   render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
       ->check(CLI::Validator([](std::string& text) { return luz::app::model_option_problem(text); },
-                             "MODEL[,MODEL...]"))
+                             fmt::format("{{{}}}[,...]", fmt::join(luz::app::kModels, ","))))
       ->capture_default_str();
   render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
       ->required();
@@ -186,9 +186,10 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
 
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
-  fmt::print(stderr, "luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are unset "
-                     "or unreachable).\nluz: for pictures without a display use `luz render`, e.g.\n"
-                     "  luz render {} --model phong --out picture.png\n(see `luz render --help`)\n", scene);
+  fmt::print(stderr, "{}", luz::i18n::trf("luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are "
+                                          "unset or unreachable).\nluz: for pictures without a display use `luz "
+                                          "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
+                                          "`luz render --help`)\n", scene));
   return 1;
 }
 

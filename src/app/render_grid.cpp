@@ -10,6 +10,7 @@
 #include "app/i18n.h"
 #include "app/radiosity_command.h"
 #include "app/render_hybrid.h"
+#include "app/render_path.h"
 #include "app/render_whitted.h"
 #include "core/error.h"
 #include "gl/offscreen_context.h"
@@ -34,9 +35,22 @@ void check_flags(const RenderSettings& settings, const std::vector<std::string>&
     throw Error(ErrorKind::usage, trf("{}: only when a pane is flat, gouraud or phong",
                                               settings.local_only_flags.front()));
   const auto traced = [](const std::string& m) { return m == "whitted" || m == "hybrid"; };
-  if (!settings.whitted_only_flags.empty() && !any_of(models, traced))
-    throw Error(ErrorKind::usage, trf("{}: only when a pane is whitted or hybrid",
-                                              settings.whitted_only_flags.front()));
+  for (const std::string& flag : settings.whitted_only_flags) {
+    const bool shared = flag == "--spp" || flag == "--depth";  // the path tracer takes them too
+    if (!any_of(models, [&](const std::string& m) { return traced(m) || (shared && m == "path"); }))
+      throw Error(ErrorKind::usage, shared ? trf("{}: only when a pane is whitted, hybrid or path", flag)
+                                           : trf("{}: only when a pane is whitted or hybrid", flag));
+  }
+  if (!settings.path_only_flags.empty() && !any_of(models, [](const std::string& m) { return m == "path"; }))
+    throw Error(ErrorKind::usage, trf("{}: only when a pane is path", settings.path_only_flags.front()));
+  // Each traced pane checks its values as its own `luz render` would (a square --spp for Whitted).
+  for (const std::string& model : models) {
+    if (!traced(model) && model != "path") continue;
+    RenderSettings pane = settings;
+    pane.model = model;
+    if (model != "path") pane.path_only_flags.clear();
+    check_path_flags(pane);
+  }
   for (const std::string& flag : settings.radiosity_only_flags) {
     const bool display_only = flag == "--flat-patches" || flag == "--outlines";
     const auto takes = [&](const std::string& m) { return m == "radiosity" || (m == "hybrid" && !display_only); };
@@ -59,6 +73,7 @@ Shading shading_of(const std::string& model) {
 Image render_pane(const Scene& scene, const Camera& camera, int width, int height, RenderSettings pane) {
   if (pane.model == "whitted") return render_whitted(scene, camera, width, height, pane).image;
   if (pane.model == "hybrid") return render_hybrid(scene, camera, width, height, pane).image;
+  if (pane.model == "path") return render_path_model(scene, camera, width, height, pane).image;
   gl::OffscreenContext context;
   if (pane.model == "radiosity") return render_radiosity(scene, camera, width, height, pane);
   LocalOptions options = pane.local;
@@ -84,8 +99,7 @@ std::vector<std::string> parse_model_list(const std::string& text) {
   for (const std::string& model : models)
     if (std::find_if(std::begin(kModels), std::end(kModels), [&](const char* m) { return model == m; }) ==
         std::end(kModels))
-      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" (flat, gouraud, phong, "
-                                                "whitted, radiosity, hybrid)", text, model));
+      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" ({})", text, model, fmt::join(kModels, ", ")));
   if (models.size() != 2 && models.size() != 4)
     throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
                                               models.size()));
@@ -103,8 +117,7 @@ std::string model_option_problem(const std::string& text) {
   }
   for (const char* model : kModels)
     if (text == model) return "";
-  return trf("unknown model \"{}\" (flat, gouraud, phong, whitted, radiosity, hybrid, or 2 or 4 of "
-                     "them separated by commas)", text);
+  return trf("unknown model \"{}\" ({}, or 2 or 4 of them separated by commas)", text, fmt::join(kModels, ", "));
 }
 
 GridLayout grid_layout(size_t panes) { return panes <= 2 ? GridLayout{int(panes), 1} : GridLayout{2, 2}; }
@@ -116,6 +129,7 @@ std::string model_label(const std::string& model) {
   if (model == "whitted") return tr("Whitted");
   if (model == "radiosity") return tr("radiosity");
   if (model == "hybrid") return tr("hybrid");
+  if (model == "path") return tr("path tracing");
   return model;
 }
 
