@@ -11,7 +11,7 @@
 
 namespace luz::app {
 
-WhittedResult render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
+Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
                             const RenderSettings& settings) {
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
   const PatchMesh mesh = PatchMesh::build(scene, settings.radiosity);

@@ -55,7 +55,7 @@ std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
   return path.replace_extension(".ray-tree.json");
 }
 
-WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
+Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int height,
                              const RenderSettings& settings, const rt::DiffuseSource* diffuse) {
   if (settings.ray_tree) {
     const auto [x, y] = *settings.ray_tree;
@@ -67,7 +67,7 @@ WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width
   options.diffuse_source = diffuse;
   rt::WhittedRenderer tracer(scene);
   ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO), settings.model);
-  WhittedResult result;
+  Rendered result;
   result.image = tracer.render(camera, width, height, options,
                                [&bar](const rt::TileDone& done) { bar.update(done.done, done.total); });
   result.summary = tracer.counters().to_string();
