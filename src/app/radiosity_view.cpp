@@ -152,9 +152,9 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
 }
 
 // ---- [the heat map] ------------------------------------------------------------------------------
-Rgb heat_colour(double share) {
-  if (!(share > 0.0)) return Rgb(0.0f);
-  const float t = float(std::clamp(std::log10(share / kHeatMapLowest) / std::log10(kHeatMapHighest / kHeatMapLowest),
+Rgb heat_colour(double relative) {
+  if (!(relative > 0.0)) return Rgb(0.0f);
+  const float t = float(std::clamp(std::log10(relative / kHeatMapLowest) / std::log10(kHeatMapHighest / kHeatMapLowest),
                                    0.0, 1.0));
   return t < 0.5f ? glm::mix(Rgb(0.0f, 0.0f, 0.3f), Rgb(0.9f, 0.0f, 0.0f), 2.0f * t)
                   : glm::mix(Rgb(0.9f, 0.0f, 0.0f), Rgb(1.0f, 1.0f, 0.0f), 2.0f * t - 1.0f);
@@ -162,13 +162,16 @@ Rgb heat_colour(double share) {
 
 RadianceField unshot_heat_map(const ProgressiveSolver& solver) {
   const PatchMesh& mesh = solver.mesh();
-  const double emitted = solver.emitted_power();
+  double area = 0.0;
+  for (const Patch& p : mesh.patches) area += double(p.area);
+  // The mean emitted exitance, W/m^2, counted as the solver counts power (the channels' mean).
+  const double mean_emitted = area > 0.0 ? solver.emitted_power() / area : 0.0;
   std::vector<Rgb> colours(mesh.size(), Rgb(0.0f));
   for (size_t i = 0; i < mesh.size(); ++i) {
-    const Rgb& u = solver.unshot()[i];  // exitance: power is its channels' mean times the area, as the solver counts
-    const double power = (double(u.r) + double(u.g) + double(u.b)) / 3.0 * double(mesh.patches[i].area);
-    const double share = emitted > 0.0 ? power / emitted : 0.0;
-    colours[i] = heat_colour(share) * std::numbers::pi_v<float>;  // from() divides by pi: show the ramp as is
+    const Rgb& u = solver.unshot()[i];
+    const double unshot = (double(u.r) + double(u.g) + double(u.b)) / 3.0;
+    const double relative = mean_emitted > 0.0 ? unshot / mean_emitted : 0.0;
+    colours[i] = heat_colour(relative) * std::numbers::pi_v<float>;  // from() divides by pi: show the ramp as is
   }
   return RadianceField::from(mesh, colours);
 }

@@ -71,13 +71,14 @@ private:
   double shots_per_second_ = 0.0;
 };
 
-// The heat map's fixed scale: a patch's unshot power as a share of the power the scene emits,
-// on a log scale from kHeatMapLowest (dark blue) to kHeatMapHighest and above (yellow), so that
-// the picture darkens as the solve converges (a scale from the current maximum would show red
-// to the end). heat_colour() is the ramp the picture and the legend share.
-inline constexpr double kHeatMapLowest = 1e-6;
-inline constexpr double kHeatMapHighest = 1e-1;
-Rgb heat_colour(double share);  // share of the emitted power; black for none
+// The heat map's fixed scale: a patch's unshot exitance in units of the scene's mean emitted
+// exitance (the emitted power spread over all the patches' area), whatever the mesh's size, on
+// a log scale from kHeatMapLowest (dark blue) to kHeatMapHighest and above (yellow). So the
+// picture darkens as the solve converges (a scale from the current maximum would show red to
+// the end). heat_colour() is the ramp the picture and the panel's legend share.
+inline constexpr double kHeatMapLowest = 1e-3;
+inline constexpr double kHeatMapHighest = 1.0;
+Rgb heat_colour(double relative);  // black for nothing to shoot
 RadianceField unshot_heat_map(const ProgressiveSolver& solver);
 
 // For the script's dump-patch and dump-radiosity (tests, handouts).

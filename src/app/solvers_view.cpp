@@ -215,7 +215,8 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   SolversState::Status& s = state.status;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open, ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open,
+                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }

@@ -536,7 +536,8 @@ nlohmann::json Viewer::windows_json() const {
     windows.push_back({{"name", name},
                        {"rect", {w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y}},
                        {"content_width", w->ContentSize.x},
-                       {"visible_width", w->ContentRegionRect.GetWidth()}});
+                       {"visible_width", w->ContentRegionRect.GetWidth()},
+                       {"scrolls_sideways", w->ScrollbarX}});
   }
   const Viewport& v = last_layout_.view;
   return {{"view", {v.origin.x, v.origin.y, v.origin.x + v.size.x, v.origin.y + v.size.y}}, {"windows", windows}};
