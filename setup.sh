@@ -11,7 +11,7 @@ packages=(
   libgl-dev libosmesa6-dev libglfw3-dev libglm-dev
   libtinygltf-dev libopenimageio-dev libimgui-dev libstb-dev
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  libgtest-dev xvfb xauth fonts-dejavu-core gettext locales
+  libgtest-dev xvfb xauth fonts-dejavu-core gettext locales xdotool
 )
 
 missing=()

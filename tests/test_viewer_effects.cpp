@@ -71,5 +71,19 @@ TEST_F(ViewerEffects, TheInspectorShowsTheShadowFactorsAndTheFog) {
   }
 }
 
+// A scene warning a model gives (radiosity does not shoot directional lights) is listed in the
+// viewer's warnings window, not only printed to the terminal.
+TEST_F(ViewerEffects, RadiositysWarningIsShownInTheWindow) {
+  const nlohmann::json state = test::json_of(run_dir / "radiosity-state.json");
+  bool listed = false;
+  for (const auto& w : state["warnings"]) listed |= w.get<std::string>().find("is not shot") != std::string::npos;
+  EXPECT_TRUE(listed) << state.dump();
+  bool window = false;
+  const nlohmann::json windows = test::json_of(run_dir / "radiosity-windows.json");
+  for (const auto& w : windows["windows"])
+    window |= w["name"].get<std::string>().find("warning") != std::string::npos;
+  EXPECT_TRUE(window);
+}
+
 }  // namespace
 }  // namespace luz

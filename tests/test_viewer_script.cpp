@@ -1,13 +1,19 @@
 // The viewer's script language and shortcut table, without a window: a bad line is refused
 // with FILE:LINE before anything opens, and the runner paces commands over frames.
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/model_registry.h"
+#include "app/orbit_camera.h"
 #include "app/script.h"
 #include "app/shortcuts.h"
 #include "core/error.h"
@@ -93,13 +99,13 @@ TEST(ViewerShortcuts, KeysMapToActions) {
   EXPECT_EQ(action_for(GLFW_KEY_P, 0), Action::screenshot);
   ASSERT_TRUE(parse_key("F1", key, mods));
   EXPECT_EQ(action_for(key, mods), Action::help);
-  EXPECT_EQ(action_for(GLFW_KEY_4, 0), Action::model_4);
+  EXPECT_EQ(action_for(GLFW_KEY_4, 0), Action::choose_model);
   EXPECT_FALSE(action_for(GLFW_KEY_Z, 0).has_value());
   // Every model and every term has its key, and no key does two things.
   for (const Shortcut& a : shortcuts())
     for (const Shortcut& b : shortcuts())
       if (&a != &b && a.action != Action::none) {
-        EXPECT_FALSE(a.key == b.key && a.mods == b.mods) << a.keys;
+        EXPECT_FALSE(a.key == b.key && a.mods == b.mods && a.character == b.character) << a.keys;
       }
 }
 
@@ -142,6 +148,60 @@ TEST(ViewerCommand, ABadScriptIsAUsageErrorBeforeAnyWindow) {
   const auto result = test::run_luz({"--script", script.string()}, {.cwd = dir.path, .no_display = true});
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("demo.txt:2: unknown command \"wiggle\""), std::string::npos) << result.output;
+}
+
+// A drag turns the view by a quarter of a degree per window unit, whatever the window's size
+// (the orbit takes no size): 160 units are 40 degrees.
+TEST(ViewerOrbit, ADragOf160UnitsTurnsTheViewBy40Degrees) {
+  Camera start;
+  start.to_world = glm::mat4(1.0f);  // at the origin, looking down -Z
+  OrbitCamera orbit;
+  orbit.start_from(start, glm::vec3(0.0f, 0.0f, -5.0f));
+  orbit.orbit(160.0f, 0.0f);
+  const float degrees = glm::degrees(std::acos(glm::dot(start.forward(), orbit.camera().forward())));
+  EXPECT_NEAR(degrees, 40.0f, 0.05f);
+}
+
+// The keys that are characters on every layout ('+', '-') are bound by the character; the
+// digits show the registry's models.
+TEST(ViewerShortcuts, PlusAndMinusAreCharactersAndTheDigitsShowTheModels) {
+  EXPECT_EQ(action_for_character('+'), Action::exposure_up);
+  EXPECT_EQ(action_for_character('-'), Action::exposure_down);
+  EXPECT_FALSE(action_for(GLFW_KEY_EQUAL, 0).has_value());  // the US position of '+' is not it
+  int key = 0, mods = 0;
+  unsigned character = 0;
+  ASSERT_TRUE(parse_key("+", key, mods, character));
+  EXPECT_EQ(character, unsigned('+'));
+  ASSERT_TRUE(parse_key("KP_Add", key, mods, character));
+  EXPECT_EQ(key, GLFW_KEY_KP_ADD);
+  for (const ModelEntry& m : models()) {
+    EXPECT_EQ(action_for(GLFW_KEY_0 + m.key, 0), Action::choose_model) << m.name;
+    EXPECT_EQ(model_on_key(m.key), &m);
+  }
+}
+
+// Every verb of the script, common or a model's, is found by name, and its name is unique.
+TEST(ViewerScript, EveryVerbIsInOneTable) {
+  std::vector<std::string> names;
+  for (const ScriptVerb& v : common_verbs()) names.push_back(v.name);
+  for (const ModelEntry& m : models())
+    for (const ScriptVerb& v : m.verbs) names.push_back(v.name);
+  for (const std::string& name : names) {
+    EXPECT_EQ(std::count(names.begin(), names.end(), name), 1) << name;
+    EXPECT_NE(find_verb(name), nullptr) << name;
+  }
+  for (const char* verb : {"trace", "radiosity", "wait-shots", "solvers", "set", "idle", "dump-windows"})
+    EXPECT_NE(find_verb(verb), nullptr) << verb;
+}
+
+// `set` takes what the options tables take: nan and inf are refused, ranges are the CLI's.
+TEST(ViewerScript, SetTakesTheOptionsTablesRanges) {
+  EXPECT_EQ(error_of("set depth 64\n"), "");
+  EXPECT_NE(error_of("set depth 65\n").find("0 .. 64"), std::string::npos);
+  EXPECT_NE(error_of("set exposure nan\n").find("finite"), std::string::npos);
+  EXPECT_NE(error_of("set fog-density inf\n").find("finite"), std::string::npos);
+  EXPECT_NE(error_of("set spp 5\n").find("square"), std::string::npos);
+  EXPECT_EQ(error_of("set fog exponential\n"), "");
 }
 
 }  // namespace

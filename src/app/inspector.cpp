@@ -146,7 +146,7 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
   const Mesh& mesh = scene.meshes[size_t(r.pick.mesh)];
   const Material& material = material_of(scene, r.pick);
   ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
-  if (!ImGui::Begin("Inspector", &open, ImGuiWindowFlags_NoFocusOnAppearing)) {
+  if (!ImGui::Begin("Inspector", &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }
@@ -218,7 +218,7 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
 // shot and has still to shoot, and what step 3 displays (B = radiosity + unshot, drawn as B/pi).
 void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open) {
   ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
-  if (!ImGui::Begin("Inspector: patch", &open, ImGuiWindowFlags_NoFocusOnAppearing)) {
+  if (!ImGui::Begin("Inspector: patch", &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }

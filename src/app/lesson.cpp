@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "app/model_registry.h"
 #include "app/radiosity_state.h"
 #include "app/render_command.h"
 #include "core/error.h"
@@ -188,8 +189,24 @@ private:
   std::map<std::string, int> lines_;
 };
 
-const std::vector<std::string>& model_names() {
-  static const std::vector<std::string> names(std::begin(kModels), std::end(kModels));
+// The models a lesson can show: those the viewer has a view of.
+const std::vector<std::string>& viewer_models() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const ModelEntry& m : models())
+      if (m.in_viewer()) list.push_back(m.name);
+    return list;
+  }();
+  return names;
+}
+
+// A pane may also show a headless model (luz render draws the panes).
+const std::vector<std::string>& all_models() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const ModelEntry& m : models()) list.push_back(m.name);
+    return list;
+  }();
   return names;
 }
 
@@ -375,7 +392,7 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
   } else if (before && before->scene == out.scene) {
     out.camera = before->camera;
   }
-  if (step.contains("model")) out.model = r.one_of(step["model"], at + "/model", "model", model_names());
+  if (step.contains("model")) out.model = r.one_of(step["model"], at + "/model", "model", viewer_models());
   else if (before) out.model = before->model;
   else r.fail(at, tr("the first step must name a \"model\""));
 
@@ -396,7 +413,7 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
     if (!panes.is_array() || (panes.size() != 2 && panes.size() != 4))
       r.fail(at + "/panes", tr("panes lists 2 or 4 models"));
     for (size_t i = 0; i < panes.size(); ++i)
-      out.panes.push_back(r.one_of(panes[i], fmt::format("{}/panes/{}", at, i), tr("a pane's model"), model_names()));
+      out.panes.push_back(r.one_of(panes[i], fmt::format("{}/panes/{}", at, i), tr("a pane's model"), all_models()));
   }
   c.push_back(command(line, "panes", {out.panes.empty() ? out.model : fmt::format("{}", fmt::join(out.panes, ","))}));
   actions(r, step, at, line, out.model, c);

@@ -1,5 +1,6 @@
 // luz: the single command. `luz [SCENE]` opens the viewer; `luz render` makes one picture
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <optional>
@@ -14,175 +15,30 @@
 #include "app/compare_command.h"
 #include "app/i18n.h"
 #include "app/lesson.h"
+#include "app/model_registry.h"
 #include "app/render_command.h"
-#include "app/render_grid.h"
-#include "app/render_path.h"
+#include "app/render_flags.h"
+#include "app/viewer_settings.h"
 #include "app/solvers_command.h"
 #include "app/resources.h"
 #include "app/script.h"
 #include "app/viewer.h"
 #include "core/error.h"
-#include "raytracing/sampling.h"
 #include "gl/window_context.h"
 
 namespace {
 
 using luz::app::RenderSettings;
 
-// Slide 19's "other possibilities" of the local models: each a switch of LocalOptions, off unless
-// its flag is given (distance attenuation and spot distributions belong to the scene's lights).
-// Returns them so main() can tell which were given: they are a usage error with the other models.
-std::vector<CLI::Option*> add_effect_flags(CLI::App& render, luz::LocalOptions& local) {
-  const size_t before = render.get_options().size();
-  const std::map<std::string, luz::FogMode> fog_modes = {{"linear", luz::FogMode::linear},
-                                                         {"exponential", luz::FogMode::exponential}};
-  render.add_option("--fog", local.fog.mode, "Atmospheric attenuation (depth cueing) toward the fog colour")
-      ->transform(CLI::CheckedTransformer(fog_modes, CLI::ignore_case))
-      ->option_text("linear|exponential");
-  render.add_option_function<std::string>(
-      "--fog-colour",
-      [&local](const std::string& text) {
-        if (!luz::app::parse_rgb(text, local.fog.colour))
-          throw CLI::ValidationError("--fog-colour", "expected R,G,B radiance, three numbers >= 0, e.g. 0.3,0.3,0.35");
-      },
-      "Fog colour as R,G,B radiance (default 0.25,0.27,0.3)");
-  render.add_option("--fog-near", local.fog.near, "Linear fog: no fog closer than D metres (default 2)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_option("--fog-far", local.fog.far, "Linear fog: only fog beyond D metres (default 20)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_option("--fog-density", local.fog.density, "Exponential fog: f = exp(-K d), K per metre (default 0.1)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_flag("--shadows", local.shadows.on, "Blocking of the sources by occlusion (S_i), with shadow maps");
-  render.add_option("--shadow-bias", local.shadows.constant_bias, "Constant shadow bias in metres (default 0.002)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_option("--shadow-slope-bias", local.shadows.slope_bias,
-                    "Slope-scaled shadow bias, texels per unit of tan(theta) (default 1)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_option("--shadow-normal-offset", local.shadows.normal_offset,
-                    "Shadow lookup moved this many texels along the normal (default 1)")
-      ->check(CLI::NonNegativeNumber);
-  render.add_option("--shadow-map-size", local.shadows.map_size, "Texels per side of each shadow map (default 1024)")
-      ->check(CLI::Range(16, 8192));
-  render.add_flag("--transparency", local.transparency.on, "Non-refractive transparency: I + kt * what lies behind");
-  render.add_flag("--reflection-map", local.reflection.on,
-                  "Reflection maps: kr * Ir from a cube map around each object with kr > 0");
-  render.add_option("--reflection-map-size", local.reflection.resolution, "Texels per side of each cube face (default 256)")
-      ->check(CLI::Range(8, 4096));
-  render.add_option("--environment", local.reflection.environment,
-                    "Equirectangular image of the surroundings, seen in reflections where no object is");
-  const std::vector<CLI::Option*> all = render.get_options();
-  return {all.begin() + std::ptrdiff_t(before), all.end()};
-}
-
-// Returns the flags of slide 19's switches (see add_effect_flags).
-std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& settings) {
-  render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
-  render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
-      ->check(CLI::Validator([](std::string& text) { return luz::app::model_option_problem(text); },
-                             fmt::format("{{{}}}[,...]", fmt::join(luz::app::kModels, ","))))
-      ->capture_default_str();
-  render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")
-      ->required();
-  render.add_option_function<std::string>(
-      "--size",
-      [&settings](const std::string& text) {
-        if (!luz::app::parse_size(text, settings.width, settings.height))
-          throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, e.g. 800x600");
-      },
-      "Image size WxH (default: 600 pixels high, the camera's aspect ratio)");
-  render.add_option("--camera", settings.camera, "Scene camera by name or index (default: the first)");
-  render.add_option("--exposure", settings.exposure, "Exposure in EV for PNG output (default: the scene's)");
-  auto switch_off = [&render](const char* flag, bool& term, const char* help) {
-    render.add_flag_callback(flag, [&term] { term = false; }, help);
-  };
-  switch_off("--no-ambient", settings.local.ambient, "Switch off the ambient term I_A = Ia*ka");
-  switch_off("--no-diffuse", settings.local.diffuse, "Switch off the diffuse term I_D = IL*kd*cos(theta)");
-  switch_off("--no-specular", settings.local.specular, "Switch off the specular term I_S = IL*ks*cos^n(alpha)");
-  switch_off("--no-emission", settings.local.emission, "Do not show the emitted radiance Le of emissive surfaces");
-  switch_off("--no-textures", settings.local.textures, "Ignore baseColorTexture");
-  render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
-  render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
-  return add_effect_flags(render, settings.local);
-}
-
-// The tracer's flags (--model whitted). Returns them so main() can tell which were given: they
-// are a usage error with another model.
-std::vector<CLI::Option*> add_whitted_flags(CLI::App& render, RenderSettings& settings) {
-  luz::rt::WhittedOptions& w = settings.whitted;
-  std::vector<CLI::Option*> flags;
-  flags.push_back(render.add_option("--depth", w.max_depth,
-      "whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; path: default 16; 1 or 0: no "
-      "reflected or transmitted rays)")->check(CLI::Range(0, 64))->capture_default_str());
-  flags.push_back(render.add_option("--spp", w.spp,
-      "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; a square: 1, 4, 9, 16, ...; path: any N (default 16)")
-      ->check(CLI::Validator([](std::string& text) {
-        int n = 0;
-        // Whitted needs a square (checked with the model, check_path_flags); path takes any.
-        if (!CLI::detail::lexical_cast(text, n) || n < 1 || n > (1 << 20))
-          return std::string("expected a number of samples per pixel (whitted/hybrid: a square "
-                             "1, 4, 9, 16, ... at most 4096; path: 1 .. 1048576)");
-        return std::string();
-      }, "SQUARE"))->capture_default_str());
-  flags.push_back(render.add_flag_callback("--adaptive", [&w] { w.sampling = luz::rt::Sampling::adaptive; },
-      "whitted/hybrid: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of --spp)"));
-  flags.push_back(render.add_flag("--fresnel", w.fresnel,
-      "whitted/hybrid: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"));
-  flags.push_back(render.add_option("--light-samples", w.light_samples,
-      "whitted/hybrid: shadow rays per emissive triangle (1: its centroid; N: soft shadows)")
-      ->check(CLI::Range(1, 1024))->capture_default_str());
-  flags.push_back(render.add_flag("--brute-force", w.brute_force,
-      "whitted/hybrid: test every ray against every triangle instead of Embree's BVH (counts the tests)"));
-  flags.push_back(render.add_flag_callback("--no-shadows", [&w] { w.shadows = false; },
-      "whitted/hybrid: no shadow rays (every light unoccluded)"));
-  flags.push_back(render.add_option_function<std::string>(
-      "--ray-tree",
-      [&settings](const std::string& text) {
-        int x = 0, y = 0;
-        if (!luz::app::parse_pixel(text, x, y))
-          throw CLI::ValidationError("--ray-tree", "expected a pixel X,Y, e.g. 320,240");
-        settings.ray_tree = std::make_pair(x, y);
-      },
-      "whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"));
-  return flags;
-}
-
-// Flags of --model radiosity only; returned so main() can tell which were given.
-std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& settings) {
-  luz::RadiosityOptions& r = settings.radiosity;
-  const luz::RadiosityOptions defaults;  // the help quotes the struct's defaults, never its own
-  std::vector<CLI::Option*> flags;
-  CLI::Option* shots = render.add_option_function<int>(
-      "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
-      "radiosity/hybrid: stop after N shots (lights included)")->check(CLI::PositiveNumber);
-  CLI::Option* converge = render.add_option_function<float>(
-      "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
-      fmt::format("radiosity/hybrid: stop when the unshot power is below EPS x the emitted power "
-                  "(default {})", defaults.converge))
-      ->check(CLI::Range(1e-9, 1.0));
-  shots->excludes(converge);
-  flags = {shots, converge};
-  flags.push_back(render.add_option("--patch-size", r.patch_size,
-                                    fmt::format("radiosity/hybrid: longest patch edge, metres (default: "
-                                                "about {} patches)", defaults.target_patches))
-                      ->check(CLI::PositiveNumber));
-  flags.push_back(render.add_option_function<int>(
-      "--hemicube-res",
-      [&r](int n) {
-        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
-        r.hemicube_res = n;
-      },
-      fmt::format("radiosity/hybrid: hemicube resolution, pixels across its top face ({} .. {}, even; "
-                  "default {})", luz::kMinHemicubeRes, luz::kMaxHemicubeRes, defaults.hemicube_res))
-      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
-  flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
-                                  "radiosity/hybrid: add Cohen's ambient term for the light not yet shot"));
-  flags.push_back(render.add_flag("--flat-patches", r.flat_patches,
-                                  "radiosity: one colour per patch instead of Gouraud shading"));
-  flags.push_back(render.add_flag("--outlines", r.outlines, "radiosity: draw the patch edges"));
-  flags.push_back(render.add_option("--csv", settings.csv,
-                                    "radiosity/hybrid: write the unshot power after every shot to this CSV file"));
-  return flags;
-}
+// A float flag takes finite numbers only: CLI11 reads "nan" and "inf" as numbers.
+const CLI::Validator finite_number(
+    [](std::string& text) {
+      double value = 0.0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value))
+        return fmt::format("{}: expected a finite number", text);
+      return std::string();
+    },
+    "NUMBER");
 
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
@@ -224,17 +80,29 @@ int main(int argc, char** argv) {
       },
       "Viewer window size WxH");
 
+  app.add_option_function<std::string>(
+      "--ui-scale",
+      [&viewer](const std::string& text) {
+        double scale = 0.0;
+        if (!CLI::detail::lexical_cast(text, scale) || !std::isfinite(scale) || scale < luz::app::kMinUiScale ||
+            scale > luz::app::kMaxUiScale)
+          throw CLI::ValidationError("--ui-scale", fmt::format("{}: expected a size in {} .. {} (1: the default)", text,
+                                                               luz::app::kMinUiScale, luz::app::kMaxUiScale));
+        viewer.ui_scale = float(scale);
+      },
+      "Viewer: size of the interface (text, panel, windows), e.g. 1.5 for a projector; Ctrl+= / Ctrl+- change it");
+
   RenderSettings settings;
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
-  render->footer("--model hybrid (slides 41-43) takes the whitted flags and the radiosity flags "
-                 "(all but --flat-patches and --outlines): the diffuse part of every hit from the "
-                 "radiosity solution, highlights, kr*Ir and kt*It from rays, no ambient term.");
+  std::string models_help = "Models (--model NAME; the key that shows it in the viewer):\n";
+  for (const luz::app::ModelEntry& m : luz::app::models())
+    models_help += fmt::format("  {:<10} [{}] {}\n", m.name, m.key, m.help);
+  render->footer(models_help +
+                 "A model takes the flags of its groups: slide 19's switches only the local models, the tracer's "
+                 "whitted and hybrid, the solver's radiosity and hybrid (all but --flat-patches and --outlines).");
   render->add_option_function<std::string>("--lang", lang, "Language of the messages and the panes' labels: es or en")
       ->check(CLI::IsMember({"es", "en"}));
-  const std::vector<CLI::Option*> effect_flags = add_render_flags(*render, settings);
-  const std::vector<CLI::Option*> whitted_flags = add_whitted_flags(*render, settings);
-  const std::vector<CLI::Option*> radiosity_flags = add_radiosity_flags(*render, settings);
-  const std::vector<CLI::Option*> path_flags = luz::app::add_path_flags(*render, settings.path);
+  const luz::app::RenderFlags render_flags = luz::app::add_render_flags(*render, settings);
 
   luz::app::SolversSettings solvers_settings;
   CLI::App* solvers = app.add_subcommand(
@@ -245,7 +113,7 @@ int main(int argc, char** argv) {
                       "Curves as CSV: method,iteration,rows,seconds,residual,error")->required();
   solvers->add_option("--png", solvers_settings.png, "Plot of the curves (residual and error against rows)");
   CLI::Option* solver_patch_size = solvers->add_option("--patch-size", solvers_settings.patch_size,
-                                                       "Longest patch edge, metres")->check(CLI::PositiveNumber);
+                                                       "Longest patch edge, metres")->check(finite_number)->check(CLI::PositiveNumber);
   CLI::Option* solver_patches = solvers->add_option("--patches", solvers_settings.patches,
       fmt::format("About this many patches (at most {})", luz::app::kMaxSolverPatches))
       ->check(CLI::PositiveNumber)->capture_default_str();
@@ -264,11 +132,6 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000))->capture_default_str();
   solvers->add_flag("-q,--quiet", solvers_settings.quiet, "Print nothing on success");
 
-  luz::app::CompareSettings compare_settings;
-  CLI::App* compare = app.add_subcommand(
-      "compare", "How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels");
-  luz::app::add_compare_flags(*compare, compare_settings);
-
   luz::app::WhittedBenchSettings bench_settings;
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
   bench->require_subcommand(1);
@@ -283,7 +146,12 @@ int main(int argc, char** argv) {
   bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, "Hemicube resolution")
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
   bench_radiosity->add_option("--seconds", radiosity_bench.seconds, "Time cap per patch count")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(finite_number)->check(CLI::PositiveNumber)->capture_default_str();
+
+  luz::app::CompareSettings compare_settings;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels");
+  luz::app::add_compare_flags(*compare, compare_settings);
 
   try {
     app.parse(argc, argv);
@@ -297,14 +165,7 @@ int main(int argc, char** argv) {
   }
 
   if (render->parsed()) {
-    for (const CLI::Option* flag : whitted_flags)
-      if (flag->count() > 0) settings.whitted_only_flags.push_back(flag->get_name());
-    for (const CLI::Option* flag : radiosity_flags)
-      if (flag->count() > 0) settings.radiosity_only_flags.push_back(flag->get_name());
-    for (const CLI::Option* flag : effect_flags)
-      if (flag->count() > 0) settings.local_only_flags.push_back(flag->get_name());
-    for (const CLI::Option* flag : path_flags)
-      if (flag->count() > 0) settings.path_only_flags.push_back(flag->get_name());
+    luz::app::note_given_flags(render_flags, settings);
     return luz::app::run_render(settings);
   }
   if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);

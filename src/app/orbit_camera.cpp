@@ -11,7 +11,9 @@ namespace luz::app {
 namespace {
 
 constexpr float max_pitch = 1.55f;        // just under 90 degrees: lookAt needs a horizon
-constexpr float radians_per_pixel = 0.005f;
+// A quarter of a degree per window unit, whatever the window's size: a 160-unit drag turns the
+// view by 40 degrees, a turn all the way round takes 1440 units.
+constexpr float radians_per_pixel = 0.25f * 3.14159265f / 180.0f;
 constexpr float min_distance = 1e-3f;
 
 // The unit direction of a yaw and pitch: yaw 0, pitch 0 looks down -Z.

@@ -6,11 +6,67 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/model_registry.h"
 #include "app/shortcuts.h"
 
 namespace luz::app {
 
-void draw_status_line(const ViewerState& state, float top, float width, float height) {
+bool WindowCorners::place_away_from(glm::vec2 at) {
+  const glm::vec2 centre = viewport_.centre();
+  // The corner diagonally opposite the point first, then the one beside it across, ...
+  const bool right = at.x > centre.x, low = at.y > centre.y;
+  const Corner order[4] = {Corner(int(!low) * 2 + int(!right)), Corner(int(low) * 2 + int(!right)),
+                           Corner(int(!low) * 2 + int(right)), Corner(int(low) * 2 + int(right))};
+  for (Corner c : order)
+    if (!taken_[c]) {
+      put(c);
+      return true;
+    }
+  put(order[0]);
+  return false;
+}
+
+bool WindowCorners::place(Corner preferred) {
+  for (int i = 0; i < 4; ++i) {
+    const Corner c = Corner((int(preferred) + i) % 4);
+    if (!taken_[c]) {
+      put(c);
+      return true;
+    }
+  }
+  put(preferred);
+  return false;
+}
+
+void WindowCorners::put(Corner corner) {
+  taken_[corner] = true;
+  const bool right = corner == top_right || corner == bottom_right;
+  const bool low = corner == bottom_left || corner == bottom_right;
+  const glm::vec2 o = viewport_.origin, s = viewport_.size;
+  const float top = std::max(o.y, top_) + margin_;
+  const float x = right ? o.x + s.x - margin_ : o.x + margin_;
+  const float y = low ? o.y + s.y - margin_ : top;
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(right ? 1.0f : 0.0f, low ? 1.0f : 0.0f));
+  // Each quarter less the margins: windows in different corners cannot meet, nor cover the centre.
+  const float half_height = low ? 0.5f * s.y - 1.5f * margin_ : o.y + 0.5f * s.y - top - 0.5f * margin_;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                      ImVec2(std::max(0.5f * s.x - 1.5f * margin_, 1.0f), std::max(half_height, 1.0f)));
+}
+
+glm::vec4 WindowCorners::take_left_half() {
+  taken_[top_left] = taken_[bottom_left] = true;
+  const float hint = 2.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+  const glm::vec2 o = viewport_.origin, s = viewport_.size;
+  const float top = o.y + margin_ + hint;
+  return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
+}
+
+ImGuiWindowFlags hint_window_flags() {
+  return ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+}
+
+void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height) {
   const Scene& scene = *state.scene;
   ImGui::SetNextWindowPos(ImVec2(0, top));
   ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -21,38 +77,30 @@ void draw_status_line(const ViewerState& state, float top, float width, float he
   ImGui::Begin("status", nullptr, fixed);
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
   const std::string camera = state.free_camera ? "free camera (C: back)" : scene.cameras[size_t(state.scene_camera)].name;
-  // Whitted's line says where the trace is: progress while it runs, rays per second at its end.
-  std::string model = info(state.model).label;
-  const TraceProgress& t = state.trace;
-  if (state.model == Model::whitted || state.model == Model::hybrid) {
-    if (t.phase == TracePhase::raster) model += state.model == Model::hybrid ? " (radiosity picture)" : " (raster view)";
-    else if (t.phase == TracePhase::tracing)
-      model += fmt::format(" tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
-    else model += fmt::format(" traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
-  }
-  // Radiosity's: how far the shooting has got.
-  const RadiosityStatus& r = state.radiosity.status;
-  if ((state.model == Model::radiosity || (state.model == Model::hybrid && t.phase == TracePhase::raster)) && r.built)
-    model += fmt::format(" shot {}, {:.2f}% unshot{}", r.shots, 100.0 * r.unshot_fraction,
-                         state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
-  ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s",
-              model.c_str(), state.frame_ms, scene.triangle_count(), int(lights),
-              scene.area_lights.size(), camera.c_str(), state.note.c_str());
+  ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s", model.c_str(),
+              state.frame_ms, scene.triangle_count(), int(lights), scene.area_lights.size(), camera.c_str(),
+              state.note.c_str());
   ImGui::End();
 }
 
-void draw_help(bool& open, float x, float y) {
-  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::Begin("Keys (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
+  ImGui::SetNextWindowPos(ImVec2(centre.x, centre.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(max.x, max.y));
+  // Auto-sized up to `max`; beyond it the list scrolls (wheel, scrollbar), the title bar's
+  // close button and F1 hide it.
+  ImGui::Begin("Keys (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_AlwaysVerticalScrollbar);
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-    auto row = [](const char* keys, const char* what) {
+    auto row = [](const std::string& keys, const char* what) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(keys);
+      ImGui::TextUnformatted(keys.c_str());
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(what);
     };
-    for (const Shortcut& s : shortcuts()) row(s.keys, s.what);
+    for (const ModelEntry& m : models()) row(std::to_string(m.key), m.help);
+    for (const Shortcut& s : shortcuts())
+      if (s.action != Action::choose_model) row(s.keys, s.what);
     row("left drag", "orbit around the scene");
     row("right drag", "pan");
     row("wheel", "zoom");
@@ -60,35 +108,26 @@ void draw_help(bool& open, float x, float y) {
     row("drop a file", "load a .gltf / .glb scene");
     ImGui::EndTable();
   }
+  if (ImGui::Button("close  [F1]")) open = false;
   ImGui::End();
 }
 
-void draw_trace_hint(const ViewerState& state, float x, float y) {
-  const TraceProgress& t = state.trace;
-  const bool hybrid = state.model == Model::hybrid;
-  if ((state.model != Model::whitted && !hybrid) || t.phase == TracePhase::done) return;
-  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
-  ImGui::Begin("trace hint", nullptr, flags);
-  if (t.phase == TracePhase::tracing) {
-    const std::string label = fmt::format("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
-                                          t.done, t.total, t.seconds);
-    ImGui::ProgressBar(t.total > 0 ? float(t.done) / float(t.total) : 0.0f, ImVec2(0.0f, 0.0f), "");
-    ImGui::SameLine();
-    ImGui::TextUnformatted(label.c_str());
-  } else if (!hybrid) {
-    ImGui::TextUnformatted("Whitted: the raster (Phong) view. Press Enter / click Render to trace this view");
-  } else if (state.trace_requested) {  // the viewer solves radiosity first (see Viewer::show_traced)
-    const RadiosityStatus& r = state.radiosity.status;
-    ImGui::Text("hybrid: solving radiosity first (shot %d, %.2f %% unshot); the trace starts when it stops",
-                r.shots, 100.0 * r.unshot_fraction);
-  } else {
-    ImGui::TextUnformatted("hybrid: the radiosity picture. Press Enter / click Render to trace its highlights");
-  }
+void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewport& viewport, float margin) {
+  if (warnings.empty() || !open) return;
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + viewport.size.y - margin), ImGuiCond_Always,
+                          ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(0.9f * viewport.size.x, 0.3f * viewport.size.y));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
+  const std::string title = fmt::format("{} warning{}###warnings", warnings.size(), warnings.size() == 1 ? "" : "s");
+  ImGui::Begin(title.c_str(), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                                         ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::PushTextWrapPos(0.85f * viewport.size.x);
+  for (const std::string& w : warnings) ImGui::BulletText("%s", w.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::End();
+  ImGui::PopStyleColor(2);
 }
 
 void draw_load_error(ViewerState& state, float x, float y, float max_width) {

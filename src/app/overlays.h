@@ -1,24 +1,66 @@
 #pragma once
 // The small windows of the viewer besides the panel and the inspector: the status line, the
 // list of keys (F1), Whitted's hint and progress, and the error of a scene that did not load.
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <imgui.h>
+
+#include "app/model_view.h"
 #include "app/viewer_state.h"
 
 namespace luz::app {
 
-// Model, frame time, triangles, lights, camera and the latest message, in one line at `top`.
-void draw_status_line(const ViewerState& state, float top, float width, float height);
+// Floating windows over the picture go into its corners, one window per corner, each at most a
+// little under half the picture's width and height: so none covers the picture's centre or
+// another. A hint at the top centre pushes the top corners down below it.
+class WindowCorners {
+public:
+  enum Corner { top_left, top_right, bottom_left, bottom_right };
+  WindowCorners(const Viewport& viewport, float margin) : viewport_(viewport), margin_(margin) {}
+  // The next window goes into the free corner farthest from `at` (the inspected point, which
+  // stays in view); false when every corner is taken (it goes into the farthest anyway).
+  bool place_away_from(glm::vec2 at);
+  // The next window goes into `preferred`, or the next free corner.
+  bool place(Corner preferred);
+  // A window at the top centre ends at `bottom` (window units).
+  void reserve_top(float bottom) { top_ = std::max(top_, bottom); }
+  // The left half of the picture for one large window (slide 36's), below room for a two-line
+  // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
+  glm::vec4 take_left_half();
+  // Where the windows placed so far ended up (ImGui's rectangles), for the tests' dump-windows.
+  const Viewport& viewport() const { return viewport_; }
 
-// The shortcut table (shortcuts.h) and the mouse gestures, centred on (x, y).
-void draw_help(bool& open, float x, float y);
+private:
+  void put(Corner corner);
+  Viewport viewport_;
+  float margin_;
+  float top_ = 0.0f;
+  bool taken_[4] = {false, false, false, false};
+};
 
-// Whitted's model until its trace is done, at the top centre (x, y) of the picture: the hint to
-// trace the raster view, or the progress bar of the trace running.
-void draw_trace_hint(const ViewerState& state, float x, float y);
+// ImGui's flags for a hint over the picture: no decoration, no input, sized to its text.
+ImGuiWindowFlags hint_window_flags();
+
+// Model, its state, frame time, triangles, lights, camera and the latest message, in one line
+// at `top` (the status line; wrapped to a second line when it does not fit).
+void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height);
+
+// The shortcut table (shortcuts.h), the models' keys and the mouse gestures, in a window of at
+// most `max` window units centred on `centre`, scrolled when the list is longer; its close
+// button (and F1 again) hides it.
+void draw_help(bool& open, glm::vec2 centre, glm::vec2 max);
+
+// The scene's warnings (the loader's and the renderers'), in a small window at the bottom of
+// the picture until closed.
+void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewport& viewport, float margin);
 
 // Radiosity: the last shooter's hemicube (its five item-buffer faces, unfolded, a false colour
-// per patch ID), `side` window units across, in a window whose top-right corner is (right, top)
+// per patch ID), `side` window units across, in a window placed by the caller (WindowCorners)
 // (radiosity_panel.cpp).
-void draw_item_buffer_window(ViewerState& state, float right, float top, float side);
+void draw_item_buffer_window(ViewerState& state, float side);
 
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);

@@ -4,12 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <string>
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/trigonometric.hpp>
 #include <imgui.h>
+
+#include "app/model_registry.h"
+#include "app/options_tables.h"
 
 namespace luz::app {
 namespace {
@@ -72,31 +76,35 @@ void effects_section(LocalOptions& o) {
   if (o.fog.mode != FogMode::off) {
     ImGui::ColorEdit3("fog colour", &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     if (o.fog.mode == FogMode::linear) {
-      ImGui::DragFloatRange2("near, far (m)", &o.fog.near, &o.fog.far, 0.05f, 0.0f, 1000.0f, "%.2f");
-      ImGui::TextDisabled("f = (far - d) / (far - near), clamped");
+      const SliderRange near = local_range("fog-near"), far = local_range("fog-far");
+      ImGui::DragFloatRange2("near, far (m)", &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
+      dim_text("f = (far - d) / (far - near), clamped");
     } else {
-      ImGui::DragFloat("density (1/m)", &o.fog.density, 0.002f, 0.0f, 10.0f, "%.3f");
-      ImGui::TextDisabled("f = exp(-density d)");
+      const SliderRange density = local_range("fog-density");
+      ImGui::DragFloat("density (1/m)", &o.fog.density, 0.002f, density.low, density.high, "%.3f");
+      dim_text("f = exp(-density d)");
     }
-    ImGui::TextDisabled("I' = f I + (1 - f) C_fog");
+    dim_text("I' = f I + (1 - f) C_fog");
   }
 
   // Blocking of the sources by occlusion.
   term_checkbox("shadows S_i (shadow maps)  [H]", &o.shadows.on, shadow_colour);
   if (o.shadows.on) {
-    ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, 0.0f, 0.5f, "%.4f");
-    ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, 0.0f, 20.0f, "%.2f");
-    ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, 0.0f, 20.0f, "%.2f");
+    const SliderRange bias = local_range("shadow-bias"), slope = local_range("shadow-slope-bias"),
+                      offset = local_range("shadow-normal-offset");
+    ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, bias.low, bias.high, "%.4f");
+    ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, slope.low, slope.high, "%.2f");
+    ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, offset.low, offset.high, "%.2f");
     int size_index = std::clamp(int(std::lround(std::log2(float(o.shadows.map_size)))) - 8, 0, 4);
     ImGui::Combo("map size", &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
     o.shadows.map_size = 256 << size_index;
-    ImGui::TextDisabled("bias + slope·texel·tan θ; lookup moved offset texels along N");
-    ImGui::TextDisabled("point lights, emitters: cube maps; spots, sun: one map");
+    dim_text("bias + slope·texel·tan θ; lookup moved offset texels along N");
+    dim_text("point lights, emitters: cube maps; spots, sun: one map");
   }
 
   // Non-refractive transparency.
   term_checkbox("transparency kt·It (non-refractive)  [O]", &o.transparency.on, transparency_colour);
-  if (o.transparency.on) ImGui::TextDisabled("I + kt · (what lies behind), drawn back to front");
+  if (o.transparency.on) dim_text("I + kt · (what lies behind), drawn back to front");
 
   // Reflection maps.
   term_checkbox("reflection map kr·Ir  [M]", &o.reflection.on, reflection_colour);
@@ -104,79 +112,33 @@ void effects_section(LocalOptions& o) {
     int size_index = std::clamp(int(std::lround(std::log2(float(o.reflection.resolution)))) - 6, 0, 4);
     ImGui::Combo("cube face size", &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
     o.reflection.resolution = 64 << size_index;
-    ImGui::TextDisabled("a cube map from the centre of each object with kr > 0");
+    dim_text("a cube map from the centre of each object with kr > 0");
     if (!o.reflection.environment.empty())
-      ImGui::TextDisabled("environment: %s", o.reflection.environment.c_str());
+      dim_text("environment: %s", o.reflection.environment.c_str());
   }
   ImGui::TreePop();
 }
 
 // ---- [model sections] --------------------------------------------------------------------------
-// Flat, Gouraud and Phong share the formula and its switches; they differ in where it is
-// evaluated, which the section says.
-void local_section(ViewerState& state) {
-  LocalOptions& o = state.local;
-  const char* where = o.shading == Shading::flat      ? "once per triangle, at its centroid, face normal"
-                      : o.shading == Shading::gouraud ? "per vertex, colours interpolated"
-                                                      : "per pixel, normals interpolated";
-  ImGui::TextDisabled("evaluated %s", where);
-  ImGui::Spacing();
-  draw_local_formula(o, *state.scene);
-  ImGui::Spacing();
-  term_checkbox("ambient I_A  [A]", &o.ambient, ambient_colour);
-  term_checkbox("diffuse I_D  [D]", &o.diffuse, diffuse_colour);
-  term_checkbox("specular I_S  [S]", &o.specular, specular_colour);
-  term_checkbox("emission Le  [E]", &o.emission, emission_colour);
-  ImGui::Checkbox("kd texture  [T]", &o.textures);
-  int blinn = o.blinn ? 1 : 0;
-  ImGui::TextUnformatted("cos(α):");
-  ImGui::SameLine();
-  ImGui::RadioButton("Phong R·V", &blinn, 0);
-  ImGui::SameLine();
-  ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
-  o.blinn = blinn == 1;
-  ImGui::Spacing();
-  effects_section(o);
-}
-
-struct ModelSection {
-  Model model;
-  void (*draw)(ViewerState&);  // nullptr: the model has not landed yet
-};
-
-// A model that lands adds its line here (and sets `available` in viewer_state.cpp).
-constexpr ModelSection sections[] = {
-    {Model::flat, local_section},   {Model::gouraud, local_section}, {Model::phong, local_section},
-    {Model::whitted, whitted_section}, {Model::radiosity, radiosity_section},     {Model::hybrid, hybrid_section},
-};
-
-void model_header(ViewerState& state) {
+// The radio buttons of the registry's models, three to a row, then the shown model's section.
+void model_header(ViewerState& state, ModelView& shown) {
   if (!ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  int key = 1;
-  for (const ModelInfo& m : models()) {
-    ImGui::BeginDisabled(!m.available);
-    const std::string label = fmt::format("{} [{}]", m.label, key);
-    if (ImGui::RadioButton(label.c_str(), state.model == m.model)) {
-      state.model = m.model;
-      if (m.model == Model::flat) state.local.shading = Shading::flat;
-      if (m.model == Model::gouraud) state.local.shading = Shading::gouraud;
-      if (m.model == Model::phong) state.local.shading = Shading::phong;
-    }
-    ImGui::EndDisabled();
-    if (key++ % 3 != 0) ImGui::SameLine();
+  int column = 0;
+  for (const ModelEntry& m : models()) {
+    if (!m.in_viewer()) continue;
+    const std::string label = fmt::format("{} [{}]", m.label, m.key);
+    if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
+    if (++column % 3 != 0) ImGui::SameLine();
   }
-  for (const ModelSection& section : sections)
-    if (section.model == state.model) {
-      if (section.draw) section.draw(state);
-      else ImGui::TextDisabled("%s: not available yet", info(state.model).label);
-    }
+  if (column % 3 != 0) ImGui::NewLine();
+  shown.panel();
 }
 
 // ---- [lights] ----------------------------------------------------------------------------------
 void lights_header(ViewerState& state) {
   Scene& scene = *state.scene;
   if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (scene.lights.empty()) ImGui::TextDisabled("no punctual lights");
+  if (scene.lights.empty()) dim_text("no punctual lights");
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     Light& light = scene.lights[i];
     LightEdit& edit = state.light_edits[i];
@@ -219,7 +181,7 @@ void lights_header(ViewerState& state) {
     ImGui::PopID();
   }
   if (!scene.area_lights.empty())
-    ImGui::TextDisabled("%zu emissive triangles light the scene (their Le: Material)",
+    dim_text("%zu emissive triangles light the scene (their Le: Material)",
                         scene.area_lights.size());
 }
 
@@ -228,7 +190,7 @@ void material_header(ViewerState& state) {
   Scene& scene = *state.scene;
   if (!ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (state.selected_material < 0 || size_t(state.selected_material) >= scene.materials.size()) {
-    ImGui::TextDisabled("click an object in the picture");
+    dim_text("click an object in the picture");
     return;
   }
   Material& m = scene.materials[size_t(state.selected_material)];
@@ -248,7 +210,7 @@ void material_header(ViewerState& state) {
   ImGui::ColorEdit3("kt", &m.kt.r, ImGuiColorEditFlags_Float);
   ImGui::DragFloat("ior", &m.ior, 0.005f, 1.0f, 3.0f, "%.3f");
   if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
-  ImGui::TextDisabled("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model");
+  dim_text("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model");
 }
 
 // ---- [scene] -----------------------------------------------------------------------------------
@@ -272,10 +234,47 @@ void scene_header(ViewerState& state) {
   if (ImGui::Button("scene camera [C]")) state.back_to_scene_camera = true;
   ImGui::SameLine();
   if (ImGui::Button("reload [R]")) state.reload = true;
-  ImGui::TextDisabled("%s", state.scene_path.filename().string().c_str());
+  dim_text("%s", state.scene_path.filename().string().c_str());
 }
 
 }  // namespace
+
+// Flat, Gouraud and Phong share the formula and its switches; they differ in where it is
+// evaluated, which the section says.
+void local_section(ViewerState& state) {
+  LocalOptions& o = state.local;
+  const char* where = o.shading == Shading::flat      ? "once per triangle, at its centroid, face normal"
+                      : o.shading == Shading::gouraud ? "per vertex, colours interpolated"
+                                                      : "per pixel, normals interpolated";
+  dim_text("evaluated %s", where);
+  ImGui::Spacing();
+  draw_local_formula(o, *state.scene);
+  ImGui::Spacing();
+  term_checkbox("ambient I_A  [A]", &o.ambient, ambient_colour);
+  term_checkbox("diffuse I_D  [D]", &o.diffuse, diffuse_colour);
+  term_checkbox("specular I_S  [S]", &o.specular, specular_colour);
+  term_checkbox("emission Le  [E]", &o.emission, emission_colour);
+  ImGui::Checkbox("kd texture  [T]", &o.textures);
+  int blinn = o.blinn ? 1 : 0;
+  ImGui::TextUnformatted("cos(α):");
+  ImGui::SameLine();
+  ImGui::RadioButton("Phong R·V", &blinn, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
+  o.blinn = blinn == 1;
+  ImGui::Spacing();
+  effects_section(o);
+}
+
+
+void dim_text(const char* format, ...) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  va_list args;
+  va_start(args, format);
+  ImGui::TextWrappedV(format, args);
+  va_end(args);
+  ImGui::PopStyleColor();
+}
 
 void draw_local_formula(const LocalOptions& o, const Scene& scene) {
   // I = Ia ka + sum_i S_i IL_i [kd cos(theta) + ks cos^n(alpha)] + Le + kr Ir + kt It
@@ -283,31 +282,34 @@ void draw_local_formula(const LocalOptions& o, const Scene& scene) {
   piece(" Ia·ka", o.ambient, ambient_colour);
   plain(" + Σᵢ");
   piece(" Sᵢ", o.shadows.on, shadow_colour);
-  plain(" ILᵢ·[");
+  plain(" ILᵢ[");
   piece("kd·cos θ", o.diffuse, diffuse_colour);
   plain(" + ");
-  piece(o.blinn ? "ks·(N·H)ⁿ" : "ks·(R·V)ⁿ", o.specular, specular_colour);
+  piece(o.blinn ? "ks(N·H)ⁿ" : "ks(R·V)ⁿ", o.specular, specular_colour);
   plain("]");
   piece(" + Le", o.emission, emission_colour);
   piece(" + kr·Ir", o.reflection.on, reflection_colour);
   piece(" + kt·It", o.transparency.on, transparency_colour);
   if (o.fog.mode != FogMode::off) ImGui::TextColored(fog_colour, "then I' = f·I + (1 - f)·C_fog (%s fog)", to_string(o.fog.mode));
-  ImGui::TextDisabled("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s",
+  dim_text("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s",
                       any_classroom_attenuation(scene) ? "1/(c0 + c1 d + c2 d²)" : "1/d²");
 }
 
 // ---- [the panel] -------------------------------------------------------------------------------
-void draw_panel(ViewerState& state, float width, float height) {
+void draw_panel(ViewerState& state, ModelView& shown, float width, float height) {
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("Luz", nullptr, flags);
-  model_header(state);
+  // Widgets take 58 % of the width, their labels the rest: a label is never cut at the edge.
+  ImGui::PushItemWidth(-0.42f * width);
+  model_header(state, shown);
   lights_header(state);
   material_header(state);
   scene_header(state);
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

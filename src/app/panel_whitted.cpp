@@ -11,7 +11,9 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/options_tables.h"
 #include "app/panel.h"
+#include "app/traced_model.h"
 #include "app/ray_tree_drawing.h"
 #include "core/image.h"
 
@@ -23,14 +25,14 @@ ImVec4 colour_of(rt::RayKind kind, bool blocked = false) {
   return ImVec4(c.r, c.g, c.b, 1.0f);
 }
 
-void progress_and_counters(ViewerState& state) {
-  const TraceProgress& t = state.trace;
+void progress_and_counters(TracedModel& view) {
+  const TraceProgress& t = view.progress();
   if (t.phase == TracePhase::tracing) {
-    if (ImGui::Button("cancel  [Backspace]")) state.cancel_trace_requested = true;
+    if (ImGui::Button("cancel  [Backspace]")) view.requests.cancel = true;
   } else if (ImGui::Button(t.phase == TracePhase::done ? "render again  [Enter]" : "Render this view  [Enter]")) {
-    state.trace_requested = true;
+    view.requests.trace = true;
   }
-  const char* untraced = state.model == Model::hybrid ? "radiosity" : "raster (Phong)";
+  const char* untraced = view.hybrid() ? "radiosity" : "raster (Phong)";
   const float fraction = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
   const std::string label = t.phase == TracePhase::raster
                                 ? (t.cancelled ? fmt::format("cancelled at {}/{} tiles: {} view", t.done, t.total, untraced)
@@ -45,7 +47,7 @@ void progress_and_counters(ViewerState& state) {
   auto row = [column](const ImVec4& colour, const std::string& what, const std::string& value) {
     ImGui::TextColored(colour, "%s", what.c_str());
     ImGui::SameLine(column);
-    ImGui::TextUnformatted(value.c_str());
+    ImGui::TextWrapped("%s", value.c_str());
   };
   for (int k = 0; k < rt::kRayKinds; ++k)
     row(colour_of(rt::RayKind(k)), fmt::format("{} rays", rt::to_string(rt::RayKind(k))),
@@ -57,31 +59,37 @@ void progress_and_counters(ViewerState& state) {
   row(plain, "rays per second", fmt::format("{:.2f} M", c.rays_per_second() / 1e6));
 }
 
-void options(ViewerState& state) {
+void options(ViewerState& state, bool hybrid) {
   rt::WhittedOptions& o = state.whitted;
-  ImGui::SliderInt("max depth", &o.max_depth, 0, 10);
-  ImGui::TextDisabled("primary ray: depth 1; a hit at depth d spawns R and T while d < max");
+  const SliderRange depth = whitted_range("depth");
+  ImGui::SliderInt("max depth", &o.max_depth, int(depth.low), int(depth.high));
+  dim_text("primary ray: depth 1; a hit at depth d spawns R and T while d < max");
   bool adaptive = o.sampling == rt::Sampling::adaptive;
   ImGui::BeginDisabled(adaptive);
-  int root = std::clamp(int(std::lround(std::sqrt(float(std::max(o.spp, 1))))), 1, 8);
+  const int max_root = int(std::lround(std::sqrt(whitted_range("spp").high)));
+  int root = std::clamp(int(std::lround(std::sqrt(float(std::max(o.spp, 1))))), 1, max_root);
   const std::string spp = fmt::format("{} ({}x{} jittered)", root * root, root, root);
-  if (ImGui::SliderInt("samples / pixel", &root, 1, 8, spp.c_str())) o.spp = root * root;  // squares only
+  if (ImGui::SliderInt("samples / pixel", &root, 1, max_root, spp.c_str(), ImGuiSliderFlags_Logarithmic))
+    o.spp = root * root;  // squares only
   ImGui::EndDisabled();
   if (ImGui::Checkbox("adaptive supersampling (Whitted)", &adaptive))
     o.sampling = adaptive ? rt::Sampling::adaptive : rt::Sampling::stratified;
   if (adaptive) {
-    ImGui::SliderInt("levels", &o.adaptive_levels, 0, 4);
-    ImGui::DragFloat("threshold (sRGB)", &o.adaptive_threshold, 0.002f, 0.0f, 1.0f, "%.3f");
+    const SliderRange levels = whitted_range("adaptive-levels"), threshold = whitted_range("adaptive-threshold");
+    ImGui::SliderInt("levels", &o.adaptive_levels, int(levels.low), int(levels.high));
+    ImGui::DragFloat("threshold (sRGB)", &o.adaptive_threshold, 0.002f, threshold.low, threshold.high, "%.3f");
   }
   ImGui::Checkbox("Fresnel: kr + kt·F, kt·(1 - F)", &o.fresnel);
   ImGui::Checkbox("shadow rays S_i", &o.shadows);
-  ImGui::SliderInt("samples per emitter", &o.light_samples, 1, 64);
-  ImGui::TextDisabled("1: its centroid; N: N-rooks over its area (soft shadows)");
+  const SliderRange samples = whitted_range("light-samples");
+  ImGui::SliderInt("samples per emitter", &o.light_samples, int(samples.low), int(samples.high), "%d",
+                   ImGuiSliderFlags_Logarithmic);
+  dim_text("1: its centroid; N: N-rooks over its area (soft shadows)");
   ImGui::Checkbox("brute force (every triangle, counted)", &o.brute_force);
   // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
   // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
   LocalOptions& l = state.local;
-  if (state.model == Model::hybrid) {
+  if (hybrid) {
     ImGui::Checkbox("B/π [D]", &l.diffuse);
     ImGui::SameLine();
     ImGui::Checkbox("ks [S]", &l.specular);
@@ -127,7 +135,7 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   ImGui::TableNextColumn();
   if (shadow) ImGui::Text("light %d: %s", n.light, n.hit ? "blocked" : "lit");
   else if (n.hit) ImGui::TextUnformatted(n.mesh.c_str());
-  else ImGui::TextDisabled("background");
+  else dim_text("background");
   if (ImGui::IsItemHovered())  // the hit cell: the ray itself
     ImGui::SetTooltip("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s",
                       n.origin.x, n.origin.y, n.origin.z, n.direction.x, n.direction.y, n.direction.z, n.t,
@@ -142,16 +150,16 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   }
 }
 
-void ray_tree(ViewerState& state) {
+void ray_tree(ViewerState& state, TracedModel& view) {
   if (!ImGui::TreeNodeEx("ray tree (slide 24)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (!state.ray_tree) {
-    ImGui::TextDisabled("click a pixel: its rays are drawn over the scene");
+  if (!view.ray_tree()) {
+    dim_text("click a pixel: its rays are drawn over the scene");
     ImGui::TreePop();
     return;
   }
-  const rt::RayTree& tree = *state.ray_tree;
+  const rt::RayTree& tree = *view.ray_tree();
   ImGui::Text("pixel (%d, %d): %zu rays, L = %s", tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
-  if (ImGui::SmallButton("clear [X]")) state.clear_ray_tree_requested = true;
+  if (ImGui::SmallButton("clear [X]")) view.requests.clear_tree = true;
   std::vector<std::vector<int>> children(tree.nodes.size());
   for (const rt::RayTreeNode& n : tree.nodes)
     if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);
@@ -174,44 +182,25 @@ void ray_tree(ViewerState& state) {
     ImGui::EndTable();
   }
   ImGui::PopStyleVar();
-  ImGui::TextDisabled(state.model == Model::hybrid ? "local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit"
+  dim_text(view.hybrid() ? "local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit"
                                                   : "local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
-  ImGui::TextDisabled("share: its contribution to L (hover for numbers)");
+  dim_text("share: its contribution to L (hover for numbers)");
   ImGui::TreePop();
-}
-
-// What Whitted's and the hybrid's sections share: the trace's progress and counters, the ray
-// tree of the clicked pixel, and the tracer's switches.
-void traced_view(ViewerState& state) {
-  ImGui::Spacing();
-  progress_and_counters(state);
-  ImGui::Spacing();
-  ray_tree(state);
-  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
-    options(state);
-    ImGui::TreePop();
-  }
 }
 
 }  // namespace
 
-void whitted_section(ViewerState& state) {
-  ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
-  ImGui::TextUnformatted("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
-  traced_view(state);
-}
-
-void hybrid_section(ViewerState& state) {
-  ImGui::TextDisabled("radiosity's diffuse light + ray-traced highlights (slides 41-43)");
-  ImGui::TextUnformatted("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It");
-  // Which radiosity solution the trace reads: the viewer's, as model 5 left it.
-  const RadiosityStatus& r = state.radiosity.status;
-  if (!r.built) ImGui::TextDisabled("radiosity: not solved yet (solved to the stopping rule first)");
-  else
-    ImGui::Text("radiosity: %zu patches, %d shots, %.2f %% unshot%s", r.patches, r.shots, 100.0 * r.unshot_fraction,
-                state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
-  ImGui::TextDisabled("model 5 [5] steps, resets and remeshes it; a trace reads it as it is");
-  traced_view(state);
+// What Whitted's and the hybrid's sections share: the trace's progress and counters, the ray
+// tree of the clicked pixel, and the tracer's switches.
+void traced_section(ViewerState& state, TracedModel& view) {
+  ImGui::Spacing();
+  progress_and_counters(view);
+  ImGui::Spacing();
+  ray_tree(state, view);
+  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
+    options(state, view.hybrid());
+    ImGui::TreePop();
+  }
 }
 
 }  // namespace luz::app

@@ -9,12 +9,16 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <imgui.h>
 
 #include "app/overlays.h"
+#include "app/options_tables.h"
 #include "app/panel.h"
+#include "app/radiosity_view.h"
+#include "core/image.h"
 
 namespace luz::app {
 namespace {
@@ -36,7 +40,7 @@ void loop_controls(RadiosityState& r) {
   auto row = [column](const char* what, const std::string& value) {
     ImGui::TextUnformatted(what);
     ImGui::SameLine(column);
-    ImGui::TextUnformatted(value.c_str());
+    ImGui::TextWrapped("%s", value.c_str());
   };
   row("shots", fmt::format("{}{}", s.shots, s.done ? "  (done: the stopping rule holds)" : ""));
   row("unshot power", fmt::format("{:.3f} % of the emitted", 100.0 * s.unshot_fraction));
@@ -44,7 +48,7 @@ void loop_controls(RadiosityState& r) {
   row("patches", fmt::format("{}  (longest edge {:.3g} m)", s.patches, s.patch_size));
   ImGui::TextUnformatted("shooter");
   ImGui::SameLine(column);
-  if (s.shooter.empty()) ImGui::TextDisabled("none yet (step 1: unshot = E)");
+  if (s.shooter.empty()) dim_text("none yet (step 1: unshot = E)");
   else ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
 }
 
@@ -59,7 +63,7 @@ void unshot_plot(RadiosityState& r) {
   for (const float v : s.plot) low = std::min(low, v);
   low = std::floor(low * 2.0f - 0.25f) / 2.0f;  // a little room under the lowest point
   const float high = 0.1f;
-  ImGui::TextDisabled("unshot power / emitted (log scale) against shots 0 .. %d", s.shots);
+  dim_text("unshot power / emitted (log scale) against shots 0 .. %d", s.shots);
   ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));  // brighter than the default grey
   ImGui::PlotLines("##unshot", s.plot.data(), int(s.plot.size()), 0, nullptr, low, high,
                    ImVec2(ImGui::GetContentRegionAvail().x, 6.0f * ImGui::GetFontSize()));  // 1.86: no -1
@@ -109,38 +113,75 @@ void drive_settings(RadiosityState& r) {
   ImGui::RadioButton("after shots", &by_shots, 1);
   if (by_shots == 1) {
     if (o.max_shots <= 0) o.max_shots = std::max(r.status.shots, 100);
-    ImGui::DragInt("shots##stop", &o.max_shots, 5.0f, 1, 1000000);
+    const SliderRange shots = slider_range(*find_row(radiosity_rows(), "shots"), 1e6);
+    ImGui::DragInt("shots##stop", &o.max_shots, 5.0f, int(shots.low), int(shots.high));
     o.max_shots = std::max(o.max_shots, 1);
     o.converge = 0.0f;  // as `luz render --shots N`
   } else {
     if (o.converge <= 0.0f) o.converge = RadiosityOptions{}.converge;
     o.max_shots = 0;
     float percent = 100.0f * o.converge;
-    ImGui::SliderFloat("% of the emitted power", &percent, 0.01f, 50.0f, "%.2f %%", ImGuiSliderFlags_Logarithmic);
-    o.converge = std::clamp(percent, 0.01f, 50.0f) / 100.0f;
+    const SliderRange converge = radiosity_range("converge");
+    ImGui::SliderFloat("% of the emitted", &percent, 100.0f * converge.low, 100.0f * converge.high, "%.2g %%",
+                       ImGuiSliderFlags_Logarithmic);
+    o.converge = std::clamp(percent / 100.0f, converge.low, converge.high);
   }
 }
 
 void mesh_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
-  ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, 0.0f, 10.0f, o.patch_size > 0.0f ? "%.3f" : "auto");
-  o.patch_size = std::max(o.patch_size, 0.0f);
-  if (o.patch_size == 0.0f) ImGui::TextDisabled("auto: about %d patches", o.target_patches);
-  int res_index = std::clamp(int(std::lround(std::log2(float(o.hemicube_res)))) - 6, 0, 4);
-  ImGui::Combo("hemicube (pixels)", &res_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
-  o.hemicube_res = 64 << res_index;
+  const SliderRange size = radiosity_range("patch-size");
+  ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : "auto");
+  o.patch_size = std::clamp(o.patch_size, size.low, size.high);
+  if (o.patch_size == 0.0f) dim_text("auto: about %d patches", o.target_patches);
+  // The powers of two in the table's range.
+  const SliderRange res = radiosity_range("hemicube");
+  std::vector<int> sizes;
+  for (int n = int(res.low); n <= int(res.high); n *= 2) sizes.push_back(n);
+  const std::string preview = fmt::format("{}", o.hemicube_res);
+  if (ImGui::BeginCombo("hemicube (px)", preview.c_str())) {
+    for (int n : sizes)
+      if (ImGui::Selectable(fmt::format("{}", n).c_str(), n == o.hemicube_res)) o.hemicube_res = n;
+    ImGui::EndCombo();
+  }
   // A new mesh or hemicube is a new solve: only on request, so a drag does not restart it.
   const bool pending = r.status.remesh_pending;
   if (pending) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.7f, 0.45f, 0.1f, 1.0f));
   if (ImGui::Button("remesh and restart")) r.remesh = true;
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
-  ImGui::TextDisabled(pending ? "to apply the new size" : "also applies kd, Le, light edits");
+  dim_text(pending ? "to apply the new size" : "also applies kd, Le, light edits");
   ImGui::Checkbox("turn the hemicube at random each shot", &o.random_rotation);
-  ImGui::TextDisabled("(seeded: the same shots give the same picture)");
+  dim_text("(seeded: the same shots give the same picture)");
 }
 
 // ---- [display] ---------------------------------------------------------------------------------
+// The heat map's fixed scale: the ramp with its decades, in units of the mean emitted exitance.
+void heat_map_legend() {
+  dim_text("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):");
+  const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetTextLineHeight();
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const int steps = 64;
+  const double decades = std::log10(kHeatMapHighest / kHeatMapLowest);
+  for (int i = 0; i < steps; ++i) {
+    const double share = kHeatMapLowest * std::pow(10.0, decades * (i + 0.5) / steps);
+    const Rgb c = heat_colour(share);
+    draw->AddRectFilled(ImVec2(at.x + width * float(i) / steps, at.y), ImVec2(at.x + width * float(i + 1) / steps, at.y + height),
+                        ImGui::ColorConvertFloat4ToU32(ImVec4(srgb_encode(c.r), srgb_encode(c.g), srgb_encode(c.b), 1.0f)));
+  }
+  ImGui::Dummy(ImVec2(width, height));
+  // The decades' labels under the ramp, the first and last flush with its ends.
+  const float y = ImGui::GetCursorScreenPos().y;
+  for (int k = 0; k <= int(decades); ++k) {
+    const std::string label = fmt::format("{:g}", kHeatMapLowest * std::pow(10.0, k));
+    const float w = ImGui::CalcTextSize(label.c_str()).x;
+    ImGui::SetCursorScreenPos(ImVec2(at.x + std::clamp(width * float(k) / float(decades) - 0.5f * w, 0.0f, width - w), y));
+    ImGui::TextUnformatted(label.c_str());
+  }
+  dim_text("black: nothing left to shoot");
+}
+
 void display_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
   RadiosityDrive& d = r.drive;
@@ -154,7 +195,7 @@ void display_settings(RadiosityState& r) {
   ImGui::TextDisabled("[L]: flat + outlines");
   ImGui::Checkbox("ambient estimate ρ·ambient  [Shift+A]", &o.ambient_estimate);
   ImGui::Checkbox("heat map of unshot power  [U]", &d.heat_map);
-  if (d.heat_map) ImGui::TextDisabled("unshot x area: blue, red, yellow over 3 decades");
+  if (d.heat_map) heat_map_legend();
   ImGui::PushStyleColor(ImGuiCol_CheckMark, shooter_colour);
   ImGui::Checkbox("the shooter in magenta", &d.show_shooter);
   ImGui::PopStyleColor();
@@ -166,8 +207,8 @@ void display_settings(RadiosityState& r) {
 // ---- [the section] -----------------------------------------------------------------------------
 void radiosity_section(ViewerState& state) {
   RadiosityState& r = state.radiosity;
-  ImGui::TextDisabled("progressive refinement, slide 39; B/π drawn (slide 39 step 3)");
-  ImGui::TextUnformatted("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j");
+  dim_text("progressive refinement, slide 39; B/π drawn (slide 39 step 3)");
+  ImGui::TextWrapped("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j");
   ImGui::Spacing();
   loop_controls(r);
   unshot_plot(r);
@@ -185,11 +226,10 @@ void radiosity_section(ViewerState& state) {
 }
 
 // ---- [the item-buffer window] ------------------------------------------------------------------
-void draw_item_buffer_window(ViewerState& state, float right, float top, float side) {
+void draw_item_buffer_window(ViewerState& state, float side) {
   RadiosityState& r = state.radiosity;
   r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
   if (!r.drive.show_item_buffer) return;
-  ImGui::SetNextWindowPos(ImVec2(right, top), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
@@ -203,13 +243,13 @@ void draw_item_buffer_window(ViewerState& state, float right, float top, float s
                  ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
     r.status.item_view_min = glm::vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y);
     r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
-    ImGui::TextDisabled("top face, 4 half faces folded out; a colour per patch");
-    ImGui::TextDisabled("black: no patch (an open side) or a patch's back");
+    dim_text("top face, 4 half faces folded out; a colour per patch");
+    dim_text("black: no patch (an open side) or a patch's back");
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     ImGui::TextUnformatted(s.shooter.c_str());
-    ImGui::TextDisabled("a point light: shot through a cube of 6 item buffers");
+    dim_text("a point light: shot through a cube of 6 item buffers");
   } else {
-    ImGui::TextDisabled("no patch has shot yet");
+    dim_text("no patch has shot yet");
     ImGui::Dummy(ImVec2(side, 0.0f));
   }
   ImGui::End();

@@ -25,7 +25,7 @@ bool RadiosityView::built_for(const RadiosityOptions& o) const {
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------
-void RadiosityView::advance(RadiosityState& state, float exposure) {
+void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map) {
   RadiosityDrive& drive = state.drive;
   // Everything but the mesh and the hemicube may change between shots (shooting.h).
   RadiosityOptions& o = solver_.options();
@@ -93,22 +93,22 @@ void RadiosityView::advance(RadiosityState& state, float exposure) {
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 
   // Step 3: what every patch shows, uploaded again after the shots (or a change of display).
-  const bool display_changed = drive.heat_map != heat_map_shown_ ||
+  const bool display_changed = heat_map != heat_map_shown_ ||
                                o.flat_patches != shown_with_.flat_patches ||
                                o.ambient_estimate != shown_with_.ambient_estimate ||
-                               (drive.heat_map && exposure != exposure_shown_);
+                               (heat_map && exposure != exposure_shown_);
   if (colours_stale_ || display_changed) {
-    RadianceField field = drive.heat_map ? RadianceField::unshot_heat_map(solver_) : RadianceField::of(solver_);
-    if (drive.heat_map) {
+    RadianceField field = heat_map ? app::unshot_heat_map(solver_) : RadianceField::of(solver_);
+    if (heat_map) {
       // The display pass multiplies by 2^exposure: divide it out here so the ramp's colours are
-      // those of RadianceField::unshot_heat_map whatever the scene's exposure.
+      // those of heat_colour() whatever the scene's exposure.
       const float undo = std::exp2(-exposure);
       for (Rgb& c : field.patch) c *= undo;
       for (Rgb& c : field.vertex) c *= undo;
     }
     renderer_.update(field, o);
     colours_stale_ = false;
-    heat_map_shown_ = drive.heat_map;
+    heat_map_shown_ = heat_map;
     exposure_shown_ = exposure;
     shown_with_ = o;
   }
@@ -151,11 +151,36 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   s.item_view_size = shows_item_buffer ? item_view_.size() : 0;
 }
 
+// ---- [the heat map] ------------------------------------------------------------------------------
+Rgb heat_colour(double relative) {
+  if (!(relative > 0.0)) return Rgb(0.0f);
+  const float t = float(std::clamp(std::log10(relative / kHeatMapLowest) / std::log10(kHeatMapHighest / kHeatMapLowest),
+                                   0.0, 1.0));
+  return t < 0.5f ? glm::mix(Rgb(0.0f, 0.0f, 0.3f), Rgb(0.9f, 0.0f, 0.0f), 2.0f * t)
+                  : glm::mix(Rgb(0.9f, 0.0f, 0.0f), Rgb(1.0f, 1.0f, 0.0f), 2.0f * t - 1.0f);
+}
+
+RadianceField unshot_heat_map(const ProgressiveSolver& solver) {
+  const PatchMesh& mesh = solver.mesh();
+  double area = 0.0;
+  for (const Patch& p : mesh.patches) area += double(p.area);
+  // The mean emitted exitance, W/m^2, counted as the solver counts power (the channels' mean).
+  const double mean_emitted = area > 0.0 ? solver.emitted_power() / area : 0.0;
+  std::vector<Rgb> colours(mesh.size(), Rgb(0.0f));
+  for (size_t i = 0; i < mesh.size(); ++i) {
+    const Rgb& u = solver.unshot()[i];
+    const double unshot = (double(u.r) + double(u.g) + double(u.b)) / 3.0;
+    const double relative = mean_emitted > 0.0 ? unshot / mean_emitted : 0.0;
+    colours[i] = heat_colour(relative) * std::numbers::pi_v<float>;  // from() divides by pi: show the ramp as is
+  }
+  return RadianceField::from(mesh, colours);
+}
+
 // ---- [drawing] ---------------------------------------------------------------------------------
-void RadiosityView::draw(const Camera& camera, int width, int height, const RadiosityState& state) {
+void RadiosityView::draw(const Camera& camera, int width, int height, bool show_shooter) {
   // The shooter in magenta while there is one to see: not once converged, where the picture is
   // the solution `luz render --model radiosity` draws.
-  const int shooter = state.drive.show_shooter && !solver_.done() ? solver_.last_shooter() : -1;
+  const int shooter = show_shooter && !solver_.done() ? solver_.last_shooter() : -1;
   renderer_.draw(camera, width, height, solver_.options(), shooter);
 }
 

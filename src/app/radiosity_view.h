@@ -37,11 +37,13 @@ public:
   bool built_for(const RadiosityOptions& options) const;
 
   // This frame's shooting (see above). Fills state.status; clears the requests it did.
-  // `exposure`: the viewer's, taken out of the heat map so its ramp shows as it is.
-  void advance(RadiosityState& state, float exposure);
+  // `exposure`: the viewer's, taken out of the heat map so its ramp shows as it is;
+  // `heat_map`: the vertex colours show the unshot power instead of B/pi.
+  void advance(RadiosityState& state, float exposure, bool heat_map);
 
-  // The picture into the bound framebuffer, width x height pixels.
-  void draw(const Camera& camera, int width, int height, const RadiosityState& state);
+  // The picture into the bound framebuffer, width x height pixels; the last shooter in magenta
+  // when `show_shooter`.
+  void draw(const Camera& camera, int width, int height, bool show_shooter);
 
   // The patch under a picked point of a scene triangle.
   PatchReading read(const Pick& pick) const;
@@ -68,6 +70,16 @@ private:
   std::chrono::steady_clock::time_point last_advance_ = std::chrono::steady_clock::now();
   double shots_per_second_ = 0.0;
 };
+
+// The heat map's fixed scale: a patch's unshot exitance in units of the scene's mean emitted
+// exitance (the emitted power spread over all the patches' area), whatever the mesh's size, on
+// a log scale from kHeatMapLowest (dark blue) to kHeatMapHighest and above (yellow). So the
+// picture darkens as the solve converges (a scale from the current maximum would show red to
+// the end). heat_colour() is the ramp the picture and the panel's legend share.
+inline constexpr double kHeatMapLowest = 1e-3;
+inline constexpr double kHeatMapHighest = 1.0;
+Rgb heat_colour(double relative);  // black for nothing to shoot
+RadianceField unshot_heat_map(const ProgressiveSolver& solver);
 
 // For the script's dump-patch and dump-radiosity (tests, handouts).
 nlohmann::json to_json(const PatchReading& reading);

@@ -1,9 +1,6 @@
 #include "app/render_command.h"
-#include "app/radiosity_command.h"
-#include "app/render_grid.h"
-#include "app/render_hybrid.h"
-#include "app/render_path.h"
-#include "app/render_whitted.h"
+
+#include <algorithm>
 
 #include <chrono>
 #include <cmath>
@@ -14,22 +11,17 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
-#include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
-#include "local/local_renderer.h"
+#include "app/model_registry.h"
+#include "app/render_grid.h"
+#include "app/render_whitted.h"
 
 namespace luz::app {
 namespace {
 
 constexpr int kDefaultHeight = 600;
 constexpr int kMaxSide = 16384;
-
-Shading shading_of(const std::string& model) {
-  if (model == "flat") return Shading::flat;
-  if (model == "gouraud") return Shading::gouraud;
-  return Shading::phong;
-}
 
 // The output keeps the camera's aspect ratio unless --size says otherwise.
 void output_size(const RenderSettings& settings, const Camera& camera, int& width, int& height) {
@@ -104,31 +96,21 @@ bool parse_rgb(const std::string& text, Rgb& colour) {
 }
 
 int run_render(const RenderSettings& settings) {
-  if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
       throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                                 settings.local.fog.far, settings.local.fog.near));
-    // The hybrid takes both models' flags, except the radiosity picture's own display switches.
-    const bool hybrid = settings.model == "hybrid";
-    for (const std::string& flag : settings.radiosity_only_flags) {
-      const bool display_only = flag == "--flat-patches" || flag == "--outlines";
-      if (settings.model != "radiosity" && (!hybrid || display_only))
-        throw Error(ErrorKind::usage, fmt::format("{}: only with --model radiosity{}", flag,
-                                                  display_only ? "" : " or hybrid"));
+    if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
+    const ModelEntry* model = find_model(settings.model);
+    if (!model) throw Error(ErrorKind::usage, fmt::format("--model {}: no such model ({})", settings.model, model_names()));
+    for (const RenderSettings::GivenFlag& given : settings.given_flags) {
+      const bool taken = std::any_of(model->flag_groups.begin(), model->flag_groups.end(),
+                                     [&](const char* group) { return given.group == group; });
+      if (!taken)
+        throw Error(ErrorKind::usage, fmt::format("{}: only with --model {}", given.flag, models_accepting(given.group)));
     }
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
-    const bool local = settings.model == "flat" || settings.model == "gouraud" || settings.model == "phong";
-    if (!local && !settings.local_only_flags.empty())
-      throw Error(ErrorKind::usage, fmt::format("{}: only with --model flat, gouraud or phong (slide 19's "
-                                                "switches of the local models)", settings.local_only_flags.front()));
-    const bool path = settings.model == "path";
-    for (const std::string& flag : settings.whitted_only_flags)
-      if (settings.model != "whitted" && !hybrid && !(path && (flag == "--spp" || flag == "--depth")))
-        throw Error(ErrorKind::usage, fmt::format("{}: only with --model whitted or hybrid{}", flag,
-                                                  flag == "--spp" || flag == "--depth" ? " or path" : ""));
-    check_path_flags(settings);
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
     const Scene& scene = loaded.scene;
@@ -145,37 +127,16 @@ int run_render(const RenderSettings& settings) {
     output_size(settings, camera, width, height);
 
     const auto start = std::chrono::steady_clock::now();
-    Image image;
-    WhittedResult traced;
-    if (settings.model == "whitted") {
-      traced = render_whitted(scene, camera, width, height, settings);  // no GL needed
-      image = std::move(traced.image);
-    } else if (hybrid) {
-      traced = render_hybrid(scene, camera, width, height, settings);
-      image = std::move(traced.image);
-    } else if (path) {
-      traced = render_path_model(scene, camera, width, height, settings);
-      image = std::move(traced.image);
-    } else if (settings.model == "radiosity") {
-      gl::OffscreenContext context;
-      image = render_radiosity(scene, camera, width, height, settings);
-    } else {
-      gl::OffscreenContext context;
-      LocalOptions options = settings.local;
-      options.shading = shading_of(settings.model);
-      LocalRenderer renderer(scene);
-      image = renderer.render(camera, width, height, options);
-      for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
-    }
+    Rendered rendered = model->render(scene, camera, width, height, settings);
     const float exposure = settings.exposure.value_or(scene.exposure);
-    io::write_image(image, settings.out, exposure);
-    if (traced.ray_tree) write_text(ray_tree_path(settings.out), *traced.ray_tree);
+    io::write_image(rendered.image, settings.out, exposure);
+    if (rendered.ray_tree) write_text(ray_tree_path(settings.out), *rendered.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet) {
       fmt::print("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s\n", settings.out,
                  settings.model, width, height, camera.name, exposure, seconds);
-      fmt::print("{}", traced.summary);
-      if (traced.ray_tree) fmt::print("ray tree: {}\n", ray_tree_path(settings.out).string());
+      fmt::print("{}", rendered.summary);
+      if (rendered.ray_tree) fmt::print("ray tree: {}\n", ray_tree_path(settings.out).string());
     }
     return 0;
   } catch (const Error& error) {

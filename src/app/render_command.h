@@ -14,33 +14,30 @@ namespace luz::app {
 
 struct RenderSettings {
   std::string scene;
-  std::string model = "phong";   // flat | gouraud | phong | whitted | radiosity | hybrid | path
+  std::string model = "phong";   // a name of the registry (model_registry.h)
   std::string out;
   int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
   int height = 0;
   std::string camera;            // name or index; empty = the scene's first
   std::optional<float> exposure; // overrides the scene's
   LocalOptions local;
-  std::vector<std::string> local_only_flags;  // slide 19's switches given (usage error unless
-                                              // flat, gouraud or phong)
   RadiosityOptions radiosity;
   std::string csv;               // radiosity: the residual history, one row per shot
-  std::vector<std::string> radiosity_only_flags;  // radiosity flags given (usage error unless
-                                                  // radiosity or hybrid)
   bool quiet = false;
-  // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`),
-  // the pixel whose ray tree is written beside the image, and which whitted-only flags were given
-  // (a usage error with another model).
+  // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`)
+  // and the pixel whose ray tree is written beside the image.
   rt::WhittedOptions whitted;
   std::optional<std::pair<int, int>> ray_tree;
-  std::vector<std::string> whitted_only_flags;
-  // --model path: its own flags (it shares --spp and --depth with whitted), and which were given.
+  // --model path: its own flags (it shares --spp and --depth with whitted).
   PathFlags path;
-  std::vector<std::string> path_only_flags;
+  // The flags of a flag group that were given, with their group: a group the model does not
+  // take (model_registry.h) is a usage error.
+  struct GivenFlag {
+    std::string flag;
+    std::string group;
+  };
+  std::vector<GivenFlag> given_flags;
 };
-
-// The models `--model` accepts today.
-inline constexpr const char* kModels[] = {"flat", "gouraud", "phong", "whitted", "radiosity", "hybrid", "path"};
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);

@@ -8,80 +8,40 @@
 #include <fmt/format.h>
 
 #include "app/i18n.h"
-#include "app/radiosity_command.h"
-#include "app/render_hybrid.h"
-#include "app/render_path.h"
-#include "app/render_whitted.h"
+#include "app/model_registry.h"
 #include "core/error.h"
-#include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
-#include "local/local_renderer.h"
 
 namespace luz::app {
 namespace {
 
-bool is_local(const std::string& model) { return model == "flat" || model == "gouraud" || model == "phong"; }
-
-bool any_of(const std::vector<std::string>& models, auto predicate) {
-  return std::any_of(models.begin(), models.end(), predicate);
-}
-
 // A flag given for one model must reach at least one pane; else it is the same usage error as
-// with a single model.
-void check_flags(const RenderSettings& settings, const std::vector<std::string>& models) {
+// with a single model (its group is taken by no pane's model).
+void check_flags(const RenderSettings& settings, const std::vector<const ModelEntry*>& models) {
   if (settings.ray_tree) throw Error(ErrorKind::usage, "--ray-tree: only with a single --model whitted or hybrid");
-  if (!settings.local_only_flags.empty() && !any_of(models, is_local))
-    throw Error(ErrorKind::usage, trf("{}: only when a pane is flat, gouraud or phong",
-                                              settings.local_only_flags.front()));
-  const auto traced = [](const std::string& m) { return m == "whitted" || m == "hybrid"; };
-  for (const std::string& flag : settings.whitted_only_flags) {
-    const bool shared = flag == "--spp" || flag == "--depth";  // the path tracer takes them too
-    if (!any_of(models, [&](const std::string& m) { return traced(m) || (shared && m == "path"); }))
-      throw Error(ErrorKind::usage, shared ? trf("{}: only when a pane is whitted, hybrid or path", flag)
-                                           : trf("{}: only when a pane is whitted or hybrid", flag));
-  }
-  if (!settings.path_only_flags.empty() && !any_of(models, [](const std::string& m) { return m == "path"; }))
-    throw Error(ErrorKind::usage, trf("{}: only when a pane is path", settings.path_only_flags.front()));
-  // Each traced pane checks its values as its own `luz render` would (a square --spp for Whitted).
-  for (const std::string& model : models) {
-    if (!traced(model) && model != "path") continue;
-    RenderSettings pane = settings;
-    pane.model = model;
-    if (model != "path") pane.path_only_flags.clear();
-    check_path_flags(pane);
-  }
-  for (const std::string& flag : settings.radiosity_only_flags) {
-    const bool display_only = flag == "--flat-patches" || flag == "--outlines";
-    const auto takes = [&](const std::string& m) { return m == "radiosity" || (m == "hybrid" && !display_only); };
-    if (!any_of(models, takes))
-      throw Error(ErrorKind::usage, trf("{}: only when a pane is radiosity{}", flag,
-                                                display_only ? "" : " or hybrid"));
+  for (const RenderSettings::GivenFlag& given : settings.given_flags) {
+    const bool taken = std::any_of(models.begin(), models.end(), [&](const ModelEntry* m) {
+      return std::any_of(m->flag_groups.begin(), m->flag_groups.end(), [&](const char* g) { return given.group == g; });
+    });
+    if (!taken)
+      throw Error(ErrorKind::usage, trf("{}: only when a pane is {}", given.flag, models_accepting(given.group)));
   }
   if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
     throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                               settings.local.fog.far, settings.local.fog.near));
 }
 
-Shading shading_of(const std::string& model) {
-  if (model == "flat") return Shading::flat;
-  if (model == "gouraud") return Shading::gouraud;
-  return Shading::phong;
-}
-
-// One pane: exactly what `luz render --model MODEL` computes for the same flags and size.
-Image render_pane(const Scene& scene, const Camera& camera, int width, int height, RenderSettings pane) {
-  if (pane.model == "whitted") return render_whitted(scene, camera, width, height, pane).image;
-  if (pane.model == "hybrid") return render_hybrid(scene, camera, width, height, pane).image;
-  if (pane.model == "path") return render_path_model(scene, camera, width, height, pane).image;
-  gl::OffscreenContext context;
-  if (pane.model == "radiosity") return render_radiosity(scene, camera, width, height, pane);
-  LocalOptions options = pane.local;
-  options.shading = shading_of(pane.model);
-  LocalRenderer renderer(scene);
-  Image image = renderer.render(camera, width, height, options);
-  for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
-  return image;
+// One pane: exactly what `luz render --model MODEL` computes for the same flags and size; the
+// flags of groups this model does not take are dropped (another pane took them).
+Image render_pane(const Scene& scene, const Camera& camera, int width, int height, const ModelEntry& model,
+                  RenderSettings pane) {
+  pane.model = model.name;
+  std::erase_if(pane.given_flags, [&](const RenderSettings::GivenFlag& given) {
+    return std::none_of(model.flag_groups.begin(), model.flag_groups.end(),
+                        [&](const char* g) { return given.group == g; });
+  });
+  return model.render(scene, camera, width, height, pane).image;
 }
 
 }  // namespace
@@ -97,9 +57,8 @@ std::vector<std::string> parse_model_list(const std::string& text) {
     start = comma + 1;
   }
   for (const std::string& model : models)
-    if (std::find_if(std::begin(kModels), std::end(kModels), [&](const char* m) { return model == m; }) ==
-        std::end(kModels))
-      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" ({})", text, model, fmt::join(kModels, ", ")));
+    if (!find_model(model))
+      throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" ({})", text, model, model_names()));
   if (models.size() != 2 && models.size() != 4)
     throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
                                               models.size()));
@@ -115,9 +74,8 @@ std::string model_option_problem(const std::string& text) {
     }
     return "";
   }
-  for (const char* model : kModels)
-    if (text == model) return "";
-  return trf("unknown model \"{}\" ({}, or 2 or 4 of them separated by commas)", text, fmt::join(kModels, ", "));
+  if (find_model(text)) return "";
+  return trf("unknown model \"{}\" ({}, or 2 or 4 of them separated by commas)", text, model_names());
 }
 
 GridLayout grid_layout(size_t panes) { return panes <= 2 ? GridLayout{int(panes), 1} : GridLayout{2, 2}; }
@@ -157,7 +115,9 @@ void draw_label(Image& pane, const LabelFont& font, const std::string& label, fl
 int run_render_grid(const RenderSettings& settings) {
   try {
     const std::vector<std::string> models = parse_model_list(settings.model);
-    check_flags(settings, models);
+    std::vector<const ModelEntry*> entries;
+    for (const std::string& name : models) entries.push_back(find_model(name));
+    check_flags(settings, entries);
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     const LabelFont font;
@@ -182,9 +142,7 @@ int run_render_grid(const RenderSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     Image sheet(layout.columns * width, layout.rows * height);
     for (size_t i = 0; i < models.size(); ++i) {
-      RenderSettings pane = settings;
-      pane.model = models[i];
-      Image image = render_pane(scene, camera, width, height, pane);
+      Image image = render_pane(scene, camera, width, height, *entries[i], settings);
       draw_label(image, font, model_label(models[i]), exposure);
       const int left = int(i) % layout.columns * width, top = int(i) / layout.columns * height;
       for (int y = 0; y < height; ++y)

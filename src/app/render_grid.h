@@ -18,7 +18,7 @@ bool is_model_list(const std::string& text);
 // --model's check: "" when the text is one model or a list parse_model_list takes, else why not.
 std::string model_option_problem(const std::string& text);
 
-// "flat,gouraud" -> {"flat", "gouraud"}: 2 or 4 of kModels. Throws luz::Error (usage) naming the
+// "flat,gouraud" -> {"flat", "gouraud"}: 2 or 4 models of the registry. Throws luz::Error (usage) naming the
 // offending name or count.
 std::vector<std::string> parse_model_list(const std::string& text);
 

@@ -11,8 +11,9 @@
 
 namespace luz::app {
 
-WhittedResult render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
+Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
                             const RenderSettings& settings) {
+  check_square_spp(settings);  // before the solve, not after it
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
   const PatchMesh mesh = PatchMesh::build(scene, settings.radiosity);
   std::optional<hybrid::RadiosityDiffuse> diffuse;

@@ -11,7 +11,7 @@ namespace luz::app {
 // Makes its own OSMesa context for the radiosity solve (none may be current); the tracing needs
 // none. The radiosity flags (stopping rule, patch size, hemicube, --ambient-estimate, --csv) and
 // the Whitted flags (depth, spp, fresnel, light samples, ray tree, ...) both apply.
-WhittedResult render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
+Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int height,
                             const RenderSettings& settings);
 
 }  // namespace luz::app

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/render_command.h"
-#include "app/render_whitted.h"
+#include "app/model_registry.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "raytracing/path_tracer.h"
@@ -94,22 +94,16 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
 
 namespace {
 
-bool given(const std::vector<std::string>& flags, const char* flag) {
-  return std::find(flags.begin(), flags.end(), flag) != flags.end();
+bool given(const RenderSettings& settings, std::string_view flag) {
+  return std::any_of(settings.given_flags.begin(), settings.given_flags.end(),
+                     [&](const RenderSettings::GivenFlag& g) { return g.flag == flag; });
 }
 
 }  // namespace
 
-void check_path_flags(const RenderSettings& settings) {
-  const bool path = settings.model == "path";
-  if (!path && !settings.path_only_flags.empty())
-    throw Error(ErrorKind::usage,
-                fmt::format("{}: only with --model path", settings.path_only_flags.front()));
-  if (!path && given(settings.whitted_only_flags, "--spp") &&
-      (!rt::is_square(settings.whitted.spp) || settings.whitted.spp > 4096))
-    throw Error(ErrorKind::usage, fmt::format("--spp {}: expected a square number of samples: 1, 4, "
-                                              "9, 16, ... (at most 4096)", settings.whitted.spp));
-  if (path && !settings.path.error_out.empty()) {
+Rendered render_path_model(const Scene& scene, const Camera& camera, int width, int height,
+                           const RenderSettings& settings) {
+  if (!settings.path.error_out.empty()) {
     std::string extension = std::filesystem::path(settings.path.error_out).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
@@ -117,25 +111,19 @@ void check_path_flags(const RenderSettings& settings) {
       throw Error(ErrorKind::usage, fmt::format("--error-out {}: the standard error is written as "
                                                 ".exr (linear float)", settings.path.error_out));
   }
-}
-
-WhittedResult render_path_model(const Scene& scene, const Camera& camera, int width, int height,
-                                const RenderSettings& settings) {
   rt::PathOptions options;
   options.textures = settings.local.textures;
   options.seed = settings.path.seed;
   // --spp and --depth are the Whitted tracer's flags too; unless given, the path tracer's
   // own defaults hold.
-  const bool spp_given = given(settings.whitted_only_flags, "--spp");
+  const bool spp_given = given(settings, "--spp");
   if (spp_given) options.spp = settings.whitted.spp;
-  if (given(settings.whitted_only_flags, "--depth")) options.max_depth = settings.whitted.max_depth;
+  if (given(settings, "--depth")) options.max_depth = settings.whitted.max_depth;
   const PathResult path = render_path(scene, camera, width, height, options, settings.path.seconds,
                                       spp_given, !settings.quiet && isatty(STDERR_FILENO));
   if (!settings.path.error_out.empty())
     io::write_image(path.standard_error, settings.path.error_out, 0.0f);
-  WhittedResult result;
-  result.image = path.mean;
-  result.summary = path.summary;
+  Rendered result{path.mean, path.summary, std::nullopt};
   if (!settings.path.error_out.empty())
     result.summary += fmt::format("standard error: {}\n", settings.path.error_out);
   return result;

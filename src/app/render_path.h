@@ -16,7 +16,7 @@ namespace CLI { class App; class Option; }
 namespace luz::app {
 
 struct RenderSettings;
-struct WhittedResult;
+struct Rendered;
 
 // The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
 struct PathFlags {
@@ -44,12 +44,10 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
                        const rt::PathOptions& options, std::optional<double> seconds,
                        bool spp_given, bool progress);
 
-// The command's side (render_command.cpp): a usage error (luz::Error) when a path flag comes
-// with another model, --error-out is not an .exr, or another model's --spp is not a square
-// (the path tracer takes any number); and the render itself, which writes --error-out and
-// returns the mean with its summary line.
-void check_path_flags(const RenderSettings& settings);
-WhittedResult render_path_model(const Scene& scene, const Camera& camera, int width, int height,
-                                const RenderSettings& settings);
+// The registry's render (model_registry.cpp): the tracer's own defaults unless --spp or --depth
+// were given; writes --error-out (a usage error unless it is an .exr) and returns the mean with
+// its summary line.
+Rendered render_path_model(const Scene& scene, const Camera& camera, int width, int height,
+                           const RenderSettings& settings);
 
 }  // namespace luz::app

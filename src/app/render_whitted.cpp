@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "raytracing/renderer.h"
+#include "raytracing/sampling.h"
 
 namespace luz::app {
 
@@ -55,8 +56,15 @@ std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
   return path.replace_extension(".ray-tree.json");
 }
 
-WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
+void check_square_spp(const RenderSettings& settings) {
+  if (!rt::is_square(settings.whitted.spp))
+    throw Error(ErrorKind::usage, fmt::format("--spp {}: expected a square number of samples: 1, 4, 9, 16, ... "
+                                              "(at most 4096)", settings.whitted.spp));
+}
+
+Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int height,
                              const RenderSettings& settings, const rt::DiffuseSource* diffuse) {
+  check_square_spp(settings);
   if (settings.ray_tree) {
     const auto [x, y] = *settings.ray_tree;
     if (x < 0 || y < 0 || x >= width || y >= height)
@@ -67,7 +75,7 @@ WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width
   options.diffuse_source = diffuse;
   rt::WhittedRenderer tracer(scene);
   ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO), settings.model);
-  WhittedResult result;
+  Rendered result;
   result.image = tracer.render(camera, width, height, options,
                                [&bar](const rt::TileDone& done) { bar.update(done.done, done.total); });
   result.summary = tracer.counters().to_string();

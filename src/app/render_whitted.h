@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "app/model_registry.h"
 #include "app/render_command.h"
 #include "core/camera.h"
 #include "core/image.h"
@@ -13,11 +14,6 @@
 
 namespace luz::app {
 
-struct WhittedResult {
-  Image image;
-  std::string summary;                // the counters, for the end of the run
-  std::optional<std::string> ray_tree;  // JSON, when --ray-tree was given
-};
 
 // The tracer's options as `luz render` and the viewer make them: the Whitted switches, with the
 // local terms' switches (--no-TERM, --blinn; the panel's term checkboxes) applied to its local part.
@@ -25,7 +21,10 @@ rt::WhittedOptions tracer_options(const rt::WhittedOptions& whitted, const Local
 
 // Throws luz::Error (usage) when the --ray-tree pixel lies outside the image. With `diffuse`
 // (the hybrid, render_hybrid.h) the tracer takes the diffuse part of every hit from it.
-WhittedResult render_whitted(const Scene& scene, const Camera& camera, int width, int height,
+// A usage error (luz::Error) unless --spp is a square: the tracer's sqrt(N) x sqrt(N) grid.
+void check_square_spp(const RenderSettings& settings);
+
+Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int height,
                              const RenderSettings& settings,
                              const rt::DiffuseSource* diffuse = nullptr);
 

@@ -1,21 +1,27 @@
 #pragma once
-// `luz --script FILE`: a prepared demo, or a test, fed to the viewer one command per line:
-//   key 2 | key Shift+P           press a key (shortcuts.h names)
+// `luz --script FILE`: a prepared demo, or a test, fed to the viewer one command per line. The
+// verbs (every one, with its arguments; `luz --script-help` prints this list from the table):
+//   key 2 | key Shift+P | key +   press a key (shortcuts.h names; + and - are typed characters,
+//                                 KP_Add / KP_Subtract the keypad's keys)
+//   type TEXT                     type characters (a panel field being edited gets them)
 //   click X Y                     left click at window coordinates (the inspector, the panel;
 //                                 in Whitted's model the pixel's ray tree)
 //   drag X0 Y0 X1 Y1 [right]      drag with the left (orbit) or right (pan) button
 //   scroll STEPS                  the mouse wheel over the picture (zoom)
 //   wait N                        let N frames pass
+//   idle SECONDS                  let the viewer sit idle (no frames unless an event comes),
+//                                 measuring its CPU use (dump-state's idle_cpu_fraction)
 //   screenshot FILE.png [--with-panel]
 //   camera N|NAME                 a scene camera by index or name
-//   model flat|gouraud|phong|whitted|radiosity|hybrid
-//   set TERM on|off               ambient, diffuse, specular, emission, textures, blinn,
-//                                 panel, inspector
-//   set exposure EV
-//   set depth|spp|light-samples N Whitted's numbers (model 4)
-//   set fresnel|adaptive|brute-force|shadow-rays on|off   Whitted's switches
+//   model NAME                    a model of the registry: flat, gouraud, phong, whitted,
+//                                 radiosity, hybrid, ...
+//   set NAME VALUE                a setting of the options tables (options_tables.h): the
+//                                 local terms (ambient, diffuse, ... on|off), fog, exposure,
+//                                 Whitted's depth, spp, light-samples, fresnel, adaptive,
+//                                 brute-force, shadow-rays, and panel, inspector on|off,
+//                                 ui-scale S
 //   trace [--no-wait]             trace the view in Whitted's model (as Enter) and wait for the
-//                                 last tile, or go on at once
+//                                 last tile, or go on at once (the hybrid's when it is shown)
 //   wait-trace                    wait until the trace running has finished
 //   dump-ray-tree FILE.json       the ray tree of the last pixel clicked in Whitted's model, as
 //                                 `luz render --ray-tree X,Y` writes it
@@ -27,14 +33,22 @@
 //   wait-shots N                  run the solver and pause at exactly N shots (or when it is done)
 //   dump-patch FILE.json          the clicked patch (E, rho, area, radiosity, unshot, B, B/pi)
 //   dump-radiosity FILE.json      shots, unshot fraction, patches, where the plot is, ...
+//   solvers open|close|run|pause|reset | solvers budget MS | solvers patches N   slide 36's window
+//   wait-solver-rows N            run slide 36's methods until each has used N rows
+//   dump-solvers FILE.json        their curves
 //   resize W H                    the window, in window coordinates
 //   load FILE | reload            as dropping a file on the window / pressing R
 //   dump-inspector FILE.json      the inspector's values, for tests and handouts
+//   dump-windows FILE.json        the picture's viewport and every floating window's rectangle
+//   dump-state FILE.json          exposure, model, UI scale, note, warnings: what a test checks
 //   quit
-// Blank lines are ignored, and so is everything from a word starting with #. Paths are relative to the working folder.
-// The whole file is checked before the window opens: a bad line is an error naming FILE:LINE.
+// Blank lines are ignored, and so is everything from a word starting with #; a word in double
+// quotes may hold spaces (type "0.5"). Paths are relative to the working folder. The whole file is checked
+// before the window opens: a bad line is an error naming FILE:LINE.
 #include <filesystem>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace luz::app {
@@ -49,6 +63,29 @@ struct Script {
   std::filesystem::path file;
   std::vector<ScriptCommand> commands;
 };
+
+class Viewer;
+
+// One verb: its name, its usage line, the check of its arguments (before any window opens) and
+// what the viewer does for it. The common verbs are in script_verbs.cpp; a model's own verbs
+// come with its registry entry (model_registry.h).
+struct ScriptVerb {
+  const char* name;
+  const char* usage;                                    // "click X Y"
+  std::string (*check)(const ScriptCommand& command);   // "" when the arguments are right
+  bool (*run)(Viewer& viewer, const ScriptCommand& command, std::string& error);
+  bool ends_frame;  // the next command must see its effect drawn (a click, a screenshot, ...)
+};
+
+std::span<const ScriptVerb> common_verbs();
+// The verb of that name, common or a model's; nullptr when there is none.
+const ScriptVerb* find_verb(std::string_view name);
+
+// Argument checks the verbs share: "" when right, else what is wrong.
+std::string check_count(const ScriptCommand& command, size_t low, size_t high);
+std::string check_json_file(const ScriptCommand& command);
+bool is_int(const std::string& text);
+bool is_number(const std::string& text);  // finite
 
 // Throws luz::Error (kind usage) "FILE:LINE: what is wrong".
 Script parse_script(const std::filesystem::path& file);

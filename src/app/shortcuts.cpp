@@ -18,47 +18,49 @@ namespace {
 // (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
 // window of solvers on J, for Jacobi, the first of them.
 constexpr Shortcut table[] = {
-    {GLFW_KEY_1, 0, "1", Action::model_1, "flat shading"},
-    {GLFW_KEY_2, 0, "2", Action::model_2, "Gouraud shading"},
-    {GLFW_KEY_3, 0, "3", Action::model_3, "Phong shading"},
-    {GLFW_KEY_4, 0, "4", Action::model_4, "Whitted ray tracing (the raster view until Enter)"},
-    {GLFW_KEY_5, 0, "5", Action::model_5, "radiosity (progressive refinement)"},
-    {GLFW_KEY_6, 0, "6", Action::model_6, "hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"},
-    {GLFW_KEY_A, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
-    {GLFW_KEY_D, 0, "D", Action::toggle_diffuse, "diffuse term I_D on / off"},
-    {GLFW_KEY_S, 0, "S", Action::toggle_specular, "specular term I_S on / off"},
-    {GLFW_KEY_E, 0, "E", Action::toggle_emission, "emitted radiance Le on / off"},
-    {GLFW_KEY_T, 0, "T", Action::toggle_textures, "kd texture on / off"},
-    {GLFW_KEY_B, 0, "B", Action::toggle_blinn, "Phong's R.V / Blinn's N.H"},
-    {GLFW_KEY_F, 0, "F", Action::cycle_attenuation, "f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)"},
-    {GLFW_KEY_G, 0, "G", Action::cycle_fog, "fog: off / linear / exponential"},
-    {GLFW_KEY_H, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
-    {GLFW_KEY_O, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
-    {GLFW_KEY_M, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
-    {GLFW_KEY_ENTER, 0, "Enter", Action::trace_view, "Whitted / hybrid: trace this view, tile by tile"},
-    {GLFW_KEY_BACKSPACE, 0, "Backspace", Action::cancel_trace, "Whitted / hybrid: cancel the trace (back to the raster / radiosity view)"},
-    {GLFW_KEY_X, 0, "X", Action::clear_ray_tree, "Whitted / hybrid: clear the ray tree"},
-    {GLFW_KEY_SPACE, 0, "Space", Action::radiosity_run, "radiosity: run / pause the shooting"},
-    {GLFW_KEY_PERIOD, 0, ".", Action::radiosity_step, "radiosity: one shot"},
-    {GLFW_KEY_0, 0, "0", Action::radiosity_reset, "radiosity: reset (shot 0: unshot = E)"},
-    {GLFW_KEY_U, 0, "U", Action::toggle_heat_map, "radiosity: heat map of the unshot power on / off"},
-    {GLFW_KEY_L, 0, "L", Action::toggle_patches, "radiosity: flat patches with outlines / Gouraud"},
-    {GLFW_KEY_A, GLFW_MOD_SHIFT, "Shift+A", Action::toggle_ambient_estimate, "radiosity: ambient estimate on / off"},
-    {GLFW_KEY_J, 0, "J", Action::toggle_solvers, "slide 36: the system solved four ways, curves live (window)"},
-    {GLFW_KEY_EQUAL, 0, "+", Action::exposure_up, "exposure +0.5 EV"},
-    {GLFW_KEY_MINUS, 0, "-", Action::exposure_down, "exposure -0.5 EV"},
-    {GLFW_KEY_C, 0, "C", Action::scene_camera, "back to the scene camera"},
-    {GLFW_KEY_N, 0, "N", Action::next_camera, "next scene camera"},
-    {GLFW_KEY_R, 0, "R", Action::reload, "reload the scene file"},
-    {GLFW_KEY_P, 0, "P", Action::screenshot, "screenshot of the picture (PNG)"},
-    {GLFW_KEY_P, GLFW_MOD_SHIFT, "Shift+P", Action::screenshot_with_panel, "screenshot with the panel"},
-    {GLFW_KEY_TAB, 0, "Tab", Action::toggle_panel, "hide / show the panel"},
-    {GLFW_KEY_I, 0, "I", Action::toggle_inspector, "hide / show the inspector"},
-    {GLFW_KEY_F1, 0, "F1", Action::help, "this list"},
-    {GLFW_KEY_ESCAPE, 0, "Esc", Action::quit, "quit"},
-    {GLFW_KEY_UP, 0, "Up / Down", Action::none, "fly forward / back (Shift: faster)"},
-    {GLFW_KEY_LEFT, 0, "Left / Right", Action::none, "fly left / right"},
-    {GLFW_KEY_PAGE_UP, 0, "PageUp / PageDown", Action::none, "fly up / down"},
+    // The digits show the models (model_registry.cpp says which is on which key).
+    {GLFW_KEY_1, 0, 0, "1", Action::choose_model, ""}, {GLFW_KEY_2, 0, 0, "2", Action::choose_model, ""},
+    {GLFW_KEY_3, 0, 0, "3", Action::choose_model, ""}, {GLFW_KEY_4, 0, 0, "4", Action::choose_model, ""},
+    {GLFW_KEY_5, 0, 0, "5", Action::choose_model, ""}, {GLFW_KEY_6, 0, 0, "6", Action::choose_model, ""},
+    {GLFW_KEY_7, 0, 0, "7", Action::choose_model, ""}, {GLFW_KEY_8, 0, 0, "8", Action::choose_model, ""},
+    {GLFW_KEY_9, 0, 0, "9", Action::choose_model, ""},
+    {GLFW_KEY_A, 0, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
+    {GLFW_KEY_D, 0, 0, "D", Action::toggle_diffuse, "diffuse term I_D on / off"},
+    {GLFW_KEY_S, 0, 0, "S", Action::toggle_specular, "specular term I_S on / off"},
+    {GLFW_KEY_E, 0, 0, "E", Action::toggle_emission, "emitted radiance Le on / off"},
+    {GLFW_KEY_T, 0, 0, "T", Action::toggle_textures, "kd texture on / off"},
+    {GLFW_KEY_B, 0, 0, "B", Action::toggle_blinn, "Phong's R.V / Blinn's N.H"},
+    {GLFW_KEY_F, 0, 0, "F", Action::cycle_attenuation, "f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)"},
+    {GLFW_KEY_G, 0, 0, "G", Action::cycle_fog, "fog: off / linear / exponential"},
+    {GLFW_KEY_H, 0, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
+    {GLFW_KEY_O, 0, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
+    {GLFW_KEY_M, 0, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
+    {GLFW_KEY_ENTER, 0, 0, "Enter", Action::trace_view, "Whitted / hybrid: trace this view, tile by tile"},
+    {GLFW_KEY_BACKSPACE, 0, 0, "Backspace", Action::cancel_trace, "Whitted / hybrid: cancel the trace (back to the raster / radiosity view)"},
+    {GLFW_KEY_X, 0, 0, "X", Action::clear_ray_tree, "Whitted / hybrid: clear the ray tree"},
+    {GLFW_KEY_SPACE, 0, 0, "Space", Action::radiosity_run, "radiosity: run / pause the shooting"},
+    {GLFW_KEY_PERIOD, 0, 0, ".", Action::radiosity_step, "radiosity: one shot"},
+    {GLFW_KEY_0, 0, 0, "0", Action::radiosity_reset, "radiosity: reset (shot 0: unshot = E)"},
+    {GLFW_KEY_U, 0, 0, "U", Action::toggle_heat_map, "radiosity: heat map of the unshot power on / off"},
+    {GLFW_KEY_L, 0, 0, "L", Action::toggle_patches, "radiosity: flat patches with outlines / Gouraud"},
+    {GLFW_KEY_A, GLFW_MOD_SHIFT, 0, "Shift+A", Action::toggle_ambient_estimate, "radiosity: ambient estimate on / off"},
+    {GLFW_KEY_J, 0, 0, "J", Action::toggle_solvers, "slide 36: the system solved four ways, curves live (window)"},
+    {0, 0, '+', "+", Action::exposure_up, "exposure +0.5 EV (any '+' key, the keypad's too)"},
+    {0, 0, '-', "-", Action::exposure_down, "exposure -0.5 EV (any '-' key, the keypad's too)"},
+    {GLFW_KEY_EQUAL, GLFW_MOD_CONTROL, 0, "Ctrl+=", Action::ui_larger, "larger interface (a projector); Ctrl+- smaller"},
+    {GLFW_KEY_MINUS, GLFW_MOD_CONTROL, 0, "Ctrl+-", Action::ui_smaller, "smaller interface"},
+    {GLFW_KEY_C, 0, 0, "C", Action::scene_camera, "back to the scene camera"},
+    {GLFW_KEY_N, 0, 0, "N", Action::next_camera, "next scene camera"},
+    {GLFW_KEY_R, 0, 0, "R", Action::reload, "reload the scene file"},
+    {GLFW_KEY_P, 0, 0, "P", Action::screenshot, "screenshot of the picture (PNG)"},
+    {GLFW_KEY_P, GLFW_MOD_SHIFT, 0, "Shift+P", Action::screenshot_with_panel, "screenshot with the panel"},
+    {GLFW_KEY_TAB, 0, 0, "Tab", Action::toggle_panel, "hide / show the panel"},
+    {GLFW_KEY_I, 0, 0, "I", Action::toggle_inspector, "hide / show the inspector"},
+    {GLFW_KEY_F1, 0, 0, "F1", Action::help, "this list"},
+    {GLFW_KEY_ESCAPE, 0, 0, "Esc", Action::quit, "quit"},
+    {GLFW_KEY_UP, 0, 0, "Up / Down", Action::none, "fly forward / back (Shift: faster)"},
+    {GLFW_KEY_LEFT, 0, 0, "Left / Right", Action::none, "fly left / right"},
+    {GLFW_KEY_PAGE_UP, 0, 0, "PageUp / PageDown", Action::none, "fly up / down"},
 };
 
 struct NamedKey {
@@ -71,8 +73,8 @@ constexpr NamedKey named_keys[] = {
     {"enter", GLFW_KEY_ENTER},  {"space", GLFW_KEY_SPACE},   {"backspace", GLFW_KEY_BACKSPACE},   {"left", GLFW_KEY_LEFT},
     {"right", GLFW_KEY_RIGHT},  {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},
     {"pageup", GLFW_KEY_PAGE_UP}, {"pagedown", GLFW_KEY_PAGE_DOWN},
-    {"+", GLFW_KEY_EQUAL},      {"=", GLFW_KEY_EQUAL},       {"-", GLFW_KEY_MINUS},
-    {".", GLFW_KEY_PERIOD},
+    {"=", GLFW_KEY_EQUAL},      {"minus", GLFW_KEY_MINUS},   {".", GLFW_KEY_PERIOD},
+    {"kp_add", GLFW_KEY_KP_ADD}, {"kp_subtract", GLFW_KEY_KP_SUBTRACT},
 };
 
 std::string lower(std::string_view text) {
@@ -89,21 +91,33 @@ std::optional<Action> action_for(int key, int mods) {
   // The entry with the most required modifiers that are all held wins (Shift+P over P).
   const Shortcut* best = nullptr;
   for (const Shortcut& s : table)
-    if (s.key == key && s.action != Action::none && (mods & s.mods) == s.mods &&
+    if (s.key != 0 && s.key == key && s.action != Action::none && (mods & s.mods) == s.mods &&
         (!best || s.mods > best->mods))
       best = &s;
   if (!best) return std::nullopt;
   return best->action;
 }
 
-bool parse_key(std::string_view text, int& key, int& mods) {
+std::optional<Action> action_for_character(unsigned character) {
+  for (const Shortcut& s : table)
+    if (s.key == 0 && s.character == character) return s.action;
+  return std::nullopt;
+}
+
+bool parse_key(std::string_view text, int& key, int& mods, unsigned& character) {
   mods = 0;
+  character = 0;
   std::string name = lower(text);
   for (const auto& [prefix, mod] : {std::pair{"shift+", GLFW_MOD_SHIFT}, std::pair{"ctrl+", GLFW_MOD_CONTROL}})
     if (name.starts_with(prefix) && name.size() > std::string_view(prefix).size()) {
       mods |= mod;
       name = name.substr(std::string_view(prefix).size());
     }
+  if (name == "+" || name == "-") {  // a character's shortcut: typed, whatever key makes it
+    key = 0;
+    character = unsigned(name[0]);
+    return true;
+  }
   if (name.size() == 1 && std::isalnum(static_cast<unsigned char>(name[0]))) {
     // GLFW's key codes for letters and digits are their upper-case ASCII codes.
     key = std::toupper(static_cast<unsigned char>(name[0]));

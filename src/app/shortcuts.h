@@ -10,11 +10,12 @@ namespace luz::app {
 
 enum class Action {
   none,  // listed for help only (held keys: flying)
-  model_1, model_2, model_3, model_4, model_5, model_6,
+  choose_model,  // the digit keys: the registry's model on that key (model_registry.h)
   toggle_ambient, toggle_diffuse, toggle_specular, toggle_emission, toggle_textures, toggle_blinn,
   cycle_attenuation,
   cycle_fog, toggle_shadows, toggle_transparency, toggle_reflection_map,
   exposure_up, exposure_down,
+  ui_larger, ui_smaller,
   scene_camera, next_camera,
   reload, screenshot, screenshot_with_panel,
   toggle_panel, toggle_inspector, help, quit,
@@ -24,9 +25,14 @@ enum class Action {
   toggle_solvers,
 };
 
+// A shortcut is a key by its place (GLFW_KEY_*, named by the US layout: letters, Enter, F1) or,
+// for the keys that are characters on every layout but sit elsewhere on some ('+', '-'), the
+// character it types (GLFW's char callback): on a Spanish keyboard '+' is right of P, and the
+// keypad's '+' types '+' too.
 struct Shortcut {
-  int key;            // GLFW_KEY_*
+  int key;            // GLFW_KEY_*, or 0 for a character's shortcut
   int mods;           // GLFW_MOD_* that must be held (0: none)
+  unsigned character; // the character typed, for a character's shortcut (else 0)
   const char* keys;   // as shown to people: "Shift+P"
   Action action;
   const char* what;
@@ -36,9 +42,15 @@ std::span<const Shortcut> shortcuts();
 
 // The action of a key press with these modifiers; nullopt when the key does nothing.
 std::optional<Action> action_for(int key, int mods);
+// The action of a typed character; nullopt when it does nothing.
+std::optional<Action> action_for_character(unsigned character);
 
-// "A", "1", "F1", "Esc", "Left", "PageUp", "Shift+P" -> GLFW key and modifiers.
-// False when the name is not a key the viewer knows.
-bool parse_key(std::string_view text, int& key, int& mods);
+// "A", "1", "F1", "Esc", "Left", "PageUp", "Shift+P", "KP_Add" -> GLFW key and modifiers; "+"
+// and "-" -> the character (key 0). False when the name is not a key the viewer knows.
+bool parse_key(std::string_view text, int& key, int& mods, unsigned& character);
+inline bool parse_key(std::string_view text, int& key, int& mods) {
+  unsigned character = 0;
+  return parse_key(text, key, mods, character);
+}
 
 }  // namespace luz::app

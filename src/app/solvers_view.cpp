@@ -64,7 +64,10 @@ void SolversView::build(SolversState& state) {
   race_.reset();  // the old comparison's GL objects go before the new ones are made
   mesh_.reset();
   SolversState::Status& s = state.status;
-  RadiosityOptions options;  // the hemicube and everything else as `luz solvers` has them
+  // The hemicube and everything else as `luz solvers` has them, so the window and the command
+  // solve the same system for the same settings.
+  RadiosityOptions options;
+  options.hemicube_res = SolversSettings{}.hemicube_res;
   options.target_patches = state.target_patches;
   auto mesh = std::make_unique<PatchMesh>(PatchMesh::build(scene_, options));
   s.patches = mesh->size();
@@ -212,7 +215,8 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   SolversState::Status& s = state.status;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open, ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open,
+                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }

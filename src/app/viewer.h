@@ -14,6 +14,7 @@ struct ViewerSettings {
   std::optional<Script> script;  // `--script FILE`, already checked
   int width = 0;                 // `--size WxH`: the window, in window coordinates; 0: default
   int height = 0;
+  float ui_scale = 1.0f;         // `--ui-scale`: the interface's size (1: the default)
 };
 
 int run_viewer(const ViewerSettings& settings);

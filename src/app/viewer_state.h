@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -19,19 +18,6 @@
 #include "raytracing/whitted_options.h"
 
 namespace luz::app {
-
-enum class Model { flat, gouraud, phong, whitted, radiosity, hybrid };
-
-struct ModelInfo {
-  Model model;
-  const char* name;    // as `luz render --model` and the script spell it
-  const char* label;   // as the panel shows it
-  bool available;      // false: the model's issue has not landed yet
-};
-
-// The models on keys 1..6, in that order.
-std::span<const ModelInfo> models();
-const ModelInfo& info(Model model);
 
 // Whitted's picture: the raster view until a trace is asked for, then the tiles as they come.
 enum class TracePhase { raster, tracing, done };
@@ -55,18 +41,17 @@ struct ViewerState {
   std::unique_ptr<Scene> scene;         // a stable address: the renderers keep a reference
   std::vector<LightEdit> light_edits;   // one per scene light
   LocalOptions local;
-  Model model = Model::phong;
+  std::string model = "phong";          // a name of the registry (model_registry.h); the
+                                        // panel's radio buttons set it, the viewer follows
   float exposure = 0.0f;                // EV, from the scene, then the panel's
   int scene_camera = 0;                 // the scene camera shown while !free_camera
   bool free_camera = false;             // the orbit camera moved away from it
   int selected_material = -1;           // the panel's material section (-1: none yet)
 
-  // Whitted (model 4): the tracer's switches, the struct `luz render --model whitted` fills (its
-  // local terms and Blinn come from `local`, as the command takes them from the --no-TERM flags),
-  // the trace's progress, and the ray tree of the last clicked pixel (slide 24).
+  // Whitted (model 4) and the hybrid: the tracer's switches, the struct `luz render --model
+  // whitted` fills (its local terms and Blinn come from `local`, as the command takes them from
+  // the --no-TERM flags). The trace and the ray tree belong to the view that traces.
   rt::WhittedOptions whitted;
-  TraceProgress trace;
-  std::optional<rt::RayTree> ray_tree;
 
   // Radiosity (model 5): the options `luz render --model radiosity` fills, how the viewer drives
   // the solver, what the panel shows of it and its requests (radiosity_state.h).
@@ -86,9 +71,7 @@ struct ViewerState {
   bool emitters_changed = false;   // an Le was edited: the area lights must be found again
   bool reload = false;
   bool back_to_scene_camera = false;
-  bool trace_requested = false;    // Enter, the Render button
-  bool cancel_trace_requested = false;
-  bool clear_ray_tree_requested = false;
+  float ui_scale_request = 0.0f;   // the Scene section's UI scale slider (0: none)
 
   // For the status line.
   double frame_ms = 0.0;

@@ -1,0 +1,108 @@
+// The registry: one line per model. A model brings its headless render (render_NAME.*) and its
+// viewer view (NAME_model.*); its line here names the flag groups it takes and its own script
+// verbs. The order is the keys' and the panel's.
+#include "app/model_registry.h"
+
+#include <fmt/format.h>
+
+#include "app/hybrid_model.h"
+#include "app/local_model.h"
+#include "app/radiosity_command.h"
+#include "app/radiosity_model.h"
+#include "app/render_flags.h"
+#include "app/render_hybrid.h"
+#include "app/render_local.h"
+#include "app/render_path.h"
+#include "app/render_whitted.h"
+#include "app/whitted_model.h"
+#include "gl/offscreen_context.h"
+
+namespace luz::app {
+namespace {
+
+// The flag groups each model accepts (render_flags.h). Slide 19's switches belong to the local
+// models; the hybrid takes the tracer's and the solver's, but not radiosity's display switches.
+constexpr const char* local_flags[] = {"terms", "local"};
+constexpr const char* whitted_flags[] = {"terms", "whitted", "sampling"};
+constexpr const char* radiosity_flags[] = {"terms", "radiosity", "radiosity-display"};
+constexpr const char* hybrid_flags[] = {"terms", "whitted", "sampling", "radiosity"};
+// The path tracer solves slide 14's equation: the lecture's term switches do not apply to it.
+constexpr const char* path_flags[] = {"sampling", "path"};
+
+template <Shading shading>
+Rendered render_shaded(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings) {
+  return render_local(shading, scene, camera, width, height, settings);
+}
+
+template <Shading shading>
+std::unique_ptr<ModelView> local_view(ViewerServices& viewer) {
+  return std::make_unique<LocalModel>(viewer, shading);
+}
+
+Rendered render_radiosity_model(const Scene& scene, const Camera& camera, int width, int height,
+                                const RenderSettings& settings) {
+  gl::OffscreenContext context;
+  return {render_radiosity(scene, camera, width, height, settings), "", std::nullopt};
+}
+
+Rendered render_whitted_model(const Scene& scene, const Camera& camera, int width, int height,
+                              const RenderSettings& settings) {
+  return render_whitted(scene, camera, width, height, settings);  // no GL needed
+}
+
+const ModelEntry table[] = {
+    {"flat", "flat", 1, "flat shading", local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}},
+    {"gouraud", "Gouraud", 2, "Gouraud shading", local_flags, render_shaded<Shading::gouraud>,
+     local_view<Shading::gouraud>, {}},
+    {"phong", "Phong", 3, "Phong shading", local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}},
+    {"whitted", "Whitted", 4, "Whitted ray tracing (the raster view until Enter)", whitted_flags,
+     render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedModel>(v); },
+     traced_verbs()},
+    {"radiosity", "radiosity", 5, "radiosity (progressive refinement; Space runs it)", radiosity_flags,
+     render_radiosity_model,
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityModel>(v); },
+     radiosity_verbs()},
+    {"hybrid", "hybrid", 6, "hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)",
+     hybrid_flags, render_hybrid,
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> {
+       return std::make_unique<HybridModel>(v, static_cast<RadiosityModel&>(v.view("radiosity")));
+     },
+     {}},
+    {"path", "path tracer", 7, "path tracing of slide 14's equation, the reference (headless: luz render --model path)",
+     path_flags, render_path_model, nullptr, {}},
+};
+
+}  // namespace
+
+std::span<const ModelEntry> models() { return table; }
+
+const ModelEntry* find_model(std::string_view name) {
+  for (const ModelEntry& m : table)
+    if (name == m.name) return &m;
+  return nullptr;
+}
+
+const ModelEntry* model_on_key(int digit) {
+  for (const ModelEntry& m : table)
+    if (m.key == digit) return &m;
+  return nullptr;
+}
+
+std::string models_accepting(std::string_view group) {
+  std::vector<std::string> names;
+  for (const ModelEntry& m : table)
+    for (const char* g : m.flag_groups)
+      if (group == g) names.push_back(m.name);
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return text;
+}
+
+std::string model_names(const char* separator) {
+  std::string text;
+  for (const ModelEntry& m : table) text += (text.empty() ? "" : separator) + std::string(m.name);
+  return text;
+}
+
+}  // namespace luz::app

@@ -1,0 +1,19 @@
+#pragma once
+// The script's `set NAME VALUE`: the options tables' rows (options_tables.h) of the local and
+// Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector).
+#include <string>
+
+#include "app/viewer_state.h"
+
+namespace luz::app {
+
+// The interface's size (`--ui-scale`, `set ui-scale`, Ctrl+= / Ctrl+-): 1 is the default.
+inline constexpr float kMinUiScale = 0.5f;
+inline constexpr float kMaxUiScale = 4.0f;
+
+// "" when NAME takes VALUE, else what is wrong (checked before any window opens).
+std::string check_setting(const std::string& name, const std::string& value);
+// Sets it; false (with `error`) when it cannot be set.
+bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
+
+}  // namespace luz::app

@@ -1,0 +1,163 @@
+#pragma once
+// The viewer's window: input, layout and dispatch. What is drawn in the picture, what the panel
+// shows of a model and what its windows say belong to the model's view (model_view.h); the
+// Viewer turns keys, clicks and script lines into actions on the shared ViewerState or on the
+// view shown, and each frame lays out the panel, the picture's viewport and the status line.
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
+
+#include "app/model_registry.h"
+#include "app/model_view.h"
+#include "app/orbit_camera.h"
+#include "app/script.h"
+#include "app/shortcuts.h"
+#include "app/solvers_view.h"
+#include "app/viewer.h"
+#include "app/viewer_state.h"
+#include "gl/framebuffer.h"
+#include "gl/shader.h"
+#include "gl/window_context.h"
+#include "io/gltf_loader.h"
+#include "local/local_renderer.h"
+
+namespace luz::app {
+
+enum class DragButton { none, left, right };
+
+struct PendingScreenshot {
+  std::filesystem::path path;
+  bool with_panel = false;
+  std::string origin;  // "demo.txt:12" for a script's, empty for a key's
+};
+
+// The window's parts, in window units: the panel on the left, the picture's viewport beside it,
+// the status line under both.
+struct Layout {
+  glm::vec2 window{0.0f};
+  glm::ivec2 framebuffer{0};
+  float panel = 0.0f;    // panel width
+  float status = 0.0f;   // status line height
+  Viewport view;
+};
+
+class Viewer final : public ScriptTarget, public ViewerServices {
+public:
+  Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings);
+  ~Viewer() override;
+  int loop();  // until Esc, the window closes or the script quits; the exit code
+
+  // ScriptTarget: a command runs through its verb's handler (script.h).
+  bool run(const ScriptCommand& command, std::string& error) override;
+  bool busy() const override;
+
+  // ViewerServices.
+  ViewerState& state() override { return state_; }
+  LocalRenderer& local_renderer() override { return *renderer_; }
+  Picker& picker() override { return *picker_; }
+  Inspection& inspection() override { return inspection_; }
+  ModelView& view(std::string_view model) override;
+  float ui_scale() const override { return ui_scale_; }
+  void warn(const std::string& warning) override;
+
+  // What the script's verbs do (script_verbs.cpp); keys and the mouse do the same.
+  void press_key(int key, int mods);
+  void typed(unsigned codepoint);
+  void click_at(glm::vec2 p);            // the picture, or the panel (ImGui sees press and release)
+  void drag(DragButton button, glm::vec2 delta) { move_camera(button, delta); }
+  void zoom(float steps);
+  void screenshot(PendingScreenshot shot) { screenshots_.push_back(std::move(shot)); }
+  bool choose_camera(const std::string& name_or_index, std::string& error);
+  void set_model(const ModelEntry& model);
+  void apply(Action action);
+  void resize(int width, int height);
+  void load(const std::filesystem::path& path);
+  void quit() { quit_ = true; }
+  void set_ui_scale(float scale);   // the class's factor (--ui-scale), 0.5 .. 4
+  float user_scale() const { return user_scale_; }
+  // `idle SECONDS`: the script waits while the viewer sits idle, measuring the CPU it uses.
+  void idle(double seconds);
+  double idle_cpu_fraction() const { return idle_cpu_fraction_; }  // CPU seconds per second
+  nlohmann::json windows_json() const;  // the viewport and the floating windows' rectangles
+  const ModelEntry& model() const { return *model_; }
+  ModelView& shown() { return view(model_->name); }
+  SolversView* solvers() { return solvers_.get(); }
+  Layout layout() const;
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+private:
+  void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
+  void rebuild_renderer();
+  Camera current_camera() const;
+  void to_scene_camera();
+  void rebuild_fonts();
+
+  void on_key(int key, int mods);
+  void on_char(unsigned codepoint);
+  void on_mouse_button(int button, int action);
+  void on_cursor(glm::vec2 p);
+  void on_scroll(float steps);
+  void move_camera(DragButton button, glm::vec2 delta);
+  void fly(float seconds);
+  bool flying() const;
+
+  void frame();
+  void draw_picture(const Layout& l);
+  void draw_windows(const Layout& l);
+  void take_screenshots(const Layout& l);
+  bool needs_frames() const;
+
+  gl::WindowContext window_;
+  ViewerState state_;
+  float ui_scale_ = 1.0f;          // the interface's size: the screen's scale times user_scale_
+  float user_scale_ = 1.0f;        // the class's choice
+  float content_scale_ = 1.0f;     // the screen's, from GLFW (HiDPI)
+  float pixels_per_unit_ = 1.0f;   // framebuffer pixels per window unit when the window opened
+  bool fonts_stale_ = false;
+  std::unique_ptr<LocalRenderer> renderer_;
+  std::unique_ptr<Picker> picker_;
+  std::unique_ptr<gl::Framebuffer> picture_;  // the picture's float radiance
+  gl::Program display_{{"display.vert", "display.frag"}};
+  GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
+  OrbitCamera orbit_;
+  Inspection inspection_;
+
+  const ModelEntry* model_ = nullptr;                    // the model shown
+  std::map<std::string, std::unique_ptr<ModelView>, std::less<>> views_;  // made when first shown
+  // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
+  std::unique_ptr<SolversView> solvers_;
+
+  DragButton drag_ = DragButton::none;
+  glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};
+  bool dragged_ = false;
+
+  std::optional<ScriptRunner> script_;
+  glm::vec2 scripted_click_at_{0.0f};
+  int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
+  std::string failure_;            // a script command that failed: the run ends with exit 1
+  std::vector<PendingScreenshot> screenshots_;
+  std::vector<std::string> warnings_;  // the scene's loader and renderer warnings, shown in the window
+  bool show_warnings_ = false;
+  bool quit_ = false;
+  int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
+  Layout last_layout_;
+
+  // Keys released in the frame they were pressed in: ImGui sees the release one frame later.
+  struct DeferredRelease {
+    int key, scancode, mods;
+  };
+  std::vector<int> pressed_this_frame_;
+  std::vector<DeferredRelease> deferred_releases_;
+
+  std::optional<std::chrono::steady_clock::time_point> idle_until_;
+  double idle_cpu_start_ = 0.0, idle_wall_ = 1.0, idle_cpu_fraction_ = -1.0;
+};
+
+}  // namespace luz::app

@@ -1,0 +1,152 @@
+// The classroom defects found when the viewer was first tried as a new teacher would:
+// tests/viewer/layout.txt is played on scenes/cornell_box.gltf by the `viewer_layout_script` CTest
+// fixture (Xvfb, Mesa's software GL); these tests read what it dumped. Skipped only when xvfb-run
+// is missing.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "viewer_support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
+
+using test::json_of;
+
+class ViewerLayout : public ::testing::Test {
+protected:
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
+  static fs::path file(const std::string& name) { return run_dir / name; }
+};
+
+struct Rect {
+  double x0, y0, x1, y1;
+  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+  bool meets(const Rect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+Rect rect_of(const nlohmann::json& r) { return {r[0], r[1], r[2], r[3]}; }
+
+const nlohmann::json* window_named(const nlohmann::json& dump, const std::string& prefix) {
+  for (const auto& w : dump["windows"])
+    if (w["name"].get<std::string>().starts_with(prefix)) return &w;
+  return nullptr;
+}
+
+// The windows over the picture (not the panel, not the status line) keep off its centre and
+// off each other; nothing in any window is cut at its right edge.
+void expect_laid_out(const std::string& dump_file) {
+  SCOPED_TRACE(dump_file);
+  const nlohmann::json dump = json_of(dump_file);
+  const Rect view = rect_of(dump["view"]);
+  const double cx = 0.5 * (view.x0 + view.x1), cy = 0.5 * (view.y0 + view.y1);
+  std::vector<std::pair<std::string, Rect>> floating;
+  for (const auto& w : dump["windows"]) {
+    const std::string name = w["name"];
+    // A window squeezed into its corner scrolls sideways instead (its scrollbar shows it).
+    if (!w["scrolls_sideways"].get<bool>()) {
+      EXPECT_LE(w["content_width"].get<double>(), w["visible_width"].get<double>() + 0.5) << name << " cuts its text";
+    }
+    if (name == "Luz" || name == "status" || name.starts_with("Keys") || name.starts_with("The scene")) continue;
+    const Rect r = rect_of(w["rect"]);
+    EXPECT_FALSE(r.contains(cx, cy)) << name << " covers the picture's centre";
+    for (const auto& [other, o] : floating) EXPECT_FALSE(r.meets(o)) << name << " overlaps " << other;
+    floating.emplace_back(name, r);
+  }
+}
+
+TEST_F(ViewerLayout, NothingInThePanelIsCutAndTheWindowsKeepApart) {
+  for (const char* dump : {"phong-windows.json", "whitted-windows.json", "radiosity-windows.json"}) {
+    const nlohmann::json windows = json_of(file(dump));
+    const nlohmann::json* panel = window_named(windows, "Luz");
+    ASSERT_NE(panel, nullptr);
+    EXPECT_FALSE((*panel)["scrolls_sideways"].get<bool>()) << dump;
+  }
+  for (const char* dump : {"phong-windows.json", "whitted-windows.json", "radiosity-windows.json",
+                           "radiosity-inspector-windows.json", "solvers-windows.json", "ui-large-windows.json"})
+    expect_laid_out(file(dump).string());
+  // The radiosity dump holds the three windows the trial saw pile up.
+  const nlohmann::json r = json_of(file("radiosity-inspector-windows.json"));
+  EXPECT_NE(window_named(r, "Inspector: patch"), nullptr);
+  EXPECT_NE(window_named(r, "item buffer"), nullptr);
+  EXPECT_NE(window_named(json_of(file("solvers-windows.json")), "Slide 36"), nullptr);
+}
+
+TEST_F(ViewerLayout, KeyFiveSaysHowToStartTheSolver) {
+  const nlohmann::json r = json_of(file("radiosity-windows.json"));
+  EXPECT_NE(window_named(r, "radiosity hint"), nullptr);
+  // Shot 0: the lamp is lit, the room is not (a hint is needed).
+  const test::Codes shot0 = test::codes(file("radiosity-shot-0.png"));
+  int lit = 0;
+  for (int y = 0; y < shot0.height; ++y)
+    for (int x = 0; x < shot0.width; ++x) lit += shot0.at(x, y, 0) > 40;
+  EXPECT_LT(lit, shot0.width * shot0.height / 20);
+}
+
+TEST_F(ViewerLayout, FOneFitsTheWindowAndCanBeClosed) {
+  const nlohmann::json dump = json_of(file("help-windows.json"));
+  const nlohmann::json* help = window_named(dump, "Keys (F1)");
+  ASSERT_NE(help, nullptr);
+  const Rect view = rect_of(dump["view"]), r = rect_of((*help)["rect"]);
+  EXPECT_GE(r.y0, view.y0 - 0.5);
+  EXPECT_LE(r.y1, view.y1 + 0.5);  // scrolled inside, not cut off at 760 units
+  EXPECT_LE(r.x1, view.x1 + 0.5);
+}
+
+TEST_F(ViewerLayout, TheStatusLineSaysWhatTheLastKeyDid) {
+  const nlohmann::json s = json_of(file("exposure-note.json"));
+  EXPECT_EQ(s["note"], "exposure +1.0 EV");  // the Cornell box's +0.5 EV, then '+'
+  EXPECT_DOUBLE_EQ(s["exposure"].get<double>(), 1.0);
+}
+
+TEST_F(ViewerLayout, TheMaterialSectionFollowsTheInspectorAfterACameraMove) {
+  const nlohmann::json before = json_of(file("material-before.json")), after = json_of(file("material-after.json"));
+  const nlohmann::json inspector = json_of(file("inspector-after.json"));
+  ASSERT_TRUE(before.contains("material"));
+  ASSERT_TRUE(after.contains("material"));
+  EXPECT_NE(before["material"], after["material"]) << "the zoom must bring another object under the pixel";
+  EXPECT_EQ(after["material"], inspector["material"]);
+}
+
+// A fixed scale: as the unshot power drains, the heat map darkens (with a scale from the
+// current maximum the most unshot patch stays yellow and the picture red to the end).
+TEST_F(ViewerLayout, TheHeatMapDarkensAsTheSolveConverges) {
+  const test::Codes early = test::codes(file("heat-early.png")), late = test::codes(file("heat-late.png"));
+  // The ramp's green rises from red to yellow: the hotter the map, the greener.
+  auto mean_green = [](const test::Codes& c) {
+    double sum = 0.0;
+    for (int y = 0; y < c.height; ++y)
+      for (int x = 0; x < c.width; ++x) sum += c.at(x, y, 1);
+    return sum / (double(c.width) * c.height);
+  };
+  const double unshot_early = json_of(file("heat-early.json"))["unshot_fraction"].get<double>();
+  const double unshot_late = json_of(file("heat-late.json"))["unshot_fraction"].get<double>();
+  ASSERT_LT(unshot_late, 0.5 * unshot_early);  // the solve went on between the two
+  EXPECT_LT(mean_green(late), 0.8 * mean_green(early));
+}
+
+TEST_F(ViewerLayout, TheInterfaceScalesForAProjector) {
+  const nlohmann::json large = json_of(file("ui-large.json")), smaller = json_of(file("ui-smaller.json"));
+  EXPECT_DOUBLE_EQ(large["user_scale"].get<double>(), 1.5);
+  EXPECT_NEAR(smaller["user_scale"].get<double>(), 1.5 / 1.25, 1e-6);
+  const nlohmann::json windows = json_of(file("ui-large-windows.json")), normal = json_of(file("phong-windows.json"));
+  const Rect panel_large = rect_of((*window_named(windows, "Luz"))["rect"]);
+  const Rect panel_normal = rect_of((*window_named(normal, "Luz"))["rect"]);
+  EXPECT_NEAR(panel_large.x1 - panel_large.x0, 1.5 * (panel_normal.x1 - panel_normal.x0), 1.0);
+}
+
+// Redrawn only on events and while something runs: 10 s idle cost (well) under 5 % of a core.
+TEST_F(ViewerLayout, AnIdleWindowCostsNoCpu) {
+  const double cpu = json_of(file("idle.json"))["idle_cpu_fraction"].get<double>();
+  EXPECT_GE(cpu, 0.0);
+  EXPECT_LT(cpu, 0.05);
+}
+
+}  // namespace
+}  // namespace luz
