@@ -74,6 +74,12 @@ uniform PunctualLight u_lights[MAX_LIGHTS];
 // lights that are on, see below), so that a loop unrolls and reads each light's uniforms directly.
 const int light_count = LUZ_LIGHT_COUNT;
 const int area_light_count = LUZ_AREA_LIGHT_COUNT;
+// And what each one is, so that only its own branches are compiled in: light i's type and the
+// kind of its shadow map (each list ends with an unused -1: GLSL has no empty arrays), and the
+// kind of every emitter's map (all cubes, or none).
+const int light_type[LUZ_LIGHT_COUNT + 1] = int[](LUZ_LIGHT_TYPES);
+const int light_shadow_kind[LUZ_LIGHT_COUNT + 1] = int[](LUZ_LIGHT_SHADOW_KINDS);
+const int area_shadow_kind = LUZ_AREA_SHADOW_KIND;
 uniform AreaLight u_area_lights[MAX_AREA_LIGHTS];
 
 uniform vec3 u_eye;      // camera position, world space
@@ -142,6 +148,7 @@ float spot_factor(PunctualLight light, vec3 light_to_point) {
 // IL and the unit direction L from P toward light i.
 vec3 punctual_IL(int i, vec3 P, out vec3 L) {
   PunctualLight light = u_lights[i];
+  light.type = light_type[i];  // the same value, known to the compiler
   if (light.type == DIRECTIONAL) {
     L = -light.direction;
     return light.intensity / PI;  // IL = E_perp / pi
@@ -255,12 +262,16 @@ Terms local_model(vec3 P, vec3 N) {
   for (int i = 0; i < light_count; ++i) {
     vec3 L;
     vec3 IL = punctual_IL(i, P, L);
-    add_light(terms, IL, u_lights[i].shadow, P, N, L, V);
+    ShadowView shadow = u_lights[i].shadow;
+    shadow.kind = light_shadow_kind[i];
+    add_light(terms, IL, shadow, P, N, L, V);
   }
   for (int i = 0; i < area_light_count; ++i) {
     vec3 L;
     vec3 IL = area_IL(i, P, L);
-    add_light(terms, IL, u_area_lights[i].shadow, P, N, L, V);
+    ShadowView shadow = u_area_lights[i].shadow;
+    shadow.kind = area_shadow_kind;
+    add_light(terms, IL, shadow, P, N, L, V);
   }
   return terms;
 }

@@ -151,15 +151,9 @@ struct Switches {
   bool shadows = false, reflection = false, environment = false, transparent = false;
   FogMode fog = FogMode::off;
   int lights = 0, area_lights = 0;  // how many the shaders' loops run over
-
-  uint32_t key() const {
-    uint32_t k = uint32_t(shading) | uint32_t(fog) << 2 | uint32_t(lights) << 4 | uint32_t(area_lights) << 9;
-    int bit = 16;
-    for (bool b : {ambient, diffuse, specular, emission, blinn, kd_texture, shadows, reflection,
-                   environment, transparent})
-      k |= uint32_t(b) << bit++;
-    return k;
-  }
+  std::vector<int> light_types;     // per light (lighting.glsl POINT, SPOT, DIRECTIONAL)
+  std::vector<int> shadow_kinds;    // per light, its map's ShadowKind
+  ShadowKind area_shadow_kind = ShadowKind::none;
 
   std::string defines() const {
     const auto line = [](const char* name, bool on) { return fmt::format("#define {} {}\n", name, on ? "true" : "false"); };
@@ -169,7 +163,16 @@ struct Switches {
            line("LUZ_SHADOWS_ON", shadows) + line("LUZ_REFLECTION_ON", reflection) +
            line("LUZ_ENVIRONMENT", environment) + line("LUZ_TRANSPARENT", transparent) +
            fmt::format("#define LUZ_FOG_MODE {}\n", int(fog)) +  // lighting.glsl's FOG_*
-           fmt::format("#define LUZ_LIGHT_COUNT {}\n#define LUZ_AREA_LIGHT_COUNT {}\n", lights, area_lights);
+           fmt::format("#define LUZ_LIGHT_COUNT {}\n#define LUZ_AREA_LIGHT_COUNT {}\n", lights, area_lights) +
+           fmt::format("#define LUZ_LIGHT_TYPES {}-1\n", list(light_types)) +
+           fmt::format("#define LUZ_LIGHT_SHADOW_KINDS {}-1\n", list(shadow_kinds)) +
+           fmt::format("#define LUZ_AREA_SHADOW_KIND {}\n", int(area_shadow_kind));
+  }
+
+  static std::string list(const std::vector<int>& values) {  // "1, 2, " for {1, 2}
+    std::string text;
+    for (int v : values) text += fmt::format("{}, ", v);
+    return text;
   }
 };
 
@@ -220,7 +223,7 @@ struct LocalRenderer::Impl {
   Image environment;
   GLuint environment_texture = 0;
   bool warned_reflections = false;
-  std::map<uint32_t, Variant> programs;      // by Switches::key(), compiled when first drawn
+  std::map<std::string, Variant> programs;   // by Switches::defines(), compiled when first drawn
   int pass_number = 0;                       // counts draw_scene() calls (see Variant::pass)
   std::unique_ptr<gl::Framebuffer> target;  // render()'s, reused while the size stays
   std::vector<std::string> warnings;
@@ -246,12 +249,6 @@ struct LocalRenderer::Impl {
 
   void set_pass(gl::Program& p, const ScenePass& pass, const LocalOptions& options, bool shadows);
   void set_lights(gl::Program& p, bool shadows);
-  // The punctual lights the shaders take: the enabled ones, at most max_lights (set_lights).
-  int shader_light_count() const {
-    int enabled = 0;
-    for (const Light& light : scene.lights) enabled += light.enabled ? 1 : 0;
-    return std::min(enabled, max_lights);
-  }
   void set_material(gl::Program& p, const Material& material, const LocalOptions& options);
   bool is_textured(const Material& material, const LocalOptions& options) const {
     return options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < textures.size();
@@ -375,7 +372,7 @@ void LocalRenderer::Impl::set_pass(gl::Program& p, const ScenePass& pass, const 
 }
 
 Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
-  const uint32_t key = switches.key();
+  std::string key = switches.defines();
   auto found = programs.find(key);
   if (found != programs.end()) return found->second;
   std::vector<std::string> stages;
@@ -384,8 +381,8 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
     case Shading::gouraud: stages = {"gouraud.vert", "gouraud.frag"}; break;
     case Shading::phong: stages = {"local.vert", "phong.frag"}; break;
   }
-  return programs.emplace(key, Variant{gl::Program(stages, {"lighting.glsl"}, switches.defines())})
-      .first->second;
+  Variant variant{gl::Program(stages, {"lighting.glsl"}, key)};
+  return programs.emplace(std::move(key), std::move(variant)).first->second;
 }
 
 void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
@@ -437,8 +434,16 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   common.shadows = shadows;
   common.environment = environment_texture != 0 && !environment_path.empty();
   common.fog = pass.fog ? options.fog.mode : FogMode::off;
-  common.lights = shader_light_count();
   common.area_lights = int(area_lights.size());
+  for (const Light& light : scene.lights) {
+    if (!light.enabled) continue;
+    if (common.lights == max_lights) break;
+    const size_t i = size_t(common.lights++);
+    common.light_types.push_back(light_type_code(light.type));
+    common.shadow_kinds.push_back(int(shadows && i < shadow_maps->light_views().size()
+                                          ? shadow_maps->light_views()[i].kind : ShadowKind::none));
+  }
+  if (shadows && !shadow_maps->area_views().empty()) common.area_shadow_kind = ShadowKind::cube;
   ++pass_number;
 
   // The textures every mesh of the pass shares: S_i's maps and the surroundings of kr Ir.
