@@ -266,11 +266,6 @@ SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------
-void Whitted::count(const Ray& ray, RayKind kind) {
-  ++counters_[kind];
-  if (log_) log_->push_back({ray, kind});
-}
-
 PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   // In camera space the image plane at z = -1 spans x in [-tan(yfov/2) aspect, +...] and
   // y in [-tan(yfov/2), +tan(yfov/2)], y up; then the camera's rotation takes it to the world.

@@ -107,8 +107,11 @@ private:
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
                  float distance, int light, std::vector<LightSample>& out) const;
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture
-  // Counts and logs a ray of `kind` as traced.
-  void count(const Ray& ray, RayKind kind);
+  // Counts and logs a ray of `kind` as traced (inline: it runs for every ray).
+  void count(const Ray& ray, RayKind kind) {
+    ++counters_[kind];
+    if (log_) log_->push_back({ray, kind});
+  }
 
   const Scene& scene_;
   const Intersector& intersector_;
