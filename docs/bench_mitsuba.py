@@ -1,69 +1,97 @@
 #!/usr/bin/env python3
-"""Times Mitsuba 3's path tracer on scenes like Luz's, for the README's comparison with
-`luz bench whitted --size 1024x1024`. A throwaway measurement, not part of the build or tests:
+"""Luz's Whitted tracer against Mitsuba 3 on the SAME scenes: the shipped glTF files, converted by
+docs/mitsuba_scene.py. A throwaway measurement, never part of the build or the tests; Mitsuba
+lives in a venv outside the repository (needs Debian's libllvm19 for the llvm variant):
 
-    python3 -m venv /tmp/mitsuba && /tmp/mitsuba/bin/pip install mitsuba
-    /tmp/mitsuba/bin/python docs/bench_mitsuba.py [llvm_ad_rgb|scalar_rgb]
+    python3 -m venv /work/venv-mitsuba && /work/venv-mitsuba/bin/pip install mitsuba
+    DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
+        /work/venv-mitsuba/bin/python docs/bench_mitsuba.py [--luz build/luz] [--runs 5]
 
-Prints, per scene, the first render (which includes Dr.Jit's kernel compilation) and the best
-of five later ones (compiled kernels come from Dr.Jit's cache), 1024x1024, 1 spp, max_depth 5.
+Two pairs per scene, 1024x1024, 1 spp:
+  Luz Whitted depth 1 (local model + shadow rays)   vs  Mitsuba `direct`
+  Luz Whitted depth 5                                vs  Mitsuba `path`, max_depth 5
+The runs interleave (Luz, Mitsuba, Luz, Mitsuba, ...) in one invocation, so both see the same
+load; each line reports the best and the median of the runs and the load average (uptime) seen
+around them. Luz's figure is the render time `luz bench whitted` prints (the trace of every
+pixel, on TBB's threads); Mitsuba's is mi.render() to a synchronised result, after one untimed
+render that compiles its kernels.
 """
+import argparse
+import os
+import statistics
+import subprocess
 import sys
 import time
 
-import drjit as dr
-import mitsuba as mi
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-variant = sys.argv[1] if len(sys.argv) > 1 else "llvm_ad_rgb"
-mi.set_variant(variant)
+import drjit as dr  # noqa: E402
+import mitsuba as mi  # noqa: E402
 
+from mitsuba_scene import scene_dict  # noqa: E402
 
-def cornell():
-    scene = mi.cornell_box()  # Mitsuba's own Cornell box: walls, two blocks, an area light
-    scene["sensor"]["film"]["width"] = 1024
-    scene["sensor"]["film"]["height"] = 1024
-    scene["integrator"] = {"type": "path", "max_depth": 5}
-    return mi.load_dict(scene)
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def whitted():
-    # Whitted's composition: a red/yellow checkerboard, a mirror sphere, a glass sphere (ior 1.5),
-    # a point light and a blue sky, as scenes/whitted.gltf.
-    checker = {"type": "checkerboard", "color0": {"type": "rgb", "value": [0.75, 0.08, 0.05]},
-               "color1": {"type": "rgb", "value": [0.8, 0.7, 0.08]},
-               "to_uv": mi.ScalarTransform4f().scale([6, 8, 1])}
-    return mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": 5},
-        "sensor": {"type": "perspective", "fov_axis": "y", "fov": 40,
-                   "to_world": mi.ScalarTransform4f().look_at(origin=[0.2, 1.6, 4.2],
-                                                              target=[0.2, 0.9, -3.8], up=[0, 1, 0]),
-                   "film": {"type": "hdrfilm", "width": 1024, "height": 1024},
-                   "sampler": {"type": "independent", "sample_count": 1}},
-        "floor": {"type": "rectangle",
-                  "to_world": mi.ScalarTransform4f().translate([0, 0, -2]).rotate([1, 0, 0], -90).scale([3, 4, 1]),
-                  "bsdf": {"type": "diffuse", "reflectance": checker}},
-        "mirror": {"type": "sphere", "center": [0.65, 0.75, -1.0], "radius": 0.6,
-                   "bsdf": {"type": "conductor", "material": "none"}},
-        "glass": {"type": "sphere", "center": [-0.45, 1.3, 0.4], "radius": 0.5,
-                  "bsdf": {"type": "dielectric", "int_ior": 1.5, "ext_ior": 1.0}},
-        "light": {"type": "point", "position": [2.0, 5.5, 3.0],
-                  "intensity": {"type": "rgb", "value": [90, 90, 90]}},
-        "sky": {"type": "constant", "radiance": {"type": "rgb", "value": [0.2, 0.35, 0.8]}},
-    })
+def load_average():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
 
 
-def timed(scene, seed):
+def luz_seconds(luz, scene, depth, size):
+    out = subprocess.run([luz, "bench", "whitted", "--size", f"{size}x{size}", "--depth", str(depth),
+                          "--spp", "1", "--repeats", "1", "--scenes", scene],
+                         check=True, capture_output=True, text=True).stdout
+    for line in out.splitlines():
+        fields = line.split()
+        if fields and fields[0] == scene:
+            return float(fields[1])
+    raise RuntimeError(f"no timing for {scene} in:\n{out}")
+
+
+def mitsuba_seconds(scene):
     start = time.perf_counter()
-    image = mi.render(scene, spp=1, seed=seed)
+    image = mi.render(scene, spp=1, seed=0)
     dr.eval(image)
     dr.sync_thread()
     return time.perf_counter() - start
 
 
-print(f"Mitsuba {mi.__version__}, variant {variant}, 1024x1024, 1 spp, path max_depth 5")
-for name, make in (("cornell_box", cornell), ("whitted", whitted)):
-    scene = make()
-    first = timed(scene, 0)
-    best = min(timed(scene, 0) for _ in range(5))  # same seed: the cached kernel is reused
-    print(f"{name:<12} first {first:.3f} s (with kernel compilation), then best {best:.3f} s")
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--luz", default=os.path.join(ROOT, "build", "luz"))
+    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--size", type=int, default=1024)
+    parser.add_argument("--scenes", default="whitted,cornell_box")
+    parser.add_argument("--variant", default="llvm_ad_rgb")
+    args = parser.parse_args()
+    mi.set_variant(args.variant)
+
+    print(f"Luz ({args.luz}) vs Mitsuba {mi.__version__} {args.variant}, {args.size}x{args.size}, "
+          f"1 spp, {args.runs} interleaved runs each; {os.cpu_count()} CPUs")
+    print(f"{'scene':<14} {'pair':<28} {'Luz best':>9} {'median':>8} {'Mitsuba best':>13} "
+          f"{'median':>8} {'ratio Luz/Mi':>13} {'load':>10}")
+    for name in args.scenes.split(","):
+        path = os.path.join(ROOT, "scenes", name + ".gltf")
+        pairs = [("Whitted d1 / direct", 1, {"type": "direct"}),
+                 ("Whitted d5 / path d5", 5, {"type": "path", "max_depth": 5})]
+        for label, depth, integrator in pairs:
+            scene = mi.load_dict(scene_dict(path, args.size, args.size, integrator))
+            mitsuba_seconds(scene)  # compiles the kernels
+            luz, mitsuba, loads = [], [], []
+            for _ in range(args.runs):
+                loads.append(load_average())
+                luz.append(luz_seconds(args.luz, name, depth, args.size))
+                mitsuba.append(mitsuba_seconds(scene))
+            loads.append(load_average())
+            ratio_best = min(luz) / min(mitsuba)
+            ratio_median = statistics.median(luz) / statistics.median(mitsuba)
+            print(f"{name:<14} {label:<28} {min(luz):>9.3f} {statistics.median(luz):>8.3f} "
+                  f"{min(mitsuba):>13.3f} {statistics.median(mitsuba):>8.3f} "
+                  f"{ratio_best:>6.2f}/{ratio_median:<6.2f} {min(loads):>4.1f}-{max(loads):<4.1f}",
+                  flush=True)
+    print("ratio: best/best and median/median (below 1: Luz is faster); load: 1-minute load average")
+
+
+if __name__ == "__main__":
+    main()

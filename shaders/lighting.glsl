@@ -69,9 +69,17 @@ struct AreaLight {
   ShadowView shadow;  // its group's cube (kind SHADOW_NONE while shadows are off)
 };
 
-uniform int u_light_count;
 uniform PunctualLight u_lights[MAX_LIGHTS];
-uniform int u_area_light_count;
+// How many of each the loops run over: constants of the program as well (LocalRenderer counts the
+// lights that are on, see below), so that a loop unrolls and reads each light's uniforms directly.
+const int light_count = LUZ_LIGHT_COUNT;
+const int area_light_count = LUZ_AREA_LIGHT_COUNT;
+// And what each one is, so that only its own branches are compiled in: light i's type and the
+// kind of its shadow map (each list ends with an unused -1: GLSL has no empty arrays), and the
+// kind of every emitter's map (all cubes, or none).
+const int light_type[LUZ_LIGHT_COUNT + 1] = int[](LUZ_LIGHT_TYPES);
+const int light_shadow_kind[LUZ_LIGHT_COUNT + 1] = int[](LUZ_LIGHT_SHADOW_KINDS);
+const int area_shadow_kind = LUZ_AREA_SHADOW_KIND;
 uniform AreaLight u_area_lights[MAX_AREA_LIGHTS];
 
 uniform vec3 u_eye;      // camera position, world space
@@ -83,35 +91,40 @@ uniform vec3 u_kd;
 uniform vec3 u_ks;
 uniform float u_shininess;  // n
 uniform vec3 u_emission;    // Le
-uniform bool u_has_kd_texture;
 uniform sampler2D u_kd_texture;  // baseColorTexture, linear texels
+uniform vec3 u_kr;
+uniform vec3 u_kt;
 
-// The switches of LocalOptions, one per term.
-uniform bool u_ambient_on;
-uniform bool u_diffuse_on;
-uniform bool u_specular_on;
-uniform bool u_emission_on;
-uniform bool u_blinn;
+// The switches, one per term: constants of the program, not uniforms. LocalRenderer compiles one
+// program per combination it draws with (LUZ_* defined before this file, local_renderer.cpp
+// program_for), so a term that is off is not in the program at all: a software rasteriser such
+// as llvmpipe runs both sides of every branch, and would pay for the shadow lookups, the cube map
+// and the textures of every switch on every fragment.
+const bool ambient_on = LUZ_AMBIENT_ON;        // I_A
+const bool diffuse_on = LUZ_DIFFUSE_ON;        // I_D
+const bool specular_on = LUZ_SPECULAR_ON;      // I_S
+const bool emission_on = LUZ_EMISSION_ON;      // Le
+const bool blinn = LUZ_BLINN;                  // cos(alpha) = N.H instead of R.V
+const bool has_kd_texture = LUZ_KD_TEXTURE;    // this mesh's kd is textured (and textures are on)
+// Slide 19's (LocalOptions' sub-structs, and the mesh's part in them).
+const bool shadows_on = LUZ_SHADOWS_ON;        // S_i from the shadow maps
+const bool reflection_on = LUZ_REFLECTION_ON;  // this mesh has kr > 0 and a reflection map
+const bool has_environment = LUZ_ENVIRONMENT;  // an environment image behind the cube maps
+const int fog_mode = LUZ_FOG_MODE;             // FOG_OFF, FOG_LINEAR, FOG_EXPONENTIAL
+const bool transparent = LUZ_TRANSPARENT;      // this mesh is drawn blended over what lies behind
 
-// Slide 19's switches (LocalOptions' sub-structs).
-uniform bool u_shadows_on;
+// Their parameters.
 uniform sampler2DArray u_shadow_maps;  // R32F, one layer per map (local/shadow_maps.h)
 uniform float u_shadow_constant_bias;  // m
 uniform float u_shadow_slope_bias;     // texels per unit of tan(theta)
 uniform float u_shadow_normal_offset;  // texels
-uniform bool u_reflection_on;          // this mesh has kr > 0 and a reflection map
-uniform vec3 u_kr;
 uniform samplerCube u_reflection_map;  // the surroundings seen from the object's centre
-uniform bool u_has_environment;
 uniform sampler2D u_environment;       // equirectangular, linear
 uniform vec3 u_background;
-uniform int u_fog_mode;                // FOG_OFF, FOG_LINEAR, FOG_EXPONENTIAL
 uniform vec3 u_fog_colour;
 uniform float u_fog_near;
 uniform float u_fog_far;
 uniform float u_fog_density;
-uniform bool u_transparent;            // this mesh is drawn blended over what lies behind it
-uniform vec3 u_kt;
 
 // ---- [lights] ----------------------------------------------------------------------------------
 // f_att(d) as core/light.cpp Attenuation::factor.
@@ -135,6 +148,7 @@ float spot_factor(PunctualLight light, vec3 light_to_point) {
 // IL and the unit direction L from P toward light i.
 vec3 punctual_IL(int i, vec3 P, out vec3 L) {
   PunctualLight light = u_lights[i];
+  light.type = light_type[i];  // the same value, known to the compiler
   if (light.type == DIRECTIONAL) {
     L = -light.direction;
     return light.intensity / PI;  // IL = E_perp / pi
@@ -189,7 +203,7 @@ ivec3 cube_texel(vec3 D, int size) {
 // its shadow map holds a surface nearer the light. Bias against self-shadowing ("acne"): look up
 // from P moved normal_offset texels along N, and forgive constant + slope * texel * tan(theta).
 float shadow_factor(ShadowView view, vec3 P, vec3 N, float cos_theta) {
-  if (!u_shadows_on || view.kind == SHADOW_NONE) return 1.0;
+  if (!shadows_on || view.kind == SHADOW_NONE) return 1.0;
   int size = textureSize(u_shadow_maps, 0).x;
   float texel = view.kind == SHADOW_ORTHOGRAPHIC ? view.texel : view.texel * length(P - view.origin);
   vec3 Q = P + N * (u_shadow_normal_offset * texel);
@@ -226,7 +240,7 @@ struct Terms {
 
 // cos(alpha): Phong's mirror direction R of the light against the viewer V, or Blinn's N.H.
 float cos_alpha(vec3 N, vec3 L, vec3 V) {
-  if (u_blinn) return max(dot(N, normalize(L + V)), 0.0);
+  if (blinn) return max(dot(N, normalize(L + V)), 0.0);
   vec3 R = reflect(-L, N);  // 2 (N.L) N - L
   return max(dot(R, V), 0.0);
 }
@@ -236,37 +250,41 @@ void add_light(inout Terms terms, vec3 IL, ShadowView shadow, vec3 P, vec3 N, ve
   float cos_theta = dot(N, L);
   if (cos_theta <= 0.0) return;  // the light is behind the surface: no diffuse, no highlight
   float S = shadow_factor(shadow, P, N, cos_theta);                                            // S_i
-  if (u_diffuse_on)  terms.diffuse  += S * IL * u_kd * cos_theta;                              // I_D
-  if (u_specular_on) terms.specular += S * IL * u_ks * pow(cos_alpha(N, L, V), u_shininess);  // I_S
+  if (diffuse_on)  terms.diffuse  += S * IL * u_kd * cos_theta;                              // I_D
+  if (specular_on) terms.specular += S * IL * u_ks * pow(cos_alpha(N, L, V), u_shininess);  // I_S
 }
 
 // The formula at world point P with unit normal N (already facing the viewer's side).
 Terms local_model(vec3 P, vec3 N) {
   vec3 V = normalize(u_eye - P);
   Terms terms = Terms(vec3(0.0), vec3(0.0), vec3(0.0));
-  if (u_ambient_on) terms.ambient = u_ambient * u_ka;  // I_A = Ia * ka
-  for (int i = 0; i < u_light_count; ++i) {
+  if (ambient_on) terms.ambient = u_ambient * u_ka;  // I_A = Ia * ka
+  for (int i = 0; i < light_count; ++i) {
     vec3 L;
     vec3 IL = punctual_IL(i, P, L);
-    add_light(terms, IL, u_lights[i].shadow, P, N, L, V);
+    ShadowView shadow = u_lights[i].shadow;
+    shadow.kind = light_shadow_kind[i];
+    add_light(terms, IL, shadow, P, N, L, V);
   }
-  for (int i = 0; i < u_area_light_count; ++i) {
+  for (int i = 0; i < area_light_count; ++i) {
     vec3 L;
     vec3 IL = area_IL(i, P, L);
-    add_light(terms, IL, u_area_lights[i].shadow, P, N, L, V);
+    ShadowView shadow = u_area_lights[i].shadow;
+    shadow.kind = area_shadow_kind;
+    add_light(terms, IL, shadow, P, N, L, V);
   }
   return terms;
 }
 
 // kd's texture factor at uv (1 without a texture or with textures switched off).
 vec3 kd_texture_factor(vec2 uv) {
-  return u_has_kd_texture ? texture(u_kd_texture, uv).rgb : vec3(1.0);
+  return has_kd_texture ? texture(u_kd_texture, uv).rgb : vec3(1.0);
 }
 
 // I = I_A + I_D * texture + I_S (+ Le): the sum the fragment writes.
 vec3 radiance(Terms terms, vec2 uv, bool emitting_side) {
   vec3 I = terms.ambient + terms.diffuse * kd_texture_factor(uv) + terms.specular;
-  if (u_emission_on && emitting_side) I += u_emission;  // an emitter shows its own Le
+  if (emission_on && emitting_side) I += u_emission;  // an emitter shows its own Le
   return I;
 }
 
@@ -277,7 +295,7 @@ vec3 mirror_direction(vec3 P, vec3 N) { return reflect(normalize(P - u_eye), N);
 // What surrounds the scene along D: the environment image (equirectangular: its centre looks
 // down -Z, its top row up) or the background radiance.
 vec3 environment(vec3 D) {
-  if (!u_has_environment) return u_background;
+  if (!has_environment) return u_background;
   D = normalize(D);
   vec2 uv = vec2(0.5 + atan(D.x, -D.z) / (2.0 * PI), acos(clamp(D.y, -1.0, 1.0)) / PI);
   return textureLod(u_environment, uv, 0.0).rgb;
@@ -294,8 +312,8 @@ vec3 reflected(vec3 R) {
 // Depth cueing: the share f of a surface's radiance that reaches the eye from distance d; the
 // rest, 1 - f, is the fog colour.
 float fog_factor(float d) {
-  if (u_fog_mode == FOG_LINEAR) return clamp((u_fog_far - d) / max(u_fog_far - u_fog_near, 1e-6), 0.0, 1.0);
-  if (u_fog_mode == FOG_EXPONENTIAL) return exp(-u_fog_density * d);
+  if (fog_mode == FOG_LINEAR) return clamp((u_fog_far - d) / max(u_fog_far - u_fog_near, 1e-6), 0.0, 1.0);
+  if (fog_mode == FOG_EXPONENTIAL) return exp(-u_fog_density * d);
   return 1.0;
 }
 
@@ -322,9 +340,9 @@ layout(location = 0, index = 1) out vec4 frag_transmittance;
 //   pixel = f (I + kt It) + (1 - f) C_fog,  with It taken as the pixel already drawn behind.
 void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
   vec3 I = radiance(terms, uv, emitting_side);
-  if (u_reflection_on) I += u_kr * reflected(R);  // + kr Ir
+  if (reflection_on) I += u_kr * reflected(R);  // + kr Ir
   float f = fog_factor(length(P - u_eye));
-  vec3 transmitted = u_transparent ? f * u_kt : vec3(0.0);
+  vec3 transmitted = transparent ? f * u_kt : vec3(0.0);
   // Alpha: how much of the pixel is covered, for the reflection cube maps (cleared to 0, where the
   // surroundings show through by 1 - alpha): a transparent surface covers 1 - kt of what is behind
   // it (kt's mean: one alpha for three channels).

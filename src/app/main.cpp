@@ -16,6 +16,7 @@
 #include "app/i18n.h"
 #include "app/lesson.h"
 #include "app/model_registry.h"
+#include "app/bench_local.h"
 #include "app/render_command.h"
 #include "app/render_flags.h"
 #include "app/viewer_settings.h"
@@ -137,6 +138,10 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1);
   CLI::App* bench_whitted = bench->add_subcommand("whitted", "The Whitted tracer against the same rays traced bare through Embree");
   luz::app::add_bench_flags(*bench_whitted, bench_settings);
+  luz::app::LocalBenchSettings local_bench;
+  CLI::App* bench_local = bench->add_subcommand(
+      "local", "Flat, Gouraud and Phong ms per frame, with slide 19's effects, against the same triangles drawn bare");
+  luz::app::add_local_bench_flags(*bench_local, local_bench);
   luz::app::RadiosityBenchSettings radiosity_bench;
   CLI::App* bench_radiosity = bench->add_subcommand(
       "radiosity", "Shots/s and time to converge on the Cornell box at about 1k, 4k, 16k, 64k patches");
@@ -172,6 +177,7 @@ int main(int argc, char** argv) {
   if (compare->parsed()) return luz::app::run_compare(compare_settings);
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
+  if (bench_local->parsed()) return luz::app::run_bench_local(local_bench);
 
   if (lesson_file) {  // a malformed lesson is a usage error, found before any window opens
     try {

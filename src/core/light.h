@@ -16,6 +16,7 @@ struct Attenuation {
   bool classroom = false;
   glm::vec3 c{1.0f, 0.0f, 0.0f};  // c0, c1, c2 of the classroom form
   float factor(float d) const;
+  bool operator==(const Attenuation&) const = default;
 };
 
 struct Light {
@@ -34,6 +35,7 @@ struct Light {
   // glTF's smooth falloff between inner and outer cone, or Warn's cos^p inside the outer cone.
   float spot_factor(const glm::vec3& light_to_point) const;
   std::string to_string() const;
+  bool operator==(const Light&) const = default;
 };
 
 const char* to_string(LightType type);

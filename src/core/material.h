@@ -22,6 +22,7 @@ struct Material {
 
   bool is_emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
   std::string to_string() const;
+  bool operator==(const Material&) const = default;
 };
 
 // SCENES.md: the Phong exponent implied by a glTF roughness r when extras.shininess is absent,

@@ -51,7 +51,8 @@ Stage stage_of(const std::string& file) {
 //   0 = the file's #version line and the stage define, 1..k = the shared files, k+1 = the file.
 // Each string restarts its line count with #line, so "2:14(3): error" reads as line 14 of
 // source 2; the message thrown lists which file each number is.
-GLuint compile(const std::string& file, const std::vector<std::string>& shared) {
+GLuint compile(const std::string& file, const std::vector<std::string>& shared,
+               const std::string& defines) {
   const std::filesystem::path dir = shader_dir();
   const Stage stage = stage_of(file);
   const std::string text = read_text(dir / file);
@@ -66,7 +67,7 @@ GLuint compile(const std::string& file, const std::vector<std::string>& shared) 
 
   std::vector<std::string> sources;
   std::string legend = fmt::format("source 0 = {} header", file);
-  sources.push_back(fmt::format("{}\n#define {} 1\n", version, stage.define));
+  sources.push_back(fmt::format("{}\n#define {} 1\n{}", version, stage.define, defines));
   for (size_t i = 0; i < shared.size(); ++i) {
     const size_t number = i + 1;
     sources.push_back(fmt::format("#line 1 {}\n{}\n", number, read_text(dir / shared[i])));
@@ -98,11 +99,12 @@ GLuint compile(const std::string& file, const std::vector<std::string>& shared) 
 
 }  // namespace
 
-Program::Program(const std::vector<std::string>& stages, const std::vector<std::string>& shared) {
+Program::Program(const std::vector<std::string>& stages, const std::vector<std::string>& shared,
+                 const std::string& defines) {
   for (const std::string& file : stages) name_ += (name_.empty() ? "" : " + ") + file;
   std::vector<GLuint> shaders;
   try {
-    for (const std::string& file : stages) shaders.push_back(compile(file, shared));
+    for (const std::string& file : stages) shaders.push_back(compile(file, shared, defines));
   } catch (...) {
     for (GLuint shader : shaders) glDeleteShader(shader);
     throw;

@@ -25,8 +25,11 @@ class Program {
 public:
   // `stages`: file names in shader_dir(), stage from the extension (.vert, .geom, .frag).
   // `shared`: files prepended to every stage after its #version line.
+  // `defines`: lines ("#define NAME VALUE\n") put before the shared files in every stage, to
+  // compile variants of one program.
   // Throws luz::Error (kind gl) naming the file and quoting the driver's log.
-  Program(const std::vector<std::string>& stages, const std::vector<std::string>& shared = {});
+  Program(const std::vector<std::string>& stages, const std::vector<std::string>& shared = {},
+          const std::string& defines = {});
   ~Program();
   Program(Program&& other) noexcept;
   Program& operator=(Program&& other) noexcept;

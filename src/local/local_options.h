@@ -32,6 +32,7 @@ struct Fog {
   float near = 2.0f;               // m, linear: no fog closer than this
   float far = 20.0f;               // m, linear: only fog beyond this
   float density = 0.1f;            // 1/m, exponential
+  bool operator==(const Fog&) const = default;
 };
 
 // Blocking of the sources by occlusion ("bloqueo de fuentes por oclusión"): the lecture's S_i,
@@ -47,6 +48,7 @@ struct Shadows {
   float slope_bias = 1.0f;       // texels of depth per unit of tan(theta)
   float normal_offset = 1.0f;    // texels along the normal
   int map_size = 1024;           // texels per side of every map (cube faces too)
+  bool operator==(const Shadows&) const = default;
 };
 
 // Non-refractive transparency ("transparencias no refractivas"): a surface with kt > 0 lets what
@@ -55,6 +57,7 @@ struct Shadows {
 // Transparent meshes are drawn after the opaque ones, back to front.
 struct Transparency {
   bool on = false;
+  bool operator==(const Transparency&) const = default;
 };
 
 // Reflection maps ("mapas de reflexión"): kr * Ir with Ir looked up in a cube map rendered from the
@@ -65,6 +68,7 @@ struct ReflectionMap {
   bool on = false;
   int resolution = 256;     // texels per cube face
   std::string environment;  // an equirectangular image file (linear after decoding), or empty
+  bool operator==(const ReflectionMap&) const = default;
 };
 
 struct LocalOptions {
@@ -81,6 +85,7 @@ struct LocalOptions {
   Shadows shadows;
   Transparency transparency;
   ReflectionMap reflection;
+  bool operator==(const LocalOptions&) const = default;
 };
 
 const char* to_string(Shading shading);

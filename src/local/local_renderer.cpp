@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -140,6 +141,68 @@ struct ReflectionCube {
   int size = 0;
 };
 
+// The switches a program is compiled with: lighting.glsl's constants (LUZ_*), so that a term that
+// is off costs nothing per fragment. The options give most; the mesh gives its texture, its
+// reflection map and whether it is drawn as transparent.
+struct Switches {
+  Shading shading = Shading::phong;
+  bool ambient = true, diffuse = true, specular = true, emission = true, blinn = false;
+  bool kd_texture = false;
+  bool shadows = false, reflection = false, environment = false, transparent = false;
+  FogMode fog = FogMode::off;
+  int lights = 0, area_lights = 0;  // how many the shaders' loops run over
+  std::vector<int> light_types;     // per light (lighting.glsl POINT, SPOT, DIRECTIONAL)
+  std::vector<int> shadow_kinds;    // per light, its map's ShadowKind
+  ShadowKind area_shadow_kind = ShadowKind::none;
+
+  std::string defines() const {
+    const auto line = [](const char* name, bool on) { return fmt::format("#define {} {}\n", name, on ? "true" : "false"); };
+    return line("LUZ_AMBIENT_ON", ambient) + line("LUZ_DIFFUSE_ON", diffuse) +
+           line("LUZ_SPECULAR_ON", specular) + line("LUZ_EMISSION_ON", emission) +
+           line("LUZ_BLINN", blinn) + line("LUZ_KD_TEXTURE", kd_texture) +
+           line("LUZ_SHADOWS_ON", shadows) + line("LUZ_REFLECTION_ON", reflection) +
+           line("LUZ_ENVIRONMENT", environment) + line("LUZ_TRANSPARENT", transparent) +
+           fmt::format("#define LUZ_FOG_MODE {}\n", int(fog)) +  // lighting.glsl's FOG_*
+           fmt::format("#define LUZ_LIGHT_COUNT {}\n#define LUZ_AREA_LIGHT_COUNT {}\n", lights, area_lights) +
+           fmt::format("#define LUZ_LIGHT_TYPES {}-1\n", list(light_types)) +
+           fmt::format("#define LUZ_LIGHT_SHADOW_KINDS {}-1\n", list(shadow_kinds)) +
+           fmt::format("#define LUZ_AREA_SHADOW_KIND {}\n", int(area_shadow_kind));
+  }
+
+  static std::string list(const std::vector<int>& values) {  // "1, 2, " for {1, 2}
+    std::string text;
+    for (int v : values) text += fmt::format("{}, ", v);
+    return text;
+  }
+};
+
+// A compiled program and the draw_scene() call whose uniforms it holds: a pass sets the lights,
+// the camera and the switches' parameters once per program it uses, not once per mesh.
+struct Variant {
+  gl::Program program;
+  int pass = -1;
+};
+
+// What the maps of slide 19 were last drawn from. Shadow and reflection maps do not depend on the
+// camera, so an orbiting class redraws neither: they are drawn again only when what they show
+// changes (a light moved or switched, a material edited, a switch thrown). The geometry is fixed
+// for a renderer's life (see local_renderer.h).
+struct ShadowInputs {
+  std::vector<Light> lights;
+  std::vector<bool> emissive;  // per mesh: left out of the emitters' maps
+  Shadows settings;
+  bool operator==(const ShadowInputs&) const = default;
+};
+
+struct ReflectionInputs {
+  std::vector<Light> lights;
+  std::vector<Material> materials;
+  Rgb ambient{0.0f}, background{0.0f};
+  LocalOptions options;
+  int shadow_revision = 0;  // the shadow maps the cube faces were lit with
+  bool operator==(const ReflectionInputs&) const = default;
+};
+
 struct LocalRenderer::Impl {
   const Scene& scene;
   std::vector<gl::MeshBuffers> meshes;  // one per Scene::meshes entry
@@ -148,6 +211,9 @@ struct LocalRenderer::Impl {
   std::vector<AreaLight> area_lights;   // at most max_area_lights
   std::unique_ptr<ShadowMaps> shadow_maps;  // made when shadows are first switched on
   bool drew_shadows = false;                // the last draw() used them
+  std::optional<ShadowInputs> shadows_drawn_for;
+  int shadow_revision = 0;                  // counts the shadow maps' updates
+  std::optional<ReflectionInputs> reflections_drawn_for;
   Shadows drawn_shadow_settings;
   std::vector<ReflectionCube> cubes;        // per mesh (texture 0: none)
   GLuint cube_framebuffer = 0, cube_depth = 0;
@@ -157,9 +223,8 @@ struct LocalRenderer::Impl {
   Image environment;
   GLuint environment_texture = 0;
   bool warned_reflections = false;
-  gl::Program flat{{"local.vert", "flat.geom", "flat.frag"}, {"lighting.glsl"}};
-  gl::Program gouraud{{"gouraud.vert", "gouraud.frag"}, {"lighting.glsl"}};
-  gl::Program phong{{"local.vert", "phong.frag"}, {"lighting.glsl"}};
+  std::map<std::string, Variant> programs;   // by Switches::defines(), compiled when first drawn
+  int pass_number = 0;                       // counts draw_scene() calls (see Variant::pass)
   std::unique_ptr<gl::Framebuffer> target;  // render()'s, reused while the size stays
   std::vector<std::string> warnings;
   bool warned_lights = false;
@@ -174,14 +239,7 @@ struct LocalRenderer::Impl {
     if (environment_texture) glDeleteTextures(1, &environment_texture);
   }
 
-  gl::Program& program(Shading shading) {
-    switch (shading) {
-      case Shading::flat: return flat;
-      case Shading::gouraud: return gouraud;
-      case Shading::phong: return phong;
-    }
-    return phong;
-  }
+  Variant& program_for(const Switches& switches);
 
   const Material& material_of(size_t mesh) const {
     static const Material fallback;
@@ -189,8 +247,12 @@ struct LocalRenderer::Impl {
     return m >= 0 && size_t(m) < scene.materials.size() ? scene.materials[size_t(m)] : fallback;
   }
 
+  void set_pass(gl::Program& p, const ScenePass& pass, const LocalOptions& options, bool shadows);
   void set_lights(gl::Program& p, bool shadows);
   void set_material(gl::Program& p, const Material& material, const LocalOptions& options);
+  bool is_textured(const Material& material, const LocalOptions& options) const {
+    return options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < textures.size();
+  }
   void set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view);
   float far_plane(const glm::vec3& eye) const;
   void draw_scene(const ScenePass& pass, const LocalOptions& options);
@@ -269,7 +331,6 @@ void LocalRenderer::Impl::set_lights(gl::Program& p, bool shadows) {
     p.set(at + "cos_outer", std::cos(light.outer_cone));
     p.set(at + "warn_exponent", light.warn_exponent);
   }
-  p.set("u_light_count", count);
   if (enabled > max_lights && !warned_lights) {
     warned_lights = true;
     warnings.push_back(fmt::format("local models: {} lights are on; only the first {} light "
@@ -283,7 +344,45 @@ void LocalRenderer::Impl::set_lights(gl::Program& p, bool shadows) {
     p.set(at + "power", glm::vec3(area_lights[i].radiance * area_lights[i].area));  // Le * A
     set_shadow_view(p, at + "shadow.", view(area_views, i));
   }
-  p.set("u_area_light_count", int(area_lights.size()));
+}
+
+// What every mesh of a pass shares: the camera, the ambient term, the lights and the parameters
+// of slide 19's switches.
+void LocalRenderer::Impl::set_pass(gl::Program& p, const ScenePass& pass, const LocalOptions& options,
+                                   bool shadows) {
+  p.set("u_view_projection", pass.view_projection);
+  p.set("u_eye", pass.eye);
+  p.set("u_ambient", glm::vec3(scene.ambient));
+  p.set("u_kd_texture", kd_unit);
+  // Slide 19. S_i: the shadow maps (already rendered for this frame).
+  p.set("u_shadow_maps", shadow_unit);
+  p.set("u_shadow_constant_bias", options.shadows.constant_bias);
+  p.set("u_shadow_slope_bias", options.shadows.slope_bias);
+  p.set("u_shadow_normal_offset", options.shadows.normal_offset);
+  set_lights(p, shadows);
+  // kr Ir: the environment behind the cube maps.
+  p.set("u_reflection_map", reflection_unit);
+  p.set("u_environment", environment_unit);
+  p.set("u_background", glm::vec3(scene.background));
+  // The fog.
+  p.set("u_fog_colour", glm::vec3(options.fog.colour));
+  p.set("u_fog_near", options.fog.near);
+  p.set("u_fog_far", options.fog.far);
+  p.set("u_fog_density", options.fog.density);
+}
+
+Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
+  std::string key = switches.defines();
+  auto found = programs.find(key);
+  if (found != programs.end()) return found->second;
+  std::vector<std::string> stages;
+  switch (switches.shading) {
+    case Shading::flat: stages = {"local.vert", "flat.geom", "flat.frag"}; break;
+    case Shading::gouraud: stages = {"gouraud.vert", "gouraud.frag"}; break;
+    case Shading::phong: stages = {"local.vert", "phong.frag"}; break;
+  }
+  Variant variant{gl::Program(stages, {"lighting.glsl"}, key)};
+  return programs.emplace(std::move(key), std::move(variant)).first->second;
 }
 
 void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
@@ -293,9 +392,7 @@ void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
   p.set("u_ks", glm::vec3(material.ks));
   p.set("u_shininess", material.shininess);
   p.set("u_emission", glm::vec3(material.emission));
-  const bool textured = options.textures && material.kd_texture >= 0 &&
-                        size_t(material.kd_texture) < textures.size();
-  p.set("u_has_kd_texture", textured);
+  const bool textured = is_textured(material, options);
   glActiveTexture(GL_TEXTURE0 + kd_unit);
   glBindTexture(GL_TEXTURE_2D, textured ? textures[size_t(material.kd_texture)] : 0);
   p.set("u_kr", glm::vec3(material.kr));
@@ -326,50 +423,51 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
 
-  gl::Program& p = program(options.shading);
-  p.use();
-  p.set("u_view_projection", pass.view_projection);
-  p.set("u_eye", pass.eye);
-  p.set("u_ambient", glm::vec3(scene.ambient));
-  p.set("u_ambient_on", options.ambient);
-  p.set("u_diffuse_on", options.diffuse);
-  p.set("u_specular_on", options.specular);
-  p.set("u_emission_on", options.emission);
-  p.set("u_blinn", options.blinn);
-  p.set("u_kd_texture", kd_unit);
-
-  // Slide 19. S_i: the shadow maps (already rendered for this frame).
   const bool shadows = options.shadows.on && shadow_maps;
-  p.set("u_shadows_on", shadows);
-  p.set("u_shadow_maps", shadow_unit);
-  p.set("u_shadow_constant_bias", options.shadows.constant_bias);
-  p.set("u_shadow_slope_bias", options.shadows.slope_bias);
-  p.set("u_shadow_normal_offset", options.shadows.normal_offset);
+  Switches common;
+  common.shading = options.shading;
+  common.ambient = options.ambient;
+  common.diffuse = options.diffuse;
+  common.specular = options.specular;
+  common.emission = options.emission;
+  common.blinn = options.blinn;
+  common.shadows = shadows;
+  common.environment = environment_texture != 0 && !environment_path.empty();
+  common.fog = pass.fog ? options.fog.mode : FogMode::off;
+  common.area_lights = int(area_lights.size());
+  for (const Light& light : scene.lights) {
+    if (!light.enabled) continue;
+    if (common.lights == max_lights) break;
+    const size_t i = size_t(common.lights++);
+    common.light_types.push_back(light_type_code(light.type));
+    common.shadow_kinds.push_back(int(shadows && i < shadow_maps->light_views().size()
+                                          ? shadow_maps->light_views()[i].kind : ShadowKind::none));
+  }
+  if (shadows && !shadow_maps->area_views().empty()) common.area_shadow_kind = ShadowKind::cube;
+  ++pass_number;
+
+  // The textures every mesh of the pass shares: S_i's maps and the surroundings of kr Ir.
   glActiveTexture(GL_TEXTURE0 + shadow_unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, shadows ? shadow_maps->texture() : 0);
-  set_lights(p, shadows);
-  // kr Ir: the environment behind the cube maps.
-  p.set("u_reflection_map", reflection_unit);
-  p.set("u_environment", environment_unit);
-  p.set("u_has_environment", environment_texture != 0 && !environment_path.empty());
-  p.set("u_background", glm::vec3(scene.background));
   glActiveTexture(GL_TEXTURE0 + environment_unit);
   glBindTexture(GL_TEXTURE_2D, environment_texture);
-  // The fog.
-  p.set("u_fog_mode", pass.fog ? int(options.fog.mode) : int(FogMode::off));
-  p.set("u_fog_colour", glm::vec3(options.fog.colour));
-  p.set("u_fog_near", options.fog.near);
-  p.set("u_fog_far", options.fog.far);
-  p.set("u_fog_density", options.fog.density);
 
   auto draw_mesh = [&](size_t m, bool transparent) {
     const Material& material = material_of(m);
+    Switches switches = common;
+    switches.kd_texture = is_textured(material, options);
+    switches.reflection = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
+    switches.transparent = transparent;
+    Variant& variant = program_for(switches);
+    gl::Program& p = variant.program;
+    p.use();
+    if (variant.pass != pass_number) {
+      set_pass(p, pass, options, shadows);
+      variant.pass = pass_number;
+    }
     set_material(p, material, options);
-    const bool reflects = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
-    p.set("u_reflection_on", reflects);
     glActiveTexture(GL_TEXTURE0 + reflection_unit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, reflects ? cubes[m].texture : 0);
-    p.set("u_transparent", transparent);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, switches.reflection ? cubes[m].texture : 0);
     meshes[m].draw();
   };
 
@@ -515,15 +613,26 @@ void LocalRenderer::draw(const Camera& camera, int width, int height,
   s.drew_shadows = options.shadows.on;
   s.drawn_shadow_settings = options.shadows;
   if (options.shadows.on) {
-    if (!s.shadow_maps) s.shadow_maps = std::make_unique<ShadowMaps>();
-    std::vector<bool> emissive;
-    for (size_t m = 0; m < s.meshes.size(); ++m) emissive.push_back(s.material_of(m).is_emissive());
-    s.shadow_maps->update(s.scene, s.area_lights, max_lights, options.shadows, s.meshes, emissive);
+    ShadowInputs inputs{s.scene.lights, {}, options.shadows};
+    for (size_t m = 0; m < s.meshes.size(); ++m) inputs.emissive.push_back(s.material_of(m).is_emissive());
+    if (!s.shadow_maps || s.shadows_drawn_for != inputs) {
+      if (!s.shadow_maps) s.shadow_maps = std::make_unique<ShadowMaps>();
+      s.shadow_maps->update(s.scene, s.area_lights, max_lights, options.shadows, s.meshes, inputs.emissive);
+      s.shadows_drawn_for = std::move(inputs);
+      ++s.shadow_revision;
+    }
   }
   // 2. The reflection maps (kr Ir).
   s.update_environment(options.reflection);
   s.drew_reflections = options.reflection.on;
-  if (options.reflection.on) s.render_reflection_maps(options);
+  if (options.reflection.on) {
+    ReflectionInputs inputs{s.scene.lights, s.scene.materials, s.scene.ambient, s.scene.background,
+                            options, options.shadows.on ? s.shadow_revision : 0};
+    if (s.reflections_drawn_for != inputs) {
+      s.render_reflection_maps(options);
+      s.reflections_drawn_for = std::move(inputs);
+    }
+  }
 
   // 3. The picture.
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));

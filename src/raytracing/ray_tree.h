@@ -41,4 +41,31 @@ struct RayTree {
   std::string to_json() const;  // the format of README.md "The ray tree"
 };
 
+// Fills a RayTree while Whitted's trace() recurses (pbrt's Whitted integrator records its tree
+// in the helpers that spawn the rays, the same way). A ray opens a node under the ray whose hit
+// spawned it, the innermost one still open, and closes it when it returns its radiance; a shadow
+// ray is opened and closed at once. With no tree every call does nothing.
+class RayTreeRecorder {
+public:
+  explicit RayTreeRecorder(RayTree* tree = nullptr) : tree_(tree) {}
+
+  // A primary, reflected or transmitted ray leaves with `weight` (what its radiance is
+  // multiplied by: kr, kt, 1/spp) from a hit at depth `depth`.
+  void ray(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
+  // The open ray met a surface.
+  void hit(float t, const glm::vec3& point, const glm::vec3& normal, const std::string& mesh,
+           const std::string& material);
+  // The local part of the colour at that hit (Ia*ka + sum S_i IL_i [...] + Le).
+  void local(const Rgb& local);
+  // A shadow ray from that hit toward light `light`, at `distance`; `term` counts if unblocked.
+  void shadow(const Ray& ray, bool blocked, float distance, int light, const Rgb& term);
+  // The open ray returns its radiance and closes.
+  void returned(const Rgb& radiance);
+
+private:
+  RayTreeNode& open_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
+  RayTree* tree_;
+  std::vector<int> open_;  // the rays being traced, innermost last
+};
+
 }  // namespace luz::rt

@@ -23,7 +23,7 @@ struct TileScratch {
   std::vector<Ray> rays;
   std::vector<Hit> hits;
   std::vector<glm::vec2> offsets;
-  std::vector<PreparedHit> prepared;
+  std::vector<StreamedAnswers> answers;
   std::vector<size_t> first;
   std::vector<Random> randoms{};
   std::vector<LightSample> lights;
@@ -33,7 +33,7 @@ struct TileScratch {
     if (rays.size() >= n) return;
     rays.resize(n);
     hits.resize(n);
-    prepared.resize(n);
+    answers.resize(n);
     first.resize(n + 1);
     randoms.resize(n, Random(0));
   }
@@ -106,12 +106,8 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     // point itself, so a corner gives the same radiance from either pixel.
     const auto radiance = [&](float x, float y) {
       whitted.reseed(Random(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
-      ++counters[RayKind::primary];
       ++counters.samples;
-      const Ray ray = camera_rays.through({x, y});
-      if (log) log->push_back({ray, RayKind::primary});
-      const Hit hit = hits_of.intersect(ray, counters.intersection_tests);
-      return whitted.follow(ray, hit, 1, RayKind::primary);
+      return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary);
     };
     const int cw = tile.width() + 1;
     std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
@@ -130,8 +126,11 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     return;
   }
 
-  // Stratified sampling. The tile's primary rays are coherent: they are intersected as one
-  // stream (Embree's advice), then each hit is shaded by Color() and its recursion.
+  // Stratified sampling, with the first generation traced as streams (see StreamedAnswers):
+  //   1. the tile's primary rays, intersected as one stream;
+  //   2. each hit's surface point and light samples (the sample's random numbers drawn here);
+  //   3. all their shadow rays, as one stream;
+  //   4. trace() of each primary ray with those answers: Color() and its recursion.
   const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
   const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
   const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
@@ -148,31 +147,29 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
       for (const glm::vec2& s : scratch.offsets)
         camera_rays.through(glm::vec2(float(x), float(y)) + s, rays[i++]);
     }
-  hits_of.intersect(rays, hits, counters.intersection_tests);
-  counters[RayKind::primary] += n;
+  hits_of.intersect(rays, hits, counters.intersection_tests);  // 1.
   counters.samples += n;
 
-  // Each primary hit's surface point and light samples, then all their shadow rays as one
-  // stream (see PreparedHit), then Color() at each hit with those answers, and its recursion.
-  std::vector<PreparedHit>& prepared = scratch.prepared;
-  std::vector<size_t>& first = scratch.first;
-  std::vector<Random>& randoms = scratch.randoms;  // each sample's generator after preparing
+  std::vector<StreamedAnswers>& answers = scratch.answers;
+  std::vector<size_t>& first = scratch.first;      // sample i's lights: first[i] .. first[i + 1]
+  std::vector<Random>& randoms = scratch.randoms;  // each sample's generator after step 2
   std::vector<LightSample>& lights = scratch.lights;
   lights.clear();
   i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x)
-      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 2.
         first[i] = lights.size();
         whitted.reseed(Random(x, y, s));
+        answers[i].hit = hits[i];
         if (hits[i].found()) {
-          prepared[i].point = whitted.surface_at(rays[i], hits[i]);
-          whitted.light_samples(prepared[i].point, -rays[i].direction, lights);
+          answers[i].point = whitted.surface_at(rays[i], hits[i]);
+          whitted.light_samples(answers[i].point, -rays[i].direction, lights);
         }
         randoms[i] = whitted.random();
       }
   first[i] = lights.size();
-  if (options.shadows) {
+  if (options.shadows) {  // 3.
     scratch.shadow_rays.resize(lights.size());
     scratch.blocked.reset(new bool[lights.size() + 1]);
     for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
@@ -185,12 +182,11 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Rgb sum(0.0f);
-      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
-        if (log) log->push_back({rays[i], RayKind::primary});
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 4.
         whitted.reseed(randoms[i]);
-        prepared[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
-        prepared[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
-        sum += whitted.follow(rays[i], hits[i], 1, RayKind::primary, weight, &prepared[i]);
+        answers[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
+        answers[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
+        sum += whitted.trace(rays[i], 1, RayKind::primary, weight, &answers[i]);
       }
       image.at(x, y) = sum * weight;
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -37,36 +38,20 @@ Whitted::Whitted(const Scene& scene, const Intersector& intersector, const Whitt
     : scene_(scene), intersector_(intersector), options_(options), counters_(counters) {}
 
 // ---- [Trazar] -----------------------------------------------------------------------------------
-Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight) {
+Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const StreamedAnswers* streamed) {
+  count(ray, kind);
+  tree_.ray(ray, kind, depth, weight);
   // "Determinar intersección con objeto más cercano".
-  ++counters_[kind];
-  if (log_) log_->push_back({ray, kind});
-  const Hit hit = intersector_.intersect(ray, counters_.intersection_tests);
-  return follow(ray, hit, depth, kind, weight);
-}
-
-Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight,
-                    const PreparedHit* prepared) {
-  const int node = begin_node(ray, kind, depth, weight);
+  const Hit hit = streamed ? streamed->hit : intersector_.intersect(ray, counters_.intersection_tests);
   Rgb radiance = scene_.background;  // "sino devolver color del fondo"
   if (hit.found()) {
     // "calcular la normal"
-    const SurfacePoint p = prepared ? prepared->point : surface_at(ray, hit);
-    if (tree_) {
-      RayTreeNode& n = tree_->nodes[size_t(node)];
-      n.hit = true;
-      n.t = hit.t;
-      n.hit_point = p.position;
-      n.normal = p.N;
-      n.mesh = scene_.meshes[size_t(p.mesh)].name;
-      n.material = p.material->name;
-    }
-    const int outer = parent_;
-    parent_ = node;
-    radiance = color(p, ray, depth, prepared);
-    parent_ = outer;
+    const SurfacePoint p = streamed ? streamed->point : surface_at(ray, hit);
+    tree_.hit(hit.t, p.position, p.N, scene_.meshes[size_t(p.mesh)].name, p.material->name);
+    streamed_ = streamed;  // lights_at() takes its answers for this hit, and only this one
+    radiance = color(p, ray, depth);
   }
-  if (tree_) tree_->nodes[size_t(node)].radiance = radiance;
+  tree_.returned(radiance);
   return radiance;
 }
 
@@ -74,7 +59,7 @@ Rgb Whitted::follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
 // Hybrid (options_.diffuse_source set):
 // I = B/pi (radiosity, interpolated)  + sum_i S_i * IL_i * ks*cos^n(alpha)  + kr*Ir + kt*It
-Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared) {
+Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   const Material& o = *p.material;
   const glm::vec3 V = -ray.direction;
 
@@ -95,16 +80,11 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, const Prepa
     // hits are shaded by this same rule.
     color = options_.diffuse_source->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
   }
-  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's
-  // term (the renderer may have prepared the terms and traced the shadow rays already).
-  if (prepared) {
-    color += shadowed(prepared->lights, prepared->blocked);
-  } else {
-    lights_.clear();
-    light_samples(p, V, lights_);
-    color += shadowed(lights_, nullptr);
-  }
-  if (tree_ && parent_ >= 0) tree_->nodes[size_t(parent_)].local = color;
+  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's term.
+  const LightsAt lights = lights_at(p, V);
+  for (size_t i = 0; i < lights.samples.size(); ++i)
+    if (!blocked(lights, i)) color += lights.samples[i].term;
+  tree_.local(color);
 
   // "si d < máxima": the reflected and the transmitted rays.
   if (depth >= max_depth_of(options_)) return color;
@@ -212,29 +192,23 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   out.push_back(sample);
 }
 
-Rgb Whitted::shadowed(std::span<const LightSample> lights, const bool* blocked) {
-  Rgb sum(0.0f);
-  for (size_t i = 0; i < lights.size(); ++i) {
-    const LightSample& sample = lights[i];
-    // "y no hay obstrucción": S_i = 0 when the shadow ray meets anything before the light.
-    bool occluded = false;
-    if (options_.shadows) {
-      ++counters_[RayKind::shadow];
-      if (log_) log_->push_back({sample.shadow, RayKind::shadow});
-      occluded = blocked ? blocked[i] : intersector_.occluded(sample.shadow, counters_.intersection_tests);
-      if (tree_) {
-        const int node = begin_node(sample.shadow, RayKind::shadow,
-                                    tree_->nodes[size_t(parent_)].depth, Rgb(occluded ? 0.0f : 1.0f));
-        RayTreeNode& n = tree_->nodes[size_t(node)];
-        n.hit = occluded;
-        n.t = sample.distance;
-        n.light = sample.light;
-        n.radiance = sample.term;
-      }
-    }
-    if (!occluded) sum += sample.term;
-  }
-  return sum;
+LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V) {
+  if (const StreamedAnswers* streamed = std::exchange(streamed_, nullptr))
+    return {streamed->lights, streamed->blocked};
+  lights_.clear();
+  light_samples(p, V, lights_);
+  return {lights_, nullptr};
+}
+
+bool Whitted::blocked(const LightsAt& lights, size_t i) {
+  if (!options_.shadows) return false;  // every light counts as unoccluded
+  const LightSample& sample = lights.samples[i];
+  count(sample.shadow, RayKind::shadow);
+  // S_i = 0 when the shadow ray meets anything before the light.
+  const bool occluded = lights.blocked ? lights.blocked[i]
+                                       : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+  tree_.shadow(sample.shadow, occluded, sample.distance, sample.light, sample.term);
+  return occluded;
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {
@@ -292,20 +266,6 @@ SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------
-int Whitted::begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight) {
-  if (!tree_) return -1;
-  RayTreeNode node;
-  node.id = int(tree_->nodes.size());
-  node.parent = parent_;
-  node.kind = kind;
-  node.depth = depth;
-  node.origin = ray.origin;
-  node.direction = ray.direction;
-  node.weight = weight;
-  tree_->nodes.push_back(node);
-  return node.id;
-}
-
 PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   // In camera space the image plane at z = -1 spans x in [-tan(yfov/2) aspect, +...] and
   // y in [-tan(yfov/2), +tan(yfov/2)], y up; then the camera's rotation takes it to the world.

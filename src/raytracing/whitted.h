@@ -56,15 +56,21 @@ struct LightSample {
   int light = -1;        // index into Scene::lights, then lights.size() + index into area_lights
 };
 
-// A primary hit prepared by the renderer: its surface point and light samples, and whether each
-// shadow ray is blocked. Shadow rays from a tile's primary hits toward one light are coherent,
-// and Embree traces coherent rays faster as a stream than one by one (its performance
-// recommendations), so the renderer traces them for the whole tile at once and Color() reads
-// the answers. Deeper hits trace their shadow rays one by one.
-struct PreparedHit {
-  SurfacePoint point;
-  std::span<const LightSample> lights;
-  const bool* blocked = nullptr;  // one per light sample; nullptr: every light unoccluded
+// What the renderer traced ahead for one primary ray, as streams (renderer.cpp render_tile): a
+// tile's primary rays are coherent, and so are their shadow rays toward one light, and Embree
+// traces coherent rays faster as a stream than one by one (its performance recommendations).
+// trace() takes these answers for that ray instead of tracing it and its shadow rays again.
+struct StreamedAnswers {
+  Hit hit;                             // the primary ray's nearest hit
+  SurfacePoint point;                  // its surface point, when it hit
+  std::span<const LightSample> lights; // light_samples() at that point
+  const bool* blocked = nullptr;       // per light sample: its shadow ray is blocked
+};
+
+// The light samples of one hit and, when they were streamed, their shadow rays' answers.
+struct LightsAt {
+  std::span<const LightSample> samples;
+  const bool* blocked = nullptr;  // nullptr: the shadow rays are traced when asked
 };
 
 class Whitted {
@@ -73,14 +79,12 @@ public:
           Counters& counters);
 
   // Trazar(r, d): the radiance arriving along `ray`. `weight` is what the caller will multiply
-  // the result by (kr, kt, 1/spp); it is only written into the ray tree.
-  Rgb trace(const Ray& ray, int depth, RayKind kind, Rgb weight = Rgb(1.0f));
-  // The rest of Trazar once the nearest hit is known (the renderer finds primary hits in
-  // batches, and may have prepared the hit's lights).
-  Rgb follow(const Ray& ray, const Hit& hit, int depth, RayKind kind, Rgb weight = Rgb(1.0f),
-             const PreparedHit* prepared = nullptr);
+  // the result by (kr, kt, 1/spp); it is only written into the ray tree. `streamed`: the
+  // answers for this ray traced ahead (see StreamedAnswers), primary rays only.
+  Rgb trace(const Ray& ray, int depth, RayKind kind, Rgb weight = Rgb(1.0f),
+            const StreamedAnswers* streamed = nullptr);
   // Color(o, r, p, N, d).
-  Rgb color(const SurfacePoint& p, const Ray& ray, int depth, const PreparedHit* prepared = nullptr);
+  Rgb color(const SurfacePoint& p, const Ray& ray, int depth);
 
   SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
@@ -92,15 +96,22 @@ public:
   void reseed(const Random& random) { random_ = random; }
   const Random& random() const { return random_; }
   // Record every ray and its result in `tree` (trace_pixel), or log the rays (benchmark).
-  void record_tree(RayTree* tree) { tree_ = tree; }
+  void record_tree(RayTree* tree) { tree_ = RayTreeRecorder(tree); }
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
 
 private:
-  // sum_i S_i * term_i, the shadow rays traced here unless `blocked` has the answers.
-  Rgb shadowed(std::span<const LightSample> lights, const bool* blocked);
+  // The hit's light samples: the streamed ones when trace() was given them for this hit, else
+  // sampled here. The one lookup of the streamed answers, so that color() has a single path.
+  LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V);
+  // "y no hay obstrucción": whether sample i's shadow ray meets anything before its light.
+  bool blocked(const LightsAt& lights, size_t i);
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
                  float distance, int light, std::vector<LightSample>& out) const;
-  int begin_node(const Ray& ray, RayKind kind, int depth, const Rgb& weight);
+  // Counts and logs a ray of `kind` as traced (inline: it runs for every ray).
+  void count(const Ray& ray, RayKind kind) {
+    ++counters_[kind];
+    if (log_) log_->push_back({ray, kind});
+  }
 
   const Scene& scene_;
   const Intersector& intersector_;
@@ -109,8 +120,8 @@ private:
   Random random_{0};
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples
   std::vector<LightSample> lights_;      // scratch for Color()'s light samples
-  RayTree* tree_ = nullptr;
-  int parent_ = -1;                      // the tree node whose hit is being shaded
+  const StreamedAnswers* streamed_ = nullptr;  // the answers for the hit about to be shaded
+  RayTreeRecorder tree_;
   std::vector<RecordedRay>* log_ = nullptr;
 };
 
