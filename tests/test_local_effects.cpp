@@ -277,6 +277,35 @@ INSTANTIATE_TEST_SUITE_P(EveryMapKind, Shadow,
 // ---- Non-refractive transparency ----------------------------------------------------------------
 // Two panes over the floor: near (z 0.6, kt 0.6) and far (z 0.3, kt 0.5), overlapping in the
 // middle. Where both are, I = I_near + kt_near (I_far + kt_far I_floor).
+// Each of the two defences against acne holds on its own: with the normal offset at 0, the
+// depth bias alone (constant + slope * texel * tan(theta)) keeps a bare floor lit at 60 degrees
+// by a point light, a spot and a directional light exactly as lit as without shadows (nothing
+// occludes it); with no bias either, the map's own depth quantisation shadows it in speckles.
+TEST(LocalEffects, TheDepthBiasAloneKeepsAFloorFreeOfAcne) {
+  const float t = 60.0f * 3.14159265f / 180.0f;
+  const glm::vec3 toward(std::sin(t), 0.0f, std::cos(t));  // from the floor's centre
+  Light spot = point_light(2.0f * toward, 6.0f);
+  spot.type = LightType::spot;
+  spot.direction = -toward;
+  spot.inner_cone = 0.6f;
+  spot.outer_cone = 0.8f;
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = -toward;
+  sun.intensity = Rgb(2.0f);
+  for (const Light& light : {point_light(2.0f * toward, 6.0f), spot, sun}) {
+    SCOPED_TRACE(to_string(light.type));
+    const Scene scene = floor_scene(light);
+    LocalOptions off, on;
+    on.shadows.on = true;
+    on.shadows.normal_offset = 0.0f;
+    const Image lit = render(scene, off), shadowed = render(scene, on);
+    int acne = 0;
+    for (size_t i = 0; i < lit.pixels.size(); ++i) acne += !close(lit.pixels[i], shadowed.pixels[i]);
+    EXPECT_EQ(acne, 0) << "of " << lit.pixels.size() << " pixels";
+  }
+}
+
 TEST(LocalEffects, TransparencyAddsKtTimesWhatLiesBehindInAnyDrawOrder) {
   Scene scene = floor_scene(point_light({0.0f, 0.0f, 1.5f}, 3.0f));
   Material near_pane = matte(Rgb(0.1f, 0.1f, 0.3f));
