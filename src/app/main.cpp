@@ -154,7 +154,7 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
   flags = {shots, converge};
   flags.push_back(render.add_option("--patch-size", r.patch_size,
                                     fmt::format("radiosity/hybrid: longest patch edge, metres (default: "
-                                                "about {} patches)", defaults.target_patches))
+                                                "subdivision adds about {} patches)", defaults.target_patches))
                       ->check(CLI::PositiveNumber));
   flags.push_back(render.add_option_function<int>(
       "--hemicube-res",
@@ -165,6 +165,26 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
       fmt::format("radiosity/hybrid: hemicube resolution, pixels across its top face ({} .. {}, even; "
                   "default {})", luz::kMinHemicubeRes, luz::kMaxHemicubeRes, defaults.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes)));
+  flags.push_back(render.add_option("--elements", r.elements_per_edge,
+                                    fmt::format("radiosity/hybrid: cut each patch into N x N elements that receive "
+                                                "and are drawn while the patch shoots (1 .. {}; 1 = no "
+                                                "substructuring; default {})", luz::kMaxElementsPerEdge,
+                                                defaults.elements_per_edge))
+                      ->check(CLI::Range(1, luz::kMaxElementsPerEdge)));
+  flags.push_back(render.add_option("--overshoot", r.overshoot,
+                                    fmt::format("radiosity/hybrid: shoot W x the unshot radiosity ({} .. {}; 1 = "
+                                                "plain shooting; default {})", luz::kMinOvershoot,
+                                                luz::kMaxOvershoot, defaults.overshoot))
+                      ->check(CLI::Range(luz::kMinOvershoot, luz::kMaxOvershoot)));
+  flags.push_back(render.add_option("--form-factors", r.form_factors,
+                                    fmt::format("radiosity/hybrid: hemicube, or analytic (Lambert's contour "
+                                                "integral near the shooter; default {})",
+                                                luz::to_string(defaults.form_factors)))
+                      ->transform(CLI::CheckedTransformer(
+                          std::map<std::string, luz::FormFactorMethod>{
+                              {"hemicube", luz::FormFactorMethod::hemicube},
+                              {"analytic", luz::FormFactorMethod::analytic}},
+                          CLI::ignore_case)));
   flags.push_back(render.add_flag("--ambient-estimate", r.ambient_estimate,
                                   "radiosity/hybrid: add Cohen's ambient term for the light not yet shot"));
   flags.push_back(render.add_flag("--flat-patches", r.flat_patches,

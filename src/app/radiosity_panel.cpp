@@ -41,7 +41,7 @@ void loop_controls(RadiosityState& r) {
   row("shots", fmt::format("{}{}", s.shots, s.done ? "  (done: the stopping rule holds)" : ""));
   row("unshot power", fmt::format("{:.3f} % of the emitted", 100.0 * s.unshot_fraction));
   row("shots / s", r.drive.running ? fmt::format("{:.0f}", s.shots_per_second) : std::string("paused"));
-  row("patches", fmt::format("{}  (longest edge {:.3g} m)", s.patches, s.patch_size));
+  row("patches", fmt::format("{}  (longest edge {:.3g} m), {} elements", s.patches, s.patch_size, s.elements));
   ImGui::TextUnformatted("shooter");
   ImGui::SameLine(column);
   if (s.shooter.empty()) ImGui::TextDisabled("none yet (step 1: unshot = E)");
@@ -126,6 +126,8 @@ void mesh_settings(RadiosityState& r) {
   ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, 0.0f, 10.0f, o.patch_size > 0.0f ? "%.3f" : "auto");
   o.patch_size = std::max(o.patch_size, 0.0f);
   if (o.patch_size == 0.0f) ImGui::TextDisabled("auto: about %d patches", o.target_patches);
+  ImGui::SliderInt("elements per patch edge", &o.elements_per_edge, 1, 8);
+  ImGui::TextDisabled("patches shoot, their N x N elements receive (1 = every element shoots)");
   int res_index = std::clamp(int(std::lround(std::log2(float(o.hemicube_res)))) - 6, 0, 4);
   ImGui::Combo("hemicube (pixels)", &res_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
   o.hemicube_res = 64 << res_index;
@@ -136,6 +138,12 @@ void mesh_settings(RadiosityState& r) {
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
   ImGui::TextDisabled(pending ? "to apply the new size" : "also applies kd, Le, light edits");
+  int analytic = o.form_factors == FormFactorMethod::analytic ? 1 : 0;
+  ImGui::RadioButton("hemicube form factors", &analytic, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("analytic near the shooter", &analytic, 1);
+  o.form_factors = analytic == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemicube;
+  ImGui::SliderFloat("overshoot", &o.overshoot, kMinOvershoot, kMaxOvershoot, "x%.2f");
   ImGui::Checkbox("turn the hemicube at random each shot", &o.random_rotation);
   ImGui::TextDisabled("(seeded: the same shots give the same picture)");
 }

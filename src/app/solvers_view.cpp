@@ -66,6 +66,7 @@ void SolversView::build(SolversState& state) {
   SolversState::Status& s = state.status;
   RadiosityOptions options;  // the hemicube and everything else as `luz solvers` has them
   options.target_patches = state.target_patches;
+  options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
   auto mesh = std::make_unique<PatchMesh>(PatchMesh::build(scene_, options));
   s.patches = mesh->size();
   if (mesh->size() > kMaxSolverPatches) {
