@@ -80,6 +80,15 @@ double subdivisions_for(float longest, float max_edge) {
   return std::max(1.0, std::ceil(double(longest) / double(max_edge) - 1e-4));
 }
 
+// Elements per patch edge for a mesh cut into n patches per edge: up to k, but no more than
+// make the elements shorter than max_edge / k. A mesh whose triangles are already that small
+// (a finely tessellated sphere) is not cut further: its elements are its patches.
+int elements_per_patch_edge(float longest, float max_edge, int k, double patches_per_edge) {
+  if (!(max_edge > 0.0f) || !std::isfinite(max_edge)) return k;
+  const double needed = std::ceil(double(longest) * double(k) / (patches_per_edge * double(max_edge)) - 1e-4);
+  return int(std::clamp(needed, 1.0, double(k)));
+}
+
 // The cell of the n x n grid of a triangle holding the point at barycentrics (b1, b2) of its
 // second and third corner. Cells are in row order j = 0 .. n-1: "up" (i, j), (i+1, j), (i, j+1),
 // then, except at the row's end, "down" (i+1, j), (i+1, j+1), (i, j+1).
@@ -186,7 +195,9 @@ Patch make_patch(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v
 double PatchMesh::element_count(const Scene& scene, float max_edge, int elements_per_edge) {
   double total = 0.0;
   for (const Mesh& mesh : scene.meshes) {
-    const double n = subdivisions_for(longest_edge(mesh), max_edge) * double(elements_per_edge);
+    const float longest = longest_edge(mesh);
+    const double patches = subdivisions_for(longest, max_edge);
+    const double n = patches * elements_per_patch_edge(longest, max_edge, elements_per_edge, patches);
     total += double(mesh.triangle_count()) * n * n;
   }
   return total;
@@ -213,8 +224,10 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
     const Material& material = material_of(scene, mesh);
     const Rgb rho = reflectance_of(scene, material);
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
-    const int patches_per_edge = int(subdivisions_for(longest_edge(mesh), max_edge));
-    const int n = patches_per_edge * k;  // elements per source edge
+    const float longest = longest_edge(mesh);
+    const int patches_per_edge = int(subdivisions_for(longest, max_edge));
+    const int k_mesh = elements_per_patch_edge(longest, max_edge, k, double(patches_per_edge));
+    const int n = patches_per_edge * k_mesh;  // elements per source edge
     result.sources_.push_back({n, result.patches.size()});
     const size_t first_shooter = result.shooters.size();
     const size_t shooters_per_triangle = size_t(patches_per_edge) * size_t(patches_per_edge);
@@ -258,7 +271,7 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
             shooter.centre += p.area * p.centre;
             shooter.normal = p.normal;
             // Patches and elements are similar triangles, k times larger.
-            shooter.clearance = float(k) * p.clearance;
+            shooter.clearance = float(k_mesh) * p.clearance;
             result.shooter_of.push_back(uint32_t(s));
             result.patches.push_back(p);
           }

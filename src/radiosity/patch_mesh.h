@@ -19,7 +19,9 @@
 // *shooting patches* (`shooters`): a source triangle is first cut n x n into patches and every
 // patch k x k into elements, so the elements are the uniform subdivision at n k and every
 // element lies inside exactly one patch (the patch grid's lines are lines of the element grid).
-// With k = 1 each element is its own patch, and shooter s is element s.
+// With k = 1 each element is its own patch, and shooter s is element s. A mesh whose triangles
+// are already shorter than the element size (max_edge / k) gets fewer elements per patch, down
+// to one: a finely tessellated sphere is not cut further.
 //
 // Front side: a patch emits and receives only on the side its normal points to, the side from
 // which its triangle is wound counter-clockwise (glTF's front face, which the loader keeps).
