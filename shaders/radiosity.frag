@@ -5,7 +5,10 @@ in vec3 v_radiance;
 
 uniform bool u_outline;
 uniform vec3 u_outline_colour;
-uniform int u_highlight;  // a patch to show in u_highlight_colour (the shooter), -1 for none
+// A shooting patch to show in u_highlight_colour (the shooter): its elements are primitives
+// u_highlight_first .. + u_highlight_count of the draw (count 0 for none).
+uniform int u_highlight_first;
+uniform int u_highlight_count;
 uniform vec3 u_highlight_colour;
 
 layout(location = 0) out vec4 frag_radiance;
@@ -15,7 +18,8 @@ void main() {
     frag_radiance = vec4(u_outline_colour, 1.0);
     return;
   }
-  if (gl_PrimitiveID == u_highlight) {  // patch i is triangle i of the draw
+  if (gl_PrimitiveID >= u_highlight_first &&
+      gl_PrimitiveID < u_highlight_first + u_highlight_count) {
     frag_radiance = vec4(u_highlight_colour, 1.0);
     return;
   }

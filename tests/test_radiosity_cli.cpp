@@ -86,5 +86,19 @@ TEST(RadiosityCli, CsvHoldsOneRowPerShot) {
   EXPECT_LT(previous_fraction, 0.9) << "40 shots move most of the lamp's power";
 }
 
+// A mesh beyond the element budget is refused from its count, naming the numbers, before any
+// memory is taken (1 nm patches on the Cornell box would be 1e20 elements).
+TEST(RadiosityCli, AMeshBeyondTheElementBudgetIsBadInput) {
+  test::ScratchDir dir;
+  for (const char* model : {"radiosity", "hybrid"}) {
+    const auto result = run_luz({"render", cornell(), "--model", model, "--out",
+                                 (dir / "a.png").string(), "--patch-size", "1e-9"});
+    EXPECT_EQ(result.exit_code, 1) << model << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, "budget")) << result.output;
+    EXPECT_TRUE(contains(result.output, "1e-09")) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
+  }
+}
+
 }  // namespace
 }  // namespace luz

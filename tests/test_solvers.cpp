@@ -141,6 +141,7 @@ protected:
     scene_ = new Scene(closed_box());
     RadiosityOptions options;
     options.patch_size = 0.4f;
+    options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
     options.hemicube_res = 64;
     mesh_ = new PatchMesh(PatchMesh::build(*scene_, options));
     race_ = new SolverComparison(*scene_, *mesh_, options, size_t(kSweeps) * mesh_->size());

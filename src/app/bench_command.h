@@ -31,6 +31,9 @@ struct RadiosityBenchSettings {
   int hemicube_res = RadiosityOptions{}.hemicube_res;
   double seconds = 30.0;                                 // time cap per patch count
   float converge = RadiosityOptions{}.converge;          // "converged": unshot below this
+  // With a reference picture (linear EXR of the scene's first camera, e.g. a converged Mitsuba
+  // render): instead of the table above, the time-to-error curve of each way of solving.
+  std::string reference;
 };
 
 // Prints a Markdown table to stdout; returns the exit code.

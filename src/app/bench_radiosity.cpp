@@ -1,7 +1,11 @@
 // `luz bench radiosity`: shots per second and time to converge on the Cornell box at several
 // patch counts, with each shot split into drawing the hemicube, reading it back, accumulating
-// the form factors and updating the unshot values (slide 39's loop).
+// the form factors and updating the unshot values (slide 39's loop). With --reference, the
+// time-to-error curve instead: the mean relative error over lit pixels against a converged
+// picture after 0.25, 0.5, 1, 2, ... seconds of solving, for each way of solving (the time to
+// draw the picture at each point is not counted).
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <fstream>
 #include <string>
@@ -14,6 +18,9 @@
 #include "gl/functions.h"
 #include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
+#include "io/image_io.h"
+#include "radiosity/radiosity_renderer.h"
+#include "radiosity/vertex_colours.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/shooting.h"
 
@@ -28,6 +35,77 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
+// Mean over lit pixels (reference above 1% of its mean) of |L - R| / R, channels averaged.
+double mean_relative_error(const Image& image, const Image& reference) {
+  double mean = 0.0;
+  for (const Rgb& r : reference.pixels) mean += (double(r.r) + double(r.g) + double(r.b)) / 3.0;
+  mean /= double(std::max<size_t>(1, reference.pixels.size()));
+  double sum = 0.0;
+  size_t lit = 0;
+  for (size_t i = 0; i < reference.pixels.size(); ++i) {
+    const Rgb& r = reference.pixels[i];
+    const Rgb& l = image.pixels[i];
+    const double R = (double(r.r) + double(r.g) + double(r.b)) / 3.0;
+    if (!(R > 0.01 * mean)) continue;
+    double e = 0.0;
+    for (int c = 0; c < 3; ++c) e += std::abs(double(l[c]) - double(r[c])) / std::max(double(r[c]), 1e-3 * R);
+    sum += e / 3.0;
+    ++lit;
+  }
+  return lit > 0 ? sum / double(lit) : 0.0;
+}
+
+struct Way {
+  const char* name;
+  RadiosityOptions options;
+};
+
+int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScene& loaded) {
+  const Image reference = io::read_image(settings.reference);
+  const Scene& scene = loaded.scene;
+  if (scene.cameras.empty()) throw Error(ErrorKind::bad_value, "the scene has no camera to compare from");
+  RadiosityOptions uniform;
+  uniform.elements_per_edge = 1;
+  uniform.form_factors = FormFactorMethod::hemicube;
+  uniform.target_patches = 4000;
+  RadiosityOptions substructured = RadiosityOptions{};
+  substructured.form_factors = FormFactorMethod::hemicube;
+  RadiosityOptions analytic = RadiosityOptions{};
+  RadiosityOptions overshot = RadiosityOptions{};
+  overshot.overshoot = 1.5f;
+  const Way ways[] = {{"uniform (every element shoots), hemicube", uniform},
+                      {"substructured 4x4, hemicube", substructured},
+                      {"substructured 4x4, analytic (the default)", analytic},
+                      {"substructured 4x4, analytic, overshoot 1.5", overshot}};
+  fmt::print("| way | patches | elements | seconds solving | shots | unshot | error over lit pixels |\n");
+  fmt::print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+  for (const Way& way : ways) {
+    RadiosityOptions options = way.options;
+    options.hemicube_res = settings.hemicube_res;
+    options.converge = 1e-4f;
+    const PatchMesh mesh = PatchMesh::build(scene, options);
+    ProgressiveSolver solver(scene, mesh, options);
+    RadiosityRenderer renderer(scene, mesh);
+    double solving = 0.0, next = 0.25;
+    bool more = true;
+    while (more) {
+      const auto start = std::chrono::steady_clock::now();
+      while ((more = solver.step()) &&
+             solving + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < next) {}
+      solving += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      renderer.update(RadianceField::of(solver), options);
+      const Image image = renderer.render(scene.cameras.front(), reference.width, reference.height, options);
+      fmt::print("| {} | {} | {} | {:.2f} | {} | {:.3f}% | {:.2f}% |\n", way.name, mesh.shooters.size(),
+                 mesh.size(), solving, solver.shots(), 100.0 * solver.unshot_fraction(),
+                 100.0 * mean_relative_error(image, reference));
+      std::fflush(stdout);
+      next *= 2.0;
+      if (solving >= settings.seconds) break;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int run_radiosity_bench(const RadiosityBenchSettings& settings) {
@@ -35,6 +113,11 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
     const std::string path = settings.scene.empty() ? default_scene().string() : settings.scene;
     const io::LoadedScene loaded = io::load_gltf(path);
     gl::OffscreenContext context;
+    if (!settings.reference.empty()) {
+      fmt::print("luz bench radiosity: {} against {}, hemicube {}, up to {:g} s each\n{}; {}\n\n", path,
+                 settings.reference, settings.hemicube_res, settings.seconds, cpu_model(), gl_version_string());
+      return run_error_curve(settings, loaded);
+    }
     fmt::print("luz bench radiosity: {}, hemicube {}, until unshot < {:g} of the emitted power or "
                "{:g} s\n{}; {}\n\n", path, settings.hemicube_res, settings.converge,
                settings.seconds, cpu_model(), gl_version_string());
@@ -43,7 +126,7 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
     fmt::print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const int target : settings.patches) {
       const float size = PatchMesh::patch_size_for(loaded.scene, size_t(target));
-      const PatchMesh mesh = PatchMesh::build(loaded.scene, size);
+      const PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
       RadiosityOptions options;
       options.hemicube_res = settings.hemicube_res;
       options.converge = settings.converge;

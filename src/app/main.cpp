@@ -150,6 +150,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, "Hemicube resolution")
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
+  bench_radiosity->add_option("--reference", radiosity_bench.reference,
+                              "Converged picture (linear EXR, first camera): print the error against it over "
+                              "time for uniform, substructured, analytic and overshot shooting instead");
   bench_radiosity->add_option("--seconds", radiosity_bench.seconds, "Time cap per patch count")
       ->check(finite_number)->check(CLI::PositiveNumber)->capture_default_str();
 

@@ -19,6 +19,7 @@ namespace {
   [](Options& o, double v) { o.field = decltype(o.field)(v); }
 
 constexpr const char* fog_modes[] = {"off", "linear", "exponential"};  // FogMode's order
+constexpr const char* form_factor_methods[] = {"hemicube", "analytic"};  // FormFactorMethod's order
 
 bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
 bool square(double v) { return rt::is_square(int(v)); }
@@ -112,13 +113,24 @@ const RadiosityRow radiosity_table[] = {
        o.max_shots = 0;
      }},
     {"patch-size", "--patch-size", "radiosity", OptionKind::real,
-     "radiosity/hybrid: longest patch edge, metres (0: about target-patches patches)", 0, 100,
+     "radiosity/hybrid: longest patch edge, metres (0: subdivision adds about target-patches patches)", 0, 100,
      LUZ_FIELD(RadiosityOptions, patch_size)},
     {"target-patches", nullptr, "radiosity", OptionKind::integer, "the mesh's size when patch-size is 0", 10, 1000000,
      LUZ_FIELD(RadiosityOptions, target_patches)},
     {"hemicube", "--hemicube-res", "radiosity", OptionKind::integer,
      "radiosity/hybrid: hemicube resolution, pixels across its top face", double(kMinHemicubeRes),
      double(kMaxHemicubeRes), LUZ_FIELD(RadiosityOptions, hemicube_res), {}, even, "even"},
+    {"elements", "--elements", "radiosity", OptionKind::integer,
+     "radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
+     "(1: no substructuring)", 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},
+    {"overshoot", "--overshoot", "radiosity", OptionKind::real,
+     "radiosity/hybrid: shoot W x the unshot radiosity (1: plain shooting)", double(kMinOvershoot),
+     double(kMaxOvershoot), LUZ_FIELD(RadiosityOptions, overshoot)},
+    {"form-factors", "--form-factors", "radiosity", OptionKind::choice,
+     "radiosity/hybrid: the hemicube's delta form factors, or analytic (Lambert's contour integral from each "
+     "element to the shooter, the hemicube giving visibility)", 0, 1,
+     [](const RadiosityOptions& o) { return double(int(o.form_factors)); },
+     [](RadiosityOptions& o, double v) { o.form_factors = FormFactorMethod(int(v)); }, form_factor_methods},
     {"rotation", nullptr, "radiosity", OptionKind::on_off, "turn the hemicube about the normal at every shot", 0, 1,
      LUZ_FIELD(RadiosityOptions, random_rotation)},
     {"ambient-estimate", "--ambient-estimate", "radiosity", OptionKind::on_off,

@@ -72,8 +72,8 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   }
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
   if (!settings.quiet)
-    fmt::print("radiosity: {} patches (longest edge {:.3g} m), hemicube {}, {} shots, unshot "
-               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.size(), mesh.max_edge,
+    fmt::print("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, unshot "
+               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.shooters.size(), mesh.max_edge, mesh.size(),
                options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
                solver.history().back().seconds);
 }

@@ -45,7 +45,7 @@ void loop_controls(RadiosityState& r) {
   row("shots", fmt::format("{}{}", s.shots, s.done ? "  (done: the stopping rule holds)" : ""));
   row("unshot power", fmt::format("{:.3f} % of the emitted", 100.0 * s.unshot_fraction));
   row("shots / s", r.drive.running ? fmt::format("{:.0f}", s.shots_per_second) : std::string("paused"));
-  row("patches", fmt::format("{}  (longest edge {:.3g} m)", s.patches, s.patch_size));
+  row("patches", fmt::format("{}  (longest edge {:.3g} m), {} elements", s.patches, s.patch_size, s.elements));
   ImGui::TextUnformatted("shooter");
   ImGui::SameLine(column);
   if (s.shooter.empty()) dim_text("none yet (step 1: unshot = E)");
@@ -134,6 +134,9 @@ void mesh_settings(RadiosityState& r) {
   ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : "auto");
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
   if (o.patch_size == 0.0f) dim_text("auto: about %d patches", o.target_patches);
+  const SliderRange elements = radiosity_range("elements");
+  ImGui::SliderInt("elements per patch edge", &o.elements_per_edge, int(elements.low), int(elements.high));
+  dim_text("patches shoot, their N x N elements receive (1 = every element shoots)");
   // The powers of two in the table's range.
   const SliderRange res = radiosity_range("hemicube");
   std::vector<int> sizes;
@@ -151,6 +154,12 @@ void mesh_settings(RadiosityState& r) {
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
   dim_text(pending ? "to apply the new size" : "also applies kd, Le, light edits");
+  int analytic = o.form_factors == FormFactorMethod::analytic ? 1 : 0;
+  ImGui::RadioButton("hemicube form factors", &analytic, 0);
+  ImGui::RadioButton("analytic near the shooter", &analytic, 1);
+  o.form_factors = analytic == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemicube;
+  const SliderRange overshoot = radiosity_range("overshoot");
+  ImGui::SliderFloat("overshoot", &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
   ImGui::Checkbox("turn the hemicube at random each shot", &o.random_rotation);
   dim_text("(seeded: the same shots give the same picture)");
 }

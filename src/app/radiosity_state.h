@@ -46,7 +46,8 @@ struct PatchReading {
 // What the panel shows of the solver, refreshed by the view every frame.
 struct RadiosityStatus {
   bool built = false;
-  size_t patches = 0;
+  size_t patches = 0;          // shooting patches built
+  size_t elements = 0;         // the elements they are cut into (what receives and is drawn)
   float patch_size = 0.0f;     // the mesh's longest edge, m
   int hemicube_res = 0;        // of the solver that runs
   bool remesh_pending = false; // the options ask for another patch size or hemicube

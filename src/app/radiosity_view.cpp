@@ -21,7 +21,7 @@ RadiosityView::RadiosityView(const Scene& scene, const RadiosityOptions& options
 
 bool RadiosityView::built_for(const RadiosityOptions& o) const {
   return o.patch_size == built_with_.patch_size && o.target_patches == built_with_.target_patches &&
-         o.hemicube_res == built_with_.hemicube_res;
+         o.hemicube_res == built_with_.hemicube_res && o.elements_per_edge == built_with_.elements_per_edge;
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------
@@ -33,6 +33,8 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
   o.seed = state.options.seed;  // used from the next reset on
   o.max_shots = state.options.max_shots;
   o.converge = state.options.converge;
+  o.overshoot = state.options.overshoot;
+  o.form_factors = state.options.form_factors;
   o.ambient_estimate = state.options.ambient_estimate;
   o.flat_patches = state.options.flat_patches;
   o.outlines = state.options.outlines;
@@ -124,7 +126,8 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   RadiosityStatus& s = state.status;
   s.built = true;
   s.remesh_pending = !built_for(state.options);
-  s.patches = mesh_.size();
+  s.patches = mesh_.shooters.size();
+  s.elements = mesh_.size();
   s.patch_size = mesh_.max_edge;
   s.hemicube_res = built_with_.hemicube_res;
   s.shots = solver_.shots();
@@ -133,7 +136,7 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   s.done = solver_.done();
   s.last_shooter = solver_.last_shooter();
   if (s.last_shooter >= 0) {
-    const Patch& p = mesh_.patches[size_t(s.last_shooter)];
+    const Patch& p = mesh_.patches[mesh_.members[mesh_.shooters[size_t(s.last_shooter)].first]];
     s.shooter = fmt::format("patch {} ({})", s.last_shooter, scene_.meshes[size_t(p.mesh)].name);
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     const int k = -1 - s.last_shooter;
@@ -227,6 +230,7 @@ nlohmann::json to_json(const RadiosityState& state) {
   const RadiosityStatus& s = state.status;
   return {{"built", s.built},
           {"patches", s.patches},
+          {"elements", s.elements},
           {"patch_size", s.patch_size},
           {"hemicube_res", s.hemicube_res},
           {"shots", s.shots},

@@ -79,6 +79,7 @@ int run_solvers(const SolversSettings& settings) {
     RadiosityOptions options;
     options.patch_size = settings.patch_size;
     options.target_patches = settings.patches;
+    options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
     options.hemicube_res = settings.hemicube_res;
     const PatchMesh mesh = PatchMesh::build(scene, options);
     if (mesh.size() > kMaxSolverPatches)

@@ -69,6 +69,7 @@ void SolversView::build(SolversState& state) {
   RadiosityOptions options;
   options.hemicube_res = SolversSettings{}.hemicube_res;
   options.target_patches = state.target_patches;
+  options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
   auto mesh = std::make_unique<PatchMesh>(PatchMesh::build(scene_, options));
   s.patches = mesh->size();
   if (mesh->size() > kMaxSolverPatches) {

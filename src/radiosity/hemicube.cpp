@@ -79,13 +79,18 @@ Hemicube::Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolutio
 }
 
 // ---- [one row] ---------------------------------------------------------------------------------
-const std::vector<FormFactor>& Hemicube::row(size_t patch, float rotation) {
+const std::vector<FormFactor>& Hemicube::row(size_t element, float rotation) {
+  const Patch& p = mesh_.patches[element];
+  return row(p.centre, p.normal, p.clearance, rotation);
+}
+
+const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm::vec3& normal,
+                                             float clearance, float rotation) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const Patch& p = mesh_.patches[patch];
 
   // The hemicube's frame: n the patch normal, (t, b) turned by `rotation` about it.
-  const glm::vec3 n = p.normal;
+  const glm::vec3 n = normal;
   const glm::vec3 t0_axis = any_tangent(n), b0_axis = glm::cross(n, t0_axis);
   const glm::vec3 t = std::cos(rotation) * t0_axis + std::sin(rotation) * b0_axis;
   const glm::vec3 b = glm::cross(n, t);
@@ -94,8 +99,8 @@ const std::vector<FormFactor>& Hemicube::row(size_t patch, float rotation) {
   // clearance (centroid to nearest edge) can only be in the patch's own plane, which lies below
   // every face. A wall meeting this floor patch is at least the clearance away, so it is never
   // clipped and no light leaks along the join.
-  const float near = 0.1f * p.clearance;
-  const glm::vec3 eye = p.centre + near * n;
+  const float near = eye_height(clearance);
+  const glm::vec3 eye = centre + near * n;
   const glm::mat4 top_projection = glm::frustum(-near, near, -near, near, near, far_);
   const glm::mat4 side_projection = glm::frustum(-near, near, 0.0f, near, near, far_);
   struct Face { glm::vec3 forward, up; };

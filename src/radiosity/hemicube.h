@@ -50,10 +50,19 @@ public:
   // top face, even, kMinHemicubeRes .. kMaxHemicubeRes (throws luz::Error bad_value otherwise).
   Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution);
 
-  // Row i of the form-factor matrix: F_ij of every patch j seen from the centre of patch i.
-  // `rotation` turns the hemicube about the patch normal (radians), to break aliasing.
+  // Row i of the form-factor matrix: F_ij of every element j seen from the centre of element i.
+  // `rotation` turns the hemicube about the normal (radians), to break aliasing.
   // The result stays valid until the next call.
-  const std::vector<FormFactor>& row(size_t patch, float rotation = 0.0f);
+  const std::vector<FormFactor>& row(size_t element, float rotation = 0.0f);
+  // The same from any point on a surface: F from the point (centre, normal) to every element
+  // it sees. `clearance`: how far the surface around the point reaches in its own plane (the
+  // near plane is a tenth of it). Substructuring shoots a patch's row from its centroid.
+  const std::vector<FormFactor>& row(const glm::vec3& centre, const glm::vec3& normal,
+                                     float clearance, float rotation);
+
+  // The eye stands this far above the surface point, on the normal (the near plane is as
+  // close): what the hemicube sees is seen from there.
+  static float eye_height(float clearance) { return 0.1f * clearance; }
 
   int resolution() const { return res_; }
   const RowTimes& last_times() const { return times_; }

@@ -1,7 +1,9 @@
-// Meshing for radiosity: uniform n x n subdivision of every triangle, n per source mesh.
+// Meshing for radiosity: uniform n x n subdivision of every triangle, n per source mesh, into
+// shooting patches and their elements (substructuring).
 //
 // Sections: [reflectance and emission] [subdivision counts] [one triangle's grid] [build]
 //           [locate]
+// Patches (which shoot) and the elements they hold (which receive) are built together.
 #include "radiosity/patch_mesh.h"
 
 #include <algorithm>
@@ -10,7 +12,12 @@
 #include <numbers>
 #include <unordered_map>
 
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
+
+#include "core/error.h"
 
 namespace luz {
 namespace {
@@ -36,22 +43,83 @@ const Material& material_of(const Scene& scene, const Mesh& mesh) {
 }
 
 // ---- [subdivision counts] ----------------------------------------------------------------------
+// Throws for an edge that is not a finite length (a vertex near the float limit, a NaN): no
+// subdivision count can be made from it.
 float longest_edge(const Mesh& mesh) {
   float longest = 0.0f;
   for (size_t t = 0; t < mesh.triangle_count(); ++t)
     for (int e = 0; e < 3; ++e) {
       const glm::vec3& a = mesh.positions[mesh.indices[3 * t + size_t(e)]];
       const glm::vec3& b = mesh.positions[mesh.indices[3 * t + size_t((e + 1) % 3)]];
-      longest = std::max(longest, glm::length(b - a));
+      const float length = glm::length(b - a);
+      if (!std::isfinite(length))
+        throw Error(ErrorKind::not_finite,
+                    fmt::format("radiosity: mesh \"{}\", triangle {}: an edge from ({:g}, {:g}, "
+                                "{:g}) to ({:g}, {:g}, {:g}) has no finite length", mesh.name, t,
+                                a.x, a.y, a.z, b.x, b.y, b.z));
+      longest = std::max(longest, length);
     }
+  // Areas are squares of lengths: a triangle 1e20 m across has no float area.
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const glm::vec3& a = mesh.positions[mesh.indices[3 * t]];
+    const glm::vec3 cross = glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - a,
+                                       mesh.positions[mesh.indices[3 * t + 2]] - a);
+    if (!std::isfinite(glm::length(cross)))
+      throw Error(ErrorKind::not_finite,
+                  fmt::format("radiosity: mesh \"{}\", triangle {}: its area overflows a float "
+                              "(edges up to {:g} m); radiosity needs finite areas", mesh.name, t,
+                              longest));
+  }
   return longest;
 }
 
-// One n for the whole mesh, so shared edges get the same points (no T-junctions).
-int subdivisions_for(float longest, float max_edge) {
-  if (!(max_edge > 0.0f)) return 1;
-  const float n = std::ceil(longest / max_edge - 1e-4f);
-  return int(std::clamp(n, 1.0f, 4096.0f));
+// One n for the whole mesh, so shared edges get the same points (no T-junctions). In double,
+// unclamped, so that a count can be checked against the budget before anything is built.
+double subdivisions_for(float longest, float max_edge) {
+  if (!(max_edge > 0.0f) || !std::isfinite(max_edge)) return 1.0;
+  return std::max(1.0, std::ceil(double(longest) / double(max_edge) - 1e-4));
+}
+
+// Elements per patch edge for a mesh cut into n patches per edge: up to k, but no more than
+// make the elements shorter than max_edge / k. A mesh whose triangles are already that small
+// (a finely tessellated sphere) is not cut further: its elements are its patches.
+int elements_per_patch_edge(float longest, float max_edge, int k, double patches_per_edge) {
+  if (!(max_edge > 0.0f) || !std::isfinite(max_edge)) return k;
+  const double needed = std::ceil(double(longest) * double(k) / (patches_per_edge * double(max_edge)) - 1e-4);
+  return int(std::clamp(needed, 1.0, double(k)));
+}
+
+// The cell of the n x n grid of a triangle holding the point at barycentrics (b1, b2) of its
+// second and third corner. Cells are in row order j = 0 .. n-1: "up" (i, j), (i+1, j), (i, j+1),
+// then, except at the row's end, "down" (i+1, j), (i+1, j+1), (i, j+1).
+struct GridCell {
+  int i = 0, j = 0;
+  bool down = false;
+  glm::vec3 weights{1.0f, 0.0f, 0.0f};  // of the point in the cell's three corners
+  // Index among the triangle's cells: row j starts after rows 0 .. j-1, which hold
+  // 2 (n - k) - 1 cells each, 2 n j - j^2 in all.
+  size_t index(int n) const { return size_t(2 * n * j - j * j) + size_t(2 * i + (down ? 1 : 0)); }
+  // The cell's corners in the grid's (i, j) units, counter-clockwise as the source triangle.
+  void corners(glm::ivec2 out[3]) const {
+    if (!down) {
+      out[0] = {i, j}, out[1] = {i + 1, j}, out[2] = {i, j + 1};
+    } else {
+      out[0] = {i + 1, j}, out[1] = {i + 1, j + 1}, out[2] = {i, j + 1};
+    }
+  }
+};
+
+GridCell grid_cell(int n, float b1, float b2) {
+  const float u = std::clamp(b1, 0.0f, 1.0f) * float(n), v = std::clamp(b2, 0.0f, 1.0f) * float(n);
+  GridCell cell;
+  cell.j = std::clamp(int(v), 0, n - 1);
+  cell.i = std::clamp(int(u), 0, n - 1 - cell.j);
+  const float fu = u - float(cell.i), fv = v - float(cell.j);
+  cell.down = fu + fv > 1.0f && cell.i + cell.j <= n - 2;
+  cell.weights = !cell.down ? glm::vec3(1.0f - fu - fv, fu, fv)             // (i, j), (i+1, j), (i, j+1)
+                            : glm::vec3(1.0f - fv, fu + fv - 1.0f, 1.0f - fu);  // down corners
+  cell.weights = glm::max(cell.weights, glm::vec3(0.0f));
+  return cell;
 }
 
 // ---- [one triangle's grid] ---------------------------------------------------------------------
@@ -122,19 +190,48 @@ Patch make_patch(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v
 }  // namespace
 
 // ---- [build] -----------------------------------------------------------------------------------
-// Patches of one triangle in row order j = 0 .. n-1: "up" triangle (i, j), (i+1, j), (i, j+1)
-// then, except at the row's end, "down" triangle (i+1, j), (i+1, j+1), (i, j+1). Both keep the
-// source triangle's winding. locate() relies on this order.
-PatchMesh PatchMesh::build(const Scene& scene, float max_edge) {
+// Elements of one triangle in grid_cell()'s order: they keep the source triangle's winding, and
+// locate() relies on the order.
+double PatchMesh::element_count(const Scene& scene, float max_edge, int elements_per_edge) {
+  double total = 0.0;
+  for (const Mesh& mesh : scene.meshes) {
+    const float longest = longest_edge(mesh);
+    const double patches = subdivisions_for(longest, max_edge);
+    const double n = patches * elements_per_patch_edge(longest, max_edge, elements_per_edge, patches);
+    total += double(mesh.triangle_count()) * n * n;
+  }
+  return total;
+}
+
+PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_edge) {
+  const int k = elements_per_edge;
+  if (k < 1 || k > kMaxElementsPerEdge)
+    throw Error(ErrorKind::bad_value, fmt::format("radiosity: {} elements per patch edge, expected "
+                                                  "1 .. {}", k, kMaxElementsPerEdge));
+  const double elements = element_count(scene, max_edge, k);
+  if (elements > kMaxElements)
+    throw Error(ErrorKind::bad_value,
+                fmt::format("radiosity: patch size {:g} m with {} x {} elements per patch would "
+                            "make {:.3g} elements, more than the budget of {:.3g} (about 300 bytes "
+                            "each); use a larger patch size or fewer elements per patch",
+                            max_edge, k, k, elements, kMaxElements));
   PatchMesh result;
   result.max_edge = max_edge;
+  result.elements_per_edge = k;
+  result.patches.reserve(size_t(elements));
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
     const Rgb rho = reflectance_of(scene, material);
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
-    const int n = subdivisions_for(longest_edge(mesh), max_edge);
+    const float longest = longest_edge(mesh);
+    const int patches_per_edge = int(subdivisions_for(longest, max_edge));
+    const int k_mesh = elements_per_patch_edge(longest, max_edge, k, double(patches_per_edge));
+    const int n = patches_per_edge * k_mesh;  // elements per source edge
     result.sources_.push_back({n, result.patches.size()});
+    const size_t first_shooter = result.shooters.size();
+    const size_t shooters_per_triangle = size_t(patches_per_edge) * size_t(patches_per_edge);
+    result.shooters.resize(first_shooter + mesh.triangle_count() * shooters_per_triangle);
 
     VertexTable table(mesh, result.vertices, n);
     for (size_t t = 0; t < mesh.triangle_count(); ++t) {
@@ -156,44 +253,83 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge) {
             p.triangle = int(t);
             p.rho = rho;
             p.emission = exitance;
+            // The patch holding this element: the coarse cell of the element's centroid.
+            const float cu = (float(i) + (half == 0 ? 1.0f : 2.0f) / 3.0f) / float(n);
+            const float cv = (float(j) + (half == 0 ? 1.0f : 2.0f) / 3.0f) / float(n);
+            const GridCell cell = grid_cell(patches_per_edge, cu, cv);
+            const size_t s = first_shooter + t * shooters_per_triangle + cell.index(patches_per_edge);
+            ShootingPatch& shooter = result.shooters[s];
+            if (shooter.area == 0.0f) {  // first element seen: the patch's corners
+              glm::ivec2 corner[3];
+              cell.corners(corner);
+              const glm::vec3 &A = mesh.positions[a], &B = mesh.positions[b], &C = mesh.positions[c];
+              const float np = float(patches_per_edge);
+              for (int q = 0; q < 3; ++q)
+                shooter.corners[q] = A + (float(corner[q].x) / np) * (B - A) + (float(corner[q].y) / np) * (C - A);
+            }
+            shooter.area += p.area;
+            shooter.centre += p.area * p.centre;
+            shooter.normal = p.normal;
+            // Patches and elements are similar triangles, k times larger.
+            shooter.clearance = float(k_mesh) * p.clearance;
+            result.shooter_of.push_back(uint32_t(s));
             result.patches.push_back(p);
           }
         }
     }
   }
+  // Centroids, and the members grouped by shooter (a counting sort keeps each group in order).
+  for (ShootingPatch& shooter : result.shooters)
+    if (shooter.area > 0.0f) shooter.centre /= shooter.area;
+  for (const uint32_t s : result.shooter_of) ++result.shooters[s].count;
+  uint32_t first = 0;
+  for (ShootingPatch& shooter : result.shooters) {
+    shooter.first = first;
+    first += shooter.count;
+    shooter.count = 0;
+  }
+  result.members.resize(result.patches.size());
+  for (size_t e = 0; e < result.patches.size(); ++e) {
+    ShootingPatch& shooter = result.shooters[result.shooter_of[e]];
+    result.members[shooter.first + shooter.count++] = uint32_t(e);
+  }
   return result;
 }
 
 PatchMesh PatchMesh::build(const Scene& scene, const RadiosityOptions& options) {
+  options.validate();
   return build(scene, options.patch_size > 0.0f
                           ? options.patch_size
-                          : patch_size_for(scene, size_t(std::max(1, options.target_patches))));
+                          : patch_size_for(scene, size_t(std::max(1, options.target_patches))),
+               options.elements_per_edge);
 }
 
 float PatchMesh::patch_size_for(const Scene& scene, size_t target) {
   std::vector<std::pair<float, size_t>> meshes;  // longest edge, triangles
   float longest = 0.0f;
+  size_t triangles = 0;
   for (const Mesh& mesh : scene.meshes) {
     meshes.emplace_back(longest_edge(mesh), mesh.triangle_count());
     longest = std::max(longest, meshes.back().first);
+    triangles += mesh.triangle_count();
   }
   const auto count = [&meshes](float size) {
-    size_t total = 0;
-    for (const auto& [edge, triangles] : meshes) {
-      const size_t n = size_t(subdivisions_for(edge, size));
-      total += triangles * n * n;
+    double total = 0.0;
+    for (const auto& [edge, mesh_triangles] : meshes) {
+      const double n = subdivisions_for(edge, size);
+      total += double(mesh_triangles) * n * n;
     }
     return total;
   };
+  // The scene's own triangles are patches whatever the size; subdivision adds to them.
+  const double wanted = double(triangles) + double(target);
   // count() falls as the size grows: bisect on a log scale for the size closest to the target.
   float lo = longest * 1e-4f, hi = longest * 1.0001f;
   for (int iteration = 0; iteration < 60; ++iteration) {
-    const float mid = std::sqrt(lo * hi);
-    (count(mid) > target ? lo : hi) = mid;
+    const float mid = std::sqrt(lo) * std::sqrt(hi);  // lo * hi may overflow
+    (count(mid) > wanted ? lo : hi) = mid;
   }
-  const auto miss = [&](float size) {
-    return std::abs(double(count(size)) - double(target));
-  };
+  const auto miss = [&](float size) { return std::abs(count(size) - wanted); };
   return miss(lo) < miss(hi) ? lo : hi;
 }
 
@@ -206,22 +342,11 @@ float PatchMesh::total_area() const {
 // ---- [locate] ----------------------------------------------------------------------------------
 PatchMesh::Location PatchMesh::locate(int mesh, int triangle, glm::vec2 b) const {
   const Source& source = sources_[size_t(mesh)];
-  const int n = source.n;
-  const float u = std::clamp(b.x, 0.0f, 1.0f) * float(n), v = std::clamp(b.y, 0.0f, 1.0f) * float(n);
-  int j = std::clamp(int(v), 0, n - 1);
-  int i = std::clamp(int(u), 0, n - 1 - j);
-  const float fu = u - float(i), fv = v - float(j);
-  // Row j starts after rows 0 .. j-1, which hold 2 (n - k) - 1 patches each: 2 n j - j^2.
-  const size_t row_start = size_t(2 * n * j - j * j);
-  const bool down = fu + fv > 1.0f && i + j <= n - 2;
+  const size_t n = size_t(source.n);
+  const GridCell cell = grid_cell(source.n, b.x, b.y);
   Location location;
-  location.patch = source.first_patch + size_t(triangle) * size_t(n) * size_t(n) + row_start +
-                   size_t(2 * i + (down ? 1 : 0));
-  if (!down)  // corners (i, j), (i+1, j), (i, j+1)
-    location.weights = glm::vec3(1.0f - fu - fv, fu, fv);
-  else        // corners (i+1, j), (i+1, j+1), (i, j+1)
-    location.weights = glm::vec3(1.0f - fv, fu + fv - 1.0f, 1.0f - fu);
-  location.weights = glm::max(location.weights, glm::vec3(0.0f));
+  location.patch = source.first_patch + size_t(triangle) * n * n + cell.index(source.n);
+  location.weights = cell.weights;
   return location;
 }
 

@@ -13,6 +13,16 @@
 // vertex indices) shares its patch vertices and radiosity is averaged across it; a crease
 // (separate vertices, or separate primitives such as the walls of the Cornell box) is not.
 //
+// Substructuring (Cohen, Greenberg, Immel & Brock, "An Efficient Radiosity Approach for
+// Realistic Image Synthesis", IEEE CG&A 1986): the triangles of `patches` are the *elements*,
+// which receive light, hold the item buffer's IDs and are drawn. They are grouped into coarser
+// *shooting patches* (`shooters`): a source triangle is first cut n x n into patches and every
+// patch k x k into elements, so the elements are the uniform subdivision at n k and every
+// element lies inside exactly one patch (the patch grid's lines are lines of the element grid).
+// With k = 1 each element is its own patch, and shooter s is element s. A mesh whose triangles
+// are already shorter than the element size (max_edge / k) gets fewer elements per patch, down
+// to one: a finely tessellated sphere is not cut further.
+//
 // Front side: a patch emits and receives only on the side its normal points to, the side from
 // which its triangle is wound counter-clockwise (glTF's front face, which the loader keeps).
 #include <cstdint>
@@ -39,19 +49,39 @@ struct Patch {
   Rgb emission{0.0f};           // exitance E = pi * Le (W/m^2)
 };
 
+// A shooting patch: a group of elements that shoots as one, from its centroid.
+struct ShootingPatch {
+  glm::vec3 centre{0.0f};     // area-weighted centroid of its elements
+  glm::vec3 normal{0, 1, 0};  // unit, the front side (that of its elements)
+  float area = 0.0f;          // sum of its elements' areas, m^2
+  float clearance = 0.0f;     // centroid to the nearest edge of the patch
+  glm::vec3 corners[3] = {};  // counter-clockwise seen from the front
+  uint32_t first = 0;         // its elements: PatchMesh::members[first .. first + count)
+  uint32_t count = 0;
+};
+
 class PatchMesh {
 public:
   PatchMesh() = default;
-  // Splits every triangle so that no patch edge is longer than `max_edge` metres.
-  static PatchMesh build(const Scene& scene, float max_edge);
-  // The patch size that gives about `target` patches (never fewer than the scene's triangles).
+  // Splits every triangle so that no patch edge is longer than `max_edge` metres, and every
+  // patch into elements_per_edge^2 elements. Throws luz::Error (bad_value) before allocating
+  // anything if the mesh would have more than kMaxElements elements, and (not_finite) if a
+  // triangle's edge is not a finite length.
+  static PatchMesh build(const Scene& scene, float max_edge, int elements_per_edge = 1);
+  // The patch size at which subdivision adds about `target` patches to the scene's triangles.
   static float patch_size_for(const Scene& scene, size_t target);
   // With options.patch_size, or else the size for options.target_patches.
   static PatchMesh build(const Scene& scene, const RadiosityOptions& options);
+  // How many elements build() would make (a double: it may be far beyond any memory).
+  static double element_count(const Scene& scene, float max_edge, int elements_per_edge);
 
-  std::vector<Patch> patches;
-  std::vector<glm::vec3> vertices;  // shared corners of the patches
-  float max_edge = 0.0f;
+  std::vector<Patch> patches;        // the elements (see above)
+  std::vector<glm::vec3> vertices;   // shared corners of the elements
+  std::vector<ShootingPatch> shooters;
+  std::vector<uint32_t> members;     // element indices, grouped by shooter
+  std::vector<uint32_t> shooter_of;  // per element, its shooting patch
+  float max_edge = 0.0f;             // of a shooting patch
+  int elements_per_edge = 1;
 
   size_t size() const { return patches.size(); }
   float total_area() const;

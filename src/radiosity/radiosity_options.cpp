@@ -1,18 +1,53 @@
 #include "radiosity/radiosity_options.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
+
+#include "core/error.h"
 
 namespace luz {
 
+const char* to_string(FormFactorMethod method) {
+  return method == FormFactorMethod::hemicube ? "hemicube" : "analytic";
+}
+
 std::string RadiosityOptions::to_string() const {
-  const std::string mesh = patch_size > 0.0f ? fmt::format("patch size {:.4g} m", patch_size)
-                                             : fmt::format("~{} patches", target_patches);
+  const std::string patches = patch_size > 0.0f ? fmt::format("patch size {:.4g} m", patch_size)
+                                                : fmt::format("~{} patches", target_patches);
+  const std::string mesh = fmt::format("{}, {}x{} elements each", patches, elements_per_edge,
+                                       elements_per_edge);
   const std::string stop = max_shots > 0 ? fmt::format("{} shots", max_shots)
                                          : fmt::format("until unshot < {:.3g}", converge);
-  return fmt::format("RadiosityOptions [{}, hemicube {}{}, {}{}{}{}]", mesh, hemicube_res,
-                     random_rotation ? " rotated" : "", stop,
+  return fmt::format("RadiosityOptions [{}, hemicube {}{}, {} form factors, {}{}{}{}{}]", mesh,
+                     hemicube_res, random_rotation ? " rotated" : "",
+                     luz::to_string(form_factors), stop,
+                     overshoot != 1.0f ? fmt::format(", overshoot {:g}", overshoot) : "",
                      ambient_estimate ? ", ambient estimate" : "", flat_patches ? ", flat" : "",
                      outlines ? ", outlines" : "");
+}
+
+void RadiosityOptions::validate() const {
+  const auto refuse = [](const std::string& what) {
+    throw Error(ErrorKind::bad_value, "radiosity: " + what);
+  };
+  if (!std::isfinite(patch_size) || patch_size < 0.0f)
+    refuse(fmt::format("patch size {} must be a finite length in metres (0 = automatic)", patch_size));
+  if (target_patches < 1) refuse(fmt::format("target of {} patches must be at least 1", target_patches));
+  if (elements_per_edge < 1 || elements_per_edge > kMaxElementsPerEdge)
+    refuse(fmt::format("{} elements per patch edge, expected 1 .. {}", elements_per_edge,
+                       kMaxElementsPerEdge));
+  if (hemicube_res < kMinHemicubeRes || hemicube_res > kMaxHemicubeRes || hemicube_res % 2 != 0)
+    refuse(fmt::format("hemicube resolution {} must be even and in {} .. {}", hemicube_res,
+                       kMinHemicubeRes, kMaxHemicubeRes));
+  if (max_shots < 0) refuse(fmt::format("{} shots must not be negative", max_shots));
+  if (!std::isfinite(converge) || converge < 0.0f || converge >= 1.0f)
+    refuse(fmt::format("convergence threshold {} must be in [0, 1) (0 = run until --shots)", converge));
+  if (converge == 0.0f && max_shots == 0)
+    refuse("a convergence threshold of 0 with no shot limit would never stop");
+  if (!std::isfinite(overshoot) || overshoot < kMinOvershoot || overshoot > kMaxOvershoot)
+    refuse(fmt::format("overshoot factor {} must be in {} .. {}", overshoot, kMinOvershoot,
+                       kMaxOvershoot));
 }
 
 }  // namespace luz

@@ -6,20 +6,40 @@
 
 namespace luz {
 
+enum class FormFactorMethod { hemicube, analytic };
+const char* to_string(FormFactorMethod method);  // "hemicube", "analytic"
+
 struct RadiosityOptions {
-  // ---- Meshing (slide 40, "Mallado") ----
-  // Longest patch edge in metres; 0 = chosen so the mesh has about `target_patches` patches.
+  // ---- Meshing (slide 40, "Mallado - Subestructuracion") ----
+  // Two levels (Cohen, Greenberg, Immel & Brock 1986): patches shoot, and each patch is cut into
+  // elements_per_edge x elements_per_edge elements that receive and are displayed. Shots then
+  // scale with the patches and the picture's detail with the elements. 1 = every element is its
+  // own patch (plain progressive radiosity).
+  // Longest patch edge in metres; 0 = chosen so that subdivision adds about `target_patches`
+  // patches to the scene's own triangles (which are the fewest patches there can be).
   float patch_size = 0.0f;
-  int target_patches = 3000;
+  int target_patches = 500;
+  int elements_per_edge = 4;
 
   // ---- Form factors: the hemicube (slide 37) ----
   int hemicube_res = 128;       // pixels across the top face (64 .. 1024, even)
+  // hemicube: every F from the hemicube (point-to-area from the shooter's centre).
+  // analytic: the hemicube finds how much of each element the shooter sees; F itself is
+  // Lambert's exact contour integral from the element to the patch polygon
+  // (polygon_form_factor.h), right where the point-to-area estimate fails, next to the shooter
+  // (the proximity error of Baum, Rushmeier & Winget 1989).
+  FormFactorMethod form_factors = FormFactorMethod::analytic;
   bool random_rotation = true;  // turn the hemicube about the normal at every shot (aliasing)
   uint32_t seed = 1;            // of those rotations: the same seed gives the same solution
 
   // ---- The shooting loop (slide 39) ----
   int max_shots = 0;        // stop after this many shots (lights included); 0 = no limit
   float converge = 0.01f;   // stop when unshot power < converge x emitted power; 0 = never
+  // Overshooting (Feda & Purgathofer 1992, read as over-relaxation by Gortler, Cohen &
+  // Slusallek 1993): a patch shoots `overshoot` times its unshot radiosity and keeps the
+  // negative remainder (1 - overshoot) x unshot to shoot back later. 1 = plain shooting;
+  // kMinOvershoot .. kMaxOvershoot (successive over-relaxation converges below 2).
+  float overshoot = 1.0f;
 
   // ---- Display (slide 39 step 3) ----
   bool ambient_estimate = false;  // add Cohen et al.'s ambient term for the light not yet shot
@@ -27,7 +47,19 @@ struct RadiosityOptions {
   bool outlines = false;          // draw the patch edges over the picture
 
   std::string to_string() const;
+  // Throws luz::Error (bad_value) naming the first setting that is non-finite or out of its
+  // range, so that nothing is built from it.
+  void validate() const;
 };
+
+inline constexpr float kMinOvershoot = 1.0f;
+inline constexpr float kMaxOvershoot = 1.9f;
+
+// The most elements a mesh may have. Each costs about 300 bytes between the mesh, the GPU's
+// buffers and the solver, so this is about 600 MB; a finer request is refused before anything
+// is allocated (PatchMesh::build throws, naming the numbers).
+inline constexpr double kMaxElements = 2'000'000;
+inline constexpr int kMaxElementsPerEdge = 16;
 
 // Smallest and largest hemicube resolutions the panel and the command accept.
 inline constexpr int kMinHemicubeRes = 64;

@@ -40,12 +40,13 @@ static const Scene& with_gl_loaded(const Scene& scene) {
 RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
     : impl_(std::make_unique<Impl>(with_gl_loaded(scene), mesh)) {
   Impl& s = *impl_;
-  // Non-indexed: three corners per patch, so a flat picture can give each patch its own colour.
+  // Non-indexed: three corners per element, so a flat picture can give each its own colour.
+  // Drawn grouped by shooting patch (PatchMesh::members), so a patch is a range of primitives.
   std::vector<glm::vec3> corners;
   corners.reserve(3 * mesh.size());
   Bounds bounds;
-  for (const Patch& p : mesh.patches)
-    for (const uint32_t v : p.vertices) {
+  for (const uint32_t e : mesh.members)
+    for (const uint32_t v : mesh.patches[e].vertices) {
       corners.push_back(mesh.vertices[v]);
       bounds.grow(mesh.vertices[v]);
     }
@@ -75,10 +76,12 @@ RadiosityRenderer::~RadiosityRenderer() = default;
 
 void RadiosityRenderer::update(const RadianceField& field, const RadiosityOptions& options) {
   Impl& s = *impl_;
-  for (size_t i = 0; i < s.mesh.size(); ++i)
+  for (size_t drawn = 0; drawn < s.mesh.size(); ++drawn) {
+    const uint32_t e = s.mesh.members[drawn];
     for (int k = 0; k < 3; ++k)
-      s.corner_colours[3 * i + size_t(k)] =
-          options.flat_patches ? field.patch[i] : field.vertex[s.mesh.patches[i].vertices[k]];
+      s.corner_colours[3 * drawn + size_t(k)] =
+          options.flat_patches ? field.patch[e] : field.vertex[s.mesh.patches[e].vertices[k]];
+  }
   glBindBuffer(GL_ARRAY_BUFFER, s.colours);
   glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(s.corner_colours.size() * sizeof(Rgb)),
                   s.corner_colours.data());
@@ -107,7 +110,9 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
   s.program.set("u_view_projection",
                 camera.projection(float(width) / float(height), far) * camera.view());
   s.program.set("u_outline", false);
-  s.program.set("u_highlight", highlight);
+  const bool lit = highlight >= 0 && size_t(highlight) < s.mesh.shooters.size();
+  s.program.set("u_highlight_first", lit ? int(s.mesh.shooters[size_t(highlight)].first) : -1);
+  s.program.set("u_highlight_count", lit ? int(s.mesh.shooters[size_t(highlight)].count) : 0);
   s.program.set("u_highlight_colour", glm::vec3(4.0f, 0.0f, 4.0f));  // magenta, bright
   glBindVertexArray(s.vao);
   if (options.outlines) {  // push the filled patches back so the lines win the depth test

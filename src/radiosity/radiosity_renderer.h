@@ -25,8 +25,8 @@ public:
   // New colours (after solver steps). Uses options.flat_patches to pick patch or vertex values.
   void update(const RadianceField& field, const RadiosityOptions& options);
 
-  // Draws into the currently bound framebuffer of the given size. `highlight`: a patch drawn in
-  // a flat highlight colour (e.g. the solver's last shooter), -1 for none.
+  // Draws into the currently bound framebuffer of the given size. `highlight`: a shooting patch
+  // (all its elements) drawn in a flat highlight colour (the solver's last shooter), -1 for none.
   void draw(const Camera& camera, int width, int height, const RadiosityOptions& options,
             int highlight = -1);
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).

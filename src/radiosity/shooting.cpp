@@ -4,6 +4,8 @@
 //           [the loop] [state]
 #include "radiosity/shooting.h"
 
+#include "radiosity/polygon_form_factor.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +22,7 @@ double now_seconds() {
 }
 
 double mean(const Rgb& c) { return (double(c.r) + double(c.g) + double(c.b)) / 3.0; }
+double mean(const glm::dvec3& c) { return (c.r + c.g + c.b) / 3.0; }
 
 // The solid angle a light sends its intensity into, sum(spot) over the sphere: 4 pi for a point
 // light; for a spot, the integral of its (axially symmetric) factor, 2 pi sin(theta) dtheta.
@@ -76,11 +79,12 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
 // Step 1: radiosity = 0, unshot = E for every patch.
 void ProgressiveSolver::reset() {
   radiosity_.assign(mesh_.size(), Rgb(0.0f));
-  unshot_.resize(mesh_.size());
+  unshot_.assign(mesh_.size(), Rgb(0.0f));
+  patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   tally_ = EnergyTally{};
-  for (size_t i = 0; i < mesh_.size(); ++i) {
-    unshot_[i] = mesh_.patches[i].emission;
-    tally_.emitted += power(unshot_[i], mesh_.patches[i].area);
+  for (size_t j = 0; j < mesh_.size(); ++j) {
+    receive(j, mesh_.patches[j].emission);
+    tally_.emitted += power(unshot_[j], mesh_.patches[j].area);
   }
   light_power_.clear();
   for (const size_t k : lights_) {
@@ -98,37 +102,90 @@ void ProgressiveSolver::reset() {
 }
 
 // ---- [step 2: shoot a patch] -------------------------------------------------------------------
-// Step 2: patch i shoots its unshot radiosity to every patch its hemicube sees.
+// Step 2: patch i shoots its unshot radiosity to every element its hemicube sees.
 void ProgressiveSolver::shoot(size_t i) {
-  const Patch& shooter = mesh_.patches[i];
+  const ShootingPatch& shooter = mesh_.shooters[i];
   const float rotation = options_.random_rotation
       ? std::uniform_real_distribution<float>(0.0f, 2.0f * std::numbers::pi_v<float>)(random_)
       : 0.0f;
 
   // radiosidad[i] = radiosidad[i] + carga[i];  carga[i] = 0
-  // (the slide zeroes carga[i] before the loop that uses it: keep what is shot aside first)
-  const Rgb shot = unshot_[i];
-  radiosity_[i] += shot;
-  unshot_[i] = Rgb(0.0f);
+  // (the slide zeroes carga[i] before the loop that uses it: keep what is shot aside first).
+  // The patch's carga is the area-weighted mean of its elements'; overshooting sends w times it
+  // and leaves (1 - w) times it behind.
+  const float w = options_.overshoot;
+  glm::dvec3 shot_power_rgb(0.0);
+  for (uint32_t k = shooter.first; k < shooter.first + shooter.count; ++k) {
+    const uint32_t e = mesh_.members[k];
+    const Rgb sent = w * unshot_[e];
+    shot_power_rgb += glm::dvec3(sent) * double(mesh_.patches[e].area);
+    radiosity_[e] += sent;
+    unshot_[e] -= sent;
+  }
+  patch_unshot_[i] *= double(1.0f - w);
+  const Rgb shot = Rgb(shot_power_rgb / double(shooter.area));
 
   // para cada j: calcular F_ji;  carga[j] = carga[j] + rho_j F_ji carga[i]
-  const std::vector<FormFactor>& row = hemicube_.row(i, rotation);
+  const std::vector<FormFactor>& row =
+      hemicube_.row(shooter.centre, shooter.normal, shooter.clearance, rotation);
   row_times_ = hemicube_.last_times();
   const auto update_start = std::chrono::steady_clock::now();
   const double shot_power = power(shot, shooter.area);
   double row_sum = 0.0;
   for (const FormFactor& f : row) {
     const Patch& receiver = mesh_.patches[f.patch];
-    const float F_ji = f.value * shooter.area / receiver.area;  // reciprocity
-    unshot_[f.patch] += receiver.rho * F_ji * shot;
+    const double F_ij = form_factor_to(shooter, f);
+    const float F_ji = float(F_ij * double(shooter.area) / double(receiver.area));  // reciprocity
+    receive(f.patch, receiver.rho * F_ji * shot);
     // Of the power F_ij * (shot * A_i) arriving at j, rho_j is reflected, the rest absorbed.
-    tally_.absorbed += double(f.value) * power((Rgb(1.0f) - receiver.rho) * shot, shooter.area);
-    row_sum += double(f.value);
+    tally_.absorbed += F_ij * power((Rgb(1.0f) - receiver.rho) * shot, shooter.area);
+    row_sum += F_ij;
   }
   tally_.escaped += (1.0 - row_sum) * shot_power;
   update_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - update_start).count();
   ++shots_;
   record(int(i));
+}
+
+// F from the shooting patch to element j, given the hemicube's point-to-area value from the
+// patch's centre. The analytic method takes from the hemicube only what it is good at, which
+// part of element j can be seen (its value over the exact unoccluded factor from the same
+// point, the hemicube's eye), and integrates the rest exactly: F_ji by Lambert's contour
+// integral from element j to the patch's triangle, so F_ij = visible * F_ji A_j / A_i. Every
+// receiver of the row is done so (mixing two estimates in one row would not sum to what the
+// patch sends); the quadrature over the element grows next to the patch, where the integrand
+// varies fastest (polygon_form_factor.h).
+double ProgressiveSolver::form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const {
+  if (options_.form_factors != FormFactorMethod::analytic) return double(hemicube.value);
+  const Patch& element = mesh_.patches[hemicube.patch];
+  const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
+                                mesh_.vertices[element.vertices[1]],
+                                mesh_.vertices[element.vertices[2]]};
+  const glm::vec3 eye = shooter.centre + Hemicube::eye_height(shooter.clearance) * shooter.normal;
+  const double unoccluded = point_to_polygon_form_factor(eye, shooter.normal, corners);
+  if (!(unoccluded > 0.0)) return double(hemicube.value);
+  const double visible = double(hemicube.value) / unoccluded;
+
+  float radius = 0.0f, element_radius = 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    radius = std::max(radius, glm::length(shooter.corners[k] - shooter.centre));
+    element_radius = std::max(element_radius, glm::length(corners[k] - element.centre));
+  }
+  const float distance = glm::length(element.centre - shooter.centre);
+  double F_ji = 0.0;
+  if (distance > kNearRadii * radius)  // far: the element's centroid stands for it
+    F_ji = point_to_polygon_form_factor(element.centre, element.normal, shooter.corners);
+  else  // near: 12 points, 48 next to the patch (a row then sums to 1 within 0.1% in a box)
+    F_ji = triangle_to_polygon_form_factor(corners[0], corners[1], corners[2], element.normal,
+                                           shooter.corners,
+                                           distance < 2.0f * (radius + element_radius) ? 2 : 1);
+  return visible * F_ji * double(element.area) / double(shooter.area);
+}
+
+void ProgressiveSolver::receive(size_t element, const Rgb& gain) {
+  unshot_[element] += gain;
+  patch_unshot_[mesh_.shooter_of[element]] +=
+      glm::dvec3(gain) * double(mesh_.patches[element].area);
 }
 
 // ---- [point lights] ----------------------------------------------------------------------------
@@ -147,7 +204,7 @@ void ProgressiveSolver::shoot_light(size_t k) {
       attenuation = light.attenuation.factor(d) * d * d;
     }
     const Rgb flux = light.intensity * (f.value * attenuation);
-    unshot_[f.patch] += receiver.rho * flux / receiver.area;
+    receive(f.patch, receiver.rho * flux / receiver.area);
     tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * flux);
     delivered += mean(flux);
   }
@@ -160,8 +217,8 @@ void ProgressiveSolver::shoot_light(size_t k) {
 size_t ProgressiveSolver::most_unshot_patch() const {
   size_t best = 0;
   double best_power = -1.0;
-  for (size_t i = 0; i < unshot_.size(); ++i) {
-    const double p = power(unshot_[i], mesh_.patches[i].area);
+  for (size_t i = 0; i < patch_unshot_.size(); ++i) {
+    const double p = std::abs(mean(patch_unshot_[i]));
     if (p > best_power) {
       best_power = p;
       best = i;
@@ -207,9 +264,19 @@ std::vector<Rgb> ProgressiveSolver::displayed() const {
   return b;
 }
 
+Rgb ProgressiveSolver::patch_radiosity(size_t shooter) const {
+  const ShootingPatch& s = mesh_.shooters[shooter];
+  glm::dvec3 sum(0.0);
+  for (uint32_t k = s.first; k < s.first + s.count; ++k) {
+    const uint32_t e = mesh_.members[k];
+    sum += glm::dvec3(radiosity_[e] + unshot_[e]) * double(mesh_.patches[e].area);
+  }
+  return Rgb(sum / double(s.area));
+}
+
 double ProgressiveSolver::unshot_power() const {
   double total = 0.0;
-  for (size_t i = 0; i < unshot_.size(); ++i) total += power(unshot_[i], mesh_.patches[i].area);
+  for (const glm::dvec3& u : patch_unshot_) total += std::abs(mean(u));
   for (size_t k = next_light_; k < lights_.size(); ++k) total += mean(light_power_[k]);
   return total;
 }
@@ -218,9 +285,12 @@ double ProgressiveSolver::unshot_fraction() const {
   return tally_.emitted > 0.0 ? unshot_power() / tally_.emitted : 0.0;
 }
 
+// With overshooting, patches hold negative unshot power: the balance sums it with its sign.
 EnergyTally ProgressiveSolver::energy() const {
   EnergyTally t = tally_;
-  t.unshot = unshot_power();
+  t.unshot = 0.0;
+  for (const glm::dvec3& u : patch_unshot_) t.unshot += mean(u);
+  for (size_t k = next_light_; k < lights_.size(); ++k) t.unshot += mean(light_power_[k]);
   return t;
 }
 

@@ -12,6 +12,18 @@
 // F_ji comes from the hemicube row of the shooter, F_ij, by reciprocity: F_ji = F_ij A_i / A_j.
 // The scene's punctual lights are shot first, each once, as point sources (point_source.h).
 //
+// Substructuring (patch_mesh.h): i runs over the shooting patches and j over the elements. Each
+// element keeps its own radiosity and unshot radiosity; a patch's unshot radiosity is the
+// area-weighted mean of its elements', and when it shoots, all of its elements' unshot
+// radiosity goes out at once from the patch's centroid through one hemicube whose item buffer
+// holds element IDs. What is displayed is the elements' radiosity + unshot.
+//
+// Overshooting (options.overshoot = w > 1): the shooter sends w x its unshot radiosity and keeps
+// (1 - w) x unshot, a negative amount shot back later; radiosity + unshot, what is displayed,
+// is unchanged by the shot itself, and the iteration converges to the same B (successive
+// over-relaxation of Southwell's method, Gortler, Cohen & Slusallek 1993). The patch to shoot
+// is then the one with the largest |unshot power|, and "unshot power" sums magnitudes.
+//
 // The solver steps on the thread that owns the GL context: step() is one shot, so the viewer
 // can spend a time budget per frame and show each step. All quantities are RGB exitances
 // (W/m^2) per patch; powers are those times the area, summed as the mean of R, G and B.
@@ -20,6 +32,8 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/color.h"
 #include "core/scene.h"
@@ -52,6 +66,11 @@ struct EnergyTally {
 
 class ProgressiveSolver {
 public:
+  // With FormFactorMethod::analytic, elements whose centre lies within this many of the
+  // shooting patch's radii (centroid to farthest corner) are integrated over their area; the
+  // others from their centroid.
+  static constexpr float kNearRadii = 3.0f;
+
   // Needs a current GL context (the hemicube draws through it) for its whole life. `mesh` and
   // `scene` must outlive the solver. Directional lights are not shot (no position to put a
   // cube at): warnings() says so.
@@ -63,26 +82,32 @@ public:
   // false (and shoots nothing) when done(): converged, out of shots, or nothing left to shoot.
   bool step();
   bool done() const;
-  // Step 2 for patch i (public so a test or the viewer can shoot a chosen patch).
+  // Step 2 for shooting patch i, mesh().shooters[i] (public so a test or the viewer can shoot a
+  // chosen patch; without substructuring shooter i is element i).
   void shoot(size_t i);
   // Shoots the scene's light k as a point source.
   void shoot_light(size_t k);
 
   // ---- State ----
+  // Per element.
   const std::vector<Rgb>& radiosity() const { return radiosity_; }
   const std::vector<Rgb>& unshot() const { return unshot_; }
-  // Step 3: what each patch shows, radiosity + unshot (exitance B, W/m^2).
+  // Step 3: what each element shows, radiosity + unshot (exitance B, W/m^2).
   std::vector<Rgb> displayed() const;
+  // A shooting patch's radiosity: the area-weighted mean of its elements' displayed values.
+  Rgb patch_radiosity(size_t shooter) const;
   // Cohen et al. 1988's ambient term: the unshot power spread over the scene's area, times
   // 1 / (1 - mean reflectance) for its interreflections. A patch would show rho_i * ambient
   // more once everything were shot.
   Rgb ambient() const;
+  // Sum over shooting patches (and lights not yet shot) of |unshot power|.
   double unshot_power() const;
   double emitted_power() const { return tally_.emitted; }
   double unshot_fraction() const;
   EnergyTally energy() const;
   int shots() const { return shots_; }
-  int last_shooter() const { return last_shooter_; }  // patch, -1 - k for light k, or -1 before any
+  // Shooting patch, -1 - k for light k, or -1 before any.
+  int last_shooter() const { return last_shooter_; }
   size_t lights_left() const { return lights_.size() - next_light_; }
   const std::vector<ShotRecord>& history() const { return history_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -102,6 +127,9 @@ private:
   void record(int shooter);
   size_t most_unshot_patch() const;
   static double power(const Rgb& exitance, float area);
+  double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
+  // Element j's unshot radiosity grows by `gain` (its patch's unshot power with it).
+  void receive(size_t element, const Rgb& gain);
 
   const Scene& scene_;
   const PatchMesh& mesh_;
@@ -113,7 +141,8 @@ private:
   size_t next_light_ = 0;
   std::vector<Rgb> light_power_;       // I * sum(spot d_omega), filled when each light shoots
   double unshot_light_power_ = 0.0;    // estimate for lights not yet shot (I * 4 pi)
-  std::vector<Rgb> radiosity_, unshot_;
+  std::vector<Rgb> radiosity_, unshot_;  // per element
+  std::vector<glm::dvec3> patch_unshot_;  // per shooting patch: sum of A_j unshot_j (W)
   EnergyTally tally_;
   int shots_ = 0;
   int last_shooter_ = -1;

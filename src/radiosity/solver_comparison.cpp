@@ -37,6 +37,7 @@ SolverComparison::SolverComparison(const Scene& scene, const PatchMesh& mesh,
   // what differs is only how it uses them (column i by reciprocity). It runs until told to stop.
   RadiosityOptions shooting_options = options;
   shooting_options.random_rotation = false;
+  shooting_options.form_factors = FormFactorMethod::hemicube;  // the matrix's own rows
   shooting_options.max_shots = 0;
   shooting_options.converge = 0.0f;
   shooting_options.ambient_estimate = false;

@@ -1,0 +1,37 @@
+#pragma once
+// The second form-factor method of slide 40's "multitud de métodos": the exact form factor from
+// a point to a polygon, by Lambert's contour integral (Lambert 1760; Hottel & Sarofim,
+// "Radiative Transfer", 1967; Baum, Rushmeier & Winget, SIGGRAPH 1989, use it where the
+// hemicube's point-to-area estimate fails, for receivers close to the shooter):
+//
+//   F(dA -> P) = 1/(2 pi) * sum over the polygon's edges k of  gamma_k (n . G_k),
+//   G_k = unit(R_k x R_{k+1}),  gamma_k = the angle between R_k and R_{k+1},
+//
+// with R_k the vector from the point to polygon vertex k and n the point's unit normal. It
+// integrates cos(theta) cos(theta') / (pi r^2) over the polygon exactly, with no visibility:
+// the caller supplies that (shooting.cpp takes it from the hemicube). The part of the polygon
+// below the point's tangent plane is clipped off first (the formula assumes it sees all of it).
+//
+// ProgressiveSolver uses it for the elements near a shooting patch: the light element j gets is
+// rho_j F(j -> patch) unshot, with F(j -> patch) the mean of this formula at three points of the
+// element (the degree-2 quadrature points (2/3, 1/6, 1/6)), so its area is integrated too.
+#include <span>
+
+#include <glm/vec3.hpp>
+
+namespace luz {
+
+// From the point x with unit normal n to the polygon with vertices counter-clockwise seen from
+// its front. 0 if the polygon shows x its back or lies wholly below x's tangent plane.
+double point_to_polygon_form_factor(const glm::vec3& x, const glm::vec3& n,
+                                    std::span<const glm::vec3> polygon);
+
+// The same averaged over the triangle (a, b, c) as a receiver (its normal n), by the three-point
+// rule above on each of 4^splits similar sub-triangles: F from the triangle's area to the polygon.
+// The integrand varies as log(distance) next to an edge the two share, where three points are
+// 1.5% off; one split brings that to a few tenths of a percent.
+double triangle_to_polygon_form_factor(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                                       const glm::vec3& n, std::span<const glm::vec3> polygon,
+                                       int splits = 0);
+
+}  // namespace luz
