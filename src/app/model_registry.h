@@ -40,7 +40,8 @@ struct ModelEntry {
   std::span<const char* const> flag_groups;
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.
   Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
-  // The viewer's view; the scene and the GL context are the viewer's.
+  // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model of
+  // `luz render` only (its key and radio button say so).
   std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
   std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones
 };

@@ -126,7 +126,9 @@ void model_header(ViewerState& state, ModelView& shown) {
   int column = 0;
   for (const ModelEntry& m : models()) {
     const std::string label = fmt::format("{} [{}]", m.label, m.key);
+    ImGui::BeginDisabled(!m.make_view);  // `luz render` only
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
+    ImGui::EndDisabled();
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
