@@ -2,7 +2,6 @@
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cmath>
 #include <cstdlib>
-#include <map>
 #include <optional>
 #include <string>
 #include <utility>

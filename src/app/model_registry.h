@@ -35,13 +35,14 @@ struct ModelEntry {
   int key;             // the digit that shows it (1 .. 9)
   const char* help;    // F1's line and --help's
   // The flag groups of `luz render` it takes: each options table row names its group
-  // (options_tables.h: "terms", "local", "whitted", "radiosity", "radiosity-display"); a flag of
+  // (options_tables.h: "terms", "local", "whitted", "sampling", "path", "radiosity",
+  // "radiosity-display"); a flag of
   // another group is a usage error naming the models that take it.
   std::span<const char* const> flag_groups;
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.
   Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
-  // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model that
-  // renders headless only (its key says so in the status line).
+  // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model of
+  // `luz render` only (its key and radio button say so).
   std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
   bool in_viewer() const { return make_view != nullptr; }
   std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones

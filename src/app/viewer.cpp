@@ -280,7 +280,7 @@ ModelView& Viewer::view(std::string_view name) {
   auto found = views_.find(name);
   if (found != views_.end()) return *found->second;
   const ModelEntry* entry = find_model(name);
-  if (!entry) throw Error(ErrorKind::usage, fmt::format("no model \"{}\"", name));  // a programmer's slip
+  if (!entry || !entry->make_view) throw Error(ErrorKind::usage, fmt::format("no model \"{}\"", name));  // a programmer's slip
   std::unique_ptr<ModelView> made = entry->make_view(*this);
   ModelView& result = *made;
   views_.emplace(std::string(name), std::move(made));
@@ -288,8 +288,9 @@ ModelView& Viewer::view(std::string_view name) {
 }
 
 void Viewer::set_model(const ModelEntry& model) {
-  if (!model.in_viewer()) {
-    state_.note = fmt::format("{}: luz render --model {} (headless)", model.label, model.name);
+  if (!model.make_view) {
+    state_.model = model_->name;
+    state_.note = fmt::format("{}: `luz render --model {}` only", model.label, model.name);
     return;
   }
   if (model_ != &model && model_) view(model_->name).hidden();  // a trace running there stops
@@ -482,7 +483,7 @@ void Viewer::apply(Action action) {
     case Action::radiosity_step:
       if (shown().act(action)) break;
       for (const ModelEntry& m : models())
-        if (m.in_viewer() && view(m.name).act(action)) {
+        if (m.make_view && view(m.name).act(action)) {
           set_model(m);
           break;
         }
@@ -520,9 +521,10 @@ bool Viewer::run(const ScriptCommand& command, std::string& error) {
 bool Viewer::busy() const {
   const SolversState& s = state_.solvers;
   const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
-  bool views_busy = false;
-  for (const auto& [name, v] : views_) views_busy |= v->busy();
-  return scripted_click_frames_ > 0 || views_busy || solving_system || idle_until_.has_value();
+  // Only the view shown works (a hidden one has stopped): its requests are what may be pending.
+  const auto shown_view = views_.find(model_->name);
+  const bool view_busy = shown_view != views_.end() && shown_view->second->busy();
+  return scripted_click_frames_ > 0 || view_busy || solving_system || idle_until_.has_value();
 }
 
 void Viewer::idle(double seconds) {
@@ -683,9 +685,8 @@ bool Viewer::needs_frames() const {
   const SolversState& s = state_.solvers;
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
-  for (const auto& [name, v] : views_)
-    if (v->animating()) return true;
-  return false;
+  const auto shown_view = views_.find(model_->name);
+  return shown_view != views_.end() && shown_view->second->animating();
 }
 
 int Viewer::loop() {
