@@ -17,6 +17,7 @@
 #include "app/viewer.h"
 #include "core/error.h"
 #include "raytracing/sampling.h"
+#include "gl/offscreen_context.h"
 #include "gl/window_context.h"
 
 namespace {
@@ -95,6 +96,10 @@ std::vector<CLI::Option*> add_render_flags(CLI::App& render, RenderSettings& set
   switch_off("--no-textures", settings.local.textures, "Ignore baseColorTexture");
   render.add_flag("--blinn", settings.local.blinn, "Blinn's half vector N.H instead of Phong's R.V");
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+  render.add_option_function<std::string>(
+      "--gl", [](const std::string& name) { luz::gl::set_default_backend(*luz::gl::parse_backend(name)); },
+      "Headless OpenGL: egl or osmesa (default: $LUZ_GL, else EGL when it works, else OSMesa)")
+      ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
   return add_effect_flags(render, settings.local);
 }
 

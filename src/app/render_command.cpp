@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 
@@ -159,7 +160,14 @@ int run_render(const RenderSettings& settings) {
       for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
     }
     const float exposure = settings.exposure.value_or(scene.exposure);
-    io::write_image(image, settings.out, exposure);
+    try {
+      io::write_image(image, settings.out, exposure);
+    } catch (const Error&) {
+      // The --csv history belongs to a run that succeeded: without its picture it goes too.
+      std::error_code ignored;
+      if (!settings.csv.empty()) std::filesystem::remove(settings.csv, ignored);
+      throw;
+    }
     if (traced.ray_tree) write_text(ray_tree_path(settings.out), *traced.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet) {

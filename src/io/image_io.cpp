@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <cstdint>
 #include <random>
+
+#include <signal.h>
+#include <unistd.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -39,16 +44,66 @@ fs::path temporary_beside(const fs::path& path) {
   return path.parent_path() / (stem + path.extension().string());
 }
 
+// While the temporary file exists, SIGINT and SIGTERM remove it before the process ends as it
+// would have (the previous disposition is restored and the signal raised again). The handler
+// only calls async-signal-safe functions (unlink, sigaction, raise) on a fixed buffer.
+char g_temporary[4096];
+struct sigaction g_previous_int, g_previous_term;
+
+extern "C" void remove_temporary_and_reraise(int signal_number) {
+  unlink(g_temporary);
+  sigaction(SIGINT, &g_previous_int, nullptr);
+  sigaction(SIGTERM, &g_previous_term, nullptr);
+  raise(signal_number);
+}
+
+class TemporaryGuard {
+ public:
+  explicit TemporaryGuard(const fs::path& temporary) {
+    const std::string name = temporary.string();
+    armed_ = name.size() < sizeof g_temporary;
+    if (!armed_) return;
+    std::memcpy(g_temporary, name.c_str(), name.size() + 1);
+    struct sigaction action {};
+    action.sa_handler = remove_temporary_and_reraise;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &g_previous_int);
+    sigaction(SIGTERM, &action, &g_previous_term);
+  }
+  ~TemporaryGuard() {
+    if (!armed_) return;
+    sigaction(SIGINT, &g_previous_int, nullptr);
+    sigaction(SIGTERM, &g_previous_term, nullptr);
+  }
+  TemporaryGuard(const TemporaryGuard&) = delete;
+  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+
+ private:
+  bool armed_ = false;
+};
+
 // OpenImageIO keeps 8/16-bit files in their encoded values; everything Luz computes is linear.
 bool is_integer_format(const OIIO::ImageSpec& spec) {
   return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
 }
 
 // Reads an opened input into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
+// The size comes from the header, which costs nothing to read; it is checked against the caps
+// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535).
 std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     error = "image has no pixels";
+    return std::nullopt;
+  }
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+      int64_t(spec.width) * spec.height > kMaxImagePixels) {
+    error = fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
+                        spec.height, kMaxImageSide, kMaxImagePixels);
+    return std::nullopt;
+  }
+  if (spec.nchannels > 16) {
+    error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
     return std::nullopt;
   }
   std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
@@ -78,7 +133,18 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
   if (!is_supported_output(path))
     throw Error(ErrorKind::usage, fmt::format("{}: output must be .png or .exr", path.string()));
   const bool exr = lower_extension(path) == ".exr";
+  // The last guard for every renderer: a NaN or infinite radiance is a bug upstream, and a file
+  // that hides it (PNG clamps it to black or white) would only move the surprise elsewhere.
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const Rgb& c = image.pixels[i];
+    if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+      throw Error(ErrorKind::output,
+                  fmt::format("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
+                              i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
+                              c.r, c.g, c.b));
+  }
   const fs::path temporary = temporary_beside(path);
+  const TemporaryGuard guard(temporary);
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     fs::remove(temporary, ignored);

@@ -154,7 +154,9 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge) {
                                              at(i, j + 1));
             p.mesh = int(m);
             p.triangle = int(t);
-            p.rho = rho;
+            // COLOR_0 at the patch's centroid: (i + 1/3, j + 1/3) / n up, + 2/3 down.
+            const float third = half == 0 ? 1.0f / 3.0f : 2.0f / 3.0f;
+            p.rho = rho * mesh.colour_at(t, glm::vec2(float(i) + third, float(j) + third) / float(n));
             p.emission = exitance;
             result.patches.push_back(p);
           }
