@@ -1,6 +1,7 @@
 // luz: the single command. `luz [SCENE]` opens the viewer; `luz render` makes one picture
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -149,7 +150,8 @@ std::vector<CLI::Option*> add_radiosity_flags(CLI::App& render, RenderSettings& 
   std::vector<CLI::Option*> flags;
   CLI::Option* shots = render.add_option_function<int>(
       "--shots", [&r](int n) { r.max_shots = n; r.converge = 0.0f; },
-      "radiosity/hybrid: stop after N shots (lights included)")->check(CLI::PositiveNumber);
+      "radiosity/hybrid: stop after N shots (lights included)")
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()));  // PositiveNumber prints DBL_MAX's 309 digits
   CLI::Option* converge = render.add_option_function<float>(
       "--converge", [&r](float eps) { r.converge = eps; r.max_shots = 0; },
       fmt::format("radiosity/hybrid: stop when the unshot power is below EPS x the emitted power "

@@ -5,9 +5,12 @@
 #include <csignal>
 #include <cstring>
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <random>
 
 #include <signal.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <OpenImageIO/filesystem.h>
@@ -82,6 +85,37 @@ class TemporaryGuard {
   bool armed_ = false;
 };
 
+// libpng's default error handler, which OpenImageIO's PNG reader keeps, prints "libpng error:
+// ..." on stderr before OpenImageIO reports the same problem to us; Luz prints its own one-line
+// message instead, so stderr is pointed at /dev/null while an image is decoded.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = dup(STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+    if (null >= 0) close(null);
+  }
+  ~QuietStderr() {
+    if (saved_ < 0) return;
+    dup2(saved_, STDERR_FILENO);
+    close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+// OpenImageIO's messages can span lines ("PNG read error: ...\nPNG library error"): one line.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
+  return text;
+}
+
 // OpenImageIO keeps 8/16-bit files in their encoded values; everything Luz computes is linear.
 bool is_integer_format(const OIIO::ImageSpec& spec) {
   return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
@@ -107,8 +141,13 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
     return std::nullopt;
   }
   std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data())) {
-    error = input.geterror();
+  bool read = false;
+  {
+    const QuietStderr quiet;
+    read = input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data());
+  }
+  if (!read) {
+    error = one_line(input.geterror());
     return std::nullopt;
   }
   const bool decode = is_integer_format(spec);
@@ -173,9 +212,14 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
 Image read_image(const fs::path& path) {
   if (!fs::exists(path))
     throw Error(ErrorKind::file_missing, fmt::format("{}: no such file", path.string()));
-  auto input = OIIO::ImageInput::open(path.string());
+  std::unique_ptr<OIIO::ImageInput> input;
+  {
+    const QuietStderr quiet;
+    input = OIIO::ImageInput::open(path.string());
+  }
   if (!input)
-    throw Error(ErrorKind::bad_value, fmt::format("{}: not an image: {}", path.string(), OIIO::geterror()));
+    throw Error(ErrorKind::bad_value,
+                fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
   std::optional<Image> image = read_rgb(*input, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
@@ -189,7 +233,11 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
   const bool png = bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P';
   const std::string pseudo_name = png ? "texture.png" : "texture.jpg";
   OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  auto input = OIIO::ImageInput::open(pseudo_name, nullptr, &proxy);
+  std::unique_ptr<OIIO::ImageInput> input;
+  {
+    const QuietStderr quiet;
+    input = OIIO::ImageInput::open(pseudo_name, nullptr, &proxy);
+  }
   if (!input) {
     error = "not a PNG or JPEG image";
     (void)OIIO::geterror();  // clear OpenImageIO's pending message
