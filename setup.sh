@@ -12,6 +12,7 @@ packages=(
   libtinygltf-dev libopenimageio-dev libimgui-dev libstb-dev
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev xvfb xauth fonts-dejavu-core gettext locales xdotool
+  libegl-dev libegl-mesa0 assimp-testmodels
 )
 
 missing=()

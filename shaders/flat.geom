@@ -8,11 +8,13 @@ layout(triangle_strip, max_vertices = 3) out;
 in vec3 v_position[];
 in vec3 v_normal[];
 in vec2 v_uv[];
+in vec3 v_colour[];
 
 flat out vec3 g_ambient;
 flat out vec3 g_diffuse;
 flat out vec3 g_specular;
 flat out vec2 g_uv;
+flat out vec3 g_colour;  // COLOR_0 at the centroid
 flat out vec3 g_mirror;
 out vec3 g_position;
 
@@ -27,6 +29,7 @@ void main() {
 
   Terms terms = local_model(middle, N);
   vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
+  vec3 colour = (v_colour[0] + v_colour[1] + v_colour[2]) / 3.0;
   vec3 mirror = mirror_direction(middle, N);
 
   for (int i = 0; i < 3; ++i) {
@@ -35,6 +38,7 @@ void main() {
     g_diffuse = terms.diffuse;
     g_specular = terms.specular;
     g_uv = uv;
+    g_colour = colour;
     g_mirror = mirror;
     g_position = v_position[i];
     EmitVertex();

@@ -4,6 +4,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
+in vec3 v_colour;
 in vec3 v_ambient;
 in vec3 v_front_diffuse;
 in vec3 v_front_specular;
@@ -16,5 +17,6 @@ void main() {
   bool back = viewer_sees_back(v_position, v_normal);  // two-sided lighting
   Terms terms = back ? Terms(v_ambient, v_back_diffuse, v_back_specular)
                      : Terms(v_ambient, v_front_diffuse, v_front_specular);
+  kd_colour = v_colour;
   write_fragment(terms, v_uv, gl_FrontFacing, back ? v_back_mirror : v_front_mirror, v_position);
 }

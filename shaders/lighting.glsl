@@ -276,9 +276,14 @@ Terms local_model(vec3 P, vec3 N) {
   return terms;
 }
 
-// kd's texture factor at uv (1 without a texture or with textures switched off).
+// COLOR_0 at the fragment, which multiplies kd (SCENES.md); the fragment shader sets it before
+// write_fragment (white: no vertex colours).
+vec3 kd_colour = vec3(1.0);
+
+// kd's factor at uv: the texture (1 without a texture or with textures switched off) times the
+// vertex colour.
 vec3 kd_texture_factor(vec2 uv) {
-  return has_kd_texture ? texture(u_kd_texture, uv).rgb : vec3(1.0);
+  return (has_kd_texture ? texture(u_kd_texture, uv).rgb : vec3(1.0)) * kd_colour;
 }
 
 // I = I_A + I_D * texture + I_S (+ Le): the sum the fragment writes.

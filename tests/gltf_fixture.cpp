@@ -78,6 +78,7 @@ int GltfBuilder::mesh(const std::vector<Primitive>& primitives, const std::strin
     json primitive = {{"attributes", {{"POSITION", add_vec3(p.positions)}}}};
     if (!p.normals.empty()) primitive["attributes"]["NORMAL"] = add_vec3(p.normals);
     if (!p.uvs.empty()) primitive["attributes"]["TEXCOORD_0"] = add_vec2(p.uvs);
+    if (!p.colors.empty()) primitive["attributes"]["COLOR_0"] = add_vec3(p.colors);
     if (!p.indices.empty()) primitive["indices"] = add_indices(p.indices, p.index_type);
     if (p.material != -1) primitive["material"] = p.material;
     if (p.mode != -1) primitive["mode"] = p.mode;

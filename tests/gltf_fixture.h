@@ -31,6 +31,7 @@ struct Primitive {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;
+  std::vector<glm::vec3> colors;  // COLOR_0 as float VEC3
   std::vector<uint32_t> indices;
   int index_type = kUnsignedInt;  // component type of the indices
   int material = -1;              // -1: no material

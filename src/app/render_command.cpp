@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 
@@ -129,7 +130,14 @@ int run_render(const RenderSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     Rendered rendered = model->render(scene, camera, width, height, settings);
     const float exposure = settings.exposure.value_or(scene.exposure);
-    io::write_image(rendered.image, settings.out, exposure);
+    try {
+      io::write_image(rendered.image, settings.out, exposure);
+    } catch (const Error&) {
+      // The --csv history belongs to a run that succeeded: without its picture it goes too.
+      std::error_code ignored;
+      if (!settings.csv.empty()) std::filesystem::remove(settings.csv, ignored);
+      throw;
+    }
     if (rendered.ray_tree) write_text(ray_tree_path(settings.out), *rendered.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet) {

@@ -11,6 +11,7 @@
 #include "app/options_tables.h"
 #include "app/render_grid.h"
 #include "app/script.h"
+#include "gl/offscreen_context.h"
 
 namespace luz::app {
 namespace {
@@ -82,6 +83,10 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       },
       "Exposure in EV for PNG output (default: the scene's)");
   render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+  render.add_option_function<std::string>(
+      "--gl", [](const std::string& name) { gl::set_default_backend(*gl::parse_backend(name)); },
+      "Headless OpenGL: egl or osmesa (default: $LUZ_GL, else EGL when it works, else OSMesa)")
+      ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
 
   add_rows(render, local_rows(), settings.local, flags);
   flags.grouped.push_back({"local", render.add_option_function<std::string>(

@@ -8,6 +8,13 @@
 
 namespace luz {
 
+Rgb Mesh::colour_at(size_t triangle, const glm::vec2& barycentrics) const {
+  if (colors.empty()) return Rgb(1.0f);
+  const float u = barycentrics.x, v = barycentrics.y;
+  return (1.0f - u - v) * colors[indices[3 * triangle]] + u * colors[indices[3 * triangle + 1]] +
+         v * colors[indices[3 * triangle + 2]];
+}
+
 void Bounds::grow(const glm::vec3& p) {
   min = glm::min(min, p);
   max = glm::max(max, p);

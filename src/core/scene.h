@@ -41,10 +41,14 @@ struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;       // empty when the primitive has no TEXCOORD_0
+  std::vector<Rgb> colors;          // COLOR_0, multiplies kd; empty when the primitive has none
   std::vector<uint32_t> indices;    // three per triangle
   int material = 0;                 // index into Scene::materials
 
   size_t triangle_count() const { return indices.size() / 3; }
+  // COLOR_0 at barycentrics (u, v) of `triangle` (weights 1 - u - v, u, v of its three corners),
+  // white when the mesh has no vertex colours: the factor every model multiplies kd by.
+  Rgb colour_at(size_t triangle, const glm::vec2& barycentrics) const;
 };
 
 // An emissive triangle seen as a light (SCENES.md "Emissive triangles are area lights").

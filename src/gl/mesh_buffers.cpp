@@ -12,6 +12,7 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;  // (0, 0) when the mesh has no TEXCOORD_0
+  Rgb colour;    // COLOR_0, white when the mesh has none
 };
 
 }  // namespace
@@ -22,6 +23,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh) {
     vertices[i].position = mesh.positions[i];
     vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0.0f);
     vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+    vertices[i].colour = i < mesh.colors.size() ? mesh.colors[i] : Rgb(1.0f);
   }
   index_count_ = GLsizei(mesh.indices.size());
 
@@ -44,6 +46,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh) {
   attribute(position_location, 3, offsetof(Vertex, position));
   attribute(normal_location, 3, offsetof(Vertex, normal));
   attribute(uv_location, 2, offsetof(Vertex, uv));
+  attribute(colour_location, 3, offsetof(Vertex, colour));
 
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -1,6 +1,6 @@
 #pragma once
-// One core::Mesh on the GPU: a vertex array with position (location 0), normal (1) and uv (2)
-// from one interleaved buffer, and an element buffer of its triangles.
+// One core::Mesh on the GPU: a vertex array with position (location 0), normal (1), uv (2) and
+// COLOR_0 (3) from one interleaved buffer, and an element buffer of its triangles.
 #include "core/scene.h"
 #include "gl/functions.h"
 
@@ -11,6 +11,7 @@ public:
   static constexpr GLuint position_location = 0;
   static constexpr GLuint normal_location = 1;
   static constexpr GLuint uv_location = 2;
+  static constexpr GLuint colour_location = 3;
 
   explicit MeshBuffers(const Mesh& mesh);
   ~MeshBuffers();

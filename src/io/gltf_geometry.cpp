@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -63,9 +64,86 @@ struct AccessorView {
   size_t count = 0;
   int component_type = 0;
   bool normalized = false;
+  // A sparse accessor's elements, made dense here (first points into it).
+  std::shared_ptr<std::vector<unsigned char>> dense;
 
   const unsigned char* element(size_t i) const { return first + i * stride; }
 };
+
+// The bytes of bufferView `index` after checking that it lies inside its buffer.
+const unsigned char* view_bytes(const Context& ctx, int index, const std::string& what,
+                                const tinygltf::BufferView*& buffer_view) {
+  const tinygltf::Model& model = ctx.model;
+  ctx.check_index(index, model.bufferViews.size(), what + ": bufferView", "bufferViews");
+  buffer_view = &model.bufferViews[size_t(index)];
+  const std::string view_name = fmt::format("bufferView {}", index);
+  ctx.check_index(buffer_view->buffer, model.buffers.size(), view_name + ": buffer", "buffers");
+  const std::vector<unsigned char>& data = model.buffers[size_t(buffer_view->buffer)].data;
+  const size_t view_end = add_sat(buffer_view->byteOffset, buffer_view->byteLength);
+  if (view_end > data.size())
+    ctx.fail(ErrorKind::truncated_buffer,
+             fmt::format("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
+                         buffer_view->buffer, view_end, data.size()));
+  return data.data() + buffer_view->byteOffset;
+}
+
+// `count` tightly packed elements of `size` bytes at `offset` in bufferView `index`, checked to fit.
+const unsigned char* packed_run(const Context& ctx, int index, size_t offset, size_t count,
+                                size_t size, const std::string& what) {
+  const tinygltf::BufferView* buffer_view = nullptr;
+  const unsigned char* bytes = view_bytes(ctx, index, what, buffer_view);
+  const size_t needs = add_sat(offset, mul_sat(count, size));
+  if (needs > buffer_view->byteLength)
+    ctx.fail(ErrorKind::truncated_buffer,
+             fmt::format("{} reaches past the end of bufferView {} (needs {} bytes, has {})", what,
+                         index, needs, buffer_view->byteLength));
+  return bytes + offset;
+}
+
+// glTF 2.0 sparse accessors (morph targets use them): the base elements (the bufferView's, or
+// zeros), then `sparse.count` of them replaced, at the listed indices, by the listed values.
+void make_dense(const Context& ctx, const tinygltf::Accessor& accessor, size_t element_size,
+                AccessorView& view) {
+  const auto& sparse = accessor.sparse;
+  const std::string what = view.name + ": sparse";
+  if (sparse.count < 1)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} count {} is not positive", what, sparse.count));
+  const size_t count = size_t(sparse.count);
+  if (count > view.count)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} count {} exceeds the accessor's {} elements", what,
+                                               count, view.count));
+  const int index_type = sparse.indices.componentType;
+  const size_t index_size = index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                            : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                            : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                   : 0;
+  if (index_size == 0)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}.indices must be unsigned bytes, shorts or ints", what));
+  const unsigned char* indices = packed_run(ctx, sparse.indices.bufferView,
+                                            size_t(std::max(sparse.indices.byteOffset, 0)), count,
+                                            index_size, what + ".indices");
+  const unsigned char* values = packed_run(ctx, sparse.values.bufferView,
+                                           size_t(std::max(sparse.values.byteOffset, 0)), count,
+                                           element_size, what + ".values");
+
+  auto dense = std::make_shared<std::vector<unsigned char>>(mul_sat(view.count, element_size), 0);
+  if (view.first)
+    for (size_t i = 0; i < view.count; ++i)
+      std::memcpy(dense->data() + i * element_size, view.element(i), element_size);
+  for (size_t k = 0; k < count; ++k) {
+    uint32_t target = 0;
+    if (index_size == 1) target = indices[k];
+    else if (index_size == 2) { uint16_t v; std::memcpy(&v, indices + 2 * k, 2); target = v; }
+    else std::memcpy(&target, indices + 4 * k, 4);
+    if (target >= view.count)
+      ctx.fail(ErrorKind::index_out_of_range,
+               fmt::format("{}.indices: element {} is {}, past the {} elements", what, k, target, view.count));
+    std::memcpy(dense->data() + size_t(target) * element_size, values + k * element_size, element_size);
+  }
+  view.dense = std::move(dense);
+  view.first = view.dense->data();
+  view.stride = element_size;
+}
 
 AccessorView view_accessor(const Context& ctx, int index, const std::string& what) {
   const tinygltf::Model& model = ctx.model;
@@ -76,44 +154,35 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
   view.count = accessor.count;
   view.component_type = accessor.componentType;
   view.normalized = accessor.normalized;
-  if (accessor.sparse.isSparse) ctx.fail(ErrorKind::bad_value, view.name + ": sparse accessors are not supported");
   const size_t element_size = component_size(accessor.componentType) * component_count(accessor.type);
   if (element_size == 0)
     ctx.fail(ErrorKind::bad_value, fmt::format("{}: unknown componentType {} or type {}", view.name,
                                                accessor.componentType, accessor.type));
   view.stride = element_size;
-  if (accessor.bufferView == -1) return view;  // all zeros
-
-  ctx.check_index(accessor.bufferView, model.bufferViews.size(), view.name + ": bufferView",
-                  "bufferViews");
-  const tinygltf::BufferView& buffer_view = model.bufferViews[size_t(accessor.bufferView)];
-  const std::string view_name = fmt::format("bufferView {}", accessor.bufferView);
-  ctx.check_index(buffer_view.buffer, model.buffers.size(), view_name + ": buffer", "buffers");
-  const std::vector<unsigned char>& data = model.buffers[size_t(buffer_view.buffer)].data;
-
-  // The bufferView must lie inside its buffer ...
-  const size_t view_end = add_sat(buffer_view.byteOffset, buffer_view.byteLength);
-  if (view_end > data.size())
-    ctx.fail(ErrorKind::truncated_buffer,
-             fmt::format("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
-                         buffer_view.buffer, view_end, data.size()));
-  if (buffer_view.byteStride != 0) {
-    if (buffer_view.byteStride < element_size)
-      ctx.fail(ErrorKind::bad_value,
-               fmt::format("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
-                           buffer_view.byteStride, element_size, view.name));
-    view.stride = buffer_view.byteStride;
+  if (accessor.bufferView != -1) {
+    // The bufferView must lie inside its buffer ...
+    const tinygltf::BufferView* buffer_view = nullptr;
+    const unsigned char* bytes = view_bytes(ctx, accessor.bufferView, view.name, buffer_view);
+    const std::string view_name = fmt::format("bufferView {}", accessor.bufferView);
+    if (buffer_view->byteStride != 0) {
+      if (buffer_view->byteStride < element_size)
+        ctx.fail(ErrorKind::bad_value,
+                 fmt::format("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
+                             buffer_view->byteStride, element_size, view.name));
+      view.stride = buffer_view->byteStride;
+    }
+    // ... and the accessor inside its bufferView: byteOffset + stride * (count - 1) + element size.
+    if (view.count > 0) {
+      const size_t needs = add_sat(add_sat(accessor.byteOffset, mul_sat(view.stride, view.count - 1)),
+                                   element_size);
+      if (needs > buffer_view->byteLength)
+        ctx.fail(ErrorKind::truncated_buffer,
+                 fmt::format("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
+                             view_name, needs, buffer_view->byteLength));
+    }
+    view.first = bytes + accessor.byteOffset;
   }
-  // ... and the accessor inside its bufferView: byteOffset + stride * (count - 1) + element size.
-  if (view.count > 0) {
-    const size_t needs = add_sat(add_sat(accessor.byteOffset, mul_sat(view.stride, view.count - 1)),
-                                 element_size);
-    if (needs > buffer_view.byteLength)
-      ctx.fail(ErrorKind::truncated_buffer,
-               fmt::format("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
-                           view_name, needs, buffer_view.byteLength));
-  }
-  view.first = data.data() + buffer_view.byteOffset + accessor.byteOffset;
+  if (accessor.sparse.isSparse) make_dense(ctx, accessor, element_size, view);
   return view;
 }
 
@@ -182,6 +251,33 @@ std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::
       if (!std::isfinite(out[i][c]))
         ctx.fail(ErrorKind::not_finite, fmt::format("{}: element {} is {}", what, i,
                                                     std::isnan(out[i][c]) ? "NaN" : "infinite"));
+    }
+  }
+  return out;
+}
+
+// COLOR_0: RGB or RGBA (alpha dropped), float or normalized unsigned byte / short (glTF).
+std::vector<Rgb> read_colors(const Context& ctx, int index, const std::string& what) {
+  const AccessorView view = view_accessor(ctx, index, what);
+  const int type = ctx.model.accessors[size_t(index)].type;
+  if (type != TINYGLTF_TYPE_VEC3 && type != TINYGLTF_TYPE_VEC4)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must be VEC3 or VEC4", what, view.name));
+  const bool integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                       view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
+    ctx.fail(ErrorKind::bad_value,
+             fmt::format("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
+  std::vector<Rgb> out(view.count, Rgb(0.0f));
+  if (!view.first) return out;
+  const size_t size = component_size(view.component_type);
+  for (size_t i = 0; i < view.count; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float v = read_component(view.element(i) + size * size_t(c), view.component_type, true);
+      if (!std::isfinite(v) || v < 0.0f)
+        ctx.fail(v < 0.0f ? ErrorKind::bad_value : ErrorKind::not_finite,
+                 fmt::format("{}: element {} is {}", what, i,
+                             std::isnan(v) ? "NaN" : std::isinf(v) ? "infinite" : "negative"));
+      out[i][c] = v;
     }
   }
   return out;
@@ -273,6 +369,11 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     std::vector<glm::vec2> uvs;
     if (const int a = attribute("TEXCOORD_0"); a != -1)
       uvs = read_texcoords(ctx, a, where + ": TEXCOORD_0");
+    std::vector<Rgb> colors;
+    if (const int a = attribute("COLOR_0"); a != -1) colors = read_colors(ctx, a, where + ": COLOR_0");
+    if (!uvs.empty() && primitive.material != -1 &&
+        size_t(primitive.material) < ctx.model.materials.size())
+      apply_texture_transform(ctx, primitive.material, uvs);
     auto same_count = [&](size_t n, const char* name) {
       if (n != 0 && n != vertex_count)
         ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} has {} elements but POSITION has {}",
@@ -280,6 +381,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     };
     same_count(normals.size(), "NORMAL");
     same_count(uvs.size(), "TEXCOORD_0");
+    same_count(colors.size(), "COLOR_0");
     const bool has_normals = !normals.empty();
 
     std::vector<uint32_t> indices;
@@ -328,6 +430,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       mesh.positions = std::move(positions);
       mesh.normals = std::move(normals);
       mesh.uvs = std::move(uvs);
+      mesh.colors = std::move(colors);
     }
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       uint32_t corner[3] = {indices[t], indices[t + 1], indices[t + 2]};
@@ -350,6 +453,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
         mesh.positions.push_back(positions[k]);
         mesh.normals.push_back(face_normal);
         if (!uvs.empty()) mesh.uvs.push_back(uvs[k]);
+        if (!colors.empty()) mesh.colors.push_back(colors[k]);
       }
     }
     if (!mesh.indices.empty()) scene.meshes.push_back(std::move(mesh));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <tiny_gltf.h>
 
 #include "core/error.h"
@@ -41,6 +42,10 @@ struct Context {
                    const std::string& array) const;
 };
 
+// The largest emitted radiance Le and light intensity accepted (per channel): sums of many such
+// terms, times pi and areas, stay far inside float's range (3.4e38), so no renderer overflows.
+inline constexpr float kMaxEmitted = 1e18f;
+
 // `kind index "name"` or `kind index` when the element has no name, for messages.
 std::string describe(const std::string& kind, size_t index, const std::string& name);
 
@@ -66,6 +71,11 @@ void add_camera(const Context& ctx, const tinygltf::Node& node, const glm::dmat4
                 Scene& scene);
 void add_light(const Context& ctx, const tinygltf::Node& node, const std::string& node_what,
                const glm::dmat4& to_world, Scene& scene);
+
+// gltf_materials.cpp: applies the KHR_texture_transform of material `material`'s
+// baseColorTexture, if it has one, to a primitive's TEXCOORD_0 (the program samples the texture
+// at the transformed coordinates).
+void apply_texture_transform(const Context& ctx, int material, std::vector<glm::vec2>& uvs);
 
 // gltf_materials.cpp: glTF materials -> scene.materials (same indices), and the base colour
 // textures they use -> scene.textures.

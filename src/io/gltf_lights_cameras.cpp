@@ -2,6 +2,7 @@
 //
 // Both take their pose from the node's world matrix: a camera looks down the node's -Z with +Y
 // up, a light shines down the node's -Z. Values are checked as the float the program uses.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -93,6 +94,9 @@ void add_light(const Context& ctx, const tinygltf::Node& node, const std::string
   // Candela read as W/sr (point, spot), lux as W/m^2 (directional): SCENES.md "Lights".
   light.intensity = color * intensity;
   if (!is_finite(light.intensity)) ctx.fail(ErrorKind::not_finite, what + ": color x intensity is infinite");
+  if (std::max({light.intensity.r, light.intensity.g, light.intensity.b}) > kMaxEmitted)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{}: color x intensity is above {:.0e}; sums of it would "
+                                               "overflow", what, kMaxEmitted));
 
   const glm::mat4 m(to_world);
   light.position = glm::vec3(m[3]);

@@ -10,8 +10,8 @@
 // Decisions the contract leaves open:
 // - glTF material i is Scene::materials[i]. The default material ("default", kd 0.8 grey) is
 //   appended after them only when some primitive has no material, so indices stay the file's.
-// - Unsupported but legal glTF (sparse accessors, quantized positions) is refused as bad_value
-//   rather than drawn wrongly. Orthographic cameras and non-triangle primitives are skipped with
+// - Unsupported but legal glTF (quantized positions, an extension the file requires) is refused
+//   as bad_value rather than drawn wrongly. Orthographic cameras and non-triangle primitives are skipped with
 //   a warning, as SCENES.md says.
 // - tinygltf 2.7 trusts the file in places (an image's bufferView is read without checking it
 //   fits its buffer, accessors are not checked at all), so those bounds are checked here, and
@@ -33,6 +33,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/default_lights.h"
 #include "io/gltf_internal.h"
 
 namespace luz::io {
@@ -181,6 +182,11 @@ long long data_uri_size(const std::string& uri) {
   if (length % 4 != 0) return -1;
   size_t padding = 0;
   for (size_t i = uri.size(); i > comma + 1 && uri[i - 1] == '=' && padding < 2; --i) ++padding;
+  // RFC 4648's alphabet, with '=' only as the padding at the end.
+  for (size_t i = comma + 1; i < uri.size() - padding; ++i) {
+    const unsigned char c = static_cast<unsigned char>(uri[i]);
+    if (!std::isalnum(c) && c != '+' && c != '/') return -1;
+  }
   return static_cast<long long>(length / 4 * 3 - padding);
 }
 
@@ -216,6 +222,67 @@ std::string json_text(const Source& source, const std::vector<unsigned char>& by
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + long(json_length));
 }
 
+// glTF 1.0 (asset.version "1.0", or no asset and the 1.0 layout of objects keyed by name) is
+// a different format; only 2.x is read.
+void check_version(const Source& source, const nlohmann::json& doc) {
+  auto asset = doc.find("asset");
+  if (asset == doc.end() || !asset->is_object()) {
+    for (const char* array : {"meshes", "nodes", "scenes", "accessors", "materials"})
+      if (auto it = doc.find(array); it != doc.end() && it->is_object())
+        source.fail(ErrorKind::not_gltf, "glTF 1.0 is not supported (Luz reads glTF 2.0)");
+    return;  // tinygltf reports the missing asset object
+  }
+  auto version = asset->find("version");
+  if (version == asset->end() || !version->is_string()) return;  // tinygltf reports it
+  const std::string text = version->get<std::string>();
+  if (text.rfind("1.", 0) == 0 || text == "1")
+    source.fail(ErrorKind::not_gltf, fmt::format("glTF 1.0 is not supported (asset.version \"{}\"; "
+                                                 "Luz reads glTF 2.0)", text));
+  if (text.rfind("2.", 0) != 0)
+    source.fail(ErrorKind::not_gltf, fmt::format("glTF version \"{}\" is not supported (Luz reads "
+                                                 "glTF 2.0)", gltf::one_line(text)));
+}
+
+// The glTF extensions Luz reads. One that a file lists in extensionsRequired and that is not
+// here means the file cannot be drawn correctly without it, so the file is refused (glTF spec
+// 3.12); one that is only in extensionsUsed is ignored with a warning (see load_gltf).
+constexpr const char* kImplementedExtensions[] = {
+    "KHR_lights_punctual",         "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_transmission",  "KHR_texture_transform",
+};
+
+bool is_implemented(const std::string& extension) {
+  return std::any_of(std::begin(kImplementedExtensions), std::end(kImplementedExtensions),
+                     [&](const char* name) { return extension == name; });
+}
+
+void check_required_extensions(const Source& source, const nlohmann::json& doc) {
+  auto required = doc.find("extensionsRequired");
+  if (required == doc.end() || !required->is_array()) return;
+  for (const nlohmann::json& name : *required)
+    if (name.is_string() && !is_implemented(name.get<std::string>()))
+      source.fail(ErrorKind::bad_value,
+                  fmt::format("requires the glTF extension {}, which Luz does not implement",
+                              gltf::one_line(name.get<std::string>())));
+}
+
+// glTF: aspectRatio, when present, is > 0 (tinygltf reads an absent one as 0, which the camera
+// takes as "use the image's aspect", so a written 0 is caught here).
+void check_camera_aspects(const Source& source, const nlohmann::json& doc) {
+  auto cameras = doc.find("cameras");
+  if (cameras == doc.end() || !cameras->is_array()) return;
+  for (size_t i = 0; i < cameras->size(); ++i) {
+    const nlohmann::json& camera = (*cameras)[i];
+    if (!camera.is_object() || !camera.contains("perspective") || !camera["perspective"].is_object())
+      continue;
+    const nlohmann::json& p = camera["perspective"];
+    if (auto a = p.find("aspectRatio"); a != p.end() && a->is_number() && !(a->get<double>() > 0.0))
+      source.fail(ErrorKind::bad_value,
+                  fmt::format("camera {}: aspectRatio {} is not positive (leave it out to use the "
+                              "image's aspect)", i, a->dump()));
+  }
+}
+
 // Checks what tinygltf would read without checking: the URIs and sizes of buffers, and that an
 // image's bufferView lies inside its buffer. Also turns JSON syntax errors into not_gltf and
 // numbers beyond double's range (1e999) into not_finite.
@@ -229,6 +296,9 @@ void check_before_parsing(const Source& source, const std::string& text) {
     source.fail(ErrorKind::not_gltf, fmt::format("not glTF: the JSON does not parse ({})", json_error(e)));
   }
   if (!doc.is_object()) source.fail(ErrorKind::not_gltf, "not glTF: the JSON is not an object");
+  check_version(source, doc);
+  check_required_extensions(source, doc);
+  check_camera_aspects(source, doc);
 
   std::vector<long long> buffer_lengths;
   if (auto buffers = doc.find("buffers"); buffers != doc.end() && buffers->is_array()) {
@@ -273,6 +343,8 @@ void check_before_parsing(const Source& source, const std::string& text) {
       if (image.contains("uri") && image["uri"].is_string()) {
         const std::string uri = image["uri"].get<std::string>();
         if (!is_data_uri(uri)) check_uri(source, element, uri);
+        else if (uri.rfind(";base64,") != std::string::npos && data_uri_size(uri) < 0)
+          source.fail(ErrorKind::not_gltf, element + ": its data URI is not base64");
       }
       const long long view = json_size(image, "bufferView");
       if (!image.contains("bufferView")) continue;
@@ -361,7 +433,15 @@ glm::dmat4 local_transform(const Context& ctx, const tinygltf::Node& node, const
   check_float_range(ctx, node.translation, what + ": translation");
   check_float_range(ctx, node.rotation, what + ": rotation");
   check_float_range(ctx, node.scale, what + ": scale");
-  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF
+  if (node.matrix.size() == 16) {
+    // glTF node matrices are affine: the last row (elements 3, 7, 11, 15, column-major) is
+    // 0 0 0 1. Another last row (0 0 0 0 collapses every point onto w = 0) is no placement.
+    const std::vector<double>& m = node.matrix;
+    if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0)
+      ctx.fail(ErrorKind::bad_value, fmt::format("{}: matrix's last row is {} {} {} {}, not 0 0 0 1",
+                                                 what, m[3], m[7], m[11], m[15]));
+    return glm::make_mat4(node.matrix.data());  // column-major, as glTF
+  }
   if (!node.matrix.empty())
     ctx.fail(ErrorKind::bad_value, fmt::format("{}: matrix has {} numbers, not 16", what, node.matrix.size()));
   glm::dmat4 t(1.0), r(1.0), s(1.0);
@@ -502,19 +582,32 @@ LoadedScene load_gltf(const fs::path& path) {
         line.find("File not found") == std::string::npos && line.find("File read error") == std::string::npos)
       ctx.warn("tinygltf: " + first_line(line));
 
+  for (const std::string& name : model.extensionsUsed)
+    if (!is_implemented(name)) ctx.warn(fmt::format("the glTF extension {} is not implemented; ignored", name));
+
   Scene& scene = loaded.scene;
   scene.path = source.file;
   gltf::add_materials(ctx, scene);
   const int default_material = int(scene.materials.size());
   walk_nodes(ctx, default_material, scene);
-  if (scene.triangle_count() == 0)
-    source.fail(ErrorKind::no_triangles, "no triangles to draw in the default scene");
+  if (scene.triangle_count() == 0) {
+    // The meshes' own warnings (primitives of another mode, all triangles degenerate) say why.
+    std::string why;
+    for (const std::string& warning : loaded.warnings)
+      if (warning.rfind(source.file + ": mesh ", 0) == 0)
+        why += "; " + warning.substr(source.file.size() + 2);
+    source.fail(ErrorKind::no_triangles, "no triangles to draw in the default scene" + why);
+  }
   if (std::any_of(scene.meshes.begin(), scene.meshes.end(),
                   [&](const Mesh& m) { return m.material == default_material; }))
     scene.materials.push_back(Material{});  // "default": kd 0.8 grey (SCENES.md)
   read_scene_extras(ctx, scene);
   if (scene.cameras.empty()) scene.cameras.push_back(Camera::framing(scene.bounds()));
   scene.find_area_lights();
+  if (io::has_no_lights(scene)) {
+    io::add_default_lights(scene);
+    ctx.warn(io::kDefaultLightsNotice);
+  }
   return loaded;
 }
 

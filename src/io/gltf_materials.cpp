@@ -2,7 +2,7 @@
 //
 //   kd  = baseColorFactor.rgb x baseColorTexture x (1 - metallicFactor)   (texture: kd_texture)
 //   ka  = extras.ka, else kd
-//   ks  = extras.ks, else 0
+//   ks  = extras.ks, else baseColor x metallicFactor unless the material is a mirror (Metals)
 //   n   = extras.shininess, else 2/r^4 - 2 clamped to [1, 10000], r = roughnessFactor
 //   kr  = extras.kr, else baseColor when metallic >= 0.5 and roughness <= 0.05, else 0
 //   kt  = extras.kt, else KHR_materials_transmission.transmissionFactor, else 0
@@ -11,6 +11,7 @@
 //
 // A base colour texture whose image is missing or undecodable becomes a 1x1 white texture with a
 // warning: the scene still loads, only the texture's detail is lost.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -39,6 +40,16 @@ Rgb to_rgb(const Context& ctx, const std::vector<double>& values, size_t expecte
     ctx.fail(ErrorKind::bad_value, fmt::format("{} has {} numbers, not {}", what, values.size(), expected));
   return Rgb(to_float(ctx, values[0], what), to_float(ctx, values[1], what),
              to_float(ctx, values[2], what));
+}
+
+// A reflectance above 1 reflects more light than arrives; far above (1e30) it makes radiosity's
+// sums and the tracer's ray weights overflow to inf and NaN. Each channel is clamped to 1 with
+// a warning, so every renderer stays finite. (glTF limits baseColorFactor to [0, 1] itself.)
+Rgb clamp_to_one(const Context& ctx, Rgb c, const std::string& what) {
+  if (c.r <= 1.0f && c.g <= 1.0f && c.b <= 1.0f) return c;
+  ctx.warn(fmt::format("{} ({:.3g}, {:.3g}, {:.3g}) is above 1; clamped to 1", what, c.r, c.g, c.b));
+  for (int i = 0; i < 3; ++i) c[i] = std::min(c[i], 1.0f);
+  return c;
 }
 
 void require_non_negative(const Context& ctx, const Rgb& c, const std::string& what) {
@@ -88,7 +99,8 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   Material m;
   m.name = source.name.empty() ? fmt::format("material {}", index) : source.name;
 
-  const Rgb base = to_rgb(ctx, pbr.baseColorFactor, 4, field("baseColorFactor"));
+  const Rgb base = clamp_to_one(ctx, to_rgb(ctx, pbr.baseColorFactor, 4, field("baseColorFactor")),
+                                field("baseColorFactor"));
   const float metallic = to_float(ctx, pbr.metallicFactor, field("metallicFactor"));
   const float roughness = to_float(ctx, pbr.roughnessFactor, field("roughnessFactor"));
   if (metallic < 0.0f || metallic > 1.0f)
@@ -100,13 +112,16 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   m.kd = base * (1.0f - metallic);
   const tinygltf::Value* v = member(extras, "ka");
   m.ka = v ? read_rgb(ctx, *v, field("extras.ka")) : m.kd;
+  // A smooth metal is the mirror of the classic model, tinted by its base colour.
+  const bool mirror = metallic >= 0.5f && roughness <= 0.05f;
+  // SCENES.md "Metals": the metallic share of the base colour is specular, never diffuse; a
+  // metal that is not a mirror keeps it as the highlight, so a glTF that leaves metallicFactor at
+  // its default 1 does not render black.
   v = member(extras, "ks");
-  m.ks = v ? read_rgb(ctx, *v, field("extras.ks")) : Rgb(0.0f);
+  m.ks = v ? read_rgb(ctx, *v, field("extras.ks")) : mirror ? Rgb(0.0f) : base * metallic;
   v = member(extras, "shininess");
   m.shininess = v ? read_number(ctx, *v, field("extras.shininess")) : shininess_from_roughness(roughness);
   v = member(extras, "kr");
-  // A smooth metal is the mirror of the classic model, tinted by its base colour.
-  const bool mirror = metallic >= 0.5f && roughness <= 0.05f;
   m.kr = v ? read_rgb(ctx, *v, field("extras.kr")) : mirror ? base : Rgb(0.0f);
 
   if ((v = member(extras, "kt"))) {
@@ -129,7 +144,15 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   if (!source.emissiveFactor.empty())  // absent: black
     m.emission = to_rgb(ctx, source.emissiveFactor, 3, field("emissiveFactor")) * strength;
   if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field("emitted radiance is infinite"));
+  if (std::max({m.emission.r, m.emission.g, m.emission.b}) > kMaxEmitted)
+    ctx.fail(ErrorKind::bad_value, fmt::format("{} ({:.3g}) is above {:.0e}; sums of it would overflow",
+                                               field("emitted radiance"),
+                                               std::max({m.emission.r, m.emission.g, m.emission.b}), kMaxEmitted));
 
+  m.ka = clamp_to_one(ctx, m.ka, field("ka"));
+  m.ks = clamp_to_one(ctx, m.ks, field("ks"));
+  m.kr = clamp_to_one(ctx, m.kr, field("kr"));
+  m.kt = clamp_to_one(ctx, m.kt, field("kt"));
   // Domains: coefficients are reflectances (>= 0), eta is a ratio of speeds (> 0).
   require_non_negative(ctx, m.kd, field("kd"));
   require_non_negative(ctx, m.ka, field("ka"));
@@ -171,6 +194,39 @@ void check_energy(const Context& ctx, const Material& m, const std::string& what
 }
 
 }  // namespace
+
+// KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv, the extension's matrix,
+// with R = [cos sin; -sin cos] (rows): turning the image counter-clockwise on screen, where v
+// points down, turns the coordinates the other way. The sample model TextureTransformTest's
+// markers (green: right, red: rotated the wrong way) check the sign.
+void apply_texture_transform(const Context& ctx, int material, std::vector<glm::vec2>& uvs) {
+  const tinygltf::Material& source = ctx.model.materials[size_t(material)];
+  const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
+  if (info.index == -1) return;
+  const tinygltf::Value* transform = extension(info.extensions, "KHR_texture_transform");
+  if (!transform) return;
+  const std::string what = describe("material", size_t(material), source.name) +
+                           ": baseColorTexture KHR_texture_transform";
+  auto pair = [&](const char* key, glm::vec2 fallback) {
+    const tinygltf::Value* v = member(*transform, key);
+    if (!v) return fallback;
+    if (!v->IsArray() || v->ArrayLen() != 2)
+      ctx.fail(ErrorKind::bad_value, fmt::format("{}.{} must be [u, v]", what, key));
+    return glm::vec2(read_number(ctx, v->Get(0), what + "." + key),
+                     read_number(ctx, v->Get(1), what + "." + key));
+  };
+  const glm::vec2 offset = pair("offset", glm::vec2(0.0f));
+  const glm::vec2 scale = pair("scale", glm::vec2(1.0f));
+  const tinygltf::Value* r = member(*transform, "rotation");
+  const float rotation = r ? read_number(ctx, *r, what + ".rotation") : 0.0f;
+  if (const tinygltf::Value* t = member(*transform, "texCoord"); t && t->IsNumber() && t->GetNumberAsInt() != 0)
+    ctx.warn(fmt::format("{}.texCoord {} is ignored; TEXCOORD_0 is read", what, t->GetNumberAsInt()));
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  for (glm::vec2& uv : uvs) {
+    const glm::vec2 scaled = scale * uv;
+    uv = offset + glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y);
+  }
+}
 
 void add_materials(Context& ctx, Scene& scene) {
   std::map<int, int> textures;  // glTF image -> index in scene.textures

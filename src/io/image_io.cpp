@@ -2,8 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <random>
+
+#include <signal.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -39,21 +47,107 @@ fs::path temporary_beside(const fs::path& path) {
   return path.parent_path() / (stem + path.extension().string());
 }
 
+// While the temporary file exists, SIGINT and SIGTERM remove it before the process ends as it
+// would have (the previous disposition is restored and the signal raised again). The handler
+// only calls async-signal-safe functions (unlink, sigaction, raise) on a fixed buffer.
+char g_temporary[4096];
+struct sigaction g_previous_int, g_previous_term;
+
+extern "C" void remove_temporary_and_reraise(int signal_number) {
+  unlink(g_temporary);
+  sigaction(SIGINT, &g_previous_int, nullptr);
+  sigaction(SIGTERM, &g_previous_term, nullptr);
+  raise(signal_number);
+}
+
+class TemporaryGuard {
+ public:
+  explicit TemporaryGuard(const fs::path& temporary) {
+    const std::string name = temporary.string();
+    armed_ = name.size() < sizeof g_temporary;
+    if (!armed_) return;
+    std::memcpy(g_temporary, name.c_str(), name.size() + 1);
+    struct sigaction action {};
+    action.sa_handler = remove_temporary_and_reraise;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &g_previous_int);
+    sigaction(SIGTERM, &action, &g_previous_term);
+  }
+  ~TemporaryGuard() {
+    if (!armed_) return;
+    sigaction(SIGINT, &g_previous_int, nullptr);
+    sigaction(SIGTERM, &g_previous_term, nullptr);
+  }
+  TemporaryGuard(const TemporaryGuard&) = delete;
+  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+
+ private:
+  bool armed_ = false;
+};
+
+// libpng's default error handler, which OpenImageIO's PNG reader keeps, prints "libpng error:
+// ..." on stderr before OpenImageIO reports the same problem to us; Luz prints its own one-line
+// message instead, so stderr is pointed at /dev/null while an image is decoded.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = dup(STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+    if (null >= 0) close(null);
+  }
+  ~QuietStderr() {
+    if (saved_ < 0) return;
+    dup2(saved_, STDERR_FILENO);
+    close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+// OpenImageIO's messages can span lines ("PNG read error: ...\nPNG library error"): one line.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
+  return text;
+}
+
 // OpenImageIO keeps 8/16-bit files in their encoded values; everything Luz computes is linear.
 bool is_integer_format(const OIIO::ImageSpec& spec) {
   return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
 }
 
 // Reads an opened input into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
+// The size comes from the header, which costs nothing to read; it is checked against the caps
+// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535).
 std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     error = "image has no pixels";
     return std::nullopt;
   }
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+      int64_t(spec.width) * spec.height > kMaxImagePixels) {
+    error = fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
+                        spec.height, kMaxImageSide, kMaxImagePixels);
+    return std::nullopt;
+  }
+  if (spec.nchannels > 16) {
+    error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
+    return std::nullopt;
+  }
   std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data())) {
-    error = input.geterror();
+  bool read = false;
+  {
+    const QuietStderr quiet;
+    read = input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data());
+  }
+  if (!read) {
+    error = one_line(input.geterror());
     return std::nullopt;
   }
   const bool decode = is_integer_format(spec);
@@ -78,7 +172,18 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
   if (!is_supported_output(path))
     throw Error(ErrorKind::usage, fmt::format("{}: output must be .png or .exr", path.string()));
   const bool exr = lower_extension(path) == ".exr";
+  // The last guard for every renderer: a NaN or infinite radiance is a bug upstream, and a file
+  // that hides it (PNG clamps it to black or white) would only move the surprise elsewhere.
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const Rgb& c = image.pixels[i];
+    if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+      throw Error(ErrorKind::output,
+                  fmt::format("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
+                              i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
+                              c.r, c.g, c.b));
+  }
   const fs::path temporary = temporary_beside(path);
+  const TemporaryGuard guard(temporary);
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
@@ -107,9 +212,14 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
 Image read_image(const fs::path& path) {
   if (!fs::exists(path))
     throw Error(ErrorKind::file_missing, fmt::format("{}: no such file", path.string()));
-  auto input = OIIO::ImageInput::open(path.string());
+  std::unique_ptr<OIIO::ImageInput> input;
+  {
+    const QuietStderr quiet;
+    input = OIIO::ImageInput::open(path.string());
+  }
   if (!input)
-    throw Error(ErrorKind::bad_value, fmt::format("{}: not an image: {}", path.string(), OIIO::geterror()));
+    throw Error(ErrorKind::bad_value,
+                fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
   std::optional<Image> image = read_rgb(*input, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
@@ -123,7 +233,11 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
   const bool png = bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P';
   const std::string pseudo_name = png ? "texture.png" : "texture.jpg";
   OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  auto input = OIIO::ImageInput::open(pseudo_name, nullptr, &proxy);
+  std::unique_ptr<OIIO::ImageInput> input;
+  {
+    const QuietStderr quiet;
+    input = OIIO::ImageInput::open(pseudo_name, nullptr, &proxy);
+  }
   if (!input) {
     error = "not a PNG or JPEG image";
     (void)OIIO::geterror();  // clear OpenImageIO's pending message

@@ -1,5 +1,6 @@
 #pragma once
 // Image files through OpenImageIO.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,9 +11,17 @@
 
 namespace luz::io {
 
+// The largest image read (textures, --environment, any read_image): 16384 pixels per side and
+// 4096 x 4096 = 16.8 million pixels in all, about 200 MB of linear RGB floats. Bigger images are
+// refused from their header, before decoding.
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr int64_t kMaxImagePixels = int64_t(4096) * 4096;
+
 // Writes `.exr` as linear float radiance, `.png` as radiance x 2^exposure through the sRGB
 // curve, 8 bit (SCENES.md "Image output"). The file appears whole or not at all: the image is
-// written beside it under a temporary name, then renamed. Throws luz::Error (kind output).
+// written beside it under a temporary name, then renamed (and the temporary removed if SIGINT or
+// SIGTERM arrives meanwhile). An image with a non-finite pixel is refused. Throws luz::Error
+// (kind output).
 void write_image(const Image& image, const std::filesystem::path& path, float exposure);
 
 // Reads any image OpenImageIO knows as linear RGB: 8-bit files are sRGB-decoded, float files

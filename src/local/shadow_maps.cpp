@@ -17,6 +17,7 @@
 #include "gl/functions.h"
 #include "gl/mesh_buffers.h"
 #include "gl/shader.h"
+#include "gl/texture_limits.h"
 
 namespace luz {
 
@@ -157,7 +158,14 @@ void ShadowMaps::allocate(int size, int layers) {
   if (size == size_ && layers == layers_) return;
   if (!texture_) glGenTextures(1, &texture_);
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture_);
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_R32F, size, size, layers, 0, GL_RED, GL_FLOAT, nullptr);
+  if (!gl::allocate_array(GL_R32F, GL_RED, GL_FLOAT, size, layers)) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    const int largest = gl::largest_allocatable_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, size / 2);
+    throw Error(ErrorKind::usage,
+                fmt::format("--shadow-map-size {}: this OpenGL context has no memory for {} shadow-map "
+                            "layers of {}x{} ({}); use --shadow-map-size {} or less", size, layers, size,
+                            size, gl_version_string(), largest));
+  }
   // texelFetch only: the lookup picks one texel, as the CPU twin does.
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -214,6 +222,13 @@ void ShadowMaps::update(const Scene& scene, std::span<const AreaLight> area_ligh
     for (size_t i = begin; i < end; ++i) area_views_.push_back(cube_view(centroid, layers, size));
     layers += 6;
   }
+  // What this context can hold, asked before allocating (a map it cannot hold would only show
+  // as an incomplete framebuffer below).
+  if (const int largest = gl::largest_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, size); largest < size)
+    throw Error(ErrorKind::usage,
+                fmt::format("--shadow-map-size {}: this OpenGL context holds {} shadow-map layers of at "
+                            "most {}x{} ({}); use --shadow-map-size {} or less", size, layers, largest,
+                            largest, gl_version_string(), largest));
   allocate(size, layers);
 
   // The passes: every layer cleared to "nothing in the way", then the scene's depth drawn in.

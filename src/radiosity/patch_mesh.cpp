@@ -251,7 +251,9 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
                                              at(i, j + 1));
             p.mesh = int(m);
             p.triangle = int(t);
-            p.rho = rho;
+            // COLOR_0 at the patch's centroid: (i + 1/3, j + 1/3) / n up, + 2/3 down.
+            const float third = half == 0 ? 1.0f / 3.0f : 2.0f / 3.0f;
+            p.rho = rho * mesh.colour_at(t, glm::vec2(float(i) + third, float(j) + third) / float(n));
             p.emission = exitance;
             // The patch holding this element: the coarse cell of the element's centroid.
             const float cu = (float(i) + (half == 0 ? 1.0f : 2.0f) / 3.0f) / float(n);

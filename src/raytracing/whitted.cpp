@@ -213,9 +213,11 @@ bool Whitted::blocked(const LightsAt& lights, size_t i) {
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {
   const Material& o = *p.material;
+  // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
+  const Rgb kd = o.kd * scene_.meshes[size_t(p.mesh)].colour_at(size_t(p.triangle), p.barycentrics);
   if (!options_.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
       scene_.meshes[size_t(p.mesh)].uvs.empty())
-    return o.kd;
+    return kd;
   // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the
   // base level (the rasteriser's mipmaps only differ where a texel is smaller than a pixel).
   const Texture& tex = scene_.textures[size_t(o.kd_texture)];
@@ -227,7 +229,7 @@ Rgb Whitted::kd_at(const SurfacePoint& p) const {
   const int y0 = wrap(int(fy), tex.height), y1 = wrap(int(fy) + 1, tex.height);
   const Rgb texel = (1 - ax) * (1 - ay) * tex.texel(x0, y0) + ax * (1 - ay) * tex.texel(x1, y0) +
                     (1 - ax) * ay * tex.texel(x0, y1) + ax * ay * tex.texel(x1, y1);
-  return o.kd * texel;
+  return kd * texel;
 }
 
 // ---- [surface] ----------------------------------------------------------------------------------
