@@ -157,10 +157,24 @@ TEST_F(CornellSpheres, TheMirrorShowsTheColourBledRoom) {
   const int ceiling = p.mesh_index("ceiling");
   const Material& white = p.scene.materials[size_t(p.scene.meshes[size_t(ceiling)].material)];
   const float ambient = luminance(p.scene.ambient * white.ka);
+  // The ceiling straight above the lamp sees only the lamp's dark back: the mirror reflects the
+  // rest, so the range is taken outside the lamp's footprint (grown by its own half size).
+  const Mesh& lamp = p.scene.meshes[size_t(p.mesh_index("light"))];
+  glm::vec3 lamp_low(1e30f), lamp_high(-1e30f);
+  for (const glm::vec3& q : lamp.positions) {
+    lamp_low = glm::min(lamp_low, q);
+    lamp_high = glm::max(lamp_high, q);
+  }
+  const glm::vec3 margin = 0.5f * (lamp_high - lamp_low);
+  const auto above_lamp = [&](const glm::vec3& q) {
+    return q.x > lamp_low.x - margin.x && q.x < lamp_high.x + margin.x && q.z > lamp_low.z - margin.z &&
+           q.z < lamp_high.z + margin.z;
+  };
   float lowest = 1e30f, highest = 0.0f;
   for (const Patch& patch : p.mesh.patches)
     if (patch.mesh == ceiling)
       for (const uint32_t v : patch.vertices) {
+        if (above_lamp(p.mesh.vertices[v])) continue;
         lowest = std::min(lowest, luminance(p.diffuse->field().vertex[v]));
         highest = std::max(highest, luminance(p.diffuse->field().vertex[v]));
       }

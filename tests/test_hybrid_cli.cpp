@@ -51,7 +51,7 @@ TEST(HybridCli, TheRadiosityPicturesDisplaySwitchesAreUsageErrors) {
   const auto result = run_luz({"render", scene("cornell_box"), "--model", "radiosity", "--depth", "2",
                                "--out", (dir / "r.png").string()});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(contains(result.output, "only with --model whitted or hybrid")) << result.output;
+  EXPECT_TRUE(contains(result.output, "only with --model whitted, hybrid or path")) << result.output;
 }
 
 TEST(SolversCli, WritesTheCurvesOfTheFourMethodsAndTheirPlot) {

@@ -99,7 +99,9 @@ int main(int argc, char** argv) {
     models_help += fmt::format("  {:<10} [{}] {}\n", m.name, m.key, m.help);
   render->footer(models_help +
                  "A model takes the flags of its groups: slide 19's switches only the local models, the tracer's "
-                 "whitted and hybrid, the solver's radiosity and hybrid (all but --flat-patches and --outlines).");
+                 "whitted and hybrid, --spp and --depth the three tracers (whitted, hybrid, path), the solver's "
+                 "radiosity and hybrid (all but --flat-patches and --outlines). --model A,B or A,B,C,D puts the "
+                 "models side by side.\n");
   render->add_option_function<std::string>("--lang", lang, "Language of the messages and the panes' labels: es or en")
       ->check(CLI::IsMember({"es", "en"}));
   const luz::app::RenderFlags render_flags = luz::app::add_render_flags(*render, settings);

@@ -42,7 +42,7 @@ struct ModelEntry {
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.
   Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
   // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model of
-  // `luz render` only (its key and radio button say so).
+  // `luz render` only (its key says so; the panel has no button for it).
   std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
   bool in_viewer() const { return make_view != nullptr; }
   std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones

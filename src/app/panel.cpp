@@ -120,15 +120,15 @@ void effects_section(LocalOptions& o) {
 }
 
 // ---- [model sections] --------------------------------------------------------------------------
-// The radio buttons of the registry's models, three to a row, then the shown model's section.
+// The radio buttons of the registry's models the viewer shows, three to a row, then the shown
+// model's section. A `luz render` only model has no button: its key says where it is.
 void model_header(ViewerState& state, ModelView& shown) {
   if (!ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) return;
   int column = 0;
   for (const ModelEntry& m : models()) {
+    if (!m.in_viewer()) continue;
     const std::string label = fmt::format("{} [{}]", m.label, m.key);
-    ImGui::BeginDisabled(!m.make_view);  // `luz render` only
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
-    ImGui::EndDisabled();
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
