@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's radiosity model (issue 5): one solve of one scene, stepped on the GL thread.
+// The viewer's radiosity model: one solve of one scene, stepped on the GL thread.
 //
 //   advance()  every frame: the requests (reset, single shots), then, while running, shots until
 //              the frame's time budget (or its number of shots) is spent, as README's "how a

@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's Whitted model (issue 4): the view traced on demand, tile by tile, off the GL
+// The viewer's Whitted model: the view traced on demand, tile by tile, off the GL
 // thread, and shown as the tiles arrive.
 //
 //   start()   the trace runs on a worker thread (rt::WhittedRenderer::render, its tiles on TBB);
