@@ -96,6 +96,15 @@ bool parse_rgb(const std::string& text, Rgb& colour) {
   return true;
 }
 
+const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) {
+  if (settings.camera.empty()) return scene.cameras.front();
+  const int index = scene.find_camera(settings.camera);
+  if (index < 0)
+    throw Error(ErrorKind::usage, fmt::format("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
+                                              camera_list(scene)));
+  return scene.cameras[size_t(index)];
+}
+
 int run_render(const RenderSettings& settings) {
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
@@ -116,14 +125,7 @@ int run_render(const RenderSettings& settings) {
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
     const Scene& scene = loaded.scene;
 
-    int camera_index = 0;
-    if (!settings.camera.empty()) {
-      camera_index = scene.find_camera(settings.camera);
-      if (camera_index < 0)
-        throw Error(ErrorKind::usage, fmt::format("{}: no camera \"{}\" (cameras: {})", settings.scene,
-                                                  settings.camera, camera_list(scene)));
-    }
-    const Camera& camera = scene.cameras[size_t(camera_index)];
+    const Camera& camera = chosen_camera(settings, scene);
     int width = 0, height = 0;
     output_size(settings, camera, width, height);
 

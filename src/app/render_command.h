@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/render_path.h"
+#include "core/scene.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
 #include "raytracing/whitted_options.h"
@@ -46,6 +47,10 @@ bool parse_size(const std::string& text, int& width, int& height);
 bool parse_pixel(const std::string& text, int& x, int& y);
 // Parses "R,G,B" (three finite numbers >= 0); false when malformed.
 bool parse_rgb(const std::string& text, Rgb& colour);
+
+// The camera --camera names (by name or index), else the scene's first; a usage error naming the
+// scene's cameras when there is none of that name.
+const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene);
 
 // Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
 // any message to stderr.

@@ -124,13 +124,7 @@ int run_render_grid(const RenderSettings& settings) {
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
     const Scene& scene = loaded.scene;
-    int camera_index = 0;
-    if (!settings.camera.empty()) {
-      camera_index = scene.find_camera(settings.camera);
-      if (camera_index < 0)
-        throw Error(ErrorKind::usage, trf("{}: no camera \"{}\"", settings.scene, settings.camera));
-    }
-    const Camera& camera = scene.cameras[size_t(camera_index)];
+    const Camera& camera = chosen_camera(settings, scene);
     int width = settings.width, height = settings.height;
     if (width <= 0) {
       height = kDefaultPaneHeight;
