@@ -1,8 +1,11 @@
 #include "gl/texture_limits.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace luz::gl {
+
+int power_of_two_below(int side) { return side > 1 ? int(std::bit_floor(unsigned(side - 1))) : 0; }
 
 int largest_square_array(GLenum internal_format, GLenum format, GLenum type, int layers, int wanted) {
   GLint max_texture = 0, max_layers = 0, max_renderbuffer = 0;
@@ -10,13 +13,17 @@ int largest_square_array(GLenum internal_format, GLenum format, GLenum type, int
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
   if (layers > max_layers) return 0;
-  for (int side = std::min({wanted, int(max_texture), int(max_renderbuffer)}); side >= 1; side /= 2) {
+  const auto fits = [&](int side) {
     glTexImage3D(GL_PROXY_TEXTURE_2D_ARRAY, 0, GLint(internal_format), side, side, layers, 0, format,
                  type, nullptr);
     GLint width = 0;
     glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
-    if (width == side) return side;
-  }
+    return width == side;
+  };
+  const int side = std::min({wanted, int(max_texture), int(max_renderbuffer)});
+  if (side >= 1 && fits(side)) return side;
+  for (int smaller = power_of_two_below(side); smaller >= 1; smaller /= 2)
+    if (fits(smaller)) return smaller;
   return 0;
 }
 
@@ -35,7 +42,8 @@ int largest_allocatable_square_array(GLenum internal_format, GLenum format, GLen
   glGenTextures(1, &scratch);
   glBindTexture(GL_TEXTURE_2D_ARRAY, scratch);
   int side = largest_square_array(internal_format, format, type, layers, wanted);
-  while (side >= 1 && !allocate_array(internal_format, format, type, side, layers)) side /= 2;
+  while (side >= 1 && !allocate_array(internal_format, format, type, side, layers))
+    side = power_of_two_below(side);
   glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(previous));
   glDeleteTextures(1, &scratch);
   return side;

@@ -5,7 +5,7 @@
 
 namespace luz::gl {
 
-// The largest side s <= `wanted` (halving from it) for which an s x s x `layers` 2D array
+// `wanted` itself, or else the largest power of two below it, for which an s x s x `layers` 2D array
 // texture of `internal_format` (with `format`, `type` for the proxy upload) and an s x s
 // renderbuffer fit this context: GL_MAX_TEXTURE_SIZE, GL_MAX_ARRAY_TEXTURE_LAYERS,
 // GL_MAX_RENDERBUFFER_SIZE and the driver's proxy-texture answer (which knows its memory
@@ -17,7 +17,11 @@ int largest_square_array(GLenum internal_format, GLenum format, GLenum type, int
 // yes. Clears earlier errors first.
 bool allocate_array(GLenum internal_format, GLenum format, GLenum type, int side, int layers);
 
-// The largest side s <= `wanted` (halving) that allocate_array really allocates, tried on a
+// The largest power of two below `side` (0 for 1): shadow and item-buffer sizes to suggest when
+// `side` does not fit are powers of two, the sizes GPUs and the slides use.
+int power_of_two_below(int side);
+
+// `wanted`, or else the largest power of two below it, that allocate_array really allocates, tried on a
 // scratch texture that is deleted again: the number to suggest after a failed allocation.
 int largest_allocatable_square_array(GLenum internal_format, GLenum format, GLenum type, int layers,
                                      int wanted);

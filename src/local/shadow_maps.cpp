@@ -160,7 +160,8 @@ void ShadowMaps::allocate(int size, int layers) {
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture_);
   if (!gl::allocate_array(GL_R32F, GL_RED, GL_FLOAT, size, layers)) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    const int largest = gl::largest_allocatable_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, size / 2);
+    const int largest =
+        gl::largest_allocatable_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, gl::power_of_two_below(size));
     throw Error(ErrorKind::usage,
                 fmt::format("--shadow-map-size {}: this OpenGL context has no memory for {} shadow-map "
                             "layers of {}x{} ({}); use --shadow-map-size {} or less", size, layers, size,
