@@ -15,6 +15,7 @@
 
 #include "app/inspector.h"
 #include "app/picking.h"
+#include "gltf_fixture.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
 #include "local/local_terms.h"
@@ -40,14 +41,55 @@ std::string name_of(const ::testing::TestParamInfo<Case>& info) {
                      info.param.effects ? "_effects" : "");
 }
 
+// What a grid of picked pixels found: how many agree, and how many exercised each effect.
+struct Agreement {
+  int checked = 0, failed = 0, blocked = 0, reflecting = 0, fogged = 0, vertex_coloured = 0;
+  std::string first_failures;
+};
+
+Agreement agree_at_grid(const Scene& scene, const LocalOptions& options) {
+  const Camera& camera = scene.cameras.front();
+  constexpr int width = 160, height = 120, step = 5;
+  LocalRenderer renderer(scene);
+  const Image image = renderer.render(camera, width, height, options);
+  const std::optional<ShadowLookup> shadows = renderer.shadow_lookup();
+  EXPECT_EQ(shadows.has_value(), options.shadows.on);
+  float brightest = 0.0f;
+  for (const Rgb& p : image.pixels) brightest = std::max({brightest, p.r, p.g, p.b});
+  const float floor = 1e-4f * brightest;
+
+  app::Picker picker(scene);
+  Agreement a;
+  for (int y = step / 2; y < height; y += step)
+    for (int x = step / 2; x < width; x += step) {
+      const auto pick = picker.pick(camera, width, height, x, y);
+      if (!pick) continue;
+      app::DrawnLookups lookups;
+      lookups.shadows = shadows ? &*shadows : nullptr;
+      lookups.reflection = renderer.reflection_lookup(pick->mesh);
+      const app::InspectorReading reading = app::read_terms(scene, renderer.area_lights(), *pick, options, lookups);
+      for (const LightTerm& t : reading.terms.lights) a.blocked += t.lit && t.S == 0.0f;
+      a.reflecting += reading.terms.reflection != Rgb(0.0f);
+      a.fogged += reading.terms.fog < 1.0f;
+      a.vertex_coloured += reading.vertex_colour != Rgb(1.0f);
+      ++a.checked;
+      for (int ch = 0; ch < 3; ++ch) {
+        const float gpu = image.at(x, y)[ch], cpu = reading.sum[ch];
+        if (std::abs(gpu - cpu) > 0.01f * std::max(gpu, cpu) + floor) {
+          if (a.failed++ < 5)
+            a.first_failures += fmt::format("  pixel ({}, {}) channel {}: GPU {:.6g}, CPU {:.6g}\n", x, y, ch, gpu, cpu);
+          break;
+        }
+      }
+    }
+  return a;
+}
+
 class CpuAndGpuAgree : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CpuAndGpuAgree, AtEveryPickedPixel) {
   const Case& c = GetParam();
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / (c.scene + ".gltf"));
-  const Scene& scene = loaded.scene;
-  const Camera& camera = scene.cameras.front();
-  constexpr int width = 160, height = 120, step = 5;
   LocalOptions options;
   options.shading = c.shading;
   options.blinn = c.blinn;
@@ -58,47 +100,14 @@ TEST_P(CpuAndGpuAgree, AtEveryPickedPixel) {
     options.fog.near = 3.0f;
     options.fog.far = 12.0f;
   }
-  LocalRenderer renderer(scene);
-  const Image image = renderer.render(camera, width, height, options);
-  const std::optional<ShadowLookup> shadows = renderer.shadow_lookup();
-  ASSERT_EQ(shadows.has_value(), c.effects);
-  float brightest = 0.0f;
-  for (const Rgb& p : image.pixels) brightest = std::max({brightest, p.r, p.g, p.b});
-  const float floor = 1e-4f * brightest;
-
-  app::Picker picker(scene);
-  int checked = 0, failed = 0, blocked = 0, reflecting = 0, fogged = 0;
-  std::string first_failures;
-  for (int y = step / 2; y < height; y += step)
-    for (int x = step / 2; x < width; x += step) {
-      const auto pick = picker.pick(camera, width, height, x, y);
-      if (!pick) continue;
-      app::DrawnLookups lookups;
-      lookups.shadows = shadows ? &*shadows : nullptr;
-      lookups.reflection = renderer.reflection_lookup(pick->mesh);
-      const app::InspectorReading reading = app::read_terms(scene, renderer.area_lights(), *pick, options, lookups);
-      if (c.effects) {
-        for (const LightTerm& t : reading.terms.lights) blocked += t.lit && t.S == 0.0f;
-        reflecting += reading.terms.reflection != Rgb(0.0f);
-        fogged += reading.terms.fog < 1.0f;
-      }
-      ++checked;
-      for (int ch = 0; ch < 3; ++ch) {
-        const float gpu = image.at(x, y)[ch], cpu = reading.sum[ch];
-        if (std::abs(gpu - cpu) > 0.01f * std::max(gpu, cpu) + floor) {
-          if (failed++ < 5)
-            first_failures += fmt::format("  pixel ({}, {}) channel {}: GPU {:.6g}, CPU {:.6g}\n", x, y, ch, gpu, cpu);
-          break;
-        }
-      }
-    }
-  EXPECT_GT(checked, 200) << "too few pixels hit the scene";
-  EXPECT_EQ(failed, 0) << failed << " of " << checked << " pixels disagree:\n" << first_failures;
+  const Agreement a = agree_at_grid(loaded.scene, options);
+  EXPECT_GT(a.checked, 200) << "too few pixels hit the scene";
+  EXPECT_EQ(a.failed, 0) << a.failed << " of " << a.checked << " pixels disagree:\n" << a.first_failures;
   if (c.effects) {  // the effects were there to agree on
-    EXPECT_GT(blocked, 20) << "lights blocked (S_i = 0) at the picked pixels";
+    EXPECT_GT(a.blocked, 20) << "lights blocked (S_i = 0) at the picked pixels";
     if (c.scene == "local_effects") {
-      EXPECT_GT(reflecting, 5) << "pixels with a kr Ir term";
-      EXPECT_GT(fogged, 100) << "pixels in fog";
+      EXPECT_GT(a.reflecting, 5) << "pixels with a kr Ir term";
+      EXPECT_GT(a.fogged, 100) << "pixels in fog";
     }
   }
 }
@@ -117,6 +126,39 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, CpuAndGpuAgree,
                                            Case{"local_effects", Shading::flat, false, true},
                                            Case{"whitted", Shading::phong, false, true}),
                          name_of);
+
+// COLOR_0 multiplies kd (SCENES.md) in the inspector as in the shaders, read where each shading
+// model reads it: at the pixel (Phong, Gouraud) or at the centroid (flat). A square with a red,
+// green, blue and white corner fills the picture.
+class VertexColours : public ::testing::TestWithParam<Shading> {};
+
+TEST_P(VertexColours, MultiplyKdInTheInspectorAsInTheShaders) {
+  test::GltfBuilder b;
+  const int material = b.material({{"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}});
+  test::Primitive square;
+  square.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  square.normals.assign(4, glm::vec3(0, 0, 1));
+  square.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  square.indices = {0, 1, 2, 0, 2, 3};
+  square.material = material;
+  b.node({{"mesh", b.mesh({square})}});
+  const nlohmann::json bulb = {{"KHR_lights_punctual", {{"light", b.light({{"type", "point"}, {"intensity", 20}})}}}};
+  b.node({{"extensions", bulb}, {"translation", {0.3, 0.2, 1.5}}});
+  const nlohmann::json lens = {{"yfov", 0.5}, {"znear", 0.1}};
+  b.node({{"camera", b.camera({{"type", "perspective"}, {"perspective", lens}})}, {"translation", {0, 0, 3}}});
+  test::ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  LocalOptions options;
+  options.shading = GetParam();
+  const Agreement a = agree_at_grid(loaded.scene, options);
+  EXPECT_GT(a.checked, 600) << "the square should fill the picture";
+  EXPECT_GT(a.vertex_coloured, a.checked / 2) << "pixels where COLOR_0 is not white";
+  EXPECT_EQ(a.failed, 0) << a.failed << " of " << a.checked << " pixels disagree:\n" << a.first_failures;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryShading, VertexColours,
+                         ::testing::Values(Shading::flat, Shading::gouraud, Shading::phong),
+                         [](const ::testing::TestParamInfo<Shading>& shading) { return to_string(shading.param); });
 
 // A switched-off term is zero in the CPU evaluation as in the shader (and the sum follows).
 TEST(LocalTerms, SwitchedOffTermsAreZero) {

@@ -52,6 +52,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
   // lighting.glsl mirror_direction(): R = reflect(view ray, N).
   auto mirror = [&](const glm::vec3& P, const glm::vec3& N) { return glm::reflect(glm::normalize(P - eye), N); };
   glm::vec2 uv = pick.uv;
+  glm::vec2 barycentric(pick.barycentric.y, pick.barycentric.z);  // where COLOR_0 is read
   // gl_FrontFacing: the triangle's winding is counter-clockwise on screen, i.e. its face normal
   // points to the eye.
   reading.emitting_side = glm::dot(pick.face, eye - pick.P) > 0.0f;
@@ -91,17 +92,20 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       reading.mirror = mirror(middle, N);  // flat.geom: once per triangle
       if (!mesh.uvs.empty())
         uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
+      barycentric = glm::vec2(1.0f / 3.0f);  // flat.geom: COLOR_0 at the centroid
       reading.where = "flat: the formula once, at the triangle's centroid with its face normal";
       break;
     }
   }
   if (options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
     reading.kd_texture = sample_texture(scene.textures[size_t(material.kd_texture)], uv);
+  reading.vertex_colour = mesh.colour_at(size_t(pick.triangle), barycentric);
   // lighting.glsl write_fragment(): + kr Ir, then the fog at this pixel's distance.
   add_reflection_and_fog(reading.terms, material, options, lookups.reflection, reading.mirror,
                          glm::length(pick.P - eye));
   reading.transparent = options.transparency.on && (material.kt.r > 0 || material.kt.g > 0 || material.kt.b > 0);
-  reading.sum = radiance(reading.terms, material, options, reading.kd_texture, reading.emitting_side);
+  reading.sum = radiance(reading.terms, material, options, reading.kd_texture * reading.vertex_colour,
+                         reading.emitting_side);
   return reading;
 }
 
@@ -126,6 +130,7 @@ nlohmann::json to_json(const Scene& scene, const InspectorReading& r) {
           {"I_D", rgb(r.terms.diffuse)},
           {"I_S", rgb(r.terms.specular)},
           {"kd_texture", rgb(r.kd_texture)},
+          {"vertex_colour", rgb(r.vertex_colour)},
           {"Le", rgb(r.emitting_side ? material.emission : Rgb(0.0f))},
           {"lights", lights},
           {"kr_Ir", rgb(r.terms.reflection)},
@@ -195,6 +200,7 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
     row("I_A = Ia ka", r.terms.ambient);
     row("sum I_D", r.terms.diffuse);
     if (r.kd_texture != Rgb(1.0f)) row("kd texture", r.kd_texture);
+    if (r.vertex_colour != Rgb(1.0f)) row("kd vertex colour (COLOR_0)", r.vertex_colour);
     row("sum I_S", r.terms.specular);
     if (r.emitting_side && material.is_emissive()) row("Le", material.emission);
     if (r.terms.reflection != Rgb(0.0f)) row("kr Ir (reflection map)", r.terms.reflection);

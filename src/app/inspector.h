@@ -23,10 +23,11 @@ struct InspectorReading {
   glm::vec3 normal{0.0f};         // the normal the formula used, turned toward the viewer
   TermValues terms;
   Rgb kd_texture{1.0f};           // kd's texture factor at the pixel (1 without a texture)
+  Rgb vertex_colour{1.0f};        // COLOR_0 where the shading model reads it (1 without one)
   bool emitting_side = false;     // the front side of the triangle faces the viewer
   glm::vec3 mirror{0.0f};         // R, the mirror direction the reflection map is read along
   bool transparent = false;       // kt > 0 with transparency on: the GPU adds kt * (pixel behind)
-  Rgb sum{0.0f};                  // I = I_A + I_D * texture + I_S (+ Le) + kr Ir, fogged
+  Rgb sum{0.0f};                  // I = I_A + I_D * texture * COLOR_0 + I_S (+ Le) + kr Ir, fogged
   Rgb gl_pixel{0.0f};             // what the GPU drew at the pixel (linear radiance)
 };
 
