@@ -153,13 +153,13 @@ void SolversView::advance(SolversState& state) {
 // ---- [the plots] -------------------------------------------------------------------------------
 namespace {
 
-// One log-log plot: a value of every method's curve against the form-factor rows used, from 1
-// row to max_rows, a faint line at every decade of both axes.
+// One log-log plot under its title: a value of every method's curve against the form-factor rows
+// used, from 1 row to max_rows, a faint line at every decade of both axes.
 void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec2& min, glm::vec2& max) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float font = ImGui::GetFontSize();
-  const ImVec2 a(origin.x + 3.2f * font, origin.y + 0.2f * font);  // room for the y labels
+  const ImVec2 a(origin.x + 3.2f * font, origin.y + 1.4f * font);  // room for the title and the y labels
   const ImVec2 b(origin.x + size.x - 0.5f * font, origin.y + size.y - 1.3f * font);  // and the x labels
   draw->AddRectFilled(a, b, IM_COL32(20, 20, 24, 255));
   draw->AddRect(a, b, IM_COL32(110, 110, 120, 255));
@@ -205,7 +205,7 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
   }
   draw->PopClipRect();
   const char* title = residual ? "residual |E - (I - ρF) B| / |E|" : "error |B - B*| / |B*|";
-  draw->AddText(ImVec2(b.x - ImGui::CalcTextSize(title).x - 0.4f * font, a.y + 0.2f * font), label, title);
+  draw->AddText(ImVec2(a.x, origin.y), label, title);
   ImGui::Dummy(size);
 }
 
@@ -217,7 +217,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
   if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open,
-                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar)) {
+                    ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -243,18 +243,28 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   if (race_) {
     ImGui::Text("%zu patches, matrix in %.2f s; rows %zu / %zu%s", s.patches, s.matrix_seconds, s.rows, s.max_rows,
                 s.done ? " (done)" : "");
-    // The legend, with where each method has got.
-    for (const Method m : kMethods) {
-      const SolverSample& last = race_->curve(m).back();
-      ImGui::PushStyleColor(ImGuiCol_Text, on_dark(m));
-      ImGui::Text("%-20s", method_label(m));
-      ImGui::PopStyleColor();
-      ImGui::SameLine(11.0f * ImGui::GetFontSize());
-      ImGui::Text("%6zu rows   residual %.1e   error %.1e", last.rows, last.residual, last.error);
+    // The legend, with where each method has got: a table, so it fits half the picture.
+    if (ImGui::BeginTable("legend", 4, ImGuiTableFlags_SizingFixedFit)) {
+      for (const char* heading : {"", "rows", "residual", "error"}) ImGui::TableSetupColumn(heading);
+      ImGui::TableHeadersRow();
+      for (const Method m : kMethods) {
+        const SolverSample& last = race_->curve(m).back();
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(on_dark(m)), "%s", method_label(m));
+        ImGui::TableNextColumn();
+        ImGui::Text("%zu", last.rows);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.1e", last.residual);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.1e", last.error);
+      }
+      ImGui::EndTable();
     }
-    // The two plots share what is left of the window, the caption's three lines kept below.
+    // The two plots share what is left of the window, the axes' line and the caption's three
+    // lines kept below.
     const ImVec2 room = ImGui::GetContentRegionAvail();
-    const float lines = 3.5f * ImGui::GetTextLineHeightWithSpacing();
+    const float lines = 4.5f * ImGui::GetTextLineHeightWithSpacing();
     const ImVec2 size(room.x, std::max(0.5f * (room.y - lines), 8.0f * ImGui::GetFontSize()));
     glm::vec2 min0, max0, min1, max1;
     log_plot(*race_, true, size, min0, max0);
