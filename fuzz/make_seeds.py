@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Writes the glTF fuzzer's seed corpus to fuzz/seeds/: small files (a few hundred bytes to 2 kB)
+that between them use every part of the format the loader reads, so that libFuzzer's mutations
+start from inputs that reach deep into it (accessors, sparse accessors, materials, textures with
+KHR_texture_transform, vertex colours, the three light types, cameras, node transforms, GLB).
+Small seeds keep each execution short: 10^6 of them fit in an hour.
+  fuzz/make_seeds.py        (rewrites fuzz/seeds/)
+"""
+import base64
+import json
+import pathlib
+import struct
+import zlib
+
+OUT = pathlib.Path(__file__).resolve().parent / "seeds"
+
+
+def png(width, height, rgb):
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    rows = b"".join(b"\0" + bytes(rgb[3 * width * y:3 * width * (y + 1)]) for y in range(height))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+def data_uri(mime, data):
+    return f"data:{mime};base64," + base64.b64encode(data).decode()
+
+
+class Doc:
+    def __init__(self):
+        self.bin = bytearray()
+        self.gltf = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": []}], "nodes": [],
+                     "meshes": [], "accessors": [], "bufferViews": [], "buffers": []}
+
+    def view(self, data):
+        while len(self.bin) % 4:
+            self.bin += b"\0"
+        self.gltf["bufferViews"].append({"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data)})
+        self.bin += data
+        return len(self.gltf["bufferViews"]) - 1
+
+    def accessor(self, values, kind, component=5126, **extra):
+        fmt = {5126: "f", 5125: "I", 5123: "H", 5121: "B"}[component]
+        flat = [x for v in values for x in (v if isinstance(v, (list, tuple)) else [v])]
+        accessor = {"bufferView": self.view(struct.pack(f"<{len(flat)}{fmt}", *flat)), "componentType": component,
+                    "count": len(values), "type": kind, **extra}
+        if kind == "VEC3" and component == 5126:
+            accessor["min"] = [min(v[i] for v in values) for i in range(3)]
+            accessor["max"] = [max(v[i] for v in values) for i in range(3)]
+        self.gltf["accessors"].append(accessor)
+        return len(self.gltf["accessors"]) - 1
+
+    def node(self, node, root=True):
+        self.gltf["nodes"].append(node)
+        if root:
+            self.gltf["scenes"][0]["nodes"].append(len(self.gltf["nodes"]) - 1)
+        return len(self.gltf["nodes"]) - 1
+
+    def text(self):
+        self.gltf["buffers"] = [{"byteLength": len(self.bin), "uri": data_uri("application/octet-stream", bytes(self.bin))}]
+        return json.dumps(self.gltf, separators=(",", ":"))
+
+    def glb(self):
+        self.gltf["buffers"] = [{"byteLength": len(self.bin)}]
+        text = json.dumps(self.gltf, separators=(",", ":")).encode()
+        text += b" " * (-len(text) % 4)
+        binary = bytes(self.bin) + b"\0" * (-len(self.bin) % 4)
+        body = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(binary), b"BIN\0") + binary
+        return struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+
+
+def square(doc, material, colours=False, uvs=False):
+    attributes = {"POSITION": doc.accessor([(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], "VEC3"),
+                  "NORMAL": doc.accessor([(0, 0, 1)] * 4, "VEC3")}
+    if colours:
+        attributes["COLOR_0"] = doc.accessor([(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255,) * 4],
+                                             "VEC4", 5121, normalized=True)
+    if uvs:
+        attributes["TEXCOORD_0"] = doc.accessor([(0, 1), (1, 1), (1, 0), (0, 0)], "VEC2")
+    indices = doc.accessor([0, 1, 2, 0, 2, 3], "SCALAR", 5123)
+    doc.gltf["meshes"].append({"primitives": [{"attributes": attributes, "indices": indices, "material": material}]})
+    return len(doc.gltf["meshes"]) - 1
+
+
+def lit_textured():
+    doc = Doc()
+    texture = png(2, 2, [255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255])
+    doc.gltf["images"] = [{"uri": data_uri("image/png", texture)}]
+    doc.gltf["samplers"] = [{"magFilter": 9729, "wrapS": 10497}]
+    doc.gltf["textures"] = [{"source": 0, "sampler": 0}]
+    doc.gltf["materials"] = [{"name": "checker", "pbrMetallicRoughness": {
+        "baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0, "roughnessFactor": 0.4,
+        "baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"scale": [2, 2], "offset": [0.5, 0]}}}}}]
+    doc.gltf["extensionsUsed"] = ["KHR_lights_punctual", "KHR_texture_transform"]
+    doc.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "point", "intensity": 20, "color": [1, 0.9, 0.8], "range": 10},
+        {"type": "spot", "intensity": 40, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},
+        {"type": "directional", "intensity": 2}]}}
+    doc.gltf["cameras"] = [{"type": "perspective", "name": "eye", "perspective": {"yfov": 0.7, "znear": 0.1, "zfar": 50, "aspectRatio": 1.5}}]
+    mesh = square(doc, 0, colours=True, uvs=True)
+    child = doc.node({"mesh": mesh, "rotation": [0, 0.38, 0, 0.92], "scale": [1, 2, 1]}, root=False)
+    doc.node({"name": "group", "translation": [0, 0.5, 0], "children": [child]})
+    for light, at in ((0, [0.5, 0.5, 2]), (1, [0, 2, 2]), (2, [0, 5, 0])):
+        doc.node({"translation": at, "rotation": [-0.38, 0, 0, 0.92], "extensions": {"KHR_lights_punctual": {"light": light}}})
+    doc.node({"camera": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 4, 1]})
+    return doc
+
+
+def emissive_sparse():
+    doc = Doc()
+    doc.gltf["materials"] = [
+        {"name": "lamp", "emissiveFactor": [1, 1, 1], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 5}}},
+        {"name": "glass", "pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_ior": {"ior": 1.5}}}]
+    doc.gltf["extensionsUsed"] = ["KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior"]
+    lamp = square(doc, 0)
+    base = square(doc, 1)
+    # The second square's positions moved by a sparse accessor (two of its corners).
+    positions = doc.gltf["meshes"][base]["primitives"][0]["attributes"]["POSITION"]
+    moved = doc.accessor([(-1, -1, 1), (1, -1, 1)], "VEC3")
+    doc.gltf["accessors"][positions]["sparse"] = {
+        "count": 2, "indices": {"bufferView": doc.view(struct.pack("<2H", 0, 1)), "componentType": 5123},
+        "values": {"bufferView": doc.gltf["accessors"][moved]["bufferView"]}}
+    doc.node({"mesh": lamp, "translation": [0, 3, 0], "rotation": [0.71, 0, 0, 0.71]})
+    doc.node({"mesh": base})
+    return doc
+
+
+def main():
+    OUT.mkdir(exist_ok=True)
+    (OUT / "lit_textured.gltf").write_text(lit_textured().text())
+    (OUT / "lit_textured.glb").write_bytes(lit_textured().glb())
+    (OUT / "emissive_sparse.gltf").write_text(emissive_sparse().text())
+    for path in sorted(OUT.iterdir()):
+        print(f"{path}: {path.stat().st_size} bytes")
+
+
+if __name__ == "__main__":
+    main()
