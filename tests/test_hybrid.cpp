@@ -47,8 +47,7 @@ struct Pictures {
   Image radiosity, hybrid, whitted;
   std::vector<int> mesh_at;  // the mesh each pixel centre's primary ray hits (-1: none)
   std::unique_ptr<hybrid::RadiosityDiffuse> diffuse;
-  std::unique_ptr<rt::WhittedRenderer> tracer;
-  rt::WhittedOptions hybrid_options;
+  std::unique_ptr<rt::WhittedRenderer> tracer, hybrid_tracer;  // Whitted's; with the diffuse source
 
   Pictures(const std::string& name, const RadiosityOptions& options) {
     scene = io::load_gltf(test::scene_dir() / (name + ".gltf")).scene;
@@ -62,8 +61,9 @@ struct Pictures {
 
     diffuse = std::make_unique<hybrid::RadiosityDiffuse>(mesh, RadianceField::of(solver));
     tracer = std::make_unique<rt::WhittedRenderer>(scene);
-    hybrid_options = hybrid::hybrid_options(rt::WhittedOptions{}, *diffuse);
-    hybrid = tracer->render(camera, kSize, kSize, hybrid_options);
+    hybrid_tracer = std::make_unique<rt::WhittedRenderer>(scene);
+    hybrid_tracer->set_diffuse_source(diffuse.get());
+    hybrid = hybrid_tracer->render(camera, kSize, kSize, rt::WhittedOptions{});
     whitted = tracer->render(camera, kSize, kSize, rt::WhittedOptions{});
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x)
@@ -145,8 +145,8 @@ TEST_F(CornellSpheres, TheMirrorShowsTheColourBledRoom) {
   const int mirror = p.mesh_index("mirror_sphere");
   // What the mirror's reflected ray hits and brings back (its radiance, before kr), from the
   // pixel's ray tree in each model.
-  const auto reflected = [&](int x, int y, const rt::WhittedOptions& options) {
-    const rt::RayTree tree = p.tracer->trace_pixel(camera, kSize, kSize, x, y, options);
+  const auto reflected = [&](int x, int y, rt::WhittedRenderer& tracer) {
+    const rt::RayTree tree = tracer.trace_pixel(camera, kSize, kSize, x, y, rt::WhittedOptions{});
     for (const rt::RayTreeNode& node : tree.nodes)
       if (node.parent == 0 && node.kind == rt::RayKind::reflected && node.hit) return node;
     return rt::RayTreeNode{};
@@ -183,7 +183,7 @@ TEST_F(CornellSpheres, TheMirrorShowsTheColourBledRoom) {
   int red_seen = 0, ceiling_seen = 0;
   double ceiling_hybrid = 0.0;
   for (const auto& [x, y] : p.interior_pixels(mirror)) {
-    const rt::RayTreeNode hybrid = reflected(x, y, p.hybrid_options);
+    const rt::RayTreeNode hybrid = reflected(x, y, *p.hybrid_tracer);
     if (hybrid.mesh == "left_wall_red") {
       ++red_seen;
       EXPECT_GT(p.hybrid.at(x, y).r, 3.0f * p.hybrid.at(x, y).g)
@@ -194,7 +194,7 @@ TEST_F(CornellSpheres, TheMirrorShowsTheColourBledRoom) {
       ceiling_hybrid += double(seen);
       EXPECT_GE(seen, lowest * (1.0f - 1e-5f)) << "pixel " << x << "," << y;
       EXPECT_LE(seen, highest * (1.0f + 1e-5f)) << "pixel " << x << "," << y;
-      EXPECT_NEAR(luminance(reflected(x, y, rt::WhittedOptions{}).radiance), ambient, 1e-6f)
+      EXPECT_NEAR(luminance(reflected(x, y, *p.tracer).radiance), ambient, 1e-6f)
           << "pixel " << x << "," << y;
     }
   }
@@ -216,8 +216,7 @@ TEST_F(CornellSpheres, TheHighlightsAreWhittedsHighlights) {
   rt::WhittedOptions no_highlight;
   no_highlight.specular = false;
   const Image whitted_dull = p.tracer->render(camera, kSize, kSize, no_highlight);
-  const Image hybrid_dull =
-      p.tracer->render(camera, kSize, kSize, hybrid::hybrid_options(no_highlight, *p.diffuse));
+  const Image hybrid_dull = p.hybrid_tracer->render(camera, kSize, kSize, no_highlight);
   const auto highlight = [](const Image& shiny, const Image& dull, int x, int y) {
     return luminance(shiny.at(x, y)) - luminance(dull.at(x, y));
   };
@@ -236,7 +235,7 @@ TEST_F(CornellSpheres, TheHighlightsAreWhittedsHighlights) {
   EXPECT_NEAR(highlight(p.hybrid, hybrid_dull, hx, hy), brightest, rounding);
 
   // The closed form at the primary hit, from the ray tree's hit point, normal and shadow rays.
-  const rt::RayTree tree = p.tracer->trace_pixel(camera, kSize, kSize, hx, hy, p.hybrid_options);
+  const rt::RayTree tree = p.hybrid_tracer->trace_pixel(camera, kSize, kSize, hx, hy, rt::WhittedOptions{});
   const rt::RayTreeNode& primary = tree.nodes[0];
   ASSERT_EQ(primary.mesh, "mirror_sphere");
   const Material& mirror = p.scene.materials[size_t(p.scene.meshes[size_t(p.mesh_index("mirror_sphere"))].material)];

@@ -46,7 +46,8 @@ TEST(PathVsRadiosity, CornellBoxMeshMeansAgreeWithinTheDiscretisationError) {
   while (solver.step()) {}
   const hybrid::RadiosityDiffuse diffuse(mesh, RadianceField::of(solver));
   rt::WhittedRenderer tracer(scene);
-  rt::WhittedOptions hybrid_options = hybrid::hybrid_options(rt::WhittedOptions{}, diffuse);
+  tracer.set_diffuse_source(&diffuse);
+  rt::WhittedOptions hybrid_options;
   hybrid_options.max_depth = 1;  // B/pi at the primary hit, nothing else
   const Image reference = tracer.render(camera, kSize, kSize, hybrid_options);
 

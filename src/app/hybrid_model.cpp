@@ -13,6 +13,7 @@ HybridModel::HybridModel(ViewerServices& viewer, RadiosityModel& radiosity)
   // The radiosity solution goes (a remesh, an edited Le): first the trace that reads it.
   radiosity_.on_drop([this] {
     cancel_trace();
+    set_diffuse_source(nullptr);
     diffuse_.reset();
   });
 }
@@ -47,14 +48,14 @@ std::optional<rt::WhittedOptions> HybridModel::options_for_trace(std::string& wh
   if (progress().phase != TracePhase::tracing || !diffuse_) {
     if (diffuse_) diffuse_->update(RadianceField::of(solution->solver()));
     else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(solution->mesh(), RadianceField::of(solution->solver()));
+    set_diffuse_source(diffuse_.get());
   }
   return current_options();
 }
 
 rt::WhittedOptions HybridModel::current_options() const {
   const ViewerState& state = viewer_.state();
-  const rt::WhittedOptions whitted = tracer_options(state.whitted, state.local);
-  return diffuse_ ? hybrid::hybrid_options(whitted, *diffuse_) : whitted;
+  return tracer_options(state.whitted, state.local);
 }
 
 std::string HybridModel::hint() const {

@@ -71,9 +71,9 @@ Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int
       throw Error(ErrorKind::usage, fmt::format("--ray-tree {},{}: outside the {}x{} image", x, y,
                                                 width, height));
   }
-  rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
-  options.diffuse_source = diffuse;
+  const rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
   rt::WhittedRenderer tracer(scene);
+  tracer.set_diffuse_source(diffuse);
   ProgressBar bar(!settings.quiet && isatty(STDERR_FILENO), settings.model);
   Rendered result;
   result.image = tracer.render(camera, width, height, options,

@@ -21,6 +21,10 @@ WhittedView& TracedModel::tracer() {
   return *tracer_;
 }
 
+void TracedModel::set_diffuse_source(const rt::DiffuseSource* source) {
+  if (tracer_ || source) tracer().set_diffuse_source(source);
+}
+
 void TracedModel::scene_changed() {
   tracer_.reset();  // cancels a trace; the tree below belongs to the old scene too
   ray_tree_.reset();

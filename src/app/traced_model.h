@@ -65,6 +65,8 @@ protected:
   virtual bool must_cancel() const { return false; }
   // A short hint over the picture while it is not traced.
   virtual std::string hint() const = 0;
+  // The hybrid's diffuse part for the traces to come (nullptr: Whitted's); not while tracing.
+  void set_diffuse_source(const rt::DiffuseSource* source);
 
   ViewerServices& viewer_;
 

@@ -59,6 +59,9 @@ public:
   // GL thread, once a frame: uploads the finished tiles, joins a finished worker.
   void update();
 
+  // The hybrid's diffuse part (rt::WhittedRenderer::set_diffuse_source); not while tracing.
+  void set_diffuse_source(const rt::DiffuseSource* source) { tracer_.set_diffuse_source(source); }
+
   TracePhase phase() const { return phase_; }
   bool cancelled() const { return cancelled_; }  // the last trace was cancelled before its end
   bool showing() const { return phase_ != TracePhase::raster; }

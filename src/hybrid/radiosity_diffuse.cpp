@@ -21,9 +21,4 @@ Rgb RadiosityDiffuse::diffuse_radiance(int mesh, int triangle, glm::vec2 barycen
   return field_.at(mesh_, mesh, triangle, barycentrics);
 }
 
-rt::WhittedOptions hybrid_options(rt::WhittedOptions options, const rt::DiffuseSource& source) {
-  options.diffuse_source = &source;
-  return options;
-}
-
 }  // namespace luz::hybrid

@@ -12,14 +12,16 @@
 //   while (solver.step()) {}                      // or the viewer's solution, converged or not
 //   RadiosityDiffuse diffuse(mesh, RadianceField::of(solver));      // ... to here; no GL below
 //   WhittedRenderer tracer(scene);
-//   Image image = tracer.render(camera, w, h, hybrid_options(whitted_options, diffuse), ...);
+//   tracer.set_diffuse_source(&diffuse);
+//   Image image = tracer.render(camera, w, h, whitted_options, ...);
 //
-// The same WhittedRenderer serves both models, so the viewer's tiles, progress, cancel and
-// ray-tree inspection work for the hybrid unchanged.
+// With the source set, the ambient and emission switches no longer apply (radiosity holds both);
+// the diffuse switch turns radiosity's part off and leaves the rays' part. The renderer is
+// Whitted's, so the viewer's tiles, progress, cancel and ray-tree inspection work for the hybrid
+// unchanged.
 #include "radiosity/patch_mesh.h"
 #include "radiosity/vertex_colours.h"
 #include "raytracing/diffuse_source.h"
-#include "raytracing/whitted_options.h"
 
 namespace luz::hybrid {
 
@@ -38,10 +40,5 @@ private:
   const PatchMesh& mesh_;
   RadianceField field_;
 };
-
-// The Whitted options of a hybrid render: `options` with the diffuse part taken from `source`
-// (which must outlive the render). The ambient and emission switches no longer apply (radiosity
-// holds both); the diffuse switch turns radiosity's part off and leaves the rays' part.
-rt::WhittedOptions hybrid_options(rt::WhittedOptions options, const rt::DiffuseSource& source);
 
 }  // namespace luz::hybrid

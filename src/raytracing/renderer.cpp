@@ -96,7 +96,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
                                   std::vector<RecordedRay>* log, RayTree* tree) {
   const Intersector& hits_of = intersector(options);
   const PrimaryRays camera_rays(camera, width, height);
-  Whitted whitted(scene_, hits_of, options, counters);
+  Whitted whitted(scene_, hits_of, options, counters, diffuse_);
   whitted.log_rays(log);
   whitted.record_tree(tree);
 

@@ -24,6 +24,7 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "raytracing/counters.h"
+#include "raytracing/diffuse_source.h"
 #include "raytracing/intersector.h"
 #include "raytracing/ray_tree.h"
 #include "raytracing/tiles.h"
@@ -52,6 +53,13 @@ public:
 
   // Rebuilds the intersectors from the scene's current geometry.
   void scene_changed();
+
+  // The hybrid model (slides 41-43): with a source set, the diffuse part of every hit (primary
+  // and secondary) is its radiance (radiosity's B/pi) instead of Ia*ka + sum S_i IL_i kd
+  // cos(theta) + Le, and rays add only the view-dependent part: highlights, kr*Ir and kt*It
+  // (see Whitted::color). Not owned; it must outlive the renders that use it, and it may not be
+  // changed while a render() runs. nullptr (the default): Whitted's model.
+  void set_diffuse_source(const DiffuseSource* source) { diffuse_ = source; }
 
   // Renders the view, tiles in parallel. When `cancel` becomes true the tiles not yet started are
   // skipped and the image comes back with them black. Same scene, camera, size and options: the
@@ -86,6 +94,7 @@ private:
   std::unique_ptr<Intersector> brute_force_;  // built when first asked for
   std::mutex brute_force_mutex_;
   Counters counters_;
+  const DiffuseSource* diffuse_ = nullptr;
   bool keep_rays_ = false;
   std::vector<RecordedRay> rays_;
 };

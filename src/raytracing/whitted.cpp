@@ -34,8 +34,8 @@ glm::vec3 keep_on_side(const glm::vec3& direction, const glm::vec3& n) {
 }  // namespace
 
 Whitted::Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
-                 Counters& counters)
-    : scene_(scene), intersector_(intersector), options_(options), counters_(counters) {}
+                 Counters& counters, const DiffuseSource* diffuse)
+    : scene_(scene), intersector_(intersector), options_(options), counters_(counters), diffuse_(diffuse) {}
 
 // ---- [Trazar] -----------------------------------------------------------------------------------
 Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const StreamedAnswers* streamed) {
@@ -57,14 +57,14 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const St
 
 // ---- [Color] ------------------------------------------------------------------------------------
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
-// Hybrid (options_.diffuse_source set):
+// Hybrid (a diffuse source given):
 // I = B/pi (radiosity, interpolated)  + sum_i S_i * IL_i * ks*cos^n(alpha)  + kr*Ir + kt*It
 Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   const Material& o = *p.material;
   const glm::vec3 V = -ray.direction;
 
   Rgb color(0.0f);
-  if (!options_.diffuse_source) {
+  if (!diffuse_) {
     // "color := color ambiental"
     if (options_.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
@@ -78,7 +78,7 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
     // draws it black. The rest below is view-dependent and comes from rays: the lights add only
     // their highlights IL ks cos^n(alpha) (add_light leaves kd out), then kr*Ir and kt*It, whose
     // hits are shaded by this same rule.
-    color = options_.diffuse_source->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
+    color = diffuse_->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
   }
   // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's term.
   const LightsAt lights = lights_at(p, V);
@@ -170,7 +170,7 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   const Material& o = *p.material;
   Rgb term(0.0f);
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
-  if (options_.diffuse && !options_.diffuse_source) term += IL * kd_at(p) * cos_theta;
+  if (options_.diffuse && !diffuse_) term += IL * kd_at(p) * cos_theta;
   if (options_.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
     const float cos_alpha = options_.blinn

@@ -75,8 +75,10 @@ struct LightsAt {
 
 class Whitted {
 public:
+  // `diffuse`: the hybrid's diffuse part (see WhittedRenderer::set_diffuse_source); nullptr:
+  // Whitted's own local terms.
   Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
-          Counters& counters);
+          Counters& counters, const DiffuseSource* diffuse = nullptr);
 
   // Trazar(r, d): the radiance arriving along `ray`. `weight` is what the caller will multiply
   // the result by (kr, kt, 1/spp); it is only written into the ray tree. `streamed`: the
@@ -117,6 +119,7 @@ private:
   const Intersector& intersector_;
   const WhittedOptions& options_;
   Counters& counters_;
+  const DiffuseSource* diffuse_;
   Random random_{0};
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples
   std::vector<LightSample> lights_;      // scratch for Color()'s light samples

@@ -3,8 +3,6 @@
 // panel edits it, `luz render --model whitted` fills it from flags, tests construct it.
 namespace luz::rt {
 
-class DiffuseSource;
-
 enum class Sampling {
   stratified,  // spp samples per pixel on a sqrt(spp) x sqrt(spp) grid, jittered (1: the centre)
   adaptive,    // Whitted 1980: rays at the pixel's corners, squares subdivided where they differ
@@ -36,11 +34,6 @@ struct WhittedOptions {
 
   int tile_size = 16;       // pixels per side of a tile, the unit of parallel work and progress
 
-  // The hybrid model (slides 41-43): when set, the diffuse part of every hit (primary and
-  // secondary) is this source's radiance (radiosity's B/pi) instead of Ia*ka + sum S_i IL_i kd
-  // cos(theta) + Le, and rays add only the view-dependent part: highlights, kr*Ir and kt*It
-  // (see Whitted::color). Not owned; it must outlive the renders that use it. nullptr: Whitted.
-  const DiffuseSource* diffuse_source = nullptr;
   // The viewer tells a stale picture by it (options edited since the trace started).
   bool operator==(const WhittedOptions&) const = default;
 };
