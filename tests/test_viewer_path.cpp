@@ -10,8 +10,8 @@
 //   back through the same encoder as the PNG;
 // - the difference view's figures against `luz compare`'s printed ones: half a unit of the last
 //   digit printed (the same floats go into the same function: only the printing rounds);
-// - its heat map against `luz compare --heatmap`'s: none (the same colours, and the scene's
-//   exposure is 0, so the display pass multiplies by 1);
+// - its heat map against `luz compare --heatmap`'s: none (the same colours; the script sets the
+//   exposure to 1 EV there, and the view divides by the 2 the display pass multiplies by);
 // - the sign: every pixel the test finds at least 40% darker (or brighter) than the reference,
 //   with its own luminance, is blue (or red) on screen.
 #include <cmath>
