@@ -76,6 +76,7 @@ PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) co
   rt::PathOptions o = options;
   o.spp = 0;
   o.max_depth = rt::max_depth_of(o);
+  o.textures = viewer_.state().local.textures;  // the panel's T switch, as --no-textures
   return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
 }
 
@@ -102,8 +103,7 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
   pause_ = false;
   finished_ = false;
   running_ = true;
-  rt::PathOptions o = options;
-  o.textures = viewer_.state().local.textures;
+  const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
   target_ = std::max(1, options.spp);
   // GL stays on this thread; the worker only traces and copies pixels (DESIGN.md "Threads").
   worker_ = std::jthread([this, camera, o] {
