@@ -211,11 +211,12 @@ void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("path hint", nullptr, hint_window_flags());
   const int target = std::max(1, options.spp);
-  ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(8.0f * ImGui::GetFontSize(), 0.0f), "");
+  ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
   ImGui::SameLine();
-  const std::string text =
-      running_ ? trf("{} / {} spp, noise {:.2f}%  (moving the camera restarts)", shown_.spp, target, 100.0 * shown_.noise)
-               : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
+  // Short: it sits over the picture's top centre, however narrow the picture is.
+  const std::string text = shown_.spp == 0 ? std::string(tr("(first pass)"))
+                           : running_      ? trf("{} / {} spp, noise {:.2f}%", shown_.spp, target, 100.0 * shown_.noise)
+                                           : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
   ImGui::TextUnformatted(text.c_str());
   corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
   ImGui::End();
