@@ -7,6 +7,7 @@
 
 #include "app/hybrid_model.h"
 #include "app/local_model.h"
+#include "app/path_model.h"
 #include "app/radiosity_command.h"
 #include "app/radiosity_model.h"
 #include "app/render_flags.h"
@@ -68,8 +69,9 @@ const ModelEntry table[] = {
        return std::make_unique<HybridModel>(v, static_cast<RadiosityModel&>(v.view("radiosity")));
      },
      {}},
-    {"path", "path tracer", 7, "path tracing of slide 14's equation, the reference (headless: luz render --model path)",
-     path_flags, render_path_model, nullptr, {}},
+    {"path", "path tracer", 7, "path tracing of slide 14's equation, the reference (refines while the view stays)",
+     path_flags, render_path_model,
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs()},
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <glm/trigonometric.hpp>
 #include <imgui.h>
 
+#include "app/difference_view.h"
 #include "app/model_registry.h"
 #include "app/options_tables.h"
 
@@ -131,7 +132,7 @@ void model_header(ViewerState& state, ModelView& shown) {
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
     if (++column % 3 != 0) ImGui::SameLine();
   }
-  if (column % 3 != 0) ImGui::NewLine();
+  difference_panel(state);  // on the radio buttons' last row when it has room
   shown.panel();
 }
 

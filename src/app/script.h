@@ -33,6 +33,12 @@
 //   wait-shots N                  run the solver and pause at exactly N shots (or when it is done)
 //   dump-patch FILE.json          the clicked patch (E, rho, area, radiosity, unshot, B, B/pi)
 //   dump-radiosity FILE.json      shots, unshot fraction, patches, where the plot is, ...
+//   path spp N|depth N|seed S|restart   the path tracer's target, depth, seed (model 7)
+//   wait-path [N]                 until N samples per pixel (the target) are on screen, or in
+//                                 the difference view's reference
+//   dump-path FILE.json           spp, target, noise, size, restarts, ...
+//   difference on|off             the model shown against the path tracer, as a heat map
+//   dump-difference FILE.json     its figures (those `luz compare` prints)
 //   solvers open|close|run|pause|reset | solvers budget MS | solvers patches N   slide 36's window
 //   wait-solver-rows N            run slide 36's methods until each has used N rows
 //   dump-solvers FILE.json        their curves

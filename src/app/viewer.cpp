@@ -26,6 +26,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/difference_view.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "app/ui_glyphs.h"
@@ -524,7 +525,8 @@ bool Viewer::busy() const {
   // Only the view shown works (a hidden one has stopped): its requests are what may be pending.
   const auto shown_view = views_.find(model_->name);
   const bool view_busy = shown_view != views_.end() && shown_view->second->busy();
-  return scripted_click_frames_ > 0 || view_busy || solving_system || idle_until_.has_value();
+  const bool reference_busy = state_.difference.on && state_.difference.waiting;  // the difference view's
+  return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value();
 }
 
 void Viewer::idle(double seconds) {
@@ -562,6 +564,7 @@ void Viewer::draw_picture(const Layout& l) {
   shown_view.advance(camera, v);
   picture_->bind();
   shown_view.draw(camera, v, *picture_);
+  draw_difference(*this, *model_, camera, v, *picture_);  // the heat map instead, when it is on
 
   // The display pass: radiance -> exposure -> sRGB, pixel for pixel into the viewport.
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -596,6 +599,7 @@ void Viewer::draw_windows(const Layout& l) {
     solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w);
   }
   shown().windows(l.view, corners);
+  difference_windows(state_, l.view, corners);
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
@@ -685,6 +689,7 @@ bool Viewer::needs_frames() const {
   const SolversState& s = state_.solvers;
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
+  if (state_.difference.on && state_.difference.refining) return true;  // its reference refines
   const auto shown_view = views_.find(model_->name);
   return shown_view != views_.end() && shown_view->second->animating();
 }

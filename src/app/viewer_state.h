@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "app/difference_state.h"
 #include "app/radiosity_state.h"
 #include "app/solvers_state.h"
 #include "local/local_options.h"
@@ -60,6 +61,10 @@ struct ViewerState {
   // Slide 36 (the J window): the system solved by Jacobi, Gauss-Seidel, Southwell and shooting
   // side by side, on a coarse mesh of its own (solvers_state.h).
   SolversState solvers;
+
+  // The difference view: the model shown against the path tracer's reference of the same view
+  // (difference_view.h), its switch and its latest figures.
+  DifferenceState difference;
 
   bool show_panel = true;
   bool show_help = false;
