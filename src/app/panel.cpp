@@ -14,6 +14,7 @@
 
 #include "app/model_registry.h"
 #include "app/options_tables.h"
+#include "app/panes.h"
 
 namespace luz::app {
 namespace {
@@ -132,6 +133,7 @@ void model_header(ViewerState& state, ModelView& shown) {
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
+  panes_section(state);
   shown.panel();
 }
 

@@ -61,6 +61,11 @@ struct ViewerState {
   // side by side, on a coarse mesh of its own (solvers_state.h).
   SolversState solvers;
 
+  // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
+  // `model`); the panel asks for another list through panes_request, done between frames.
+  std::vector<std::string> panes;
+  std::optional<std::vector<std::string>> panes_request;
+
   bool show_panel = true;
   bool show_help = false;
   bool show_inspector = true;
