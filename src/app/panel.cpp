@@ -133,7 +133,6 @@ void model_header(ViewerState& state, ModelView& shown) {
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
-  panes_section(state);
   shown.panel();
 }
 
@@ -312,6 +311,7 @@ void draw_panel(ViewerState& state, ModelView& shown, float width, float height)
   lights_header(state);
   material_header(state);
   scene_header(state);
+  panes_section(state);  // last: the sections above keep their places
   ImGui::PopItemWidth();
   ImGui::End();
 }

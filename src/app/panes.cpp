@@ -136,7 +136,7 @@ bool flowing_button(const char* label, bool first) {
 }  // namespace
 
 void panes_section(ViewerState& state) {
-  if (!ImGui::TreeNodeEx(tr("Side by side (slide 44)"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Side by side (slide 44)"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const std::vector<std::string> shown = state.panes.empty() ? std::vector<std::string>{state.model} : state.panes;
   int column = 0;
   for (const ModelEntry& m : models()) {
@@ -167,7 +167,6 @@ void panes_section(ViewerState& state) {
   ImGui::BeginDisabled(state.panes.empty());
   if (flowing_button(tr("One picture"), first)) state.panes_request = std::vector<std::string>{state.model};
   ImGui::EndDisabled();
-  ImGui::TreePop();
 }
 
 // ---- the script's verbs --------------------------------------------------------------------------

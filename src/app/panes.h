@@ -72,8 +72,9 @@ struct PixelRect {
 };
 PixelRect screenshot_label_box(const std::string& model, glm::ivec2 pane_pixels);
 
-// The panel's "Side by side" section under the model radio buttons: a checkbox per model, the
-// lecture's two comparisons and "One picture"; it asks through state.panes_request.
+// The panel's "Side by side" section, its last (the sections above keep their places): a
+// checkbox per model, the lecture's two comparisons and "One picture"; it asks through
+// state.panes_request.
 void panes_section(ViewerState& state);
 
 // The script's `panes MODEL[,MODEL...]` / `panes off` and `dump-panes FILE.json`, rows of the
