@@ -72,7 +72,11 @@ void LocalModel::click(const Camera& camera, const Viewport& viewport, glm::ivec
   state.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
-void LocalModel::panel() { local_section(viewer_.state()); }
+// Side by side, each local pane sets the shading as it draws: the panel speaks of this one's.
+void LocalModel::panel() {
+  viewer_.state().local.shading = shading_;
+  local_section(viewer_.state());
+}
 
 void LocalModel::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();

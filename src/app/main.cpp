@@ -15,6 +15,7 @@
 #include "app/i18n.h"
 #include "app/lesson.h"
 #include "app/model_registry.h"
+#include "app/panes.h"
 #include "app/bench_local.h"
 #include "app/render_command.h"
 #include "app/render_flags.h"
@@ -80,6 +81,14 @@ int main(int argc, char** argv) {
       },
       "Viewer window size WxH");
 
+  app.add_option_function<std::string>(
+      "--model",
+      [&viewer](const std::string& text) {
+        viewer.models = luz::app::split_model_list(text);
+        if (const std::string problem = luz::app::pane_list_problem(viewer.models); !problem.empty())
+          throw CLI::ValidationError("--model", text + ": " + problem);
+      },
+      "Viewer: the model shown, or 2 to 4 of them side by side, e.g. --model flat,gouraud,phong,whitted");
   app.add_option_function<std::string>(
       "--ui-scale",
       [&viewer](const std::string& text) {

@@ -15,6 +15,7 @@
 #include "app/difference_view.h"
 #include "app/model_registry.h"
 #include "app/options_tables.h"
+#include "app/panes.h"
 
 namespace luz::app {
 namespace {
@@ -311,6 +312,7 @@ void draw_panel(ViewerState& state, ModelView& shown, float width, float height)
   lights_header(state);
   material_header(state);
   scene_header(state);
+  panes_section(state);  // last: the sections above keep their places
   ImGui::PopItemWidth();
   ImGui::End();
 }

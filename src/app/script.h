@@ -15,6 +15,9 @@
 //   camera N|NAME                 a scene camera by index or name
 //   model NAME                    a model of the registry: flat, gouraud, phong, whitted,
 //                                 radiosity, hybrid, ...
+//   panes MODEL[,MODEL...] | panes off   2 to 4 models side by side (panes.h); one, or off:
+//                                 one picture
+//   dump-panes FILE.json          each pane's model, label, rectangles, camera drawn with
 //   set NAME VALUE                a setting of the options tables (options_tables.h): the
 //                                 local terms (ambient, diffuse, ... on|off), fog, exposure,
 //                                 Whitted's depth, spp, light-samples, fresnel, adaptive,

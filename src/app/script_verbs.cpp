@@ -11,6 +11,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include "app/model_registry.h"
+#include "app/panes.h"
 #include "app/script.h"
 #include "app/shortcuts.h"
 #include "app/solvers_view.h"
@@ -262,6 +263,8 @@ constexpr ScriptVerb verbs[] = {
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},
+    {"panes", "panes MODEL[,MODEL...]|off", check_panes, run_panes, true},
+    {"dump-panes", "dump-panes FILE.json", check_json_file, run_dump_panes, true},
     {"quit", "quit", check_none, run_quit, false},
 };
 

@@ -164,11 +164,17 @@ void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
 namespace luz::app {
 namespace {
 
-// The traced model shown, or Whitted's (shown first, as Enter shows it).
-TracedModel& traced(Viewer& viewer) {
-  if (auto* shown = dynamic_cast<TracedModel*>(&viewer.shown())) return *shown;
-  viewer.set_model(*find_model("whitted"));
-  return static_cast<TracedModel&>(viewer.shown());
+// The traced panes shown (side by side, every one of them), or Whitted's, shown first in the
+// active pane as Enter shows it.
+std::vector<TracedModel*> traced(Viewer& viewer) {
+  std::vector<TracedModel*> panes;
+  for (ModelView* pane : viewer.pane_views())
+    if (auto* t = dynamic_cast<TracedModel*>(pane)) panes.push_back(t);
+  if (panes.empty()) {
+    viewer.set_model(*find_model("whitted"));
+    panes.push_back(&static_cast<TracedModel&>(viewer.shown()));
+  }
+  return panes;
 }
 
 std::string check_trace(const ScriptCommand& c) {
@@ -178,12 +184,13 @@ std::string check_trace(const ScriptCommand& c) {
 
 // As Enter; without --no-wait the script waits for the end.
 bool run_trace(Viewer& viewer, const ScriptCommand& c, std::string&) {
-  traced(viewer).trace(c.args.empty());
+  for (TracedModel* pane : traced(viewer)) pane->trace(c.args.empty());
   return true;
 }
 
 bool run_wait_trace(Viewer& viewer, const ScriptCommand&, std::string&) {
-  if (auto* shown = dynamic_cast<TracedModel*>(&viewer.shown())) shown->wait_for_trace();
+  for (ModelView* pane : viewer.pane_views())
+    if (auto* t = dynamic_cast<TracedModel*>(pane)) t->wait_for_trace();
   return true;
 }
 

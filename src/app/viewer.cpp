@@ -29,6 +29,9 @@
 #include "app/difference_view.h"
 #include "app/overlays.h"
 #include "app/panel.h"
+#include "app/i18n.h"
+#include "app/panes.h"
+#include "app/render_grid.h"
 #include "app/ui_glyphs.h"
 #include "app/radiosity_model.h"
 #include "app/screenshot.h"
@@ -65,6 +68,7 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) script_.emplace(*settings.script);
   model_ = find_model(state_.model);
+  panes_ = {model_};
 
   GLFWwindow* w = window_.handle();
   glfwSetWindowUserPointer(w, this);
@@ -130,6 +134,7 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   });
 
   adopt(std::move(loaded), path, false);
+  if (!settings.models.empty()) set_panes(settings.models);  // `--model a,b,...`, already checked
 }
 
 Viewer::~Viewer() {
@@ -192,6 +197,7 @@ Layout Viewer::layout() const {
   const int left = int(std::lround(l.panel * scale.x));
   v.pixels = glm::ivec2(std::max(l.framebuffer.x - left, 0), std::max(int(std::lround(v.size.y * scale.y)), 0));
   v.gl_origin = glm::ivec2(left, l.framebuffer.y - v.pixels.y);
+  l.panes = pane_viewports(v, panes_.size());
   return l;
 }
 
@@ -294,10 +300,40 @@ void Viewer::set_model(const ModelEntry& model) {
     state_.note = fmt::format("{}: `luz render --model {}` only", model.label, model.name);
     return;
   }
-  if (model_ != &model && model_) view(model_->name).hidden();  // a trace running there stops
+  const auto pane = std::find(panes_.begin(), panes_.end(), &model);
+  if (pane != panes_.end()) {
+    active_pane_ = size_t(pane - panes_.begin());
+  } else {
+    view(model_->name).hidden();  // it leaves the window: a trace running there stops
+    panes_[active_pane_] = &model;
+  }
   model_ = &model;
   state_.model = model.name;
+  if (panes_.size() > 1)
+    for (size_t i = 0; i < panes_.size(); ++i) state_.panes[i] = panes_[i]->name;
   state_.note = model.label;
+}
+
+void Viewer::set_panes(const std::vector<std::string>& models) {
+  std::vector<const ModelEntry*> wanted;
+  for (const std::string& name : models) wanted.push_back(find_model(name));
+  for (const ModelEntry* shown_before : panes_)
+    if (std::find(wanted.begin(), wanted.end(), shown_before) == wanted.end()) view(shown_before->name).hidden();
+  const auto keep = std::find(wanted.begin(), wanted.end(), model_);  // the active model stays active
+  active_pane_ = keep != wanted.end() ? size_t(keep - wanted.begin()) : 0;
+  panes_ = wanted;
+  model_ = panes_[active_pane_];
+  state_.model = model_->name;
+  state_.panes = panes_.size() > 1 ? models : std::vector<std::string>{};
+  std::string names;
+  for (const std::string& name : models) names += (names.empty() ? "" : ", ") + model_label(name);
+  state_.note = panes_.size() > 1 ? trf("side by side: {}", names) : model_->label;
+}
+
+std::vector<ModelView*> Viewer::pane_views() {
+  std::vector<ModelView*> shown_views;
+  for (const ModelEntry* m : panes_) shown_views.push_back(&view(m->name));
+  return shown_views;
 }
 
 // ---- [input] -----------------------------------------------------------------------------------
@@ -365,7 +401,7 @@ void Viewer::move_camera(DragButton button, glm::vec2 delta) {
   if (!state_.free_camera) to_scene_camera();  // start from what is on screen
   state_.free_camera = true;
   if (button == DragButton::left) orbit_.orbit(delta.x, delta.y);
-  else orbit_.pan(delta.x, delta.y, layout().view.size.y);
+  else orbit_.pan(delta.x, delta.y, layout().panes.front().size.y);  // the drag moves what is under it
 }
 
 bool Viewer::flying() const {
@@ -398,8 +434,12 @@ void Viewer::click_at(glm::vec2 p) {
     scripted_click_frames_ = 2;
     return;
   }
-  if (l.view.empty()) return;
-  shown().click(current_camera(), l.view, l.view.pixel_of(p));
+  const int pane = pane_at(l.panes, p);
+  if (l.view.empty() || pane < 0) return;  // a background strip beside the panes
+  const Viewport& v = l.panes[size_t(pane)];
+  if (v.empty()) return;
+  if (panes_[size_t(pane)] != model_) set_model(*panes_[size_t(pane)]);  // the clicked pane is the active one
+  shown().click(current_camera(), v, v.pixel_of(p));
 }
 
 bool Viewer::choose_camera(const std::string& name_or_index, std::string& error) {
@@ -481,16 +521,21 @@ void Viewer::apply(Action action) {
     // first model whose keys they are when the one shown has no use for them.
     case Action::trace_view:
     case Action::radiosity_run:
-    case Action::radiosity_step:
-      if (shown().act(action)) break;
+    case Action::radiosity_step: {
+      bool taken = false;
+      for (ModelView* pane : pane_views()) taken = pane->act(action) || taken;  // every pane that traces or solves
+      if (taken) break;
       for (const ModelEntry& m : models())
         if (m.make_view && view(m.name).act(action)) {
           set_model(m);
           break;
         }
       break;
+    }
     case Action::cancel_trace:
-    case Action::clear_ray_tree: shown().act(action); break;
+    case Action::clear_ray_tree:
+      for (ModelView* pane : pane_views()) pane->act(action);
+      break;
     // Radiosity's display switches and reset change what model 5 will show, whatever is shown.
     case Action::radiosity_reset:
       state_.radiosity.reset = true;
@@ -522,9 +567,10 @@ bool Viewer::run(const ScriptCommand& command, std::string& error) {
 bool Viewer::busy() const {
   const SolversState& s = state_.solvers;
   const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
-  // Only the view shown works (a hidden one has stopped): its requests are what may be pending.
-  const auto shown_view = views_.find(model_->name);
-  const bool view_busy = shown_view != views_.end() && shown_view->second->busy();
+  // Only the views shown work (a hidden one has stopped): their requests are what may be pending.
+  bool view_busy = false;
+  for (const ModelEntry* m : panes_)
+    if (const auto found = views_.find(m->name); found != views_.end()) view_busy = view_busy || found->second->busy();
   const bool reference_busy = state_.difference.on && state_.difference.waiting;  // the difference view's
   return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value();
 }
@@ -554,42 +600,58 @@ nlohmann::json Viewer::windows_json() const {
 }
 
 // ---- [the frame] -------------------------------------------------------------------------------
+// Each pane's view draws its radiance into that pane's picture, then the display pass shows it:
+// radiance -> exposure -> sRGB, pixel for pixel into the pane's rectangle. One camera for all.
 void Viewer::draw_picture(const Layout& l) {
-  const Viewport& v = l.view;
-  if (v.empty()) return;
-  if (!picture_ || picture_->width() != v.pixels.x || picture_->height() != v.pixels.y)
-    picture_ = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y);
+  if (l.view.empty()) return;
   const Camera camera = current_camera();
-  ModelView& shown_view = shown();
-  shown_view.advance(camera, v);
-  picture_->bind();
-  shown_view.draw(camera, v, *picture_);
-  draw_difference(*this, *model_, camera, v, *picture_);  // the heat map instead, when it is on
+  pictures_.resize(panes_.size());
+  drawn_cameras_.assign(panes_.size(), camera);
+  for (size_t i = 0; i < panes_.size(); ++i) {
+    const Viewport& v = l.panes[i];
+    if (v.empty()) continue;
+    std::unique_ptr<gl::Framebuffer>& picture = pictures_[i];
+    if (!picture || picture->width() != v.pixels.x || picture->height() != v.pixels.y)
+      picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y);
+    ModelView& pane_view = view(panes_[i]->name);
+    pane_view.advance(camera, v);
+    picture->bind();
+    pane_view.draw(camera, v, *picture);
+    // The heat map instead, when it is on: in one picture only (its reference is one film, of
+    // one size).
+    if (panes_.size() == 1) draw_difference(*this, *panes_[i], camera, v, *picture);
 
-  // The display pass: radiance -> exposure -> sRGB, pixel for pixel into the viewport.
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y);
-  glDisable(GL_DEPTH_TEST);
-  display_.use();
-  display_.set("u_radiance", 0);
-  display_.set("u_scale", std::exp2(state_.exposure));
-  display_.set("u_origin", glm::vec2(v.gl_origin));
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, picture_->colour_texture());
-  glBindVertexArray(empty_vertex_array_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y);
+    glDisable(GL_DEPTH_TEST);
+    display_.use();
+    display_.set("u_radiance", 0);
+    display_.set("u_scale", std::exp2(state_.exposure));
+    display_.set("u_origin", glm::vec2(v.gl_origin));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, picture->colour_texture());
+    glBindVertexArray(empty_vertex_array_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
+  }
 }
 
 // The windows over the picture: the status line, the shown model's windows in the picture's
 // corners (WindowCorners), slide 36's window in its left half, F1's list and a load error in the
 // middle (they are asked for, and closed), the scene's warnings at the bottom.
 void Viewer::draw_windows(const Layout& l) {
-  std::string model = model_->label;
-  if (const std::string s = shown().status(); !s.empty()) model += " " + s;
+  std::string model;
+  for (size_t i = 0; i < panes_.size(); ++i) {  // side by side: every pane's, the active one's in brackets
+    std::string pane = panes_.size() > 1 ? model_label(panes_[i]->name) : std::string(panes_[i]->label);
+    if (const std::string s = view(panes_[i]->name).status(); !s.empty()) pane += " " + s;
+    if (panes_.size() > 1 && i == active_pane_) pane = "[" + pane + "]";
+    model += (i == 0 ? "" : " | ") + pane;
+  }
   draw_status_line(state_, model, l.window.y - l.status, l.window.x, l.status);
+  if (panes_.size() > 1)
+    for (size_t i = 0; i < panes_.size(); ++i) draw_pane_label(pane_label(panes_[i]->name, l.panes[i]), i == active_pane_);
 
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
@@ -598,18 +660,31 @@ void Viewer::draw_windows(const Layout& l) {
     const glm::vec4 half = corners.take_left_half();
     solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w);
   }
-  shown().windows(l.view, corners);
-  difference_windows(state_, l.view, corners);
+  if (panes_.size() > 1) {  // the active pane's windows, in its own corners
+    WindowCorners pane_corners(l.panes[active_pane_], margin);
+    shown().windows(l.panes[active_pane_], pane_corners);
+  } else {
+    shown().windows(l.view, corners);
+    difference_windows(state_, l.view, corners);
+  }
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
+}
+
+std::vector<const gl::Framebuffer*> Viewer::pane_pictures() const {
+  std::vector<const gl::Framebuffer*> pictures;
+  for (const auto& picture : pictures_) pictures.push_back(picture.get());
+  return pictures;
 }
 
 void Viewer::take_screenshots(const Layout& l) {
   for (const PendingScreenshot& shot : screenshots_) {
     try {
       if (shot.with_panel) save_window(l.framebuffer.x, l.framebuffer.y, shot.path);
-      else if (picture_) save_picture(*picture_, shot.path, state_.exposure);
+      else if (panes_.size() > 1 && pictures_.size() == panes_.size() && l.panes.size() == panes_.size())
+        save_panes(pane_pictures(), l.panes, state_.panes, l.view, shot.path, state_.exposure);
+      else if (!pictures_.empty() && pictures_.front()) save_picture(*pictures_.front(), shot.path, state_.exposure);
       state_.note = fmt::format("saved {}", shot.path.string());
       fmt::print("{}\n", state_.note);
     } catch (const Error& error) {
@@ -631,6 +706,12 @@ void Viewer::frame() {
   // Requests the panel made during the last frame.
   if (state_.model != model_->name)
     if (const ModelEntry* m = find_model(state_.model)) set_model(*m);
+  if (state_.panes_request) {
+    const std::vector<std::string> wanted = *state_.panes_request;
+    state_.panes_request.reset();
+    if (const std::string problem = pane_list_problem(wanted); problem.empty()) set_panes(wanted);
+    else state_.note = problem;
+  }
   if (state_.emitters_changed) {
     state_.emitters_changed = false;
     state_.scene->find_area_lights();
@@ -690,8 +771,9 @@ bool Viewer::needs_frames() const {
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
   if (state_.difference.on && state_.difference.refining) return true;  // its reference refines
-  const auto shown_view = views_.find(model_->name);
-  return shown_view != views_.end() && shown_view->second->animating();
+  for (const ModelEntry* m : panes_)
+    if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) return true;
+  return false;
 }
 
 int Viewer::loop() {

@@ -4,6 +4,7 @@
 // cannot be loaded, there is no window, or a script command fails).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/script.h"
 
@@ -15,6 +16,7 @@ struct ViewerSettings {
   int width = 0;                 // `--size WxH`: the window, in window coordinates; 0: default
   int height = 0;
   float ui_scale = 1.0f;         // `--ui-scale`: the interface's size (1: the default)
+  std::vector<std::string> models;  // `--model a,b,...`: side by side (panes.h); one: that model
 };
 
 int run_viewer(const ViewerSettings& settings);

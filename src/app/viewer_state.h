@@ -65,6 +65,10 @@ struct ViewerState {
   // The difference view: the model shown against the path tracer's reference of the same view
   // (difference_view.h), its switch and its latest figures.
   DifferenceState difference;
+  // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
+  // `model`); the panel asks for another list through panes_request, done between frames.
+  std::vector<std::string> panes;
+  std::optional<std::vector<std::string>> panes_request;
 
   bool show_panel = true;
   bool show_help = false;

@@ -46,6 +46,7 @@ struct Layout {
   float panel = 0.0f;    // panel width
   float status = 0.0f;   // status line height
   Viewport view;
+  std::vector<Viewport> panes;  // the view split side by side (panes.h); one pane: the view
 };
 
 class Viewer final : public ScriptTarget, public ViewerServices {
@@ -75,7 +76,16 @@ public:
   void zoom(float steps);
   void screenshot(PendingScreenshot shot) { screenshots_.push_back(std::move(shot)); }
   bool choose_camera(const std::string& name_or_index, std::string& error);
+  // The model shown, in the active pane: its pane becomes the active one, or it takes the active
+  // pane's place when no pane shows it (panes.h).
   void set_model(const ModelEntry& model);
+  // Side by side: 2 to 4 models (a list pane_list_problem accepts); one model: one picture.
+  void set_panes(const std::vector<std::string>& models);
+  const std::vector<const ModelEntry*>& panes() const { return panes_; }  // one when not side by side
+  int active_pane() const { return int(active_pane_); }
+  std::vector<ModelView*> pane_views();  // the views of the panes, in order
+  const Layout& drawn_layout() const { return last_layout_; }
+  const Camera& drawn_camera(size_t pane) const { return drawn_cameras_.at(pane); }  // this frame's
   void apply(Action action);
   void resize(int width, int height);
   void load(const std::filesystem::path& path);
@@ -112,6 +122,7 @@ private:
   void draw_picture(const Layout& l);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
+  std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
 
   gl::WindowContext window_;
@@ -123,13 +134,16 @@ private:
   bool fonts_stale_ = false;
   std::unique_ptr<LocalRenderer> renderer_;
   std::unique_ptr<Picker> picker_;
-  std::unique_ptr<gl::Framebuffer> picture_;  // the picture's float radiance
+  std::vector<std::unique_ptr<gl::Framebuffer>> pictures_;  // each pane's float radiance
   gl::Program display_{{"display.vert", "display.frag"}};
   GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
   OrbitCamera orbit_;
   Inspection inspection_;
 
-  const ModelEntry* model_ = nullptr;                    // the model shown
+  const ModelEntry* model_ = nullptr;                    // the model shown: panes_[active_pane_]
+  std::vector<const ModelEntry*> panes_;                 // side by side, or the one model shown
+  size_t active_pane_ = 0;
+  std::vector<Camera> drawn_cameras_;                    // what each pane was drawn with
   std::map<std::string, std::unique_ptr<ModelView>, std::less<>> views_;  // made when first shown
   // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
   std::unique_ptr<SolversView> solvers_;

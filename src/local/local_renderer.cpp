@@ -372,7 +372,9 @@ void LocalRenderer::Impl::set_pass(gl::Program& p, const ScenePass& pass, const 
 }
 
 Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
-  std::string key = switches.defines();
+  // The shading model picks the stages, so it is part of the key (with the defines alone, the
+  // viewer's flat and Gouraud would reuse the Phong program compiled first).
+  std::string key = fmt::format("// shading {}\n", int(switches.shading)) + switches.defines();
   auto found = programs.find(key);
   if (found != programs.end()) return found->second;
   std::vector<std::string> stages;
