@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/solvers_command.h"
 #include "core/error.h"
 #include "gl/functions.h"
@@ -30,7 +31,7 @@ const char* method_label(Method method) {
     case Method::jacobi: return "Jacobi";
     case Method::gauss_seidel: return "Gauss-Seidel";
     case Method::southwell: return "Southwell";
-    case Method::shooting: return "shooting (slide 39)";
+    case Method::shooting: return tr("shooting (slide 39)");
   }
   return "?";
 }
@@ -74,7 +75,7 @@ void SolversView::build(SolversState& state) {
   s.patches = mesh->size();
   if (mesh->size() > kMaxSolverPatches) {
     s.phase = SolversState::Phase::refused;
-    s.message = fmt::format("{} patches: the full form-factor matrix grows as the square of that, so this "
+    s.message = trf("{} patches: the full form-factor matrix grows as the square of that, so this "
                             "window takes at most {}. Ask for fewer patches.", mesh->size(), kMaxSolverPatches);
     return;
   }
@@ -107,7 +108,7 @@ void SolversView::advance(SolversState& state) {
   if (s.phase == SolversState::Phase::none) {
     // One frame that says what is coming: the N hemicubes of the matrix take a while.
     s.phase = SolversState::Phase::building;
-    s.message = fmt::format("building the form-factor matrix (one hemicube per patch, about {} patches) "
+    s.message = trf("building the form-factor matrix (one hemicube per patch, about {} patches) "
                             "and B* ...", state.target_patches);
     return;
   }
@@ -216,7 +217,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   SolversState::Status& s = state.status;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open,
+  if (!ImGui::Begin(tr("Slide 36: the system solved four ways  [J]"), &state.open,
                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
@@ -235,13 +236,13 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   if (ImGui::Button(state.running ? "pause" : "run", ImVec2(6.0f * ImGui::GetFontSize(), 0.0f)))
     state.running = !state.running;
   ImGui::SameLine();
-  if (ImGui::Button("reset")) state.reset = true;
+  if (ImGui::Button(tr("reset"))) state.reset = true;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(6.0f * ImGui::GetFontSize());
   if (ImGui::InputInt("patches (reset)", &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
 
   if (race_) {
-    ImGui::Text("%zu patches, matrix in %.2f s; rows %zu / %zu%s", s.patches, s.matrix_seconds, s.rows, s.max_rows,
+    ImGui::Text(tr("%zu patches, matrix in %.2f s; rows %zu / %zu%s"), s.patches, s.matrix_seconds, s.rows, s.max_rows,
                 s.done ? " (done)" : "");
     // The legend, with where each method has got.
     for (const Method m : kMethods) {
@@ -250,7 +251,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
       ImGui::Text("%-20s", method_label(m));
       ImGui::PopStyleColor();
       ImGui::SameLine(11.0f * ImGui::GetFontSize());
-      ImGui::Text("%6zu rows   residual %.1e   error %.1e", last.rows, last.residual, last.error);
+      ImGui::Text(tr("%6zu rows   residual %.1e   error %.1e"), last.rows, last.residual, last.error);
     }
     // The two plots share what is left of the window, the caption's three lines kept below.
     const ImVec2 room = ImGui::GetContentRegionAvail();
@@ -261,10 +262,10 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
     log_plot(*race_, false, size, min1, max1);
     s.plot_min = glm::min(min0, min1);
     s.plot_max = glm::max(max0, max1);
-    ImGui::TextDisabled("x: form-factor rows used (log), y: log");
+    ImGui::TextDisabled(tr("x: form-factor rows used (log), y: log"));
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
-                           "(N rows each, and none before the whole matrix is known).");
+    ImGui::TextUnformatted(tr("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
+                              "(N rows each, and none before the whole matrix is known)."));
     ImGui::PopTextWrapPos();
   }
   ImGui::End();

@@ -26,6 +26,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/i18n.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "app/ui_glyphs.h"
@@ -63,6 +64,7 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
               "Luz - " + path.filename().string()) {
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) script_.emplace(*settings.script);
+  if (settings.lesson) classroom_ = Classroom(*settings.lesson);
   model_ = find_model(state_.model);
 
   GLFWwindow* w = window_.handle();
@@ -172,7 +174,7 @@ void Viewer::rebuild_fonts() {
 void Viewer::set_ui_scale(float scale) {
   user_scale_ = std::clamp(scale, kMinUiScale, kMaxUiScale);
   fonts_stale_ = true;  // between frames: ImGui's font atlas is locked inside one
-  state_.note = fmt::format("interface size x{:.2f}", user_scale_);
+  state_.note = trf("interface size x{:.2f}", user_scale_);
 }
 
 Layout Viewer::layout() const {
@@ -242,10 +244,10 @@ void Viewer::load(const std::filesystem::path& path) {
   }
   try {
     adopt(io::load_gltf(path), path, path == state_.scene_path);
-    state_.note = fmt::format("loaded {}", path.filename().string());
+    state_.note = trf("loaded {}", path.filename().string());
   } catch (const Error& error) {
     state_.error = error.what();
-    state_.note = "the scene did not load; showing the previous one";
+    state_.note = tr("the scene did not load; showing the previous one");
     fmt::print(stderr, "luz: {}\n", error.what());
   }
 }
@@ -290,13 +292,13 @@ ModelView& Viewer::view(std::string_view name) {
 void Viewer::set_model(const ModelEntry& model) {
   if (!model.make_view) {
     state_.model = model_->name;
-    state_.note = fmt::format("{}: `luz render --model {}` only", model.label, model.name);
+    state_.note = trf("{}: `luz render --model {}` only", tr(model.label), model.name);
     return;
   }
   if (model_ != &model && model_) view(model_->name).hidden();  // a trace running there stops
   model_ = &model;
   state_.model = model.name;
-  state_.note = model.label;
+  state_.note = tr(model.label);
 }
 
 // ---- [input] -----------------------------------------------------------------------------------
@@ -422,19 +424,19 @@ void Viewer::apply(Action action) {
   state_.note.clear();
   auto toggle = [this](bool& term, const char* name) {
     term = !term;
-    state_.note = fmt::format("{} {}", name, term ? "on" : "off");
+    state_.note = fmt::format("{} {}", tr(name), term ? tr("on") : tr("off"));
   };
   switch (action) {
     case Action::none:
     case Action::choose_model: break;
-    case Action::toggle_ambient: toggle(o.ambient, "ambient I_A"); break;
-    case Action::toggle_diffuse: toggle(o.diffuse, "diffuse I_D"); break;
-    case Action::toggle_specular: toggle(o.specular, "specular I_S"); break;
-    case Action::toggle_emission: toggle(o.emission, "emission Le"); break;
-    case Action::toggle_textures: toggle(o.textures, "kd texture"); break;
+    case Action::toggle_ambient: toggle(o.ambient, N_("ambient I_A")); break;
+    case Action::toggle_diffuse: toggle(o.diffuse, N_("diffuse I_D")); break;
+    case Action::toggle_specular: toggle(o.specular, N_("specular I_S")); break;
+    case Action::toggle_emission: toggle(o.emission, N_("emission Le")); break;
+    case Action::toggle_textures: toggle(o.textures, N_("kd texture")); break;
     case Action::toggle_blinn:
       o.blinn = !o.blinn;
-      state_.note = o.blinn ? "Blinn's N.H" : "Phong's R.V";
+      state_.note = o.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
       break;
     case Action::cycle_attenuation: {
       std::vector<Light>& lights = state_.scene->lights;
@@ -448,15 +450,15 @@ void Viewer::apply(Action action) {
       o.fog.mode = o.fog.mode == FogMode::off      ? FogMode::linear
                    : o.fog.mode == FogMode::linear ? FogMode::exponential
                                                    : FogMode::off;
-      state_.note = fmt::format("fog {}", to_string(o.fog.mode));
+      state_.note = trf("fog {}", tr(to_string(o.fog.mode)));
       break;
-    case Action::toggle_shadows: toggle(o.shadows.on, "shadows S_i"); break;
-    case Action::toggle_transparency: toggle(o.transparency.on, "transparency kt"); break;
-    case Action::toggle_reflection_map: toggle(o.reflection.on, "reflection map kr Ir"); break;
+    case Action::toggle_shadows: toggle(o.shadows.on, N_("shadows S_i")); break;
+    case Action::toggle_transparency: toggle(o.transparency.on, N_("transparency kt")); break;
+    case Action::toggle_reflection_map: toggle(o.reflection.on, N_("reflection map kr Ir")); break;
     case Action::exposure_up:
     case Action::exposure_down:
       state_.exposure += action == Action::exposure_up ? 0.5f : -0.5f;
-      state_.note = fmt::format("exposure {:+.1f} EV", state_.exposure);
+      state_.note = trf("exposure {:+.1f} EV", state_.exposure);
       break;
     case Action::ui_larger: set_ui_scale(user_scale_ * ui_scale_step); break;
     case Action::ui_smaller: set_ui_scale(user_scale_ / ui_scale_step); break;
@@ -464,7 +466,7 @@ void Viewer::apply(Action action) {
     case Action::next_camera:
       state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
       to_scene_camera();
-      state_.note = fmt::format("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
+      state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
       break;
     case Action::reload: load(state_.scene_path); break;
     case Action::screenshot:
@@ -493,20 +495,22 @@ void Viewer::apply(Action action) {
     // Radiosity's display switches and reset change what model 5 will show, whatever is shown.
     case Action::radiosity_reset:
       state_.radiosity.reset = true;
-      state_.note = "radiosity: reset (step 1: unshot = E)";
+      state_.note = tr("radiosity: reset (step 1: unshot = E)");
       break;
-    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, "radiosity heat map"); break;
+    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, N_("radiosity heat map")); break;
     case Action::toggle_patches: {
       RadiosityOptions& r = state_.radiosity.options;
       r.flat_patches = r.outlines = !(r.flat_patches && r.outlines);
-      state_.note = r.outlines ? "radiosity: flat patches, outlined" : "radiosity: Gouraud";
+      state_.note = r.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
       break;
     }
     case Action::toggle_ambient_estimate:
-      toggle(state_.radiosity.options.ambient_estimate, "radiosity ambient estimate");
+      toggle(state_.radiosity.options.ambient_estimate, N_("radiosity ambient estimate"));
       break;
     case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
     case Action::quit: quit_ = true; break;
+    case Action::lesson_next: classroom_.move(LessonMove::next); break;
+    case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
   }
 }
 
@@ -524,7 +528,7 @@ bool Viewer::busy() const {
   // Only the view shown works (a hidden one has stopped): its requests are what may be pending.
   const auto shown_view = views_.find(model_->name);
   const bool view_busy = shown_view != views_.end() && shown_view->second->busy();
-  return scripted_click_frames_ > 0 || view_busy || solving_system || idle_until_.has_value();
+  return scripted_click_frames_ > 0 || view_busy || solving_system || idle_until_.has_value() || classroom_.moving();
 }
 
 void Viewer::idle(double seconds) {
@@ -584,12 +588,13 @@ void Viewer::draw_picture(const Layout& l) {
 // corners (WindowCorners), slide 36's window in its left half, F1's list and a load error in the
 // middle (they are asked for, and closed), the scene's warnings at the bottom.
 void Viewer::draw_windows(const Layout& l) {
-  std::string model = model_->label;
+  std::string model = tr(model_->label);
   if (const std::string s = shown().status(); !s.empty()) model += " " + s;
   draw_status_line(state_, model, l.window.y - l.status, l.window.x, l.status);
 
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
+  corners.reserve_top(classroom_.draw_caption(l.view, margin));
   state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
   if (state_.solvers.open && solvers_) {
     const glm::vec4 half = corners.take_left_half();
@@ -606,7 +611,7 @@ void Viewer::take_screenshots(const Layout& l) {
     try {
       if (shot.with_panel) save_window(l.framebuffer.x, l.framebuffer.y, shot.path);
       else if (picture_) save_picture(*picture_, shot.path, state_.exposure);
-      state_.note = fmt::format("saved {}", shot.path.string());
+      state_.note = trf("saved {}", shot.path.string());
       fmt::print("{}\n", state_.note);
     } catch (const Error& error) {
       state_.note = error.what();
@@ -682,6 +687,7 @@ void Viewer::frame() {
 bool Viewer::needs_frames() const {
   if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty()) return true;
   if (script_ && !script_->finished() && !idle_until_) return true;
+  if (classroom_.moving()) return true;
   const SolversState& s = state_.solvers;
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
@@ -713,6 +719,13 @@ int Viewer::loop() {
     const double seconds = std::chrono::duration<double>(now - last).count();
     last = now;
     state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
+    if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
+      if (script_) {
+        fmt::print(stderr, "luz: {}\n", error);
+        return 1;
+      }
+      warn(error);
+    }
     if (script_) {
       std::string error;
       if (!script_->step(*this, error)) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "app/lesson.h"
 #include "app/script.h"
 
 namespace luz::app {
@@ -15,6 +16,7 @@ struct ViewerSettings {
   int width = 0;                 // `--size WxH`: the window, in window coordinates; 0: default
   int height = 0;
   float ui_scale = 1.0f;         // `--ui-scale`: the interface's size (1: the default)
+  std::optional<Lesson> lesson;  // `--lesson [FILE]`, already read: the window opens on its first step
 };
 
 int run_viewer(const ViewerSettings& settings);
