@@ -1,5 +1,6 @@
 #include "app/classroom.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "app/i18n.h"
@@ -11,6 +12,12 @@ Classroom::Classroom(Lesson lesson) : player_(LessonPlayer(std::move(lesson))) {
 void Classroom::queue(std::vector<ScriptCommand> commands) {
   Script script;
   script.file = player_->lesson().file;
+  // Slide 36's window is closed unless the step opens it, as every other switch goes back to
+  // its default: it would cover the next steps' picture.
+  const bool opens_solvers = std::any_of(commands.begin(), commands.end(), [](const ScriptCommand& c) {
+    return c.verb == "solvers" || c.verb == "wait-solver-rows";
+  });
+  if (!opens_solvers) script.commands.push_back({player_->step().line, "solvers", {"close"}});
   // The side-by-side panes are a verb of their own view; a viewer without it shows the step's
   // model alone.
   for (ScriptCommand& c : commands)

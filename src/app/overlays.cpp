@@ -58,7 +58,7 @@ glm::vec4 WindowCorners::take_left_half() {
   taken_[top_left] = taken_[bottom_left] = true;
   const float hint = 2.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
   const glm::vec2 o = viewport_.origin, s = viewport_.size;
-  const float top = o.y + margin_ + hint;
+  const float top = std::max(o.y, top_) + margin_ + hint;
   return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
 }
 
@@ -91,13 +91,18 @@ void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
   // close button and F1 hide it.
   ImGui::Begin(tr("Keys (F1)"), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                                        ImGuiWindowFlags_AlwaysVerticalScrollbar);
-  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+  // As wide as `max` allows, the descriptions wrapped in their column: a longer translation
+  // takes another line instead of running past the window's edge.
+  const float width = max.x - 2.0f * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg, ImVec2(width, 0.0f))) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
     auto row = [](const std::string& keys, const char* what) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(keys.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(what);
+      ImGui::TextWrapped("%s", what);
     };
     for (const ModelEntry& m : models()) row(std::to_string(m.key), tr(m.help));
     for (const Shortcut& s : shortcuts())

@@ -89,7 +89,7 @@ void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
   RadiosityState& r = state.radiosity;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
     const float margin = 8.0f * viewer_.ui_scale();
-    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + margin), ImGuiCond_Always,
+    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always,
                             ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("radiosity hint", nullptr, hint_window_flags());

@@ -205,7 +205,7 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
     else draw->AddPolyline(points.data(), int(points.size()), on_dark(m), 0, 2.0f);
   }
   draw->PopClipRect();
-  const char* title = residual ? "residual |E - (I - ρF) B| / |E|" : "error |B - B*| / |B*|";
+  const char* title = residual ? tr("residual |E - (I - ρF) B| / |E|") : tr("error |B - B*| / |B*|");
   draw->AddText(ImVec2(b.x - ImGui::CalcTextSize(title).x - 0.4f * font, a.y + 0.2f * font), label, title);
   ImGui::Dummy(size);
 }
@@ -233,17 +233,17 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
     ImGui::TextUnformatted(s.message.c_str());
     ImGui::PopTextWrapPos();
   }
-  if (ImGui::Button(state.running ? "pause" : "run", ImVec2(6.0f * ImGui::GetFontSize(), 0.0f)))
+  if (ImGui::Button(state.running ? tr("pause") : tr("run"), ImVec2(6.0f * ImGui::GetFontSize(), 0.0f)))
     state.running = !state.running;
   ImGui::SameLine();
   if (ImGui::Button(tr("reset"))) state.reset = true;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(6.0f * ImGui::GetFontSize());
-  if (ImGui::InputInt("patches (reset)", &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
+  if (ImGui::InputInt(tr("patches (reset)"), &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
 
   if (race_) {
     ImGui::Text(tr("%zu patches, matrix in %.2f s; rows %zu / %zu%s"), s.patches, s.matrix_seconds, s.rows, s.max_rows,
-                s.done ? " (done)" : "");
+                s.done ? tr(" (done)") : "");
     // The legend, with where each method has got.
     for (const Method m : kMethods) {
       const SolverSample& last = race_->curve(m).back();

@@ -139,7 +139,7 @@ void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::done) return;
   const float margin = 8.0f * viewer_.ui_scale();
-  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("trace hint", nullptr, hint_window_flags());
   if (t.phase == TracePhase::tracing) {
