@@ -138,6 +138,15 @@ void model_header(ViewerState& state, ModelView& shown) {
 }
 
 // ---- [lights] ----------------------------------------------------------------------------------
+const char* light_type_label(LightType type) {
+  switch (type) {
+    case LightType::point: return tr("point");
+    case LightType::spot: return tr("spot");
+    case LightType::directional: return tr("directional");
+  }
+  return "?";
+}
+
 void lights_header(ViewerState& state) {
   Scene& scene = *state.scene;
   if (!ImGui::CollapsingHeader(tr("Lights"), ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -148,7 +157,7 @@ void lights_header(ViewerState& state) {
     ImGui::PushID(int(i));
     ImGui::Checkbox("##on", &light.enabled);
     ImGui::SameLine();
-    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), to_string(light.type))) {
+    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), light_type_label(light.type))) {
       bool changed = ImGui::ColorEdit3(tr("colour"), &edit.colour.r);
       changed |= ImGui::DragFloat(light.type == LightType::directional ? "E (W/m²)" : "I (W/sr)",
                                   &edit.intensity, 0.1f + 0.01f * edit.intensity, 0.0f, 1e6f, "%.3g");
@@ -309,11 +318,13 @@ void draw_panel(ViewerState& state, ModelView& shown, float width, float height)
   ImGui::Begin("Luz", nullptr, flags);
   // Widgets take 58 % of the width, their labels the rest: a label is never cut at the edge.
   ImGui::PushItemWidth(-0.42f * width);
-  draw_language_switch();  // the next frame speaks the language chosen
   model_header(state, shown);
   lights_header(state);
   material_header(state);
   scene_header(state);
+  // Last, so that no widget above moves for it (a prepared demo clicks them by position).
+  ImGui::Separator();
+  draw_language_switch();  // the next frame speaks the language chosen
   ImGui::PopItemWidth();
   ImGui::End();
 }
