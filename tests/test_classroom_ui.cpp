@@ -1,7 +1,10 @@
 // The lesson's caption as the viewer would draw it, in a Dear ImGui frame without a window: every
 // step of the shipped lesson, in both languages, fits a box the class can read without hiding
-// the picture.
+// the picture; and the Spanish letters the panel and the caption draw are glyphs of their own.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 #include <imgui.h>
 
@@ -68,6 +71,61 @@ TEST_F(Caption, WrapsInsteadOfWidening) {
   const app::CaptionResult narrow = draw(player, i18n::Language::es, 300.0f, 1.0f);
   EXPECT_FLOAT_EQ(narrow.size.x, 300.0f);
   EXPECT_GT(narrow.size.y, wide.size.y);
+}
+
+// The glyph's coverage in the font atlas (alpha, row by row) and its size.
+struct GlyphBitmap {
+  int width = 0, height = 0;
+  std::vector<unsigned char> alpha;
+  bool operator==(const GlyphBitmap&) const = default;
+};
+
+GlyphBitmap bitmap_of(const ImFontGlyph& glyph) {
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  ImGui::GetIO().Fonts->GetTexDataAsAlpha8(&pixels, &w, &h);
+  GlyphBitmap out;
+  const int x0 = int(glyph.U0 * float(w) + 0.5f), x1 = int(glyph.U1 * float(w) + 0.5f);
+  const int y0 = int(glyph.V0 * float(h) + 0.5f), y1 = int(glyph.V1 * float(h) + 0.5f);
+  out.width = x1 - x0;
+  out.height = y1 - y0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) out.alpha.push_back(pixels[y * w + x]);
+  return out;
+}
+
+// A Spanish label drawn as the panel draws text: each accented letter is its own glyph, not
+// ImGui's fallback for a missing one, and not its bare letter (the accent has ink of its own).
+TEST_F(Caption, AccentedLettersDrawTheirOwnGlyphs) {
+  const char* label = "á é í ó ú ñ ¿ Á É Í Ó Ú Ñ ü";
+  const char32_t letters[] = {U'á', U'é', U'í', U'ó', U'ú', U'ñ', U'¿', U'Á', U'É', U'Í', U'Ó', U'Ú', U'Ñ', U'ü'};
+  const char bare[] = {'a', 'e', 'i', 'o', 'u', 'n', '?', 'A', 'E', 'I', 'O', 'U', 'N', 'u'};
+  ImGui::NewFrame();
+  ImGui::SetNextWindowSize(ImVec2(kWindowW, 200.0f));  // the whole line in view: ImGui skips glyphs it clips
+  ImGui::Begin("label");
+  ImGui::TextUnformatted(label);
+  ImGui::End();
+  ImGui::Render();
+  // The quads the frame drew, by the atlas corner of their glyph.
+  std::vector<ImVec2> drawn;
+  const ImDrawData* data = ImGui::GetDrawData();
+  for (int l = 0; l < data->CmdListsCount; ++l)
+    for (const ImDrawVert& v : data->CmdLists[l]->VtxBuffer) drawn.push_back(v.uv);
+  auto was_drawn = [&](const ImFontGlyph& g) {
+    return std::any_of(drawn.begin(), drawn.end(), [&](const ImVec2& uv) { return uv.x == g.U0 && uv.y == g.V0; });
+  };
+  const ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+  ASSERT_NE(font->FallbackGlyph, nullptr);
+  const GlyphBitmap fallback = bitmap_of(*font->FallbackGlyph);
+  for (size_t i = 0; i < std::size(letters); ++i) {
+    const ImFontGlyph* glyph = font->FindGlyphNoFallback(ImWchar(letters[i]));
+    ASSERT_NE(glyph, nullptr) << "U+" << std::hex << unsigned(letters[i]);
+    EXPECT_TRUE(was_drawn(*glyph)) << "U+" << std::hex << unsigned(letters[i]);
+    const GlyphBitmap own = bitmap_of(*glyph);
+    EXPECT_NE(own, fallback) << "U+" << std::hex << unsigned(letters[i]);
+    EXPECT_NE(own, bitmap_of(*font->FindGlyphNoFallback(ImWchar(bare[i])))) << bare[i];
+  }
+  EXPECT_FALSE(was_drawn(*font->FallbackGlyph));
 }
 
 }  // namespace

@@ -27,11 +27,11 @@ CaptionResult draw_lesson_caption(const LessonPlayer& player, i18n::Language lan
     ImGui::TextWrapped("%s", step.text.in(language).c_str());
     ImGui::Spacing();
     ImGui::BeginDisabled(player.index() == 0);
-    if (ImGui::Button(tr("previous"))) result.move = LessonMove::previous;
+    if (ImGui::Button(tr("previous  [F7]"))) result.move = LessonMove::previous;
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(player.index() + 1 >= player.size());
-    if (ImGui::Button(tr("next"))) result.move = LessonMove::next;
+    if (ImGui::Button(tr("next  [F8]"))) result.move = LessonMove::next;
     ImGui::EndDisabled();
     result.size = ImGui::GetWindowSize();
   }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/panel.h"
 #include "app/render_whitted.h"
 
@@ -61,9 +62,10 @@ rt::WhittedOptions HybridModel::current_options() const {
 std::string HybridModel::hint() const {
   const RadiosityState& r = viewer_.state().radiosity;
   if (requests.trace)
-    return fmt::format("hybrid: solving radiosity first (shot {}, {:.2f} % unshot); the trace starts when it stops",
+    // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
+    return trf("hybrid: solving radiosity first (shot {}, {:.2f} % unshot); the trace starts when it stops",
                        r.status.shots, 100.0 * r.status.unshot_fraction);
-  return "hybrid: the radiosity picture. Press Enter / click Render to trace its highlights";
+  return tr("hybrid: the radiosity picture. Press Enter / click Render to trace its highlights");
 }
 
 std::string HybridModel::status() const {
@@ -77,16 +79,16 @@ std::string HybridModel::status() const {
 
 void HybridModel::panel() {
   ViewerState& state = viewer_.state();
-  ImGui::TextDisabled("radiosity's diffuse light + ray-traced highlights (slides 41-43)");
-  ImGui::TextWrapped("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It");
+  dim_text(tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
+  ImGui::TextWrapped(tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));
   // Which radiosity solution the trace reads: the viewer's, as model 5 left it.
   const RadiosityStatus& r = state.radiosity.status;
-  if (!r.built) ImGui::TextDisabled("radiosity: not solved yet (solved to the stopping rule first)");
+  if (!r.built) dim_text(tr("radiosity: not solved yet (solved to the stopping rule first)"));
   else
-    ImGui::TextWrapped("radiosity: %zu patches, %d shots, %.2f %% unshot%s", r.patches, r.shots, 100.0 * r.unshot_fraction,
-                       state.radiosity.drive.running ? ", running" : r.done ? ", done" : ", paused");
+    ImGui::TextWrapped(tr("radiosity: %zu patches, %d shots, %.2f %% unshot%s"), r.patches, r.shots, 100.0 * r.unshot_fraction,
+                       state.radiosity.drive.running ? tr(", running") : r.done ? tr(", done") : tr(", paused"));
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("model 5 [5] steps, resets and remeshes it; a trace reads it as it is");
+  ImGui::TextWrapped(tr("model 5 [5] steps, resets and remeshes it; a trace reads it as it is"));
   ImGui::PopStyleColor();
   traced_section(state, *this);
 }

@@ -67,6 +67,10 @@ const char* tr(const char* id);
 
 // fmt::format with a translated format string: trf("{} shots", n). The translation must keep
 // the {} fields (the tests check every catalogue entry formats with its id's arguments).
+// Marks a message id where it is written, in a constant table, for xgettext (gettext's
+// gettext_noop): the code translates it where it is shown, with tr().
+constexpr const char* N_(const char* id) { return id; }
+
 template <typename... Args>
 std::string trf(const char* id, Args&&... args) {
   return fmt::format(fmt::runtime(tr(id)), std::forward<Args>(args)...);
@@ -77,4 +81,5 @@ std::string trf(const char* id, Args&&... args) {
 namespace luz::app {
 using i18n::tr;  // the app's code writes tr("...") and trf("..."), the keywords xgettext is given
 using i18n::trf;
+using i18n::N_;
 }  // namespace luz::app

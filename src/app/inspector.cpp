@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <imgui.h>
 
+#include "app/i18n.h"
+
 namespace luz::app {
 namespace {
 
@@ -64,7 +66,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       reading.terms = evaluate(pick.P, N);
       reading.normal = N;
       reading.mirror = mirror(pick.P, N);
-      reading.where = "Phong: the formula at this pixel, with the interpolated normal";
+      reading.where = N_("Phong: the formula at this pixel, with the interpolated normal");
       break;
     }
     case Shading::gouraud: {  // gouraud.vert/.frag: both sides per vertex, interpolated
@@ -79,7 +81,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       }
       reading.terms = blend(at[0], at[1], at[2], pick.barycentric);
       reading.normal = back ? -pick.N : pick.N;
-      reading.where = "Gouraud: the formula at the 3 vertices, interpolated (angles too)";
+      reading.where = N_("Gouraud: the formula at the 3 vertices, interpolated (angles too)");
       break;
     }
     case Shading::flat: {  // flat.geom: once at the centroid, face normal toward the eye
@@ -93,7 +95,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       if (!mesh.uvs.empty())
         uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
       barycentric = glm::vec2(1.0f / 3.0f);  // flat.geom: COLOR_0 at the centroid
-      reading.where = "flat: the formula once, at the triangle's centroid with its face normal";
+      reading.where = N_("flat: the formula once, at the triangle's centroid with its face normal");
       break;
     }
   }
@@ -151,26 +153,26 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
   const Mesh& mesh = scene.meshes[size_t(r.pick.mesh)];
   const Material& material = material_of(scene, r.pick);
   ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
-  if (!ImGui::Begin("Inspector", &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
+  if (!ImGui::Begin(tr("Inspector"), &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }
-  ImGui::Text("pixel (%d, %d): %s, triangle %d, material \"%s\"", r.pick.x, r.pick.y,
+  ImGui::Text(tr("pixel (%d, %d): %s, triangle %d, material \"%s\""), r.pick.x, r.pick.y,
               mesh.name.c_str(), r.pick.triangle, material.name.c_str());
   ImGui::Text("P = (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)", double(r.pick.P.x),
               double(r.pick.P.y), double(r.pick.P.z), double(r.normal.x), double(r.normal.y),
               double(r.normal.z));
-  ImGui::TextDisabled("%s", r.where.c_str());
+  ImGui::TextDisabled("%s", tr(r.where.c_str()));
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
   if (ImGui::BeginTable("terms", 8, flags)) {
-    for (const char* heading : {"light", "theta", "alpha", "d", "f_att", "S", "I_D", "I_S"})
+    for (const char* heading : {tr("light"), "theta", "alpha", "d", "f_att", "S", "I_D", "I_S"})
       ImGui::TableSetupColumn(heading);
     ImGui::TableHeadersRow();
     for (const LightTerm& t : r.terms.lights) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       if (t.lit) ImGui::TextUnformatted(t.name.c_str());
-      else ImGui::TextDisabled("%s (behind)", t.name.c_str());
+      else ImGui::TextDisabled(tr("%s (behind)"), t.name.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.1f°", double(t.theta * degrees));
       ImGui::TableNextColumn();
@@ -198,23 +200,23 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
       rgb_cell(value);
     };
     row("I_A = Ia ka", r.terms.ambient);
-    row("sum I_D", r.terms.diffuse);
-    if (r.kd_texture != Rgb(1.0f)) row("kd texture", r.kd_texture);
-    if (r.vertex_colour != Rgb(1.0f)) row("kd vertex colour (COLOR_0)", r.vertex_colour);
-    row("sum I_S", r.terms.specular);
+    row(tr("sum I_D"), r.terms.diffuse);
+    if (r.kd_texture != Rgb(1.0f)) row(tr("kd texture"), r.kd_texture);
+    if (r.vertex_colour != Rgb(1.0f)) row(tr("kd vertex colour (COLOR_0)"), r.vertex_colour);
+    row(tr("sum I_S"), r.terms.specular);
     if (r.emitting_side && material.is_emissive()) row("Le", material.emission);
-    if (r.terms.reflection != Rgb(0.0f)) row("kr Ir (reflection map)", r.terms.reflection);
+    if (r.terms.reflection != Rgb(0.0f)) row(tr("kr Ir (reflection map)"), r.terms.reflection);
     if (r.terms.fog < 1.0f) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted("fog f, C_fog");
+      ImGui::TextUnformatted(tr("fog f, C_fog"));
       ImGui::TableNextColumn();
       ImGui::Text("%.4g   %.3g %.3g %.3g", double(r.terms.fog), double(r.terms.fog_colour.r),
                   double(r.terms.fog_colour.g), double(r.terms.fog_colour.b));
     }
-    row("I (CPU, the formula)", r.sum);
-    row("I (GPU, the pixel)", r.gl_pixel);
-    if (r.transparent) row("f kt It (GPU - CPU: behind)", r.gl_pixel - r.sum);
+    row(tr("I (CPU, the formula)"), r.sum);
+    row(tr("I (GPU, the pixel)"), r.gl_pixel);
+    if (r.transparent) row(tr("f kt It (GPU - CPU: behind)"), r.gl_pixel - r.sum);
     ImGui::EndTable();
   }
   ImGui::End();
@@ -224,15 +226,15 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
 // shot and has still to shoot, and what step 3 displays (B = radiosity + unshot, drawn as B/pi).
 void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open) {
   ImGui::SetNextWindowSize(ImVec2(0, 0), ImGuiCond_Always);  // fit the table
-  if (!ImGui::Begin("Inspector: patch", &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
+  if (!ImGui::Begin(tr("Inspector: patch"), &open, ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }
-  ImGui::Text("patch %zu of %s, triangle %d, material \"%s\"", r.patch,
+  ImGui::Text(tr("patch %zu of %s, triangle %d, material \"%s\""), r.patch,
               scene.meshes[size_t(r.mesh)].name.c_str(), r.triangle, r.material.c_str());
-  ImGui::Text("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)", double(r.centre.x), double(r.centre.y),
+  ImGui::Text(tr("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)"), double(r.centre.x), double(r.centre.y),
               double(r.centre.z), double(r.normal.x), double(r.normal.y), double(r.normal.z));
-  ImGui::TextDisabled("after %d shots; exitances in W/m², radiance in W/(m² sr)", r.shots);
+  ImGui::TextDisabled(tr("after %d shots; exitances in W/m², radiance in W/(m² sr)"), r.shots);
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
   if (ImGui::BeginTable("patch", 2, flags)) {
     auto row = [](const char* name, const Rgb& value) {
@@ -242,17 +244,17 @@ void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open)
       ImGui::TableNextColumn();
       rgb_cell(value);
     };
-    row("E = π Le (emitted)", r.E);
+    row(tr("E = π Le (emitted)"), r.E);
     row("ρ = kd", r.rho);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted("area A");
+    ImGui::TextUnformatted(tr("area A"));
     ImGui::TableNextColumn();
     ImGui::Text("%.4g m²", double(r.area));
-    row("radiosity (shot)", r.radiosity);
-    row("unshot", r.unshot);
-    row("B = radiosity + unshot", r.B);
-    row("B / π (drawn)", r.radiance);
+    row(tr("radiosity (shot)"), r.radiosity);
+    row(tr("unshot"), r.unshot);
+    row(tr("B = radiosity + unshot"), r.B);
+    row(tr("B / π (drawn)"), r.radiance);
     ImGui::EndTable();
   }
   ImGui::End();

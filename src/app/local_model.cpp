@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "gl/functions.h"
@@ -69,7 +70,7 @@ void LocalModel::click(const Camera& camera, const Viewport& viewport, glm::ivec
     return;
   }
   reading_.reset();
-  state.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
+  state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
 // Side by side, each local pane sets the shading as it draws: the panel speaks of this one's.

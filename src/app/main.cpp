@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
   std::string models_help = "Models (--model NAME; the key that shows it in the viewer):\n";
   for (const luz::app::ModelEntry& m : luz::app::models())
-    models_help += fmt::format("  {:<10} [{}] {}\n", m.name, m.key, m.help);
+    models_help += fmt::format("  {:<10} [{}] {}\n", m.name, m.key, luz::i18n::tr(m.help));
   render->footer(models_help +
                  "A model takes the flags of its groups: slide 19's switches only the local models, the tracer's "
                  "whitted and hybrid, --spp and --depth the three tracers (whitted, hybrid, path), the solver's "
@@ -194,10 +194,9 @@ int main(int argc, char** argv) {
 
   if (lesson_file) {  // a malformed lesson is a usage error, found before any window opens
     try {
-      luz::app::LessonPlayer lesson(luz::app::parse_lesson(lesson_file->empty() ? luz::app::default_lesson()
-                                                                                  : std::filesystem::path(*lesson_file)));
-      viewer.scene = lesson.step().scene;
-      viewer.script = lesson.opening_script(0);
+      viewer.lesson = luz::app::parse_lesson(lesson_file->empty() ? luz::app::default_lesson()
+                                                                  : std::filesystem::path(*lesson_file));
+      viewer.scene = viewer.lesson->steps.front().scene;
     } catch (const luz::Error& error) {
       fmt::print(stderr, "luz: {}\n", error.what());
       return 2;
@@ -206,10 +205,7 @@ int main(int argc, char** argv) {
   if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
   if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens
     try {
-      luz::app::Script script = luz::app::parse_script(script_file);
-      if (viewer.script)  // after the lesson's first step
-        script.commands.insert(script.commands.begin(), viewer.script->commands.begin(), viewer.script->commands.end());
-      viewer.script = std::move(script);
+      viewer.script = luz::app::parse_script(script_file);  // it waits for the lesson's first step
     } catch (const luz::Error& error) {
       fmt::print(stderr, "luz: {}\n", error.what());
       return 2;

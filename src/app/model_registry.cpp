@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "app/hybrid_model.h"
+#include "app/i18n.h"
 #include "app/local_model.h"
 #include "app/path_model.h"
 #include "app/radiosity_command.h"
@@ -52,24 +53,24 @@ Rendered render_whitted_model(const Scene& scene, const Camera& camera, int widt
 }
 
 const ModelEntry table[] = {
-    {"flat", "flat", 1, "flat shading", local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}},
-    {"gouraud", "Gouraud", 2, "Gouraud shading", local_flags, render_shaded<Shading::gouraud>,
+    {"flat", N_("flat"), 1, N_("flat shading"), local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}},
+    {"gouraud", N_("Gouraud"), 2, N_("Gouraud shading"), local_flags, render_shaded<Shading::gouraud>,
      local_view<Shading::gouraud>, {}},
-    {"phong", "Phong", 3, "Phong shading", local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}},
-    {"whitted", "Whitted", 4, "Whitted ray tracing (the raster view until Enter)", whitted_flags,
+    {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}},
+    {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags,
      render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedModel>(v); },
      traced_verbs()},
-    {"radiosity", "radiosity", 5, "radiosity (progressive refinement; Space runs it)", radiosity_flags,
+    {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags,
      render_radiosity_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityModel>(v); },
      radiosity_verbs()},
-    {"hybrid", "hybrid", 6, "hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)",
+    {"hybrid", N_("hybrid"), 6, N_("hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"),
      hybrid_flags, render_hybrid,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> {
        return std::make_unique<HybridModel>(v, static_cast<RadiosityModel&>(v.view("radiosity")));
      },
      {}},
-    {"path", "path tracer", 7, "path tracing of slide 14's equation, the reference (refines while the view stays)",
+    {"path", N_("path tracer"), 7, N_("path tracing of slide 14's equation, the reference (refines while the view stays)"),
      path_flags, render_path_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs()},
 };

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/model_registry.h"
 #include "app/shortcuts.h"
 
@@ -57,7 +58,7 @@ glm::vec4 WindowCorners::take_left_half() {
   taken_[top_left] = taken_[bottom_left] = true;
   const float hint = 2.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
   const glm::vec2 o = viewport_.origin, s = viewport_.size;
-  const float top = o.y + margin_ + hint;
+  const float top = std::max(o.y, top_) + margin_ + hint;
   return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
 }
 
@@ -76,8 +77,8 @@ void draw_status_line(const ViewerState& state, const std::string& model, float 
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("status", nullptr, fixed);
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
-  const std::string camera = state.free_camera ? "free camera (C: back)" : scene.cameras[size_t(state.scene_camera)].name;
-  ImGui::Text("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s", model.c_str(),
+  const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
+  ImGui::Text(tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s"), model.c_str(),
               state.frame_ms, scene.triangle_count(), int(lights), scene.area_lights.size(), camera.c_str(),
               state.note.c_str());
   ImGui::End();
@@ -88,27 +89,32 @@ void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
   ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(max.x, max.y));
   // Auto-sized up to `max`; beyond it the list scrolls (wheel, scrollbar), the title bar's
   // close button and F1 hide it.
-  ImGui::Begin("Keys (F1)", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+  ImGui::Begin(tr("Keys (F1)"), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                                        ImGuiWindowFlags_AlwaysVerticalScrollbar);
-  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+  // As wide as `max` allows, the descriptions wrapped in their column: a longer translation
+  // takes another line instead of running past the window's edge.
+  const float width = max.x - 2.0f * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg, ImVec2(width, 0.0f))) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
     auto row = [](const std::string& keys, const char* what) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(keys.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(what);
+      ImGui::TextWrapped("%s", what);
     };
-    for (const ModelEntry& m : models()) row(std::to_string(m.key), m.help);
+    for (const ModelEntry& m : models()) row(std::to_string(m.key), tr(m.help));
     for (const Shortcut& s : shortcuts())
-      if (s.action != Action::choose_model) row(s.keys, s.what);
-    row("left drag", "orbit around the scene");
-    row("right drag", "pan");
-    row("wheel", "zoom");
-    row("left click", "inspect the pixel: each term's value (Whitted: its ray tree; radiosity: the patch)");
-    row("drop a file", "load a .gltf / .glb scene");
+      if (s.action != Action::choose_model) row(s.keys, tr(s.what));
+    row(tr("left drag"), tr("orbit around the scene"));
+    row(tr("right drag"), tr("pan"));
+    row(tr("wheel"), tr("zoom"));
+    row(tr("left click"), tr("inspect the pixel: each term's value (Whitted: its ray tree; radiosity: the patch)"));
+    row(tr("drop a file"), tr("load a .gltf / .glb scene"));
     ImGui::EndTable();
   }
-  if (ImGui::Button("close  [F1]")) open = false;
+  if (ImGui::Button(tr("close  [F1]"))) open = false;
   ImGui::End();
 }
 
@@ -120,7 +126,7 @@ void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewpor
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
   ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
-  const std::string title = fmt::format("{} warning{}###warnings", warnings.size(), warnings.size() == 1 ? "" : "s");
+  const std::string title = (warnings.size() == 1 ? std::string(tr("1 warning")) : trf("{} warnings", warnings.size())) + "###warnings";
   ImGui::Begin(title.c_str(), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                                          ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::PushTextWrapPos(0.85f * viewport.size.x);
@@ -136,13 +142,13 @@ void draw_load_error(ViewerState& state, float x, float y, float max_width) {
   // A red title: the tests find the window by it (tests/test_viewer.cpp).
   ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
   ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
-  ImGui::Begin("The scene did not load", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin(tr("The scene did not load"), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::PushTextWrapPos(0.85f * max_width);
   ImGui::TextUnformatted(state.error.c_str());
   ImGui::PopTextWrapPos();
-  ImGui::TextDisabled("Still showing %s. Fix the file and press R, or drop another.",
+  ImGui::TextDisabled(tr("Still showing %s. Fix the file and press R, or drop another."),
                       state.scene_path.filename().string().c_str());
-  if (ImGui::Button("OK")) state.error.clear();
+  if (ImGui::Button(tr("OK"))) state.error.clear();
   ImGui::End();
   ImGui::PopStyleColor(2);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The small windows of the viewer besides the panel and the inspector: the status line, the
 // list of keys (F1), Whitted's hint and progress, and the error of a scene that did not load.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ public:
   bool place(Corner preferred);
   // A window at the top centre ends at `bottom` (window units).
   void reserve_top(float bottom) { top_ = std::max(top_, bottom); }
+  // Where the next window at the top centre starts: below those reserved (the lesson's caption).
+  float top() const { return std::max(viewport_.origin.y, top_); }
   // The left half of the picture for one large window (slide 36's), below room for a two-line
   // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
   glm::vec4 take_left_half();

@@ -13,6 +13,8 @@
 #include <imgui.h>
 
 #include "app/difference_view.h"
+#include "app/classroom_ui.h"
+#include "app/i18n.h"
 #include "app/model_registry.h"
 #include "app/options_tables.h"
 #include "app/panes.h"
@@ -62,61 +64,61 @@ bool term_checkbox(const char* label, bool* value, const ImVec4& colour) {
 // fills from --fog, --shadows, --transparency and --reflection-map. Distance attenuation and
 // non-uniform lights belong to each light (the Lights section below).
 void effects_section(LocalOptions& o) {
-  if (!ImGui::TreeNodeEx("slide 19: other possibilities", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::TreeNodeEx(tr("slide 19: other possibilities"), ImGuiTreeNodeFlags_DefaultOpen)) return;
 
   // Atmospheric attenuation.
   int fog = int(o.fog.mode);
   ImGui::PushStyleColor(ImGuiCol_Text, o.fog.mode != FogMode::off ? fog_colour : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextUnformatted("atmospheric attenuation (fog)  [G]");
+  ImGui::TextUnformatted(tr("atmospheric attenuation (fog)  [G]"));
   ImGui::PopStyleColor();
-  ImGui::RadioButton("off##fog", &fog, int(FogMode::off));
+  ImGui::RadioButton(tr("off##fog"), &fog, int(FogMode::off));
   ImGui::SameLine();
-  ImGui::RadioButton("linear", &fog, int(FogMode::linear));
+  ImGui::RadioButton(tr("linear"), &fog, int(FogMode::linear));
   ImGui::SameLine();
-  ImGui::RadioButton("exponential", &fog, int(FogMode::exponential));
+  ImGui::RadioButton(tr("exponential"), &fog, int(FogMode::exponential));
   o.fog.mode = FogMode(fog);
   if (o.fog.mode != FogMode::off) {
-    ImGui::ColorEdit3("fog colour", &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    ImGui::ColorEdit3(tr("fog colour"), &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     if (o.fog.mode == FogMode::linear) {
       const SliderRange near = local_range("fog-near"), far = local_range("fog-far");
-      ImGui::DragFloatRange2("near, far (m)", &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
-      dim_text("f = (far - d) / (far - near), clamped");
+      ImGui::DragFloatRange2(tr("near, far (m)"), &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
+      dim_text(tr("f = (far - d) / (far - near), clamped"));
     } else {
       const SliderRange density = local_range("fog-density");
-      ImGui::DragFloat("density (1/m)", &o.fog.density, 0.002f, density.low, density.high, "%.3f");
-      dim_text("f = exp(-density d)");
+      ImGui::DragFloat(tr("density (1/m)"), &o.fog.density, 0.002f, density.low, density.high, "%.3f");
+      dim_text(tr("f = exp(-density d)"));
     }
-    dim_text("I' = f I + (1 - f) C_fog");
+    dim_text(tr("I' = f I + (1 - f) C_fog"));
   }
 
   // Blocking of the sources by occlusion.
-  term_checkbox("shadows S_i (shadow maps)  [H]", &o.shadows.on, shadow_colour);
+  term_checkbox(tr("shadows S_i (shadow maps)  [H]"), &o.shadows.on, shadow_colour);
   if (o.shadows.on) {
     const SliderRange bias = local_range("shadow-bias"), slope = local_range("shadow-slope-bias"),
                       offset = local_range("shadow-normal-offset");
-    ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, bias.low, bias.high, "%.4f");
-    ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, slope.low, slope.high, "%.2f");
-    ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, offset.low, offset.high, "%.2f");
+    ImGui::DragFloat(tr("bias (m)"), &o.shadows.constant_bias, 0.0002f, bias.low, bias.high, "%.4f");
+    ImGui::DragFloat(tr("slope (texels)"), &o.shadows.slope_bias, 0.02f, slope.low, slope.high, "%.2f");
+    ImGui::DragFloat(tr("offset (texels)"), &o.shadows.normal_offset, 0.02f, offset.low, offset.high, "%.2f");
     int size_index = std::clamp(int(std::lround(std::log2(float(o.shadows.map_size)))) - 8, 0, 4);
-    ImGui::Combo("map size", &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
+    ImGui::Combo(tr("map size"), &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
     o.shadows.map_size = 256 << size_index;
-    dim_text("bias + slope·texel·tan θ; lookup moved offset texels along N");
-    dim_text("point lights, emitters: cube maps; spots, sun: one map");
+    dim_text(tr("bias + slope·texel·tan θ; lookup moved offset texels along N"));
+    dim_text(tr("point lights, emitters: cube maps; spots, sun: one map"));
   }
 
   // Non-refractive transparency.
-  term_checkbox("transparency kt·It (non-refractive)  [O]", &o.transparency.on, transparency_colour);
-  if (o.transparency.on) dim_text("I + kt · (what lies behind), drawn back to front");
+  term_checkbox(tr("transparency kt·It (non-refractive)  [O]"), &o.transparency.on, transparency_colour);
+  if (o.transparency.on) dim_text(tr("I + kt · (what lies behind), drawn back to front"));
 
   // Reflection maps.
-  term_checkbox("reflection map kr·Ir  [M]", &o.reflection.on, reflection_colour);
+  term_checkbox(tr("reflection map kr·Ir  [M]"), &o.reflection.on, reflection_colour);
   if (o.reflection.on) {
     int size_index = std::clamp(int(std::lround(std::log2(float(o.reflection.resolution)))) - 6, 0, 4);
-    ImGui::Combo("cube face size", &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
+    ImGui::Combo(tr("cube face size"), &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
     o.reflection.resolution = 64 << size_index;
-    dim_text("a cube map from the centre of each object with kr > 0");
+    dim_text(tr("a cube map from the centre of each object with kr > 0"));
     if (!o.reflection.environment.empty())
-      dim_text("environment: %s", o.reflection.environment.c_str());
+      dim_text(tr("environment: %s"), o.reflection.environment.c_str());
   }
   ImGui::TreePop();
 }
@@ -125,11 +127,11 @@ void effects_section(LocalOptions& o) {
 // The radio buttons of the registry's models the viewer shows, three to a row, then the shown
 // model's section. A `luz render` only model has no button: its key says where it is.
 void model_header(ViewerState& state, ModelView& shown) {
-  if (!ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Model"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int column = 0;
   for (const ModelEntry& m : models()) {
     if (!m.in_viewer()) continue;
-    const std::string label = fmt::format("{} [{}]", m.label, m.key);
+    const std::string label = fmt::format("{} [{}]", tr(m.label), m.key);
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
     if (++column % 3 != 0) ImGui::SameLine();
   }
@@ -138,23 +140,32 @@ void model_header(ViewerState& state, ModelView& shown) {
 }
 
 // ---- [lights] ----------------------------------------------------------------------------------
+const char* light_type_label(LightType type) {
+  switch (type) {
+    case LightType::point: return tr("point");
+    case LightType::spot: return tr("spot");
+    case LightType::directional: return tr("directional");
+  }
+  return "?";
+}
+
 void lights_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (scene.lights.empty()) dim_text("no punctual lights");
+  if (!ImGui::CollapsingHeader(tr("Lights"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (scene.lights.empty()) dim_text(tr("no punctual lights"));
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     Light& light = scene.lights[i];
     LightEdit& edit = state.light_edits[i];
     ImGui::PushID(int(i));
     ImGui::Checkbox("##on", &light.enabled);
     ImGui::SameLine();
-    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), to_string(light.type))) {
-      bool changed = ImGui::ColorEdit3("colour", &edit.colour.r);
+    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), light_type_label(light.type))) {
+      bool changed = ImGui::ColorEdit3(tr("colour"), &edit.colour.r);
       changed |= ImGui::DragFloat(light.type == LightType::directional ? "E (W/m²)" : "I (W/sr)",
                                   &edit.intensity, 0.1f + 0.01f * edit.intensity, 0.0f, 1e6f, "%.3g");
       if (changed) light.intensity = edit.colour * edit.intensity;
       if (light.type != LightType::directional) {
-        ImGui::DragFloat3("position", &light.position.x, 0.01f, 0.0f, 0.0f, "%.3f");
+        ImGui::DragFloat3(tr("position"), &light.position.x, 0.01f, 0.0f, 0.0f, "%.3f");
         int mode = light.attenuation.classroom ? 1 : 0;
         ImGui::Combo("f_att", &mode, "1/d²\0" "1/(c0 + c1 d + c2 d²)\0");
         light.attenuation.classroom = mode == 1;
@@ -166,15 +177,16 @@ void lights_header(ViewerState& state) {
       }
       if (light.type == LightType::spot) {  // slide 19: lights with a non-uniform distribution
         int warn = light.warn_exponent > 0.0f ? 1 : 0;
-        ImGui::Combo("distribution", &warn, "smooth cone\0" "Warn's cos^p\0");
+        const char* distributions[] = {tr("smooth cone"), tr("Warn's cos^p")};
+        ImGui::Combo(tr("distribution"), &warn, distributions, 2);
         float outer = glm::degrees(light.outer_cone), inner = glm::degrees(light.inner_cone);
         if (warn == 1) {
           if (light.warn_exponent <= 0.0f) light.warn_exponent = 10.0f;
           ImGui::DragFloat("p", &light.warn_exponent, 0.2f, 0.01f, 1000.0f, "%.1f");
-          ImGui::DragFloat("cut-off (°)", &outer, 0.2f, 0.1f, 90.0f, "%.1f");
+          ImGui::DragFloat(tr("cut-off (°)"), &outer, 0.2f, 0.1f, 90.0f, "%.1f");
         } else {
           light.warn_exponent = 0.0f;
-          ImGui::DragFloatRange2("inner, outer (°)", &inner, &outer, 0.2f, 0.0f, 90.0f, "%.1f");
+          ImGui::DragFloatRange2(tr("inner, outer (°)"), &inner, &outer, 0.2f, 0.0f, 90.0f, "%.1f");
           light.inner_cone = glm::radians(std::clamp(inner, 0.0f, outer));
         }
         light.outer_cone = glm::radians(std::clamp(outer, 0.1f, 90.0f));
@@ -184,16 +196,16 @@ void lights_header(ViewerState& state) {
     ImGui::PopID();
   }
   if (!scene.area_lights.empty())
-    dim_text("%zu emissive triangles light the scene (their Le: Material)",
+    dim_text(tr("%zu emissive triangles light the scene (their Le: Material)"),
                         scene.area_lights.size());
 }
 
 // ---- [material] --------------------------------------------------------------------------------
 void material_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Material"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (state.selected_material < 0 || size_t(state.selected_material) >= scene.materials.size()) {
-    dim_text("click an object in the picture");
+    dim_text(tr("click an object in the picture"));
     return;
   }
   Material& m = scene.materials[size_t(state.selected_material)];
@@ -213,20 +225,20 @@ void material_header(ViewerState& state) {
   ImGui::ColorEdit3("kt", &m.kt.r, ImGuiColorEditFlags_Float);
   ImGui::DragFloat("ior", &m.ior, 0.005f, 1.0f, 3.0f, "%.3f");
   if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
-  dim_text("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model");
+  dim_text(tr("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model"));
 }
 
 // ---- [scene] -----------------------------------------------------------------------------------
 void scene_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Scene"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
-  ImGui::ColorEdit3("ambient Ia", &scene.ambient.r, hdr);
-  ImGui::ColorEdit3("background", &scene.background.r, hdr);
-  ImGui::SliderFloat("exposure (EV)", &state.exposure, -6.0f, 6.0f, "%+.1f");
+  ImGui::ColorEdit3(tr("ambient Ia"), &scene.ambient.r, hdr);
+  ImGui::ColorEdit3(tr("background"), &scene.background.r, hdr);
+  ImGui::SliderFloat(tr("exposure (EV)"), &state.exposure, -6.0f, 6.0f, "%+.1f");
   const Camera& current = scene.cameras[size_t(state.scene_camera)];
-  const std::string preview = state.free_camera ? fmt::format("(moved from {})", current.name) : current.name;
-  if (ImGui::BeginCombo("camera", preview.c_str())) {
+  const std::string preview = state.free_camera ? trf("(moved from {})", current.name) : current.name;
+  if (ImGui::BeginCombo(tr("camera"), preview.c_str())) {
     for (size_t i = 0; i < scene.cameras.size(); ++i)
       if (ImGui::Selectable(scene.cameras[i].name.c_str(), !state.free_camera && int(i) == state.scene_camera)) {
         state.scene_camera = int(i);
@@ -234,9 +246,9 @@ void scene_header(ViewerState& state) {
       }
     ImGui::EndCombo();
   }
-  if (ImGui::Button("scene camera [C]")) state.back_to_scene_camera = true;
+  if (ImGui::Button(tr("scene camera [C]"))) state.back_to_scene_camera = true;
   ImGui::SameLine();
-  if (ImGui::Button("reload [R]")) state.reload = true;
+  if (ImGui::Button(tr("reload [R]"))) state.reload = true;
   dim_text("%s", state.scene_path.filename().string().c_str());
 }
 
@@ -246,24 +258,24 @@ void scene_header(ViewerState& state) {
 // evaluated, which the section says.
 void local_section(ViewerState& state) {
   LocalOptions& o = state.local;
-  const char* where = o.shading == Shading::flat      ? "once per triangle, at its centroid, face normal"
-                      : o.shading == Shading::gouraud ? "per vertex, colours interpolated"
-                                                      : "per pixel, normals interpolated";
-  dim_text("evaluated %s", where);
+  const char* where = o.shading == Shading::flat      ? tr("once per triangle, at its centroid, face normal")
+                      : o.shading == Shading::gouraud ? tr("per vertex, colours interpolated")
+                                                      : tr("per pixel, normals interpolated");
+  dim_text(tr("evaluated %s"), where);
   ImGui::Spacing();
   draw_local_formula(o, *state.scene);
   ImGui::Spacing();
-  term_checkbox("ambient I_A  [A]", &o.ambient, ambient_colour);
-  term_checkbox("diffuse I_D  [D]", &o.diffuse, diffuse_colour);
-  term_checkbox("specular I_S  [S]", &o.specular, specular_colour);
-  term_checkbox("emission Le  [E]", &o.emission, emission_colour);
-  ImGui::Checkbox("kd texture  [T]", &o.textures);
+  term_checkbox(tr("ambient I_A  [A]"), &o.ambient, ambient_colour);
+  term_checkbox(tr("diffuse I_D  [D]"), &o.diffuse, diffuse_colour);
+  term_checkbox(tr("specular I_S  [S]"), &o.specular, specular_colour);
+  term_checkbox(tr("emission Le  [E]"), &o.emission, emission_colour);
+  ImGui::Checkbox(tr("kd texture  [T]"), &o.textures);
   int blinn = o.blinn ? 1 : 0;
-  ImGui::TextUnformatted("cos(α):");
+  ImGui::TextUnformatted(tr("cos(α):"));
   ImGui::SameLine();
-  ImGui::RadioButton("Phong R·V", &blinn, 0);
+  ImGui::RadioButton(tr("Phong R·V"), &blinn, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
+  ImGui::RadioButton(tr("Blinn N·H  [B]"), &blinn, 1);
   o.blinn = blinn == 1;
   ImGui::Spacing();
   effects_section(o);
@@ -293,8 +305,8 @@ void draw_local_formula(const LocalOptions& o, const Scene& scene) {
   piece(" + Le", o.emission, emission_colour);
   piece(" + kr·Ir", o.reflection.on, reflection_colour);
   piece(" + kt·It", o.transparency.on, transparency_colour);
-  if (o.fog.mode != FogMode::off) ImGui::TextColored(fog_colour, "then I' = f·I + (1 - f)·C_fog (%s fog)", to_string(o.fog.mode));
-  dim_text("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s",
+  if (o.fog.mode != FogMode::off) ImGui::TextColored(fog_colour, tr("then I' = f·I + (1 - f)·C_fog (%s fog)"), tr(to_string(o.fog.mode)));
+  dim_text(tr("ILᵢ = Iᵢ·f_att(dᵢ)/π,  f_att = %s"),
                       any_classroom_attenuation(scene) ? "1/(c0 + c1 d + c2 d²)" : "1/d²");
 }
 
@@ -313,6 +325,9 @@ void draw_panel(ViewerState& state, ModelView& shown, float width, float height)
   material_header(state);
   scene_header(state);
   panes_section(state);  // last: the sections above keep their places
+  // Last, so that no widget above moves for it (a prepared demo clicks them by position).
+  ImGui::Separator();
+  draw_language_switch();  // the next frame speaks the language chosen
   ImGui::PopItemWidth();
   ImGui::End();
 }

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/options_tables.h"
 #include "app/panel.h"
 #include "app/traced_model.h"
@@ -25,19 +26,30 @@ ImVec4 colour_of(rt::RayKind kind, bool blocked = false) {
   return ImVec4(c.r, c.g, c.b, 1.0f);
 }
 
+// The ray kinds of slide 24, in the current language.
+const char* kind_label(rt::RayKind kind) {
+  switch (kind) {
+    case rt::RayKind::primary: return tr("primary");
+    case rt::RayKind::shadow: return tr("shadow");
+    case rt::RayKind::reflected: return tr("reflected");
+    case rt::RayKind::transmitted: return tr("transmitted");
+  }
+  return "?";
+}
+
 void progress_and_counters(TracedModel& view) {
   const TraceProgress& t = view.progress();
   if (t.phase == TracePhase::tracing) {
-    if (ImGui::Button("cancel  [Backspace]")) view.requests.cancel = true;
-  } else if (ImGui::Button(t.phase == TracePhase::done ? "render again  [Enter]" : "Render this view  [Enter]")) {
+    if (ImGui::Button(tr("cancel  [Backspace]"))) view.requests.cancel = true;
+  } else if (ImGui::Button(t.phase == TracePhase::done ? tr("render again  [Enter]") : tr("Render this view  [Enter]"))) {
     view.requests.trace = true;
   }
-  const char* untraced = view.hybrid() ? "radiosity" : "raster (Phong)";
+  const char* untraced = view.hybrid() ? tr("radiosity") : tr("raster (Phong)");
   const float fraction = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
   const std::string label = t.phase == TracePhase::raster
-                                ? (t.cancelled ? fmt::format("cancelled at {}/{} tiles: {} view", t.done, t.total, untraced)
-                                               : fmt::format("{} view: not traced", untraced))
-                                : fmt::format("{}/{} tiles  {:.2f} s", t.done, t.total, t.seconds);
+                                ? (t.cancelled ? trf("cancelled at {}/{} tiles: {} view", t.done, t.total, untraced)
+                                               : trf("{} view: not traced", untraced))
+                                : trf("{}/{} tiles  {:.2f} s", t.done, t.total, t.seconds);
   ImGui::ProgressBar(t.phase == TracePhase::raster && !t.cancelled ? 0.0f : fraction, ImVec2(-1.0f, 0.0f),
                      label.c_str());
   if (t.phase != TracePhase::done) return;
@@ -50,42 +62,42 @@ void progress_and_counters(TracedModel& view) {
     ImGui::TextWrapped("%s", value.c_str());
   };
   for (int k = 0; k < rt::kRayKinds; ++k)
-    row(colour_of(rt::RayKind(k)), fmt::format("{} rays", rt::to_string(rt::RayKind(k))),
+    row(colour_of(rt::RayKind(k)), trf("{} rays", kind_label(rt::RayKind(k))),
         fmt::format("{}", c.rays[size_t(k)]));
   const ImVec4 plain = ImGui::GetStyle().Colors[ImGuiCol_Text];
-  row(plain, "ray-triangle tests",
-      c.intersection_tests > 0 ? fmt::format("{}", c.intersection_tests) : std::string("not counted (Embree)"));
-  row(plain, "time", fmt::format("{:.3f} s", c.seconds));
-  row(plain, "rays per second", fmt::format("{:.2f} M", c.rays_per_second() / 1e6));
+  row(plain, tr("ray-triangle tests"),
+      c.intersection_tests > 0 ? fmt::format("{}", c.intersection_tests) : std::string(tr("not counted (Embree)")));
+  row(plain, tr("time"), fmt::format("{:.3f} s", c.seconds));
+  row(plain, tr("rays per second"), fmt::format("{:.2f} M", c.rays_per_second() / 1e6));
 }
 
 void options(ViewerState& state, bool hybrid) {
   rt::WhittedOptions& o = state.whitted;
   const SliderRange depth = whitted_range("depth");
-  ImGui::SliderInt("max depth", &o.max_depth, int(depth.low), int(depth.high));
-  dim_text("primary ray: depth 1; a hit at depth d spawns R and T while d < max");
+  ImGui::SliderInt(tr("max depth"), &o.max_depth, int(depth.low), int(depth.high));
+  dim_text(tr("primary ray: depth 1; a hit at depth d spawns R and T while d < max"));
   bool adaptive = o.sampling == rt::Sampling::adaptive;
   ImGui::BeginDisabled(adaptive);
   const int max_root = int(std::lround(std::sqrt(whitted_range("spp").high)));
   int root = std::clamp(int(std::lround(std::sqrt(float(std::max(o.spp, 1))))), 1, max_root);
-  const std::string spp = fmt::format("{} ({}x{} jittered)", root * root, root, root);
-  if (ImGui::SliderInt("samples / pixel", &root, 1, max_root, spp.c_str(), ImGuiSliderFlags_Logarithmic))
+  const std::string spp = trf("{} ({}x{} jittered)", root * root, root, root);
+  if (ImGui::SliderInt(tr("samples / pixel"), &root, 1, max_root, spp.c_str(), ImGuiSliderFlags_Logarithmic))
     o.spp = root * root;  // squares only
   ImGui::EndDisabled();
-  if (ImGui::Checkbox("adaptive supersampling (Whitted)", &adaptive))
+  if (ImGui::Checkbox(tr("adaptive supersampling (Whitted)"), &adaptive))
     o.sampling = adaptive ? rt::Sampling::adaptive : rt::Sampling::stratified;
   if (adaptive) {
     const SliderRange levels = whitted_range("adaptive-levels"), threshold = whitted_range("adaptive-threshold");
-    ImGui::SliderInt("levels", &o.adaptive_levels, int(levels.low), int(levels.high));
-    ImGui::DragFloat("threshold (sRGB)", &o.adaptive_threshold, 0.002f, threshold.low, threshold.high, "%.3f");
+    ImGui::SliderInt(tr("levels"), &o.adaptive_levels, int(levels.low), int(levels.high));
+    ImGui::DragFloat(tr("threshold (sRGB)"), &o.adaptive_threshold, 0.002f, threshold.low, threshold.high, "%.3f");
   }
-  ImGui::Checkbox("Fresnel: kr + kt·F, kt·(1 - F)", &o.fresnel);
-  ImGui::Checkbox("shadow rays S_i", &o.shadows);
+  ImGui::Checkbox(tr("Fresnel: kr + kt·F, kt·(1 - F)"), &o.fresnel);
+  ImGui::Checkbox(tr("shadow rays S_i"), &o.shadows);
   const SliderRange samples = whitted_range("light-samples");
-  ImGui::SliderInt("samples per emitter", &o.light_samples, int(samples.low), int(samples.high), "%d",
+  ImGui::SliderInt(tr("samples per emitter"), &o.light_samples, int(samples.low), int(samples.high), "%d",
                    ImGuiSliderFlags_Logarithmic);
-  dim_text("1: its centroid; N: N-rooks over its area (soft shadows)");
-  ImGui::Checkbox("brute force (every triangle, counted)", &o.brute_force);
+  dim_text(tr("1: its centroid; N: N-rooks over its area (soft shadows)"));
+  ImGui::Checkbox(tr("brute force (every triangle, counted)"), &o.brute_force);
   // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
   // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
   LocalOptions& l = state.local;
@@ -102,9 +114,9 @@ void options(ViewerState& state, bool hybrid) {
     ImGui::SameLine();
     ImGui::Checkbox("Le [E]", &l.emission);
   }
-  ImGui::Checkbox("kd texture [T]", &l.textures);
+  ImGui::Checkbox(tr("kd texture [T]"), &l.textures);
   ImGui::SameLine();
-  ImGui::Checkbox("Blinn N·H [B]", &l.blinn);
+  ImGui::Checkbox(tr("Blinn N·H [B]"), &l.blinn);
 }
 
 // One node and, indented under it, the rays its hit spawned.
@@ -128,16 +140,16 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth;
   if (children[size_t(id)].empty()) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
   ImGui::PushStyleColor(ImGuiCol_Text, colour_of(n.kind, shadow && n.hit));
-  const bool open = ImGui::TreeNodeEx(reinterpret_cast<void*>(intptr_t(id)), flags, "%s", rt::to_string(n.kind));
+  const bool open = ImGui::TreeNodeEx(reinterpret_cast<void*>(intptr_t(id)), flags, "%s", kind_label(n.kind));
   ImGui::PopStyleColor();
   ImGui::TableNextColumn();
   ImGui::Text("%d", n.depth);
   ImGui::TableNextColumn();
-  if (shadow) ImGui::Text("light %d: %s", n.light, n.hit ? "blocked" : "lit");
+  if (shadow) ImGui::Text(tr("light %d: %s"), n.light, n.hit ? tr("blocked") : tr("lit"));
   else if (n.hit) ImGui::TextUnformatted(n.mesh.c_str());
-  else dim_text("background");
+  else dim_text(tr("background"));
   if (ImGui::IsItemHovered())  // the hit cell: the ray itself
-    ImGui::SetTooltip("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s",
+    ImGui::SetTooltip(tr("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s"),
                       n.origin.x, n.origin.y, n.origin.z, n.direction.x, n.direction.y, n.direction.z, n.t,
                       n.material.c_str(), rgb(n.weight).c_str(), rgb(n.radiance).c_str());
   ImGui::TableNextColumn();
@@ -151,15 +163,15 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
 }
 
 void ray_tree(ViewerState& state, TracedModel& view) {
-  if (!ImGui::TreeNodeEx("ray tree (slide 24)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::TreeNodeEx(tr("ray tree (slide 24)"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (!view.ray_tree()) {
-    dim_text("click a pixel: its rays are drawn over the scene");
+    dim_text(tr("click a pixel: its rays are drawn over the scene"));
     ImGui::TreePop();
     return;
   }
   const rt::RayTree& tree = *view.ray_tree();
-  ImGui::Text("pixel (%d, %d): %zu rays, L = %s", tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
-  if (ImGui::SmallButton("clear [X]")) view.requests.clear_tree = true;
+  ImGui::Text(tr("pixel (%d, %d): %zu rays, L = %s"), tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
+  if (ImGui::SmallButton(tr("clear [X]"))) view.requests.clear_tree = true;
   std::vector<std::vector<int>> children(tree.nodes.size());
   for (const rt::RayTreeNode& n : tree.nodes)
     if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);
@@ -171,20 +183,20 @@ void ray_tree(ViewerState& state, TracedModel& view) {
   if (ImGui::BeginTable("ray tree", 5, flags, ImVec2(0.0f, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     // Shares of the panel's width: the tree's indentation needs the most.
-    ImGui::TableSetupColumn("ray", ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn(tr("ray"), ImGuiTableColumnFlags_WidthStretch, 1.7f);
     ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch, 0.25f);
-    ImGui::TableSetupColumn("hit", ImGuiTableColumnFlags_WidthStretch, 1.5f);
-    ImGui::TableSetupColumn("local", ImGuiTableColumnFlags_WidthStretch, 0.55f);
-    ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableSetupColumn(tr("hit"), ImGuiTableColumnFlags_WidthStretch, 1.5f);
+    ImGui::TableSetupColumn(tr("local"), ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableSetupColumn(tr("share"), ImGuiTableColumnFlags_WidthStretch, 0.55f);
     ImGui::TableHeadersRow();
     for (const rt::RayTreeNode& n : tree.nodes)
       if (n.parent < 0) node_row(tree, children, n.id, state.exposure);
     ImGui::EndTable();
   }
   ImGui::PopStyleVar();
-  dim_text(view.hybrid() ? "local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit"
-                                                  : "local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit");
-  dim_text("share: its contribution to L (hover for numbers)");
+  dim_text(view.hybrid() ? tr("local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit")
+                         : tr("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit"));
+  dim_text(tr("share: its contribution to L (hover for numbers)"));
   ImGui::TreePop();
 }
 
@@ -197,7 +209,7 @@ void traced_section(ViewerState& state, TracedModel& view) {
   progress_and_counters(view);
   ImGui::Spacing();
   ray_tree(state, view);
-  if (ImGui::TreeNodeEx("tracer switches", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::TreeNodeEx(tr("tracer switches"), ImGuiTreeNodeFlags_DefaultOpen)) {
     options(state, view.hybrid());
     ImGui::TreePop();
   }

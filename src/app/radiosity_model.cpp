@@ -6,6 +6,7 @@
 
 #include <fstream>
 
+#include "app/i18n.h"
 #include "app/inspector.h"
 #include "app/viewer_window.h"
 #include "app/local_model.h"
@@ -32,7 +33,7 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
     r.patch.reset();
     try {
       solution_ = std::make_unique<RadiosityView>(*state.scene, r.options);
-      state.note = fmt::format("radiosity: {} patches, hemicube {}", solution_->mesh().size(), r.options.hemicube_res);
+      state.note = trf("radiosity: {} patches, hemicube {}", solution_->mesh().size(), r.options.hemicube_res);
       for (const std::string& warning : solution_->solver().warnings()) viewer_.warn(warning);
     } catch (const Error& error) {
       state.note = error.what();
@@ -48,7 +49,8 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
   const bool was_running = r.drive.running;
   solution_->advance(r, state.exposure, display.heat_map);
   if (was_running && !r.drive.running && r.status.done)
-    state.note = fmt::format("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
+    // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
+    state.note = trf("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
                              100.0 * r.status.unshot_fraction);
   picture.bind();
   solution_->draw(camera, viewport.pixels.x, viewport.pixels.y, display.shooter);
@@ -75,7 +77,7 @@ void RadiosityModel::click(const Camera& camera, const Viewport& viewport, glm::
     return;
   }
   state.radiosity.patch.reset();
-  state.note = fmt::format("pixel ({}, {}): background", pixel.x, pixel.y);
+  state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
 void RadiosityModel::panel() { radiosity_section(viewer_.state()); }
@@ -87,12 +89,12 @@ void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
   RadiosityState& r = state.radiosity;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
     const float margin = 8.0f * viewer_.ui_scale();
-    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + margin), ImGuiCond_Always,
+    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always,
                             ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("radiosity hint", nullptr, hint_window_flags());
-    ImGui::TextUnformatted("radiosity at shot 0: only the emitters have light (slide 39 step 1).");
-    ImGui::TextUnformatted("Press Space to run the shooting, '.' for one shot.");
+    ImGui::TextUnformatted(tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."));
+    ImGui::TextUnformatted(tr("Press Space to run the shooting, '.' for one shot."));
     corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
     ImGui::End();
   }
@@ -113,8 +115,9 @@ void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
 std::string RadiosityModel::status() const {
   const RadiosityState& r = viewer_.state().radiosity;
   if (!r.status.built) return {};
-  return fmt::format("shot {}, {:.2f}% unshot{}", r.status.shots, 100.0 * r.status.unshot_fraction,
-                     r.drive.running ? ", running" : r.status.done ? ", done" : ", paused");
+  // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
+  return trf("shot {}, {:.2f}% unshot{}", r.status.shots, 100.0 * r.status.unshot_fraction,
+                     r.drive.running ? tr(", running") : r.status.done ? tr(", done") : tr(", paused"));
 }
 
 // Running and stepping show model 5 (the viewer shows the model whose action it is).
@@ -124,7 +127,7 @@ bool RadiosityModel::act(Action action) {
   switch (action) {
     case Action::radiosity_run:
       r.drive.running = !r.drive.running;
-      state.note = r.drive.running ? "radiosity: running" : "radiosity: paused";
+      state.note = r.drive.running ? tr("radiosity: running") : tr("radiosity: paused");
       return true;
     case Action::radiosity_step:
       r.drive.running = false;

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/overlays.h"
 #include "app/options_tables.h"
 #include "app/panel.h"
@@ -28,12 +29,12 @@ const ImVec4 shooter_colour(1.0f, 0.35f, 1.0f, 1.0f);  // the renderer's magenta
 // ---- [the loop] --------------------------------------------------------------------------------
 void loop_controls(RadiosityState& r) {
   const RadiosityStatus& s = r.status;
-  if (ImGui::Button(r.drive.running ? "pause  [Space]" : "run  [Space]", ImVec2(9.0f * ImGui::GetFontSize(), 0.0f)))
+  if (ImGui::Button(r.drive.running ? tr("pause  [Space]") : tr("run  [Space]"), ImVec2(9.0f * ImGui::GetFontSize(), 0.0f)))
     r.drive.running = !r.drive.running;
   ImGui::SameLine();
-  if (ImGui::Button("one shot  [.]")) r.steps += 1;
+  if (ImGui::Button(tr("one shot  [.]"))) r.steps += 1;
   ImGui::SameLine();
-  if (ImGui::Button("reset  [0]")) r.reset = true;
+  if (ImGui::Button(tr("reset  [0]"))) r.reset = true;
 
   // Counters in two columns: what, then its value at a fixed indent.
   const float column = 9.0f * ImGui::GetFontSize();
@@ -42,13 +43,15 @@ void loop_controls(RadiosityState& r) {
     ImGui::SameLine(column);
     ImGui::TextWrapped("%s", value.c_str());
   };
-  row("shots", fmt::format("{}{}", s.shots, s.done ? "  (done: the stopping rule holds)" : ""));
-  row("unshot power", fmt::format("{:.3f} % of the emitted", 100.0 * s.unshot_fraction));
-  row("shots / s", r.drive.running ? fmt::format("{:.0f}", s.shots_per_second) : std::string("paused"));
-  row("patches", fmt::format("{}  (longest edge {:.3g} m), {} elements", s.patches, s.patch_size, s.elements));
-  ImGui::TextUnformatted("shooter");
+  row(tr("shots"), fmt::format("{}{}", s.shots, s.done ? tr("  (done: the stopping rule holds)") : ""));
+  // xgettext:no-c-format (a fmt string, where "% o" is not a printf directive)
+  const std::string unshot = trf("{:.3f} % of the emitted", 100.0 * s.unshot_fraction);
+  row(tr("unshot power"), unshot);
+  row(tr("shots / s"), r.drive.running ? fmt::format("{:.0f}", s.shots_per_second) : std::string(tr("paused")));
+  row(tr("patches"), trf("{}  (longest edge {:.3g} m), {} elements", s.patches, s.patch_size, s.elements));
+  ImGui::TextUnformatted(tr("shooter"));
   ImGui::SameLine(column);
-  if (s.shooter.empty()) dim_text("none yet (step 1: unshot = E)");
+  if (s.shooter.empty()) dim_text(tr("none yet (step 1: unshot = E)"));
   else ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
 }
 
@@ -63,7 +66,7 @@ void unshot_plot(RadiosityState& r) {
   for (const float v : s.plot) low = std::min(low, v);
   low = std::floor(low * 2.0f - 0.25f) / 2.0f;  // a little room under the lowest point
   const float high = 0.1f;
-  dim_text("unshot power / emitted (log scale) against shots 0 .. %d", s.shots);
+  dim_text(tr("unshot power / emitted (log scale) against shots 0 .. %d"), s.shots);
   ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));  // brighter than the default grey
   ImGui::PlotLines("##unshot", s.plot.data(), int(s.plot.size()), 0, nullptr, low, high,
                    ImVec2(ImGui::GetContentRegionAvail().x, 6.0f * ImGui::GetFontSize()));  // 1.86: no -1
@@ -95,26 +98,26 @@ void unshot_plot(RadiosityState& r) {
 void drive_settings(RadiosityState& r) {
   RadiosityDrive& d = r.drive;
   int by_time = d.by_time ? 1 : 0;
-  ImGui::TextUnformatted("each frame:");
+  ImGui::TextUnformatted(tr("each frame:"));
   ImGui::SameLine();
-  ImGui::RadioButton("time budget", &by_time, 1);
+  ImGui::RadioButton(tr("time budget"), &by_time, 1);
   ImGui::SameLine();
-  ImGui::RadioButton("shots", &by_time, 0);
+  ImGui::RadioButton(tr("shots"), &by_time, 0);
   d.by_time = by_time == 1;
-  if (d.by_time) ImGui::SliderFloat("ms of shooting / frame", &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
-  else ImGui::SliderInt("shots / frame", &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
+  if (d.by_time) ImGui::SliderFloat(tr("ms of shooting / frame"), &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
+  else ImGui::SliderInt(tr("shots / frame"), &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
 
   RadiosityOptions& o = r.options;
   int by_shots = o.max_shots > 0 ? 1 : 0;
-  ImGui::TextUnformatted("stop:");
+  ImGui::TextUnformatted(tr("stop:"));
   ImGui::SameLine();
-  ImGui::RadioButton("unshot below", &by_shots, 0);
+  ImGui::RadioButton(tr("unshot below"), &by_shots, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("after shots", &by_shots, 1);
+  ImGui::RadioButton(tr("after shots"), &by_shots, 1);
   if (by_shots == 1) {
     if (o.max_shots <= 0) o.max_shots = std::max(r.status.shots, 100);
     const SliderRange shots = slider_range(*find_row(radiosity_rows(), "shots"), 1e6);
-    ImGui::DragInt("shots##stop", &o.max_shots, 5.0f, int(shots.low), int(shots.high));
+    ImGui::DragInt(tr("shots##stop"), &o.max_shots, 5.0f, int(shots.low), int(shots.high));
     o.max_shots = std::max(o.max_shots, 1);
     o.converge = 0.0f;  // as `luz render --shots N`
   } else {
@@ -122,7 +125,7 @@ void drive_settings(RadiosityState& r) {
     o.max_shots = 0;
     float percent = 100.0f * o.converge;
     const SliderRange converge = radiosity_range("converge");
-    ImGui::SliderFloat("% of the emitted", &percent, 100.0f * converge.low, 100.0f * converge.high, "%.2g %%",
+    ImGui::SliderFloat(tr("percent of the emitted"), &percent, 100.0f * converge.low, 100.0f * converge.high, "%.2g %%",
                        ImGuiSliderFlags_Logarithmic);
     o.converge = std::clamp(percent / 100.0f, converge.low, converge.high);
   }
@@ -131,18 +134,18 @@ void drive_settings(RadiosityState& r) {
 void mesh_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
   const SliderRange size = radiosity_range("patch-size");
-  ImGui::DragFloat("patch size (m)", &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : "auto");
+  ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
-  if (o.patch_size == 0.0f) dim_text("auto: about %d patches", o.target_patches);
+  if (o.patch_size == 0.0f) dim_text(tr("auto: about %d patches"), o.target_patches);
   const SliderRange elements = radiosity_range("elements");
-  ImGui::SliderInt("elements per patch edge", &o.elements_per_edge, int(elements.low), int(elements.high));
-  dim_text("patches shoot, their N x N elements receive (1 = every element shoots)");
+  ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
+  dim_text(tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
   // The powers of two in the table's range.
   const SliderRange res = radiosity_range("hemicube");
   std::vector<int> sizes;
   for (int n = int(res.low); n <= int(res.high); n *= 2) sizes.push_back(n);
   const std::string preview = fmt::format("{}", o.hemicube_res);
-  if (ImGui::BeginCombo("hemicube (px)", preview.c_str())) {
+  if (ImGui::BeginCombo(tr("hemicube (px)"), preview.c_str())) {
     for (int n : sizes)
       if (ImGui::Selectable(fmt::format("{}", n).c_str(), n == o.hemicube_res)) o.hemicube_res = n;
     ImGui::EndCombo();
@@ -150,24 +153,24 @@ void mesh_settings(RadiosityState& r) {
   // A new mesh or hemicube is a new solve: only on request, so a drag does not restart it.
   const bool pending = r.status.remesh_pending;
   if (pending) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.7f, 0.45f, 0.1f, 1.0f));
-  if (ImGui::Button("remesh and restart")) r.remesh = true;
+  if (ImGui::Button(tr("remesh and restart"))) r.remesh = true;
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
-  dim_text(pending ? "to apply the new size" : "also applies kd, Le, light edits");
+  dim_text(pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
   int analytic = o.form_factors == FormFactorMethod::analytic ? 1 : 0;
-  ImGui::RadioButton("hemicube form factors", &analytic, 0);
-  ImGui::RadioButton("analytic near the shooter", &analytic, 1);
+  ImGui::RadioButton(tr("hemicube form factors"), &analytic, 0);
+  ImGui::RadioButton(tr("analytic near the shooter"), &analytic, 1);
   o.form_factors = analytic == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemicube;
   const SliderRange overshoot = radiosity_range("overshoot");
-  ImGui::SliderFloat("overshoot", &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
-  ImGui::Checkbox("turn the hemicube at random each shot", &o.random_rotation);
-  dim_text("(seeded: the same shots give the same picture)");
+  ImGui::SliderFloat(tr("overshoot"), &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
+  ImGui::Checkbox(tr("turn the hemicube at random each shot"), &o.random_rotation);
+  dim_text(tr("(seeded: the same shots give the same picture)"));
 }
 
 // ---- [display] ---------------------------------------------------------------------------------
 // The heat map's fixed scale: the ramp with its decades, in units of the mean emitted exitance.
 void heat_map_legend() {
-  dim_text("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):");
+  dim_text(tr("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):"));
   const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetTextLineHeight();
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -188,27 +191,27 @@ void heat_map_legend() {
     ImGui::SetCursorScreenPos(ImVec2(at.x + std::clamp(width * float(k) / float(decades) - 0.5f * w, 0.0f, width - w), y));
     ImGui::TextUnformatted(label.c_str());
   }
-  dim_text("black: nothing left to shoot");
+  dim_text(tr("black: nothing left to shoot"));
 }
 
 void display_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
   RadiosityDrive& d = r.drive;
   int flat = o.flat_patches ? 1 : 0;
-  ImGui::RadioButton("Gouraud (vertex B/π)", &flat, 0);
+  ImGui::RadioButton(tr("Gouraud (vertex B/π)"), &flat, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("flat patches", &flat, 1);
+  ImGui::RadioButton(tr("flat patches"), &flat, 1);
   o.flat_patches = flat == 1;
-  ImGui::Checkbox("patch outlines", &o.outlines);
+  ImGui::Checkbox(tr("patch outlines"), &o.outlines);
   ImGui::SameLine();
-  ImGui::TextDisabled("[L]: flat + outlines");
-  ImGui::Checkbox("ambient estimate ρ·ambient  [Shift+A]", &o.ambient_estimate);
-  ImGui::Checkbox("heat map of unshot power  [U]", &d.heat_map);
+  ImGui::TextDisabled(tr("[L]: flat + outlines"));
+  ImGui::Checkbox(tr("ambient estimate ρ·ambient  [Shift+A]"), &o.ambient_estimate);
+  ImGui::Checkbox(tr("heat map of unshot power  [U]"), &d.heat_map);
   if (d.heat_map) heat_map_legend();
   ImGui::PushStyleColor(ImGuiCol_CheckMark, shooter_colour);
-  ImGui::Checkbox("the shooter in magenta", &d.show_shooter);
+  ImGui::Checkbox(tr("the shooter in magenta"), &d.show_shooter);
   ImGui::PopStyleColor();
-  ImGui::Checkbox("its hemicube's item buffer (window)", &d.show_item_buffer);
+  ImGui::Checkbox(tr("its hemicube's item buffer (window)"), &d.show_item_buffer);
 }
 
 }  // namespace
@@ -216,22 +219,22 @@ void display_settings(RadiosityState& r) {
 // ---- [the section] -----------------------------------------------------------------------------
 void radiosity_section(ViewerState& state) {
   RadiosityState& r = state.radiosity;
-  dim_text("progressive refinement, slide 39; B/π drawn (slide 39 step 3)");
-  ImGui::TextWrapped("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j");
+  dim_text(tr("progressive refinement, slide 39; B/π drawn (slide 39 step 3)"));
+  ImGui::TextWrapped(tr("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j"));
   ImGui::Spacing();
   loop_controls(r);
   unshot_plot(r);
-  if (ImGui::TreeNodeEx("shooting, stopping, mesh", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::TreeNodeEx(tr("shooting, stopping, mesh"), ImGuiTreeNodeFlags_DefaultOpen)) {
     drive_settings(r);
     mesh_settings(r);
     ImGui::TreePop();
   }
-  if (ImGui::TreeNodeEx("display", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::TreeNodeEx(tr("display"), ImGuiTreeNodeFlags_DefaultOpen)) {
     display_settings(r);
     ImGui::TreePop();
   }
   // Slide 36 beside slide 39: why shooting shows a usable picture first.
-  if (ImGui::Button("slide 36: the system solved four ways  [J]")) state.solvers.open = !state.solvers.open;
+  if (ImGui::Button(tr("slide 36: the system solved four ways  [J]"))) state.solvers.open = !state.solvers.open;
 }
 
 // ---- [the item-buffer window] ------------------------------------------------------------------
@@ -243,7 +246,7 @@ void draw_item_buffer_window(ViewerState& state, float side) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
                                  ImGuiWindowFlags_NoCollapse;
-  ImGui::Begin("item buffer of the shooter's hemicube", &r.drive.show_item_buffer, flags);
+  ImGui::Begin(tr("item buffer of the shooter's hemicube"), &r.drive.show_item_buffer, flags);
   const RadiosityStatus& s = r.status;
   if (s.item_view_texture != 0) {
     ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
@@ -252,13 +255,13 @@ void draw_item_buffer_window(ViewerState& state, float side) {
                  ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
     r.status.item_view_min = glm::vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y);
     r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
-    dim_text("top face, 4 half faces folded out; a colour per patch");
-    dim_text("black: no patch (an open side) or a patch's back");
+    dim_text(tr("top face, 4 half faces folded out; a colour per patch"));
+    dim_text(tr("black: no patch (an open side) or a patch's back"));
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     ImGui::TextUnformatted(s.shooter.c_str());
-    dim_text("a point light: shot through a cube of 6 item buffers");
+    dim_text(tr("a point light: shot through a cube of 6 item buffers"));
   } else {
-    dim_text("no patch has shot yet");
+    dim_text(tr("no patch has shot yet"));
     ImGui::Dummy(ImVec2(side, 0.0f));
   }
   ImGui::End();

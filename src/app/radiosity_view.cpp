@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "gl/functions.h"
 #include "radiosity/vertex_colours.h"
 
@@ -137,10 +138,10 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   s.last_shooter = solver_.last_shooter();
   if (s.last_shooter >= 0) {
     const Patch& p = mesh_.patches[mesh_.members[mesh_.shooters[size_t(s.last_shooter)].first]];
-    s.shooter = fmt::format("patch {} ({})", s.last_shooter, scene_.meshes[size_t(p.mesh)].name);
+    s.shooter = trf("patch {} ({})", s.last_shooter, scene_.meshes[size_t(p.mesh)].name);
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     const int k = -1 - s.last_shooter;
-    s.shooter = fmt::format("light {} ({})", k, scene_.lights[size_t(k)].name);
+    s.shooter = trf("light {} ({})", k, scene_.lights[size_t(k)].name);
   } else {
     s.shooter.clear();
   }

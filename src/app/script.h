@@ -50,6 +50,9 @@
 //   dump-inspector FILE.json      the inspector's values, for tests and handouts
 //   dump-windows FILE.json        the picture's viewport and every floating window's rectangle
 //   dump-state FILE.json          exposure, model, UI scale, note, warnings: what a test checks
+//   lesson next|prev|goto N       the lesson's steps (luz --lesson; N counts from 1)
+//   lang es|en                    the window's language, from the next frame on
+//   dump-lesson FILE.json         the lesson's step, slide, title and text (current language), model
 //   quit
 // Blank lines are ignored, and so is everything from a word starting with #; a word in double
 // quotes may hold spaces (type "0.5"). Paths are relative to the working folder. The whole file is checked

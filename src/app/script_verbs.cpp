@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/i18n.h"
+#include "app/lesson.h"
 #include "app/local_model.h"
 
 #define GLFW_INCLUDE_NONE
@@ -198,7 +200,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
   nlohmann::json j = {{"model", s.model}, {"exposure", s.exposure}, {"ui_scale", v.ui_scale()}, {"note", s.note},
                       {"user_scale", v.user_scale()}, {"warnings", v.warnings()},
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
-                      {"show_help", s.show_help}, {"free_camera", s.free_camera}};
+                      {"show_help", s.show_help}, {"free_camera", s.free_camera},
+                      {"language", i18n::language_name(i18n::language())}, {"settings", settings_json(s)}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
 }
@@ -239,6 +242,11 @@ bool run_quit(Viewer& v, const ScriptCommand&, std::string&) {
   return true;
 }
 
+// The lesson's verbs: the classroom (classroom.h) moves and the viewer plays the step's commands.
+std::string check_lesson_verb(const ScriptCommand& c) { return lesson_verb_problem(c).value_or(""); }
+
+bool run_lesson_verb(Viewer& v, const ScriptCommand& c, std::string& error) { return v.classroom().run_verb(c, error); }
+
 // `wait N` is the runner's own (it counts frames); it never reaches the viewer.
 bool run_nothing(Viewer&, const ScriptCommand&, std::string&) { return true; }
 
@@ -265,6 +273,9 @@ constexpr ScriptVerb verbs[] = {
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},
     {"panes", "panes MODEL[,MODEL...]|off", check_panes, run_panes, true},
     {"dump-panes", "dump-panes FILE.json", check_json_file, run_dump_panes, true},
+    {"lesson", "lesson next|prev|goto N", check_lesson_verb, run_lesson_verb, true},
+    {"lang", "lang es|en", check_lesson_verb, run_lesson_verb, true},
+    {"dump-lesson", "dump-lesson FILE.json", check_lesson_verb, run_lesson_verb, true},
     {"quit", "quit", check_none, run_quit, false},
 };
 

@@ -6,6 +6,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/i18n.h"
+
 namespace luz::app {
 namespace {
 
@@ -16,7 +18,8 @@ namespace {
 // cancels it too), and X crosses out the ray tree. Radiosity's loop on Space (run / pause), '.'
 // (one shot) and 0 (back to shot 0, slide 39 step 1); its display on U (Unshot heat map), L
 // (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
-// window of solvers on J, for Jacobi, the first of them.
+// window of solvers on J, for Jacobi, the first of them. A lesson's steps on F8 (next) and F7
+// (previous): PageUp / PageDown and the arrows fly, and a held key must not walk the lecture.
 constexpr Shortcut table[] = {
     // The digits show the models (model_registry.cpp says which is on which key).
     {GLFW_KEY_1, 0, 0, "1", Action::choose_model, ""}, {GLFW_KEY_2, 0, 0, "2", Action::choose_model, ""},
@@ -24,43 +27,45 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_5, 0, 0, "5", Action::choose_model, ""}, {GLFW_KEY_6, 0, 0, "6", Action::choose_model, ""},
     {GLFW_KEY_7, 0, 0, "7", Action::choose_model, ""}, {GLFW_KEY_8, 0, 0, "8", Action::choose_model, ""},
     {GLFW_KEY_9, 0, 0, "9", Action::choose_model, ""},
-    {GLFW_KEY_A, 0, 0, "A", Action::toggle_ambient, "ambient term I_A on / off"},
-    {GLFW_KEY_D, 0, 0, "D", Action::toggle_diffuse, "diffuse term I_D on / off"},
-    {GLFW_KEY_S, 0, 0, "S", Action::toggle_specular, "specular term I_S on / off"},
-    {GLFW_KEY_E, 0, 0, "E", Action::toggle_emission, "emitted radiance Le on / off"},
-    {GLFW_KEY_T, 0, 0, "T", Action::toggle_textures, "kd texture on / off"},
-    {GLFW_KEY_B, 0, 0, "B", Action::toggle_blinn, "Phong's R.V / Blinn's N.H"},
-    {GLFW_KEY_F, 0, 0, "F", Action::cycle_attenuation, "f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)"},
-    {GLFW_KEY_G, 0, 0, "G", Action::cycle_fog, "fog: off / linear / exponential"},
-    {GLFW_KEY_H, 0, 0, "H", Action::toggle_shadows, "shadows (S_i, shadow maps) on / off"},
-    {GLFW_KEY_O, 0, 0, "O", Action::toggle_transparency, "non-refractive transparency (kt) on / off"},
-    {GLFW_KEY_M, 0, 0, "M", Action::toggle_reflection_map, "reflection map (kr Ir) on / off"},
-    {GLFW_KEY_ENTER, 0, 0, "Enter", Action::trace_view, "Whitted / hybrid: trace this view, tile by tile"},
-    {GLFW_KEY_BACKSPACE, 0, 0, "Backspace", Action::cancel_trace, "Whitted / hybrid: cancel the trace (back to the raster / radiosity view)"},
-    {GLFW_KEY_X, 0, 0, "X", Action::clear_ray_tree, "Whitted / hybrid: clear the ray tree"},
-    {GLFW_KEY_SPACE, 0, 0, "Space", Action::radiosity_run, "radiosity: run / pause the shooting"},
-    {GLFW_KEY_PERIOD, 0, 0, ".", Action::radiosity_step, "radiosity: one shot"},
-    {GLFW_KEY_0, 0, 0, "0", Action::radiosity_reset, "radiosity: reset (shot 0: unshot = E)"},
-    {GLFW_KEY_U, 0, 0, "U", Action::toggle_heat_map, "radiosity: heat map of the unshot power on / off"},
-    {GLFW_KEY_L, 0, 0, "L", Action::toggle_patches, "radiosity: flat patches with outlines / Gouraud"},
-    {GLFW_KEY_A, GLFW_MOD_SHIFT, 0, "Shift+A", Action::toggle_ambient_estimate, "radiosity: ambient estimate on / off"},
-    {GLFW_KEY_J, 0, 0, "J", Action::toggle_solvers, "slide 36: the system solved four ways, curves live (window)"},
-    {0, 0, '+', "+", Action::exposure_up, "exposure +0.5 EV (any '+' key, the keypad's too)"},
-    {0, 0, '-', "-", Action::exposure_down, "exposure -0.5 EV (any '-' key, the keypad's too)"},
-    {GLFW_KEY_EQUAL, GLFW_MOD_CONTROL, 0, "Ctrl+=", Action::ui_larger, "larger interface (a projector); Ctrl+- smaller"},
-    {GLFW_KEY_MINUS, GLFW_MOD_CONTROL, 0, "Ctrl+-", Action::ui_smaller, "smaller interface"},
-    {GLFW_KEY_C, 0, 0, "C", Action::scene_camera, "back to the scene camera"},
-    {GLFW_KEY_N, 0, 0, "N", Action::next_camera, "next scene camera"},
-    {GLFW_KEY_R, 0, 0, "R", Action::reload, "reload the scene file"},
-    {GLFW_KEY_P, 0, 0, "P", Action::screenshot, "screenshot of the picture (PNG)"},
-    {GLFW_KEY_P, GLFW_MOD_SHIFT, 0, "Shift+P", Action::screenshot_with_panel, "screenshot with the panel"},
-    {GLFW_KEY_TAB, 0, 0, "Tab", Action::toggle_panel, "hide / show the panel"},
-    {GLFW_KEY_I, 0, 0, "I", Action::toggle_inspector, "hide / show the inspector"},
-    {GLFW_KEY_F1, 0, 0, "F1", Action::help, "this list"},
-    {GLFW_KEY_ESCAPE, 0, 0, "Esc", Action::quit, "quit"},
-    {GLFW_KEY_UP, 0, 0, "Up / Down", Action::none, "fly forward / back (Shift: faster)"},
-    {GLFW_KEY_LEFT, 0, 0, "Left / Right", Action::none, "fly left / right"},
-    {GLFW_KEY_PAGE_UP, 0, 0, "PageUp / PageDown", Action::none, "fly up / down"},
+    {GLFW_KEY_A, 0, 0, "A", Action::toggle_ambient, N_("ambient term I_A on / off")},
+    {GLFW_KEY_D, 0, 0, "D", Action::toggle_diffuse, N_("diffuse term I_D on / off")},
+    {GLFW_KEY_S, 0, 0, "S", Action::toggle_specular, N_("specular term I_S on / off")},
+    {GLFW_KEY_E, 0, 0, "E", Action::toggle_emission, N_("emitted radiance Le on / off")},
+    {GLFW_KEY_T, 0, 0, "T", Action::toggle_textures, N_("kd texture on / off")},
+    {GLFW_KEY_B, 0, 0, "B", Action::toggle_blinn, N_("Phong's R.V / Blinn's N.H")},
+    {GLFW_KEY_F, 0, 0, "F", Action::cycle_attenuation, N_("f_att of every light: 1/d^2 / 1/(c0 + c1 d + c2 d^2)")},
+    {GLFW_KEY_G, 0, 0, "G", Action::cycle_fog, N_("fog: off / linear / exponential")},
+    {GLFW_KEY_H, 0, 0, "H", Action::toggle_shadows, N_("shadows (S_i, shadow maps) on / off")},
+    {GLFW_KEY_O, 0, 0, "O", Action::toggle_transparency, N_("non-refractive transparency (kt) on / off")},
+    {GLFW_KEY_M, 0, 0, "M", Action::toggle_reflection_map, N_("reflection map (kr Ir) on / off")},
+    {GLFW_KEY_ENTER, 0, 0, "Enter", Action::trace_view, N_("Whitted / hybrid: trace this view, tile by tile")},
+    {GLFW_KEY_BACKSPACE, 0, 0, "Backspace", Action::cancel_trace, N_("Whitted / hybrid: cancel the trace (back to the raster / radiosity view)")},
+    {GLFW_KEY_X, 0, 0, "X", Action::clear_ray_tree, N_("Whitted / hybrid: clear the ray tree")},
+    {GLFW_KEY_SPACE, 0, 0, "Space", Action::radiosity_run, N_("radiosity: run / pause the shooting")},
+    {GLFW_KEY_PERIOD, 0, 0, ".", Action::radiosity_step, N_("radiosity: one shot")},
+    {GLFW_KEY_0, 0, 0, "0", Action::radiosity_reset, N_("radiosity: reset (shot 0: unshot = E)")},
+    {GLFW_KEY_U, 0, 0, "U", Action::toggle_heat_map, N_("radiosity: heat map of the unshot power on / off")},
+    {GLFW_KEY_L, 0, 0, "L", Action::toggle_patches, N_("radiosity: flat patches with outlines / Gouraud")},
+    {GLFW_KEY_A, GLFW_MOD_SHIFT, 0, "Shift+A", Action::toggle_ambient_estimate, N_("radiosity: ambient estimate on / off")},
+    {GLFW_KEY_J, 0, 0, "J", Action::toggle_solvers, N_("slide 36: the system solved four ways, curves live (window)")},
+    {0, 0, '+', "+", Action::exposure_up, N_("exposure +0.5 EV (any '+' key, the keypad's too)")},
+    {0, 0, '-', "-", Action::exposure_down, N_("exposure -0.5 EV (any '-' key, the keypad's too)")},
+    {GLFW_KEY_EQUAL, GLFW_MOD_CONTROL, 0, "Ctrl+=", Action::ui_larger, N_("larger interface (a projector); Ctrl+- smaller")},
+    {GLFW_KEY_MINUS, GLFW_MOD_CONTROL, 0, "Ctrl+-", Action::ui_smaller, N_("smaller interface")},
+    {GLFW_KEY_C, 0, 0, "C", Action::scene_camera, N_("back to the scene camera")},
+    {GLFW_KEY_N, 0, 0, "N", Action::next_camera, N_("next scene camera")},
+    {GLFW_KEY_R, 0, 0, "R", Action::reload, N_("reload the scene file")},
+    {GLFW_KEY_P, 0, 0, "P", Action::screenshot, N_("screenshot of the picture (PNG)")},
+    {GLFW_KEY_P, GLFW_MOD_SHIFT, 0, "Shift+P", Action::screenshot_with_panel, N_("screenshot with the panel")},
+    {GLFW_KEY_TAB, 0, 0, "Tab", Action::toggle_panel, N_("hide / show the panel")},
+    {GLFW_KEY_I, 0, 0, "I", Action::toggle_inspector, N_("hide / show the inspector")},
+    {GLFW_KEY_F1, 0, 0, "F1", Action::help, N_("this list")},
+    {GLFW_KEY_F8, 0, 0, "F8", Action::lesson_next, N_("lesson: next step (luz --lesson)")},
+    {GLFW_KEY_F7, 0, 0, "F7", Action::lesson_previous, N_("lesson: previous step")},
+    {GLFW_KEY_ESCAPE, 0, 0, "Esc", Action::quit, N_("quit")},
+    {GLFW_KEY_UP, 0, 0, "Up / Down", Action::none, N_("fly forward / back (Shift: faster)")},
+    {GLFW_KEY_LEFT, 0, 0, "Left / Right", Action::none, N_("fly left / right")},
+    {GLFW_KEY_PAGE_UP, 0, 0, "PageUp / PageDown", Action::none, N_("fly up / down")},
 };
 
 struct NamedKey {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/solvers_command.h"
 #include "core/error.h"
 #include "gl/functions.h"
@@ -30,7 +31,7 @@ const char* method_label(Method method) {
     case Method::jacobi: return "Jacobi";
     case Method::gauss_seidel: return "Gauss-Seidel";
     case Method::southwell: return "Southwell";
-    case Method::shooting: return "shooting (slide 39)";
+    case Method::shooting: return tr("shooting (slide 39)");
   }
   return "?";
 }
@@ -74,7 +75,7 @@ void SolversView::build(SolversState& state) {
   s.patches = mesh->size();
   if (mesh->size() > kMaxSolverPatches) {
     s.phase = SolversState::Phase::refused;
-    s.message = fmt::format("{} patches: the full form-factor matrix grows as the square of that, so this "
+    s.message = trf("{} patches: the full form-factor matrix grows as the square of that, so this "
                             "window takes at most {}. Ask for fewer patches.", mesh->size(), kMaxSolverPatches);
     return;
   }
@@ -107,7 +108,7 @@ void SolversView::advance(SolversState& state) {
   if (s.phase == SolversState::Phase::none) {
     // One frame that says what is coming: the N hemicubes of the matrix take a while.
     s.phase = SolversState::Phase::building;
-    s.message = fmt::format("building the form-factor matrix (one hemicube per patch, about {} patches) "
+    s.message = trf("building the form-factor matrix (one hemicube per patch, about {} patches) "
                             "and B* ...", state.target_patches);
     return;
   }
@@ -204,7 +205,7 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
     else draw->AddPolyline(points.data(), int(points.size()), on_dark(m), 0, 2.0f);
   }
   draw->PopClipRect();
-  const char* title = residual ? "residual |E - (I - ρF) B| / |E|" : "error |B - B*| / |B*|";
+  const char* title = residual ? tr("residual |E - (I - ρF) B| / |E|") : tr("error |B - B*| / |B*|");
   draw->AddText(ImVec2(a.x, origin.y), label, title);
   ImGui::Dummy(size);
 }
@@ -216,8 +217,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
   SolversState::Status& s = state.status;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Slide 36: the system solved four ways  [J]", &state.open,
-                    ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(tr("Slide 36: the system solved four ways  [J]"), &state.open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -232,20 +232,20 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
     ImGui::TextUnformatted(s.message.c_str());
     ImGui::PopTextWrapPos();
   }
-  if (ImGui::Button(state.running ? "pause" : "run", ImVec2(6.0f * ImGui::GetFontSize(), 0.0f)))
+  if (ImGui::Button(state.running ? tr("pause") : tr("run"), ImVec2(6.0f * ImGui::GetFontSize(), 0.0f)))
     state.running = !state.running;
   ImGui::SameLine();
-  if (ImGui::Button("reset")) state.reset = true;
+  if (ImGui::Button(tr("reset"))) state.reset = true;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(6.0f * ImGui::GetFontSize());
-  if (ImGui::InputInt("patches (reset)", &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
+  if (ImGui::InputInt(tr("patches (reset)"), &state.target_patches, 100, 400)) state.target_patches = std::max(state.target_patches, 10);
 
   if (race_) {
-    ImGui::Text("%zu patches, matrix in %.2f s; rows %zu / %zu%s", s.patches, s.matrix_seconds, s.rows, s.max_rows,
-                s.done ? " (done)" : "");
+    ImGui::Text(tr("%zu patches, matrix in %.2f s; rows %zu / %zu%s"), s.patches, s.matrix_seconds, s.rows, s.max_rows,
+                s.done ? tr(" (done)") : "");
     // The legend, with where each method has got: a table, so it fits half the picture.
     if (ImGui::BeginTable("legend", 4, ImGuiTableFlags_SizingFixedFit)) {
-      for (const char* heading : {"", "rows", "residual", "error"}) ImGui::TableSetupColumn(heading);
+      for (const char* heading : {"", tr("rows"), tr("residual"), tr("error")}) ImGui::TableSetupColumn(heading);
       ImGui::TableHeadersRow();
       for (const Method m : kMethods) {
         const SolverSample& last = race_->curve(m).back();
@@ -271,10 +271,10 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
     log_plot(*race_, false, size, min1, max1);
     s.plot_min = glm::min(min0, min1);
     s.plot_max = glm::max(max0, max1);
-    ImGui::TextDisabled("x: form-factor rows used (log), y: log");
+    ImGui::TextDisabled(tr("x: form-factor rows used (log), y: log"));
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
-                           "(N rows each, and none before the whole matrix is known).");
+    ImGui::TextUnformatted(tr("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
+                              "(N rows each, and none before the whole matrix is known)."));
     ImGui::PopTextWrapPos();
   }
   ImGui::End();

@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/i18n.h"
 #include "app/model_registry.h"
 #include "app/overlays.h"
 #include "app/viewer_window.h"
@@ -63,7 +64,7 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
     if (const std::optional<rt::WhittedOptions> options = options_for_trace(why)) {
       requests.trace = false;
       tracer().start(*state.scene, camera, size.x, size.y, *options, picture);
-      state.note = fmt::format("tracing {}x{}", size.x, size.y);
+      state.note = trf("tracing {}x{}", size.x, size.y);
     } else if (!why.empty()) {  // it cannot start at all
       requests.trace = false;
       state.note = why;
@@ -73,7 +74,7 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
     const TracePhase before = tracer_->phase();
     tracer_->update();
     if (before == TracePhase::tracing && tracer_->phase() == TracePhase::done)
-      state.note = fmt::format("traced in {:.2f} s", tracer_->seconds());
+      state.note = trf("traced in {:.2f} s", tracer_->seconds());
     // The traced picture's colour over the picture; its depth stays the untraced one's of this
     // very view (the trace is cancelled when the view changes), which the ray tree is tested against.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, tracer_->picture().id());
@@ -118,7 +119,7 @@ void TracedModel::click(const Camera& camera, const Viewport& viewport, glm::ive
   if (!tree.nodes.empty() && tree.nodes[0].hit)
     for (const Mesh& mesh : state.scene->meshes)
       if (mesh.name == tree.nodes[0].mesh) state.selected_material = mesh.material;
-  state.note = fmt::format("ray tree of pixel ({}, {}): {} rays", pixel.x, pixel.y, tree.nodes.size());
+  state.note = trf("ray tree of pixel ({}, {}): {} rays", pixel.x, pixel.y, tree.nodes.size());
   ray_tree_ = std::move(tree);
 }
 
@@ -133,20 +134,20 @@ bool TracedModel::act(Action action) {
 
 std::string TracedModel::status() const {
   const TraceProgress& t = progress_;
-  if (t.phase == TracePhase::raster) return hybrid() ? "(radiosity picture)" : "(raster view)";
-  if (t.phase == TracePhase::tracing) return fmt::format("tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
-  return fmt::format("traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
+  if (t.phase == TracePhase::raster) return hybrid() ? tr("(radiosity picture)") : tr("(raster view)");
+  if (t.phase == TracePhase::tracing) return trf("tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
+  return trf("traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
 }
 
 void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::done) return;
   const float margin = 8.0f * viewer_.ui_scale();
-  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("trace hint", nullptr, hint_window_flags());
   if (t.phase == TracePhase::tracing) {
-    const std::string label = fmt::format("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
+    const std::string label = trf("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
                                           t.done, t.total, t.seconds);
     ImGui::ProgressBar(t.total > 0 ? float(t.done) / float(t.total) : 0.0f, ImVec2(0.0f, 0.0f), "");
     ImGui::SameLine();

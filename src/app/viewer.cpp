@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/difference_view.h"
+#include "app/i18n.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "app/i18n.h"
@@ -67,6 +68,7 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
               "Luz - " + path.filename().string()) {
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) script_.emplace(*settings.script);
+  if (settings.lesson) classroom_ = Classroom(*settings.lesson);
   model_ = find_model(state_.model);
   panes_ = {model_};
 
@@ -178,7 +180,7 @@ void Viewer::rebuild_fonts() {
 void Viewer::set_ui_scale(float scale) {
   user_scale_ = std::clamp(scale, kMinUiScale, kMaxUiScale);
   fonts_stale_ = true;  // between frames: ImGui's font atlas is locked inside one
-  state_.note = fmt::format("interface size x{:.2f}", user_scale_);
+  state_.note = trf("interface size x{:.2f}", user_scale_);
 }
 
 Layout Viewer::layout() const {
@@ -249,10 +251,10 @@ void Viewer::load(const std::filesystem::path& path) {
   }
   try {
     adopt(io::load_gltf(path), path, path == state_.scene_path);
-    state_.note = fmt::format("loaded {}", path.filename().string());
+    state_.note = trf("loaded {}", path.filename().string());
   } catch (const Error& error) {
     state_.error = error.what();
-    state_.note = "the scene did not load; showing the previous one";
+    state_.note = tr("the scene did not load; showing the previous one");
     fmt::print(stderr, "luz: {}\n", error.what());
   }
 }
@@ -297,7 +299,7 @@ ModelView& Viewer::view(std::string_view name) {
 void Viewer::set_model(const ModelEntry& model) {
   if (!model.make_view) {
     state_.model = model_->name;
-    state_.note = fmt::format("{}: `luz render --model {}` only", model.label, model.name);
+    state_.note = trf("{}: `luz render --model {}` only", tr(model.label), model.name);
     return;
   }
   const auto pane = std::find(panes_.begin(), panes_.end(), &model);
@@ -311,7 +313,7 @@ void Viewer::set_model(const ModelEntry& model) {
   state_.model = model.name;
   if (panes_.size() > 1)
     for (size_t i = 0; i < panes_.size(); ++i) state_.panes[i] = panes_[i]->name;
-  state_.note = model.label;
+  state_.note = tr(model.label);
 }
 
 void Viewer::set_panes(const std::vector<std::string>& models) {
@@ -463,19 +465,19 @@ void Viewer::apply(Action action) {
   state_.note.clear();
   auto toggle = [this](bool& term, const char* name) {
     term = !term;
-    state_.note = fmt::format("{} {}", name, term ? "on" : "off");
+    state_.note = fmt::format("{} {}", tr(name), term ? tr("on") : tr("off"));
   };
   switch (action) {
     case Action::none:
     case Action::choose_model: break;
-    case Action::toggle_ambient: toggle(o.ambient, "ambient I_A"); break;
-    case Action::toggle_diffuse: toggle(o.diffuse, "diffuse I_D"); break;
-    case Action::toggle_specular: toggle(o.specular, "specular I_S"); break;
-    case Action::toggle_emission: toggle(o.emission, "emission Le"); break;
-    case Action::toggle_textures: toggle(o.textures, "kd texture"); break;
+    case Action::toggle_ambient: toggle(o.ambient, N_("ambient I_A")); break;
+    case Action::toggle_diffuse: toggle(o.diffuse, N_("diffuse I_D")); break;
+    case Action::toggle_specular: toggle(o.specular, N_("specular I_S")); break;
+    case Action::toggle_emission: toggle(o.emission, N_("emission Le")); break;
+    case Action::toggle_textures: toggle(o.textures, N_("kd texture")); break;
     case Action::toggle_blinn:
       o.blinn = !o.blinn;
-      state_.note = o.blinn ? "Blinn's N.H" : "Phong's R.V";
+      state_.note = o.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
       break;
     case Action::cycle_attenuation: {
       std::vector<Light>& lights = state_.scene->lights;
@@ -489,15 +491,15 @@ void Viewer::apply(Action action) {
       o.fog.mode = o.fog.mode == FogMode::off      ? FogMode::linear
                    : o.fog.mode == FogMode::linear ? FogMode::exponential
                                                    : FogMode::off;
-      state_.note = fmt::format("fog {}", to_string(o.fog.mode));
+      state_.note = trf("fog {}", tr(to_string(o.fog.mode)));
       break;
-    case Action::toggle_shadows: toggle(o.shadows.on, "shadows S_i"); break;
-    case Action::toggle_transparency: toggle(o.transparency.on, "transparency kt"); break;
-    case Action::toggle_reflection_map: toggle(o.reflection.on, "reflection map kr Ir"); break;
+    case Action::toggle_shadows: toggle(o.shadows.on, N_("shadows S_i")); break;
+    case Action::toggle_transparency: toggle(o.transparency.on, N_("transparency kt")); break;
+    case Action::toggle_reflection_map: toggle(o.reflection.on, N_("reflection map kr Ir")); break;
     case Action::exposure_up:
     case Action::exposure_down:
       state_.exposure += action == Action::exposure_up ? 0.5f : -0.5f;
-      state_.note = fmt::format("exposure {:+.1f} EV", state_.exposure);
+      state_.note = trf("exposure {:+.1f} EV", state_.exposure);
       break;
     case Action::ui_larger: set_ui_scale(user_scale_ * ui_scale_step); break;
     case Action::ui_smaller: set_ui_scale(user_scale_ / ui_scale_step); break;
@@ -505,7 +507,7 @@ void Viewer::apply(Action action) {
     case Action::next_camera:
       state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
       to_scene_camera();
-      state_.note = fmt::format("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
+      state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
       break;
     case Action::reload: load(state_.scene_path); break;
     case Action::screenshot:
@@ -539,20 +541,22 @@ void Viewer::apply(Action action) {
     // Radiosity's display switches and reset change what model 5 will show, whatever is shown.
     case Action::radiosity_reset:
       state_.radiosity.reset = true;
-      state_.note = "radiosity: reset (step 1: unshot = E)";
+      state_.note = tr("radiosity: reset (step 1: unshot = E)");
       break;
-    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, "radiosity heat map"); break;
+    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, N_("radiosity heat map")); break;
     case Action::toggle_patches: {
       RadiosityOptions& r = state_.radiosity.options;
       r.flat_patches = r.outlines = !(r.flat_patches && r.outlines);
-      state_.note = r.outlines ? "radiosity: flat patches, outlined" : "radiosity: Gouraud";
+      state_.note = r.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
       break;
     }
     case Action::toggle_ambient_estimate:
-      toggle(state_.radiosity.options.ambient_estimate, "radiosity ambient estimate");
+      toggle(state_.radiosity.options.ambient_estimate, N_("radiosity ambient estimate"));
       break;
     case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
     case Action::quit: quit_ = true; break;
+    case Action::lesson_next: classroom_.move(LessonMove::next); break;
+    case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
   }
 }
 
@@ -572,7 +576,8 @@ bool Viewer::busy() const {
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end()) view_busy = view_busy || found->second->busy();
   const bool reference_busy = state_.difference.on && state_.difference.waiting;  // the difference view's
-  return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value();
+  return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value() ||
+         classroom_.moving();
 }
 
 void Viewer::idle(double seconds) {
@@ -644,7 +649,7 @@ void Viewer::draw_picture(const Layout& l) {
 void Viewer::draw_windows(const Layout& l) {
   std::string model;
   for (size_t i = 0; i < panes_.size(); ++i) {  // side by side: every pane's, the active one's in brackets
-    std::string pane = panes_.size() > 1 ? model_label(panes_[i]->name) : std::string(panes_[i]->label);
+    std::string pane = panes_.size() > 1 ? model_label(panes_[i]->name) : std::string(tr(panes_[i]->label));
     if (const std::string s = view(panes_[i]->name).status(); !s.empty()) pane += " " + s;
     if (panes_.size() > 1 && i == active_pane_) pane = "[" + pane + "]";
     model += (i == 0 ? "" : " | ") + pane;
@@ -655,6 +660,7 @@ void Viewer::draw_windows(const Layout& l) {
 
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
+  corners.reserve_top(classroom_.draw_caption(l.view, margin));
   state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
   if (state_.solvers.open && solvers_) {
     const glm::vec4 half = corners.take_left_half();
@@ -685,7 +691,7 @@ void Viewer::take_screenshots(const Layout& l) {
       else if (panes_.size() > 1 && pictures_.size() == panes_.size() && l.panes.size() == panes_.size())
         save_panes(pane_pictures(), l.panes, state_.panes, l.view, shot.path, state_.exposure);
       else if (!pictures_.empty() && pictures_.front()) save_picture(*pictures_.front(), shot.path, state_.exposure);
-      state_.note = fmt::format("saved {}", shot.path.string());
+      state_.note = trf("saved {}", shot.path.string());
       fmt::print("{}\n", state_.note);
     } catch (const Error& error) {
       state_.note = error.what();
@@ -767,6 +773,7 @@ void Viewer::frame() {
 bool Viewer::needs_frames() const {
   if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty()) return true;
   if (script_ && !script_->finished() && !idle_until_) return true;
+  if (classroom_.moving()) return true;
   const SolversState& s = state_.solvers;
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
@@ -800,6 +807,13 @@ int Viewer::loop() {
     const double seconds = std::chrono::duration<double>(now - last).count();
     last = now;
     state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
+    if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
+      if (script_) {
+        fmt::print(stderr, "luz: {}\n", error);
+        return 1;
+      }
+      warn(error);
+    }
     if (script_) {
       std::string error;
       if (!script_->step(*this, error)) {

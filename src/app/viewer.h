@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/lesson.h"
 #include "app/script.h"
 
 namespace luz::app {
@@ -17,6 +18,7 @@ struct ViewerSettings {
   int height = 0;
   float ui_scale = 1.0f;         // `--ui-scale`: the interface's size (1: the default)
   std::vector<std::string> models;  // `--model a,b,...`: side by side (panes.h); one: that model
+  std::optional<Lesson> lesson;  // `--lesson [FILE]`, already read: the window opens on its first step
 };
 
 int run_viewer(const ViewerSettings& settings);

@@ -60,4 +60,26 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
   return true;
 }
 
+namespace {
+
+template <class Options>
+nlohmann::json rows_json(std::span<const OptionRow<Options>> rows, const Options& options) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const OptionRow<Options>& row : rows) {
+    const double v = row.get(options);
+    if (row.kind == OptionKind::on_off) out[row.name] = v != 0.0;
+    else if (row.kind == OptionKind::choice) out[row.name] = row.choices[size_t(v)];
+    else out[row.name] = v;
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json settings_json(const ViewerState& state) {
+  return {{"local", rows_json(local_rows(), state.local)},
+          {"whitted", rows_json(whitted_rows(), state.whitted)},
+          {"radiosity", rows_json(radiosity_rows(), state.radiosity.options)}};
+}
+
 }  // namespace luz::app

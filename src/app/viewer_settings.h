@@ -3,6 +3,8 @@
 // Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector).
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/viewer_state.h"
 
 namespace luz::app {
@@ -15,5 +17,10 @@ inline constexpr float kMaxUiScale = 4.0f;
 std::string check_setting(const std::string& name, const std::string& value);
 // Sets it; false (with `error`) when it cannot be set.
 bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
+
+// Every row of the local, Whitted and radiosity tables as the viewer holds it now, by the row's
+// name: {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...}}
+// (dump-state's "settings": what a lesson's step or a panel edit really set).
+nlohmann::json settings_json(const ViewerState& state);
 
 }  // namespace luz::app

@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/classroom.h"
 #include "app/model_registry.h"
 #include "app/model_view.h"
 #include "app/orbit_camera.h"
@@ -100,6 +101,7 @@ public:
   ModelView& shown() { return view(model_->name); }
   SolversView* solvers() { return solvers_.get(); }
   Layout layout() const;
+  Classroom& classroom() { return classroom_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
@@ -153,6 +155,7 @@ private:
   bool dragged_ = false;
 
   std::optional<ScriptRunner> script_;
+  Classroom classroom_;            // the lesson, when one is open
   glm::vec2 scripted_click_at_{0.0f};
   int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
   std::string failure_;            // a script command that failed: the run ends with exit 1

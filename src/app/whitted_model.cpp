@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include "app/i18n.h"
 #include "app/render_whitted.h"
 #include "local/local_renderer.h"
 
@@ -21,8 +22,8 @@ rt::WhittedOptions WhittedModel::current_options() const {
 }
 
 void WhittedModel::panel() {
-  ImGui::TextDisabled("rays from the eye, traced on the CPU (Embree, TBB)");
-  ImGui::TextWrapped("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It");
+  ImGui::TextDisabled(tr("rays from the eye, traced on the CPU (Embree, TBB)"));
+  ImGui::TextWrapped(tr("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It"));
   traced_section(viewer_.state(), *this);
 }
 
