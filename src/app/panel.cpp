@@ -51,6 +51,7 @@ bool any_classroom_attenuation(const Scene& scene) {
 bool term_checkbox(const char* label, bool* value, const ImVec4& colour) {
   ImGui::PushStyleColor(ImGuiCol_CheckMark, colour);
   const bool changed = ImGui::Checkbox(label, value);
+  name_widget(label);
   ImGui::PopStyleColor();
   return changed;
 }
@@ -68,20 +69,26 @@ void effects_section(LocalOptions& o) {
   ImGui::TextUnformatted("atmospheric attenuation (fog)  [G]");
   ImGui::PopStyleColor();
   ImGui::RadioButton("off##fog", &fog, int(FogMode::off));
+  name_widget("off##fog");
   ImGui::SameLine();
   ImGui::RadioButton("linear", &fog, int(FogMode::linear));
+  name_widget("linear");
   ImGui::SameLine();
   ImGui::RadioButton("exponential", &fog, int(FogMode::exponential));
+  name_widget("exponential");
   o.fog.mode = FogMode(fog);
   if (o.fog.mode != FogMode::off) {
     ImGui::ColorEdit3("fog colour", &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    name_widget("fog colour");
     if (o.fog.mode == FogMode::linear) {
       const SliderRange near = local_range("fog-near"), far = local_range("fog-far");
       ImGui::DragFloatRange2("near, far (m)", &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
+      name_widget("near, far (m)");
       dim_text("f = (far - d) / (far - near), clamped");
     } else {
       const SliderRange density = local_range("fog-density");
       ImGui::DragFloat("density (1/m)", &o.fog.density, 0.002f, density.low, density.high, "%.3f");
+      name_widget("density (1/m)");
       dim_text("f = exp(-density d)");
     }
     dim_text("I' = f I + (1 - f) C_fog");
@@ -93,10 +100,14 @@ void effects_section(LocalOptions& o) {
     const SliderRange bias = local_range("shadow-bias"), slope = local_range("shadow-slope-bias"),
                       offset = local_range("shadow-normal-offset");
     ImGui::DragFloat("bias (m)", &o.shadows.constant_bias, 0.0002f, bias.low, bias.high, "%.4f");
+    name_widget("bias (m)");
     ImGui::DragFloat("slope (texels)", &o.shadows.slope_bias, 0.02f, slope.low, slope.high, "%.2f");
+    name_widget("slope (texels)");
     ImGui::DragFloat("offset (texels)", &o.shadows.normal_offset, 0.02f, offset.low, offset.high, "%.2f");
+    name_widget("offset (texels)");
     int size_index = std::clamp(int(std::lround(std::log2(float(o.shadows.map_size)))) - 8, 0, 4);
     ImGui::Combo("map size", &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
+    name_widget("map size");
     o.shadows.map_size = 256 << size_index;
     dim_text("bias + slope·texel·tan θ; lookup moved offset texels along N");
     dim_text("point lights, emitters: cube maps; spots, sun: one map");
@@ -111,6 +122,7 @@ void effects_section(LocalOptions& o) {
   if (o.reflection.on) {
     int size_index = std::clamp(int(std::lround(std::log2(float(o.reflection.resolution)))) - 6, 0, 4);
     ImGui::Combo("cube face size", &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
+    name_widget("cube face size");
     o.reflection.resolution = 64 << size_index;
     dim_text("a cube map from the centre of each object with kr > 0");
     if (!o.reflection.environment.empty())
@@ -129,6 +141,7 @@ void model_header(ViewerState& state, ModelView& shown) {
     if (!m.in_viewer()) continue;
     const std::string label = fmt::format("{} [{}]", m.label, m.key);
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
+    name_widget(label);
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
@@ -144,20 +157,30 @@ void lights_header(ViewerState& state) {
     Light& light = scene.lights[i];
     LightEdit& edit = state.light_edits[i];
     ImGui::PushID(int(i));
+    // One light's widgets are named "its name/label": "key_light/colour".
+    const auto named = [&light](const char* label) { name_widget(light.name + "/" + label); };
     ImGui::Checkbox("##on", &light.enabled);
+    named("on");
     ImGui::SameLine();
-    if (ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), to_string(light.type))) {
+    const bool open = ImGui::TreeNode("light", "%s (%s)", light.name.c_str(), to_string(light.type));
+    named("light");
+    if (open) {
       bool changed = ImGui::ColorEdit3("colour", &edit.colour.r);
-      changed |= ImGui::DragFloat(light.type == LightType::directional ? "E (W/m²)" : "I (W/sr)",
-                                  &edit.intensity, 0.1f + 0.01f * edit.intensity, 0.0f, 1e6f, "%.3g");
+      named("colour");
+      const char* intensity = light.type == LightType::directional ? "E (W/m²)" : "I (W/sr)";
+      changed |= ImGui::DragFloat(intensity, &edit.intensity, 0.1f + 0.01f * edit.intensity, 0.0f, 1e6f, "%.3g");
+      named(intensity);
       if (changed) light.intensity = edit.colour * edit.intensity;
       if (light.type != LightType::directional) {
         ImGui::DragFloat3("position", &light.position.x, 0.01f, 0.0f, 0.0f, "%.3f");
+        named("position");
         int mode = light.attenuation.classroom ? 1 : 0;
         ImGui::Combo("f_att", &mode, "1/d²\0" "1/(c0 + c1 d + c2 d²)\0");
+        named("f_att");
         light.attenuation.classroom = mode == 1;
         ImGui::BeginDisabled(!light.attenuation.classroom);
         ImGui::DragFloat3("c0 c1 c2", &light.attenuation.c.x, 0.01f, 0.0f, 100.0f, "%.3f");
+        named("c0 c1 c2");
         light.attenuation.c = glm::max(light.attenuation.c, glm::vec3(0.0f));
         if (light.attenuation.c == glm::vec3(0.0f)) light.attenuation.c.x = 1e-3f;  // f_att finite
         ImGui::EndDisabled();
@@ -165,14 +188,18 @@ void lights_header(ViewerState& state) {
       if (light.type == LightType::spot) {  // slide 19: lights with a non-uniform distribution
         int warn = light.warn_exponent > 0.0f ? 1 : 0;
         ImGui::Combo("distribution", &warn, "smooth cone\0" "Warn's cos^p\0");
+        named("distribution");
         float outer = glm::degrees(light.outer_cone), inner = glm::degrees(light.inner_cone);
         if (warn == 1) {
           if (light.warn_exponent <= 0.0f) light.warn_exponent = 10.0f;
           ImGui::DragFloat("p", &light.warn_exponent, 0.2f, 0.01f, 1000.0f, "%.1f");
+          named("p");
           ImGui::DragFloat("cut-off (°)", &outer, 0.2f, 0.1f, 90.0f, "%.1f");
+          named("cut-off (°)");
         } else {
           light.warn_exponent = 0.0f;
           ImGui::DragFloatRange2("inner, outer (°)", &inner, &outer, 0.2f, 0.0f, 90.0f, "%.1f");
+          named("inner, outer (°)");
           light.inner_cone = glm::radians(std::clamp(inner, 0.0f, outer));
         }
         light.outer_cone = glm::radians(std::clamp(outer, 0.1f, 90.0f));
@@ -195,7 +222,9 @@ void material_header(ViewerState& state) {
     return;
   }
   Material& m = scene.materials[size_t(state.selected_material)];
-  if (ImGui::BeginCombo("##material", m.name.c_str())) {
+  const bool choosing = ImGui::BeginCombo("##material", m.name.c_str());
+  name_widget("material");
+  if (choosing) {
     for (size_t i = 0; i < scene.materials.size(); ++i)
       if (ImGui::Selectable(scene.materials[i].name.c_str(), int(i) == state.selected_material))
         state.selected_material = int(i);
@@ -203,14 +232,22 @@ void material_header(ViewerState& state) {
   }
   const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
   ImGui::ColorEdit3("ka", &m.ka.r, ImGuiColorEditFlags_Float);
+  name_widget("ka");
   ImGui::ColorEdit3("kd", &m.kd.r, ImGuiColorEditFlags_Float);
+  name_widget("kd");
   ImGui::ColorEdit3("ks", &m.ks.r, ImGuiColorEditFlags_Float);
+  name_widget("ks");
   ImGui::DragFloat("n", &m.shininess, 0.5f + 0.02f * m.shininess, 1.0f, 10000.0f, "%.1f",
                    ImGuiSliderFlags_Logarithmic);
+  name_widget("n");
   ImGui::ColorEdit3("kr", &m.kr.r, ImGuiColorEditFlags_Float);
+  name_widget("kr");
   ImGui::ColorEdit3("kt", &m.kt.r, ImGuiColorEditFlags_Float);
+  name_widget("kt");
   ImGui::DragFloat("ior", &m.ior, 0.005f, 1.0f, 3.0f, "%.3f");
+  name_widget("ior");
   if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
+  name_widget("Le");
   dim_text("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model");
 }
 
@@ -220,11 +257,16 @@ void scene_header(ViewerState& state) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
   ImGui::ColorEdit3("ambient Ia", &scene.ambient.r, hdr);
+  name_widget("ambient Ia");
   ImGui::ColorEdit3("background", &scene.background.r, hdr);
+  name_widget("background");
   ImGui::SliderFloat("exposure (EV)", &state.exposure, -6.0f, 6.0f, "%+.1f");
+  name_widget("exposure (EV)");
   const Camera& current = scene.cameras[size_t(state.scene_camera)];
   const std::string preview = state.free_camera ? fmt::format("(moved from {})", current.name) : current.name;
-  if (ImGui::BeginCombo("camera", preview.c_str())) {
+  const bool choosing = ImGui::BeginCombo("camera", preview.c_str());
+  name_widget("camera");
+  if (choosing) {
     for (size_t i = 0; i < scene.cameras.size(); ++i)
       if (ImGui::Selectable(scene.cameras[i].name.c_str(), !state.free_camera && int(i) == state.scene_camera)) {
         state.scene_camera = int(i);
@@ -233,8 +275,10 @@ void scene_header(ViewerState& state) {
     ImGui::EndCombo();
   }
   if (ImGui::Button("scene camera [C]")) state.back_to_scene_camera = true;
+  name_widget("scene camera [C]");
   ImGui::SameLine();
   if (ImGui::Button("reload [R]")) state.reload = true;
+  name_widget("reload [R]");
   dim_text("%s", state.scene_path.filename().string().c_str());
 }
 
@@ -256,12 +300,15 @@ void local_section(ViewerState& state) {
   term_checkbox("specular I_S  [S]", &o.specular, specular_colour);
   term_checkbox("emission Le  [E]", &o.emission, emission_colour);
   ImGui::Checkbox("kd texture  [T]", &o.textures);
+  name_widget("kd texture  [T]");
   int blinn = o.blinn ? 1 : 0;
   ImGui::TextUnformatted("cos(α):");
   ImGui::SameLine();
   ImGui::RadioButton("Phong R·V", &blinn, 0);
+  name_widget("Phong R·V");
   ImGui::SameLine();
   ImGui::RadioButton("Blinn N·H  [B]", &blinn, 1);
+  name_widget("Blinn N·H  [B]");
   o.blinn = blinn == 1;
   ImGui::Spacing();
   effects_section(o);

@@ -16,6 +16,7 @@
 #include "app/solvers_view.h"
 #include "app/viewer_settings.h"
 #include "app/viewer_window.h"
+#include "app/widget_verbs.h"
 
 namespace luz::app {
 namespace {
@@ -263,6 +264,11 @@ constexpr ScriptVerb verbs[] = {
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},
     {"quit", "quit", check_none, run_quit, false},
+    // Widgets and pixels addressed by name, states waited for (widget_verbs.h).
+    {"click-widget", "click-widget \"LABEL\"", check_click_widget, run_click_widget, true},
+    {"click-picture", "click-picture X Y", check_click_picture, run_click_picture, true},
+    {"dump-widgets", "dump-widgets FILE.json", check_json_file, run_dump_widgets, true},
+    {"wait-until", "wait-until trace-done|radiosity-done FRAMES", check_wait_until, run_nothing, true},
 };
 
 }  // namespace

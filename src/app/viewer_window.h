@@ -57,6 +57,7 @@ public:
   // ScriptTarget: a command runs through its verb's handler (script.h).
   bool run(const ScriptCommand& command, std::string& error) override;
   bool busy() const override;
+  bool holds(const std::string& condition) override;  // widget_verbs.cpp
 
   // ViewerServices.
   ViewerState& state() override { return state_; }
