@@ -1,4 +1,4 @@
-// Radiosity in a real window (issue 5): tests/viewer/radiosity.txt is played on
+// Radiosity in a real window: tests/viewer/radiosity.txt is played on
 // scenes/cornell_box.gltf by the `viewer_radiosity_script` CTest fixture (Xvfb, Mesa's software
 // GL, as tests/viewer/run_viewer_script.sh does for the classroom script); these tests check what
 // it left. Skipped only when xvfb-run is missing (setup.sh installs it).
@@ -29,6 +29,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <glm/common.hpp>
+
 #include "core/image.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
@@ -56,11 +58,39 @@ double mean_code(const Codes& c, int x0, int y0, int x1, int y1) {
   return sum / (3.0 * (x1 - x0) * (y1 - y0));
 }
 
-// Two patches of the ceiling, either side of the lamp, in picture pixels (the window's 1280x760
-// less the 440 of the panel: the lamp spans about x 355..485, y 90..117).
-double ceiling(const Codes& c) { return 0.5 * (mean_code(c, 120, 40, 300, 75) + mean_code(c, 540, 40, 720, 75)); }
-
 fs::path scene() { return test::scene_dir() / "cornell_box.gltf"; }
+
+// The mean code of a piece of the ceiling (the plane at the box's top, x0..x1 by z0..z1 in
+// metres): its corners projected with the scene camera into a picture of this size, and the
+// middle half of their bounding box taken, clear of the walls and of the lamp's edge.
+double ceiling_piece(const Codes& c, float x0, float x1, float z0, float z1) {
+  const Scene s = io::load_gltf(scene()).scene;
+  const Camera& camera = s.cameras[0];
+  const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), 100.0f) * camera.view();
+  const float y = s.bounds().max.y;
+  glm::vec2 low(1e9f), high(-1e9f);
+  for (const float x : {x0, x1})
+    for (const float z : {z0, z1}) {
+      const glm::vec4 p = clip * glm::vec4(x, y, z, 1.0f);
+      const glm::vec2 pixel((p.x / p.w * 0.5f + 0.5f) * float(c.width), (0.5f - p.y / p.w * 0.5f) * float(c.height));
+      low = glm::min(low, pixel);
+      high = glm::max(high, pixel);
+    }
+  const glm::vec2 quarter = 0.25f * (high - low);
+  const glm::ivec2 a(low + quarter), b(high - quarter);
+  EXPECT_GT(b.x - a.x, 10);
+  EXPECT_GT(b.y - a.y, 3);
+  EXPECT_GE(a.x, 0);
+  EXPECT_GE(a.y, 0);
+  EXPECT_LE(b.x, c.width);
+  EXPECT_LE(b.y, c.height);
+  return mean_code(c, a.x, a.y, b.x, b.y);
+}
+
+// Two pieces of the ceiling either side of the lamp (which spans x 0.213..0.343 m, z 0.227..0.332 m).
+double ceiling(const Codes& c) {
+  return 0.5 * (ceiling_piece(c, 0.03f, 0.19f, 0.15f, 0.40f) + ceiling_piece(c, 0.37f, 0.53f, 0.15f, 0.40f));
+}
 
 const Material& material_named(const Scene& s, const std::string& name) {
   for (const Material& m : s.materials)
