@@ -198,7 +198,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
   nlohmann::json j = {{"model", s.model}, {"exposure", s.exposure}, {"ui_scale", v.ui_scale()}, {"note", s.note},
                       {"user_scale", v.user_scale()}, {"warnings", v.warnings()},
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
-                      {"show_help", s.show_help}, {"free_camera", s.free_camera}};
+                      {"show_help", s.show_help}, {"free_camera", s.free_camera},
+                      {"frame_ms", s.frame_ms}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
 }

@@ -76,7 +76,11 @@ std::string gist(std::string_view label) {
 void name_widget(std::string_view label) {
   install_hook();
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  registry().drawing.push_back({std::string(label), {min.x, min.y}, {max.x, max.y}, ImGui::IsItemVisible()});
+  // A click lands at the centre: the widget is in view when its centre is inside what the
+  // window shows (not scrolled away, not under its edge).
+  const ImVec2 centre((min.x + max.x) / 2.0f, (min.y + max.y) / 2.0f);
+  const bool visible = ImGui::IsItemVisible() && ImGui::GetCurrentWindow()->ClipRect.Contains(centre);
+  registry().drawing.push_back({std::string(label), {min.x, min.y}, {max.x, max.y}, visible});
 }
 
 const std::vector<NamedWidget>& named_widgets() { return registry().shown; }
