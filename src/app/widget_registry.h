@@ -8,8 +8,10 @@
 //   ImGui::Checkbox("shadow rays S_i", &o.shadows);
 //   name_widget("shadow rays S_i");
 //
-// The names of one frame are kept until the next frame starts (an ImGui context hook at
-// NewFrame), so a script command between two frames sees the widgets that are on screen.
+// The name is the label as the source writes it, in English, also where the label shown goes
+// through tr(): a script then clicks the same widget in every language. The names of one frame
+// are kept until the next frame starts (an ImGui context hook at NewFrame), so a script command
+// between two frames sees the widgets that are on screen.
 #include <optional>
 #include <string>
 #include <string_view>
