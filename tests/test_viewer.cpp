@@ -5,20 +5,28 @@
 //
 // Tolerances, in 8-bit sRGB codes: "the same picture" allows 1 code (one rounding); the viewer
 // against `luz render` (two GL contexts, GLX and OSMesa, both llvmpipe) a mean difference of
-// at most 0.5 code with 99.5% of the values within 2 codes.
+// at most 0.5 code with 99.5% of the values within 2 codes. The inspector's terms against slide
+// 15's formula worked out here in double precision from the scene file, at the dumped point and
+// normal: 1e-5 relative (the inspector works in floats, about 1e-7 an operation, and cos^5
+// multiplies the cosine's relative error by five).
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include "core/image.h"
+#include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "support.h"
 #include "viewer_support.h"
@@ -28,8 +36,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script  // where the fixture ran the script
-constexpr int window_width = 1280, window_height = 760;  // the script's --size
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;  // where the fixture played the script
 
 using test::Codes;
 using test::codes;
@@ -42,10 +49,15 @@ protected:
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 
+// The picture's rectangle in the window, as the viewer dumped it: x0, y0, x1, y1.
+std::vector<int> picture_rect() {
+  return json_of(run_dir / "windows.json")["view"].get<std::vector<int>>();
+}
+
 // The fraction of the window's picture area (right of the panel) that differs by more than
 // `codes` from `picture`.
 double differing_in_picture_area(const Codes& window, const Codes& picture, int tolerance) {
-  const int left = window.width - picture.width;
+  const int left = picture_rect()[0];
   size_t differing = 0;
   for (int y = 0; y < picture.height; ++y)
     for (int x = 0; x < picture.width; ++x)
@@ -70,15 +82,24 @@ size_t count_colour(const Codes& image, int r, int g, int b) {
 TEST_F(ViewerRun, ThePanelIsBesideThePictureNotOverIt) {
   const Codes window = codes(file("phong-panel.png"));
   const Codes picture = codes(file("phong.png"));
-  ASSERT_EQ(window.width, window_width);
-  ASSERT_EQ(window.height, window_height);
-  ASSERT_LT(picture.width, window.width);  // the panel takes the left part
-  ASSERT_LT(picture.height, window.height);  // the status line the bottom
+  const std::vector<int> view = picture_rect();
+  // The picture fills the window right of the panel, above the status line: the screenshot
+  // without the panel is that rectangle, pixel for pixel.
+  ASSERT_EQ(picture.width, view[2] - view[0]);
+  ASSERT_EQ(picture.height, view[3] - view[1]);
+  ASSERT_EQ(view[2], window.width);
+  ASSERT_EQ(view[1], 0);
+  ASSERT_GT(view[0], 0);                     // the panel takes the left part
+  ASSERT_LT(view[3], window.height);         // the status line the bottom
   // The window's picture area is the scene-only screenshot (no panel, no inspector yet).
   EXPECT_LT(differing_in_picture_area(window, picture, 1), 0.001);
+  // Every named widget lies in the panel, none over the picture.
+  const nlohmann::json widgets = json_of(file("widgets.json"))["widgets"];
+  ASSERT_GT(widgets.size(), 20u);
+  for (const auto& w : widgets) EXPECT_LE(w["rect"][2].get<float>(), float(view[0])) << w["label"];
 
   // The panel area looks like a panel: mostly one flat background, with light text on it.
-  const int panel_width = window.width - picture.width;
+  const int panel_width = view[0];
   std::map<int, size_t> colours;
   size_t text = 0;
   for (int y = 0; y < picture.height; ++y)
@@ -107,12 +128,58 @@ TEST_F(ViewerRun, SwitchingOffTheSpecularTermTakesTheHighlightsAway) {
 
   // The panel shows it too: the specular term is greyed in the formula and its box unticked.
   const Codes panel_with = codes(file("phong-panel.png")), panel_without = codes(file("no-specular-panel.png"));
-  const int panel_width = with.width > 0 ? window_width - with.width : 0;
+  const int panel_width = picture_rect()[0];
   size_t changed = 0;
   for (int y = 0; y < with.height; ++y)
     for (int x = 0; x < panel_width; ++x)
       if (panel_with.at(x, y, 0) != panel_without.at(x, y, 0)) ++changed;
   EXPECT_GT(changed, 100u);
+}
+
+// Slide 15 at the inspected point, from the scene file: I_A = Ia ka and, for each light,
+// IL = I f_att / pi with f_att = 1 / d^2, I_D = IL kd cos(theta), I_S = IL ks cos^n(alpha) with
+// cos(alpha) = R.V (Phong) or N.H (Blinn). The point P and the normal N are the inspector's.
+void expect_slide_15(const nlohmann::json& r, bool blinn) {
+  const Scene s = io::load_gltf(test::scene_dir() / "phong_spheres.gltf").scene;
+  const Material* m = nullptr;
+  for (const Material& candidate : s.materials)
+    if (candidate.name == r["material"].get<std::string>()) m = &candidate;
+  ASSERT_NE(m, nullptr) << r["material"];
+  const glm::dvec3 P(r["P"][0].get<double>(), r["P"][1].get<double>(), r["P"][2].get<double>());
+  const glm::dvec3 N = glm::normalize(glm::dvec3(r["N"][0].get<double>(), r["N"][1].get<double>(), r["N"][2].get<double>()));
+  const glm::dvec3 V = glm::normalize(glm::dvec3(s.cameras[0].position()) - P);  // the scene camera
+  auto near = [](const nlohmann::json& value, double expected, const std::string& what) {
+    EXPECT_NEAR(value.get<double>(), expected, 1e-5 * std::abs(expected) + 1e-7) << what;
+  };
+  ASSERT_EQ(r["lights"].size(), s.lights.size());
+  double diffuse[3] = {0, 0, 0}, specular[3] = {0, 0, 0};
+  for (size_t i = 0; i < s.lights.size(); ++i) {
+    const Light& light = s.lights[i];
+    const nlohmann::json& t = r["lights"][i];
+    const glm::dvec3 to_light = glm::dvec3(light.position) - P;
+    const double d = glm::length(to_light);
+    const glm::dvec3 L = to_light / d;
+    const double cos_theta = std::max(glm::dot(N, L), 0.0);
+    const glm::dvec3 R = 2.0 * glm::dot(N, L) * N - L;
+    const double cos_alpha = std::max(blinn ? glm::dot(N, glm::normalize(L + V)) : glm::dot(R, V), 0.0);
+    near(t["d"], d, light.name + " d");
+    near(t["theta_deg"], glm::degrees(std::acos(glm::dot(N, L))), light.name + " theta");
+    for (int c = 0; c < 3; ++c) {
+      const double IL = double(light.intensity[c]) / (d * d) / std::numbers::pi;
+      const double I_D = IL * m->kd[c] * cos_theta, I_S = IL * m->ks[c] * std::pow(cos_alpha, double(m->shininess));
+      near(t["I_D"][c], I_D, light.name + " I_D");
+      near(t["I_S"][c], I_S, light.name + " I_S");
+      diffuse[c] += I_D;
+      specular[c] += I_S;
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    const double ambient = double(s.ambient[c]) * m->ka[c];
+    near(r["I_A"][c], ambient, "I_A");
+    near(r["I_D"][c], diffuse[c], "I_D");
+    near(r["I_S"][c], specular[c], "I_S");
+    near(r["sum"][c], ambient + diffuse[c] + specular[c], "sum");
+  }
 }
 
 TEST_F(ViewerRun, TheInspectorShowsEachTermAndTheirSum) {
@@ -122,21 +189,14 @@ TEST_F(ViewerRun, TheInspectorShowsEachTermAndTheirSum) {
   ASSERT_EQ(r["lights"].size(), 2u);
   EXPECT_EQ(r["lights"][0]["name"], "key_light");
   EXPECT_EQ(r["lights"][1]["name"], "fill_light");
+  for (const auto& light : r["lights"]) {
+    const double d = light["d"], f_att = light["f_att"];
+    EXPECT_NEAR(f_att, 1.0 / (d * d), 1e-5 * f_att);  // the scene's physical attenuation
+  }
+  expect_slide_15(r, false);
+  // The CPU formula and the GPU's pixel agree.
   for (int c = 0; c < 3; ++c) {
-    double diffuse = 0, specular = 0;
-    for (const auto& light : r["lights"]) {
-      diffuse += light["I_D"][c].get<double>();
-      specular += light["I_S"][c].get<double>();
-      const double d = light["d"], f_att = light["f_att"];
-      EXPECT_NEAR(f_att, 1.0 / (d * d), 1e-4 * f_att);  // the scene's physical attenuation
-      EXPECT_GE(light["theta_deg"].get<double>(), 0.0);
-      EXPECT_LE(light["theta_deg"].get<double>(), 90.0);
-    }
-    EXPECT_NEAR(r["I_D"][c].get<double>(), diffuse, 1e-5);
-    EXPECT_NEAR(r["I_S"][c].get<double>(), specular, 1e-5);
-    const double sum = r["I_A"][c].get<double>() + diffuse + specular;
-    EXPECT_NEAR(r["sum"][c].get<double>(), sum, 1e-5);
-    // The CPU formula and the GPU's pixel agree.
+    const double sum = r["sum"][c].get<double>();
     EXPECT_NEAR(r["gl_pixel"][c].get<double>(), sum, 0.01 * sum);
   }
   EXPECT_GT(r["I_S"][0].get<double>(), 0.05);  // the click was on a highlight
@@ -154,6 +214,7 @@ TEST_F(ViewerRun, AClickOnThePanelSwitchesToBlinn) {
   // N.H's angle is about half R.V's near the mirror direction.
   EXPECT_LT(b["alpha_deg"].get<double>(), a["alpha_deg"].get<double>() - 1.0);
   EXPECT_GT(blinn["I_S"][0].get<double>(), phong["I_S"][0].get<double>());
+  expect_slide_15(blinn, true);  // the highlight is now Blinn's (N.H)^n
 }
 
 TEST_F(ViewerRun, OrbitingMovesTheView) {

@@ -1,4 +1,4 @@
-// Radiosity in a real window (issue 5): tests/viewer/radiosity.txt is played on
+// Radiosity in a real window: tests/viewer/radiosity.txt is played on
 // scenes/cornell_box.gltf by the `viewer_radiosity_script` CTest fixture (Xvfb, Mesa's software
 // GL, as tests/viewer/run_viewer_script.sh does for the classroom script); these tests check what
 // it left. Skipped only when xvfb-run is missing (setup.sh installs it).
@@ -11,8 +11,8 @@
 //   hemicube and stopping rule: the same number of shots (the solver is deterministic, its
 //   hemicube turns are seeded), then test_viewer.cpp's two-GL-contexts tolerance: mean
 //   difference <= 0.5 code, 99.5% of values within 2 codes;
-// - the dumped patch: B = radiosity + unshot and B/pi to float rounding (1e-6 relative), E = pi Le
-//   and rho = kd of the scene's material (1e-6 relative);
+// - the dumped patch: E = pi Le and rho = kd of the scene's material, and at shot 0 slide 39's
+//   step 1 (radiosity 0, unshot = B = E, B/pi = Le), to float rounding (1e-6 relative);
 // - the plot: more than 1% of the pixels of its frame differ by more than 8 codes between 5 and 300
 //   shots (the frame, its scale and decade labels stay: only the curve can differ).
 #include <algorithm>
@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <glm/common.hpp>
 
 #include "core/image.h"
 #include "io/gltf_loader.h"
@@ -56,11 +58,39 @@ double mean_code(const Codes& c, int x0, int y0, int x1, int y1) {
   return sum / (3.0 * (x1 - x0) * (y1 - y0));
 }
 
-// Two patches of the ceiling, either side of the lamp, in picture pixels (the window's 1280x760
-// less the 440 of the panel: the lamp spans about x 355..485, y 90..117).
-double ceiling(const Codes& c) { return 0.5 * (mean_code(c, 120, 40, 300, 75) + mean_code(c, 540, 40, 720, 75)); }
-
 fs::path scene() { return test::scene_dir() / "cornell_box.gltf"; }
+
+// The mean code of a piece of the ceiling (the plane at the box's top, x0..x1 by z0..z1 in
+// metres): its corners projected with the scene camera into a picture of this size, and the
+// middle half of their bounding box taken, clear of the walls and of the lamp's edge.
+double ceiling_piece(const Codes& c, float x0, float x1, float z0, float z1) {
+  const Scene s = io::load_gltf(scene()).scene;
+  const Camera& camera = s.cameras[0];
+  const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), 100.0f) * camera.view();
+  const float y = s.bounds().max.y;
+  glm::vec2 low(1e9f), high(-1e9f);
+  for (const float x : {x0, x1})
+    for (const float z : {z0, z1}) {
+      const glm::vec4 p = clip * glm::vec4(x, y, z, 1.0f);
+      const glm::vec2 pixel((p.x / p.w * 0.5f + 0.5f) * float(c.width), (0.5f - p.y / p.w * 0.5f) * float(c.height));
+      low = glm::min(low, pixel);
+      high = glm::max(high, pixel);
+    }
+  const glm::vec2 quarter = 0.25f * (high - low);
+  const glm::ivec2 a(low + quarter), b(high - quarter);
+  EXPECT_GT(b.x - a.x, 10);
+  EXPECT_GT(b.y - a.y, 3);
+  EXPECT_GE(a.x, 0);
+  EXPECT_GE(a.y, 0);
+  EXPECT_LE(b.x, c.width);
+  EXPECT_LE(b.y, c.height);
+  return mean_code(c, a.x, a.y, b.x, b.y);
+}
+
+// Two pieces of the ceiling either side of the lamp (which spans x 0.213..0.343 m, z 0.227..0.332 m).
+double ceiling(const Codes& c) {
+  return 0.5 * (ceiling_piece(c, 0.03f, 0.19f, 0.15f, 0.40f) + ceiling_piece(c, 0.37f, 0.53f, 0.15f, 0.40f));
+}
 
 const Material& material_named(const Scene& s, const std::string& name) {
   for (const Material& m : s.materials)
@@ -143,15 +173,22 @@ TEST_F(ViewerRadiosity, TheClickedPatchShowsSlide39sQuantities) {
     const Material& m = material_named(s, p["material"]);
     expect_rgb_near(p["E"], std::numbers::pi_v<float> * m.emission, "E = pi Le");
     expect_rgb_near(p["rho"], m.kd, "rho = kd");
-    Rgb sum, B;
-    for (int c = 0; c < 3; ++c) {
-      sum[c] = p["radiosity"][c].get<float>() + p["unshot"][c].get<float>();
-      B[c] = p["B"][c];
-    }
-    expect_rgb_near(p["B"], sum, "B = radiosity + unshot");
-    expect_rgb_near(p["B_over_pi"], B / std::numbers::pi_v<float>, "B / pi");
     EXPECT_GT(p["area"].get<float>(), 0.0f);
   }
+  // Shot 0 (after key 0): unshot = E everywhere, nothing shot, and what step 3 shows is E.
+  for (const char* name : {"lamp-reset.json", "wall-reset.json"}) {
+    const nlohmann::json p = json_of(file(name));
+    SCOPED_TRACE(name);
+    EXPECT_EQ(p["shots"], 0);
+    const Material& m = material_named(s, p["material"]);
+    const Rgb E = std::numbers::pi_v<float> * m.emission;
+    expect_rgb_near(p["radiosity"], Rgb(0.0f), "nothing shot");
+    expect_rgb_near(p["unshot"], E, "unshot = E");
+    expect_rgb_near(p["B"], E, "B = E");
+    expect_rgb_near(p["B_over_pi"], m.emission, "B / pi = Le");
+  }
+  EXPECT_EQ(json_of(file("lamp-reset.json"))["patch"], json_of(file("lamp.json"))["patch"]);  // the same patches
+  EXPECT_EQ(json_of(file("wall-reset.json"))["patch"], json_of(file("wall.json"))["patch"]);
   const nlohmann::json lamp = json_of(file("lamp.json")), wall = json_of(file("wall.json"));
   EXPECT_EQ(lamp["material"], "light");
   EXPECT_GT(lamp["E"][0].get<float>(), 1.0f);  // it emits

@@ -16,6 +16,7 @@
 #include "app/orbit_camera.h"
 #include "app/script.h"
 #include "app/shortcuts.h"
+#include "app/widget_registry.h"
 #include "core/error.h"
 #include "support.h"
 
@@ -202,6 +203,72 @@ TEST(ViewerScript, SetTakesTheOptionsTablesRanges) {
   EXPECT_NE(error_of("set fog-density inf\n").find("finite"), std::string::npos);
   EXPECT_NE(error_of("set spp 5\n").find("square"), std::string::npos);
   EXPECT_EQ(error_of("set fog exponential\n"), "");
+}
+
+}  // namespace
+}  // namespace luz::app
+
+// ---- widgets by name, states waited for ---------------------------------------------------------
+namespace luz::app {
+namespace {
+
+TEST(ViewerScript, WidgetAndWaitVerbsAreCheckedBeforeAnyWindow) {
+  EXPECT_EQ(error_of("click-widget \"Blinn N·H  [B]\"\nclick-picture 0 12\ndump-widgets w.json\n"
+                     "wait-until trace-done 600\nwait-until radiosity-done 1\ntrace --held\n"),
+            "");
+  EXPECT_EQ(error_of("click-widget\n"), "demo.txt:1: `click-widget` takes 1 argument");
+  EXPECT_EQ(error_of("click-widget Blinn N.H\n"), "demo.txt:1: `click-widget` takes 1 argument");  // quotes needed
+  EXPECT_NE(error_of("click-picture -1 3\n").find("demo.txt:1: `click-picture X Y`"), std::string::npos);
+  EXPECT_EQ(error_of("dump-widgets w.txt\n"), "demo.txt:1: `dump-widgets` writes a .json file");
+  EXPECT_EQ(error_of("wait-until converged 10\n"),
+            "demo.txt:1: unknown condition \"converged\" (trace-done, radiosity-done)");
+  EXPECT_NE(error_of("wait-until trace-done 0\n").find("FRAMES"), std::string::npos);
+  EXPECT_NE(error_of("wait-until trace-done\n").find("2 arguments"), std::string::npos);
+}
+
+// A mistyped label's error lists the labels it most likely meant, not the whole panel.
+TEST(ViewerScript, NearLabelsAreTheLikelyMeant) {
+  const std::vector<std::string> labels{"Phong R·V", "Blinn N·H  [B]", "kd texture  [T]", "max depth",
+                                        "shots##stop", "shots", "samples per emitter"};
+  EXPECT_EQ(near_labels("Blin N·H", labels, 3), (std::vector<std::string>{"Blinn N·H  [B]"}));
+  EXPECT_EQ(near_labels("blinn", labels, 3), (std::vector<std::string>{"Blinn N·H  [B]"}));  // case, a prefix
+  EXPECT_EQ(near_labels("max dept", labels, 3), (std::vector<std::string>{"max depth"}));
+  EXPECT_EQ(near_labels("shot", labels, 3), (std::vector<std::string>{"shots##stop", "shots"}));
+  EXPECT_TRUE(near_labels("radiosity budget", labels, 3).empty());
+}
+
+// wait-until holds the script until the condition holds, counting frames, and fails the run
+// naming its line when FRAMES pass without it.
+struct Waiter : ScriptTarget {
+  int frames_until_done = 0;
+  std::vector<std::string> done;
+  bool run(const ScriptCommand& command, std::string&) override {
+    done.push_back(command.verb);
+    return true;
+  }
+  bool holds(const std::string& condition) override { return condition == "trace-done" && frames_until_done-- <= 0; }
+};
+
+TEST(ViewerScript, WaitUntilWaitsForTheStateWithinItsFrames) {
+  ScriptRunner runner(parse_script_text("wait-until trace-done 5\nquit\n", "d.txt"));
+  Waiter target;
+  target.frames_until_done = 3;
+  std::string error;
+  for (int frame = 0; frame < 4; ++frame) {
+    ASSERT_TRUE(runner.step(target, error)) << error;
+    EXPECT_TRUE(target.done.empty()) << "frame " << frame;
+  }
+  ASSERT_TRUE(runner.step(target, error)) << error;
+  EXPECT_EQ(target.done, (std::vector<std::string>{"quit"}));
+
+  ScriptRunner late(parse_script_text("key 1\nwait-until trace-done 2\nquit\n", "d.txt"));
+  Waiter never;
+  never.frames_until_done = 1000;
+  bool ok = true;
+  for (int frame = 0; frame < 5 && ok; ++frame) ok = late.step(never, error);
+  EXPECT_FALSE(ok);
+  EXPECT_EQ(error, "d.txt:2: `wait-until trace-done` did not hold within 2 frames");
+  EXPECT_EQ(never.done, (std::vector<std::string>{"key"}));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Slide 36's window in a real window (issue 6): tests/viewer/solvers.txt is played on
+// Slide 36's window in a real window: tests/viewer/solvers.txt is played on
 // scenes/cornell_box.gltf by the `viewer_solvers_script` CTest fixture (Xvfb, Mesa's software GL);
 // these tests check the curves it dumped and the plots it drew. Skipped only when xvfb-run is
 // missing.
@@ -6,19 +6,26 @@
 // Tolerances: the residuals of Jacobi and Gauss-Seidel never rise from one sweep to the next
 // (the system is diagonally dominant, both converge monotonically; 1e-12 relative for rounding);
 // "the plot changes": more than 1% of the pixels inside the plots' rectangle move by more than 8
-// codes between 20 rows and 1200 rows (the frames, grids and labels stay: only the curves can).
+// codes between 20 rows and 1200 rows (the frames, grids and labels stay: only the curves can);
+// the window's curves against `luz solvers`'s CSV for the same scene, patches and hemicube: equal
+// to the CSV's 9 significant digits (5e-9 relative): the same solvers on the same form factors,
+// whose hemicubes both GL contexts (the window's, OSMesa's) rasterise alike.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "core/image.h"
 #include "io/image_io.h"
+#include "support.h"
 #include "viewer_support.h"
 
 namespace luz {
@@ -66,9 +73,48 @@ TEST_F(ViewerSolvers, ShootingShowsAUsablePictureFirst) {
   // One sweep's worth of rows: Jacobi has just shown its first iterate, the shooting has shot n times.
   const double jacobi = error_at(curves["jacobi"], n), shooting = error_at(curves["shooting"], n);
   EXPECT_LT(shooting, jacobi) << "after " << n << " rows";
-  // A sweep uses all n rows, a shot one.
-  for (const auto& sample : curves["jacobi"]) EXPECT_EQ(sample["rows"].get<size_t>() % n, 0u);
-  EXPECT_EQ(curves["shooting"].size(), curves["shooting"].back()["rows"].get<size_t>() + 1);
+}
+
+// What the window plots is what `luz solvers` computes headless for the same settings (its
+// defaults are the window's: about 400 patches, hemicube 64): every sample of every curve, at
+// the same number of rows, with the same residual and error.
+TEST_F(ViewerSolvers, TheCurvesAreLuzSolverssForTheSameSettings) {
+  const nlohmann::json later = json_of(file("later.json"));
+  const size_t n = later["patches"].get<size_t>();
+  test::ScratchDir dir;
+  const fs::path csv = dir / "curves.csv";
+  const auto result = test::run_luz({"solvers", (test::scene_dir() / "cornell_box.gltf").string(), "--iterations", "4",
+                                     "--csv", csv.string(), "-q"});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::map<std::pair<std::string, size_t>, std::pair<double, double>> headless;  // (method, rows) -> residual, error
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string method, iteration, rows, seconds, residual, error;
+    std::getline(fields, method, ',');
+    std::getline(fields, iteration, ',');
+    std::getline(fields, rows, ',');
+    std::getline(fields, seconds, ',');
+    std::getline(fields, residual, ',');
+    std::getline(fields, error, ',');
+    headless[{method, std::stoul(rows)}] = {std::stod(residual), std::stod(error)};
+  }
+  for (const char* method : {"jacobi", "gauss-seidel", "southwell", "shooting"}) {
+    SCOPED_TRACE(method);
+    const nlohmann::json& curve = later["curves"][method];
+    ASSERT_GE(curve.size(), 3u);
+    for (const auto& sample : curve) {
+      const size_t rows = sample["rows"];
+      if (rows > 4 * n) continue;  // past the CSV's four sweeps
+      const auto found = headless.find({method, rows});
+      ASSERT_NE(found, headless.end()) << "no headless sample at " << rows << " rows";
+      const double residual = sample["residual"], error = sample["error"];
+      EXPECT_NEAR(residual, found->second.first, 5e-9 * found->second.first) << rows << " rows";
+      EXPECT_NEAR(error, found->second.second, 5e-9 * found->second.second) << rows << " rows";
+    }
+  }
 }
 
 TEST_F(ViewerSolvers, JacobiAndGaussSeidelResidualsNeverRise) {

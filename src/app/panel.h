@@ -6,6 +6,7 @@
 
 #include "app/model_view.h"
 #include "app/viewer_state.h"
+#include "app/widget_registry.h"  // name_widget() after each labelled widget
 
 namespace luz::app {
 

@@ -41,8 +41,11 @@ void progress_and_counters(TracedModel& view) {
   const TraceProgress& t = view.progress();
   if (t.phase == TracePhase::tracing) {
     if (ImGui::Button(tr("cancel  [Backspace]"))) view.requests.cancel = true;
-  } else if (ImGui::Button(t.phase == TracePhase::done ? tr("render again  [Enter]") : tr("Render this view  [Enter]"))) {
-    view.requests.trace = true;
+    name_widget("cancel  [Backspace]");
+  } else {
+    const char* render = t.phase == TracePhase::done ? N_("render again  [Enter]") : N_("Render this view  [Enter]");
+    if (ImGui::Button(tr(render))) view.requests.trace = true;
+    name_widget(render);
   }
   const char* untraced = view.hybrid() ? tr("radiosity") : tr("raster (Phong)");
   const float fraction = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
@@ -75,6 +78,7 @@ void options(ViewerState& state, bool hybrid) {
   rt::WhittedOptions& o = state.whitted;
   const SliderRange depth = whitted_range("depth");
   ImGui::SliderInt(tr("max depth"), &o.max_depth, int(depth.low), int(depth.high));
+  name_widget("max depth");
   dim_text(tr("primary ray: depth 1; a hit at depth d spawns R and T while d < max"));
   bool adaptive = o.sampling == rt::Sampling::adaptive;
   ImGui::BeginDisabled(adaptive);
@@ -83,40 +87,56 @@ void options(ViewerState& state, bool hybrid) {
   const std::string spp = trf("{} ({}x{} jittered)", root * root, root, root);
   if (ImGui::SliderInt(tr("samples / pixel"), &root, 1, max_root, spp.c_str(), ImGuiSliderFlags_Logarithmic))
     o.spp = root * root;  // squares only
+  name_widget("samples / pixel");
   ImGui::EndDisabled();
   if (ImGui::Checkbox(tr("adaptive supersampling (Whitted)"), &adaptive))
     o.sampling = adaptive ? rt::Sampling::adaptive : rt::Sampling::stratified;
+  name_widget("adaptive supersampling (Whitted)");
   if (adaptive) {
     const SliderRange levels = whitted_range("adaptive-levels"), threshold = whitted_range("adaptive-threshold");
     ImGui::SliderInt(tr("levels"), &o.adaptive_levels, int(levels.low), int(levels.high));
+    name_widget("levels");
     ImGui::DragFloat(tr("threshold (sRGB)"), &o.adaptive_threshold, 0.002f, threshold.low, threshold.high, "%.3f");
+    name_widget("threshold (sRGB)");
   }
   ImGui::Checkbox(tr("Fresnel: kr + kt·F, kt·(1 - F)"), &o.fresnel);
+  name_widget("Fresnel: kr + kt·F, kt·(1 - F)");
   ImGui::Checkbox(tr("shadow rays S_i"), &o.shadows);
+  name_widget("shadow rays S_i");
   const SliderRange samples = whitted_range("light-samples");
   ImGui::SliderInt(tr("samples per emitter"), &o.light_samples, int(samples.low), int(samples.high), "%d",
                    ImGuiSliderFlags_Logarithmic);
+  name_widget("samples per emitter");
   dim_text(tr("1: its centroid; N: N-rooks over its area (soft shadows)"));
   ImGui::Checkbox(tr("brute force (every triangle, counted)"), &o.brute_force);
+  name_widget("brute force (every triangle, counted)");
   // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
   // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
   LocalOptions& l = state.local;
   if (hybrid) {
     ImGui::Checkbox("B/π [D]", &l.diffuse);
+    name_widget("B/π [D]");
     ImGui::SameLine();
     ImGui::Checkbox("ks [S]", &l.specular);
+    name_widget("ks [S]");
   } else {
     ImGui::Checkbox("Ia·ka [A]", &l.ambient);
+    name_widget("Ia·ka [A]");
     ImGui::SameLine();
     ImGui::Checkbox("kd [D]", &l.diffuse);
+    name_widget("kd [D]");
     ImGui::SameLine();
     ImGui::Checkbox("ks [S]", &l.specular);
+    name_widget("ks [S]");
     ImGui::SameLine();
     ImGui::Checkbox("Le [E]", &l.emission);
+    name_widget("Le [E]");
   }
   ImGui::Checkbox(tr("kd texture [T]"), &l.textures);
+  name_widget("kd texture [T]");
   ImGui::SameLine();
   ImGui::Checkbox(tr("Blinn N·H [B]"), &l.blinn);
+  name_widget("Blinn N·H [B]");
 }
 
 // One node and, indented under it, the rays its hit spawned.
@@ -172,6 +192,7 @@ void ray_tree(ViewerState& state, TracedModel& view) {
   const rt::RayTree& tree = *view.ray_tree();
   ImGui::Text(tr("pixel (%d, %d): %zu rays, L = %s"), tree.x, tree.y, tree.nodes.size(), rgb(tree.pixel).c_str());
   if (ImGui::SmallButton(tr("clear [X]"))) view.requests.clear_tree = true;
+  name_widget("clear [X]");
   std::vector<std::vector<int>> children(tree.nodes.size());
   for (const rt::RayTreeNode& n : tree.nodes)
     if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);

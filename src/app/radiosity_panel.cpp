@@ -29,12 +29,15 @@ const ImVec4 shooter_colour(1.0f, 0.35f, 1.0f, 1.0f);  // the renderer's magenta
 // ---- [the loop] --------------------------------------------------------------------------------
 void loop_controls(RadiosityState& r) {
   const RadiosityStatus& s = r.status;
-  if (ImGui::Button(r.drive.running ? tr("pause  [Space]") : tr("run  [Space]"), ImVec2(9.0f * ImGui::GetFontSize(), 0.0f)))
-    r.drive.running = !r.drive.running;
+  const char* run = r.drive.running ? N_("pause  [Space]") : N_("run  [Space]");
+  if (ImGui::Button(tr(run), ImVec2(9.0f * ImGui::GetFontSize(), 0.0f))) r.drive.running = !r.drive.running;
+  name_widget(run);
   ImGui::SameLine();
   if (ImGui::Button(tr("one shot  [.]"))) r.steps += 1;
+  name_widget("one shot  [.]");
   ImGui::SameLine();
   if (ImGui::Button(tr("reset  [0]"))) r.reset = true;
+  name_widget("reset  [0]");
 
   // Counters in two columns: what, then its value at a fixed indent.
   const float column = 9.0f * ImGui::GetFontSize();
@@ -101,23 +104,33 @@ void drive_settings(RadiosityState& r) {
   ImGui::TextUnformatted(tr("each frame:"));
   ImGui::SameLine();
   ImGui::RadioButton(tr("time budget"), &by_time, 1);
+  name_widget("time budget");
   ImGui::SameLine();
   ImGui::RadioButton(tr("shots"), &by_time, 0);
+  name_widget("shots");
   d.by_time = by_time == 1;
-  if (d.by_time) ImGui::SliderFloat(tr("ms of shooting / frame"), &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
-  else ImGui::SliderInt(tr("shots / frame"), &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
+  if (d.by_time) {
+    ImGui::SliderFloat(tr("ms of shooting / frame"), &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
+    name_widget("ms of shooting / frame");
+  } else {
+    ImGui::SliderInt(tr("shots / frame"), &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);
+    name_widget("shots / frame");
+  }
 
   RadiosityOptions& o = r.options;
   int by_shots = o.max_shots > 0 ? 1 : 0;
   ImGui::TextUnformatted(tr("stop:"));
   ImGui::SameLine();
   ImGui::RadioButton(tr("unshot below"), &by_shots, 0);
+  name_widget("unshot below");
   ImGui::SameLine();
   ImGui::RadioButton(tr("after shots"), &by_shots, 1);
+  name_widget("after shots");
   if (by_shots == 1) {
     if (o.max_shots <= 0) o.max_shots = std::max(r.status.shots, 100);
     const SliderRange shots = slider_range(*find_row(radiosity_rows(), "shots"), 1e6);
     ImGui::DragInt(tr("shots##stop"), &o.max_shots, 5.0f, int(shots.low), int(shots.high));
+    name_widget("shots##stop");
     o.max_shots = std::max(o.max_shots, 1);
     o.converge = 0.0f;  // as `luz render --shots N`
   } else {
@@ -127,6 +140,7 @@ void drive_settings(RadiosityState& r) {
     const SliderRange converge = radiosity_range("converge");
     ImGui::SliderFloat(tr("percent of the emitted"), &percent, 100.0f * converge.low, 100.0f * converge.high, "%.2g %%",
                        ImGuiSliderFlags_Logarithmic);
+    name_widget("% of the emitted");
     o.converge = std::clamp(percent / 100.0f, converge.low, converge.high);
   }
 }
@@ -135,17 +149,21 @@ void mesh_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
   const SliderRange size = radiosity_range("patch-size");
   ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
+  name_widget("patch size (m)");
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
   if (o.patch_size == 0.0f) dim_text(tr("auto: about %d patches"), o.target_patches);
   const SliderRange elements = radiosity_range("elements");
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
+  name_widget("elements per patch edge");
   dim_text(tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
   // The powers of two in the table's range.
   const SliderRange res = radiosity_range("hemicube");
   std::vector<int> sizes;
   for (int n = int(res.low); n <= int(res.high); n *= 2) sizes.push_back(n);
   const std::string preview = fmt::format("{}", o.hemicube_res);
-  if (ImGui::BeginCombo(tr("hemicube (px)"), preview.c_str())) {
+  const bool choosing = ImGui::BeginCombo(tr("hemicube (px)"), preview.c_str());
+  name_widget("hemicube (px)");
+  if (choosing) {
     for (int n : sizes)
       if (ImGui::Selectable(fmt::format("{}", n).c_str(), n == o.hemicube_res)) o.hemicube_res = n;
     ImGui::EndCombo();
@@ -154,16 +172,21 @@ void mesh_settings(RadiosityState& r) {
   const bool pending = r.status.remesh_pending;
   if (pending) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.7f, 0.45f, 0.1f, 1.0f));
   if (ImGui::Button(tr("remesh and restart"))) r.remesh = true;
+  name_widget("remesh and restart");
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
   dim_text(pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
   int analytic = o.form_factors == FormFactorMethod::analytic ? 1 : 0;
   ImGui::RadioButton(tr("hemicube form factors"), &analytic, 0);
+  name_widget("hemicube form factors");
   ImGui::RadioButton(tr("analytic near the shooter"), &analytic, 1);
+  name_widget("analytic near the shooter");
   o.form_factors = analytic == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemicube;
   const SliderRange overshoot = radiosity_range("overshoot");
   ImGui::SliderFloat(tr("overshoot"), &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
+  name_widget("overshoot");
   ImGui::Checkbox(tr("turn the hemicube at random each shot"), &o.random_rotation);
+  name_widget("turn the hemicube at random each shot");
   dim_text(tr("(seeded: the same shots give the same picture)"));
 }
 
@@ -199,19 +222,26 @@ void display_settings(RadiosityState& r) {
   RadiosityDrive& d = r.drive;
   int flat = o.flat_patches ? 1 : 0;
   ImGui::RadioButton(tr("Gouraud (vertex B/π)"), &flat, 0);
+  name_widget("Gouraud (vertex B/π)");
   ImGui::SameLine();
   ImGui::RadioButton(tr("flat patches"), &flat, 1);
+  name_widget("flat patches");
   o.flat_patches = flat == 1;
   ImGui::Checkbox(tr("patch outlines"), &o.outlines);
+  name_widget("patch outlines");
   ImGui::SameLine();
   ImGui::TextDisabled(tr("[L]: flat + outlines"));
   ImGui::Checkbox(tr("ambient estimate ρ·ambient  [Shift+A]"), &o.ambient_estimate);
+  name_widget("ambient estimate ρ·ambient  [Shift+A]");
   ImGui::Checkbox(tr("heat map of unshot power  [U]"), &d.heat_map);
+  name_widget("heat map of unshot power  [U]");
   if (d.heat_map) heat_map_legend();
   ImGui::PushStyleColor(ImGuiCol_CheckMark, shooter_colour);
   ImGui::Checkbox(tr("the shooter in magenta"), &d.show_shooter);
+  name_widget("the shooter in magenta");
   ImGui::PopStyleColor();
   ImGui::Checkbox(tr("its hemicube's item buffer (window)"), &d.show_item_buffer);
+  name_widget("its hemicube's item buffer (window)");
 }
 
 }  // namespace
@@ -235,6 +265,7 @@ void radiosity_section(ViewerState& state) {
   }
   // Slide 36 beside slide 39: why shooting shows a usable picture first.
   if (ImGui::Button(tr("slide 36: the system solved four ways  [J]"))) state.solvers.open = !state.solvers.open;
+  name_widget("slide 36: the system solved four ways  [J]");
 }
 
 // ---- [the item-buffer window] ------------------------------------------------------------------

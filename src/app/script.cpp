@@ -110,12 +110,26 @@ bool ScriptRunner::step(ScriptTarget& target, std::string& error) {
     return true;
   }
   if (target.busy()) return true;
+  if (until_) {
+    if (!target.holds(until_->args[0])) {
+      if (--until_frames_left_ > 0) return true;
+      error = fmt::format("{}:{}: `wait-until {}` did not hold within {} frames", script_.file.string(), until_->line,
+                          until_->args[0], until_->args[1]);
+      return false;
+    }
+    until_ = nullptr;
+  }
   while (next_ < script_.commands.size()) {
     const ScriptCommand& command = script_.commands[next_++];
     if (command.verb == "wait") {
       waiting_ = std::stoi(command.args[0]);
       if (waiting_ > 0) --waiting_;  // this frame is the first of them
       return true;
+    }
+    if (command.verb == "wait-until") {
+      until_ = &command;
+      until_frames_left_ = std::stoi(command.args[1]);
+      return true;  // checked from the next frame on, after the frame drawn now
     }
     std::string problem;
     if (!target.run(command, problem)) {

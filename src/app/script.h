@@ -6,9 +6,21 @@
 //   type TEXT                     type characters (a panel field being edited gets them)
 //   click X Y                     left click at window coordinates (the inspector, the panel;
 //                                 in Whitted's model the pixel's ray tree)
+//   click-widget "LABEL"          a click at the centre of the panel's widget of that label (as
+//                                 drawn in the last frame; the part before ## is enough when no
+//                                 other widget reads the same); an unknown label fails the script,
+//                                 naming it and the nearest labels on screen
+//   click-picture X Y             a click on pixel (X, Y) of the picture (row 0 at the top),
+//                                 wherever the panel and the window's size put the picture
+//   dump-widgets FILE.json        every named panel widget's label, rectangle, and whether it is
+//                                 in view
 //   drag X0 Y0 X1 Y1 [right]      drag with the left (orbit) or right (pan) button
 //   scroll STEPS                  the mouse wheel over the picture (zoom)
 //   wait N                        let N frames pass
+//   wait-until CONDITION FRAMES   let frames pass until trace-done (the traced model shown has
+//                                 finished its trace) or radiosity-done (the solver has reached
+//                                 its stopping rule, unasked: a wait-shots runs it); the script
+//                                 fails when that takes more than FRAMES frames
 //   idle SECONDS                  let the viewer sit idle (no frames unless an event comes),
 //                                 measuring its CPU use (dump-state's idle_cpu_fraction)
 //   screenshot FILE.png [--with-panel]
@@ -23,8 +35,10 @@
 //                                 Whitted's depth, spp, light-samples, fresnel, adaptive,
 //                                 brute-force, shadow-rays, and panel, inspector on|off,
 //                                 ui-scale S
-//   trace [--no-wait]             trace the view in Whitted's model (as Enter) and wait for the
-//                                 last tile, or go on at once (the hybrid's when it is shown)
+//   trace [--no-wait|--held]      trace the view in Whitted's model (as Enter) and wait for the
+//                                 last tile, or go on at once (the hybrid's when it is shown);
+//                                 --held: go on at once with no tile landing until the trace is
+//                                 cancelled (a trace that is surely still running, for a test)
 //   wait-trace                    wait until the trace running has finished
 //   dump-ray-tree FILE.json       the ray tree of the last pixel clicked in Whitted's model, as
 //                                 `luz render --ray-tree X,Y` writes it
@@ -112,9 +126,12 @@ public:
   // True while an earlier command is still playing out over frames (a click's press and
   // release); the runner waits for it.
   virtual bool busy() const { return false; }
+  // Whether a `wait-until` condition holds now (trace-done, radiosity-done).
+  virtual bool holds(const std::string& condition) { return condition.empty(); }
 };
 
-// Steps through a script, a few commands per frame: `wait N` ends the frame N times; commands
+// Steps through a script, a few commands per frame: `wait N` ends the frame N times,
+// `wait-until CONDITION FRAMES` until the condition holds (or fails the script after FRAMES); commands
 // whose effect must be seen before the next one (a click, a screenshot, a resize, a load) end it
 // once.
 class ScriptRunner {
@@ -129,6 +146,8 @@ private:
   Script script_;
   size_t next_ = 0;
   int waiting_ = 0;
+  const ScriptCommand* until_ = nullptr;  // the `wait-until` waiting
+  int until_frames_left_ = 0;
 };
 
 }  // namespace luz::app

@@ -19,6 +19,7 @@
 #include "app/solvers_view.h"
 #include "app/viewer_settings.h"
 #include "app/viewer_window.h"
+#include "app/widget_verbs.h"
 
 namespace luz::app {
 namespace {
@@ -201,7 +202,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                       {"user_scale", v.user_scale()}, {"warnings", v.warnings()},
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
                       {"show_help", s.show_help}, {"free_camera", s.free_camera},
-                      {"language", i18n::language_name(i18n::language())}, {"settings", settings_json(s)}};
+                      {"language", i18n::language_name(i18n::language())}, {"settings", settings_json(s)},
+                      {"frame_ms", s.frame_ms}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
 }
@@ -277,6 +279,11 @@ constexpr ScriptVerb verbs[] = {
     {"lang", "lang es|en", check_lesson_verb, run_lesson_verb, true},
     {"dump-lesson", "dump-lesson FILE.json", check_lesson_verb, run_lesson_verb, true},
     {"quit", "quit", check_none, run_quit, false},
+    // Widgets and pixels addressed by name, states waited for (widget_verbs.h).
+    {"click-widget", "click-widget \"LABEL\"", check_click_widget, run_click_widget, true},
+    {"click-picture", "click-picture X Y", check_click_picture, run_click_picture, true},
+    {"dump-widgets", "dump-widgets FILE.json", check_json_file, run_dump_widgets, true},
+    {"wait-until", "wait-until trace-done|radiosity-done FRAMES", check_wait_until, run_nothing, true},
 };
 
 }  // namespace

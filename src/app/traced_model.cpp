@@ -63,7 +63,8 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
     std::string why;
     if (const std::optional<rt::WhittedOptions> options = options_for_trace(why)) {
       requests.trace = false;
-      tracer().start(*state.scene, camera, size.x, size.y, *options, picture);
+      tracer().start(*state.scene, camera, size.x, size.y, *options, picture, requests.held);
+      requests.held = false;
       state.note = trf("tracing {}x{}", size.x, size.y);
     } else if (!why.empty()) {  // it cannot start at all
       requests.trace = false;
@@ -180,12 +181,13 @@ std::vector<TracedModel*> traced(Viewer& viewer) {
 
 std::string check_trace(const ScriptCommand& c) {
   if (auto e = check_count(c, 0, 1); !e.empty()) return e;
-  return c.args.empty() || c.args[0] == "--no-wait" ? "" : fmt::format("unknown option \"{}\" (--no-wait)", c.args[0]);
+  return c.args.empty() || c.args[0] == "--no-wait" || c.args[0] == "--held"
+             ? "" : fmt::format("unknown option \"{}\" (--no-wait, --held)", c.args[0]);
 }
 
 // As Enter; without --no-wait the script waits for the end.
 bool run_trace(Viewer& viewer, const ScriptCommand& c, std::string&) {
-  for (TracedModel* pane : traced(viewer)) pane->trace(c.args.empty());
+  for (TracedModel* pane : traced(viewer)) pane->trace(c.args.empty(), !c.args.empty() && c.args[0] == "--held");
   return true;
 }
 
@@ -226,7 +228,7 @@ bool run_dump_trace(Viewer& viewer, const ScriptCommand& c, std::string& error) 
 }
 
 constexpr ScriptVerb verbs[] = {
-    {"trace", "trace [--no-wait]", check_trace, run_trace, true},
+    {"trace", "trace [--no-wait|--held]", check_trace, run_trace, true},
     {"wait-trace", "wait-trace", [](const ScriptCommand& c) { return check_count(c, 0, 0); }, run_wait_trace, true},
     {"dump-ray-tree", "dump-ray-tree FILE.json", check_json_file, run_dump_ray_tree, true},
     {"dump-trace", "dump-trace FILE.json", check_json_file, run_dump_trace, true},

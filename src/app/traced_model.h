@@ -22,6 +22,7 @@ struct TraceRequests {
   bool trace = false;
   bool cancel = false;
   bool clear_tree = false;
+  bool held = false;  // the trace asked for keeps its tiles back until cancelled (`trace --held`)
 };
 
 class TracedModel : public ModelView {
@@ -39,9 +40,11 @@ public:
   bool busy() const override { return waiting_ && (requests.trace || progress_.phase == TracePhase::tracing); }
   bool animating() const override { return requests.trace || progress_.phase == TracePhase::tracing; }
 
-  // The script's `trace` (wait: until the last tile) and `wait-trace`.
-  void trace(bool wait) {
+  // The script's `trace` (wait: until the last tile; held: no tile lands until it is
+  // cancelled, so a test's cancel always finds it running) and `wait-trace`.
+  void trace(bool wait, bool held = false) {
     requests.trace = true;
+    requests.held = held;
     waiting_ = wait;
   }
   void wait_for_trace() { waiting_ = true; }

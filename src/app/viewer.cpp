@@ -121,18 +121,16 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   ImGui_ImplOpenGL3_Init("#version 330 core");
   rebuild_fonts();
 
-  // A key pressed and released within one slow frame would never be seen down by ImGui 1.86,
-  // which samples the keys' state once a frame: Enter and Backspace typed into a panel field
-  // were lost while a frame took 100-600 ms. The release of such a key waits for the next frame.
+  // ImGui 1.86 samples the keys once a frame and, within a frame, takes the typed characters
+  // before the keys and one editing key only: while a frame took 100-600 ms, a key pressed and
+  // released within it was never seen down, and "57", Backspace, Enter, "+" typed into a panel
+  // field became "57+" with Backspace or Enter lost. So keys and characters wait in one queue,
+  // in the order they came, and each frame takes them up to and including one key press.
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int scancode, int action, int mods) {
-    Viewer& v = viewer_of(win);
-    if (action == GLFW_RELEASE && std::find(v.pressed_this_frame_.begin(), v.pressed_this_frame_.end(), key) !=
-                                      v.pressed_this_frame_.end()) {
-      v.deferred_releases_.push_back({key, scancode, mods});
-      return;
-    }
-    if (action == GLFW_PRESS) v.pressed_this_frame_.push_back(key);
-    ImGui_ImplGlfw_KeyCallback(win, key, scancode, action, mods);  // ImGui's, then ours
+    viewer_of(win).input_.push_back({true, key, scancode, action, mods, 0});
+  });
+  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned codepoint) {
+    viewer_of(win).input_.push_back({false, 0, 0, 0, 0, codepoint});
   });
 
   adopt(std::move(loaded), path, false);
@@ -339,8 +337,15 @@ std::vector<ModelView*> Viewer::pane_views() {
 }
 
 // ---- [input] -----------------------------------------------------------------------------------
+// A panel field being edited takes the keys: asked of ImGui's active item now, since
+// io.WantTextInput tells of the frame before last and a key queued behind Enter would be lost.
+bool Viewer::typing_in_panel() const {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  return g.ActiveId != 0 && g.ActiveId == g.InputTextState.ID;
+}
+
 void Viewer::on_key(int key, int mods) {
-  if (ImGui::GetIO().WantTextInput) return;  // typing a number into the panel
+  if (typing_in_panel()) return;  // typing a number into the panel
   press_key(key, mods);
 }
 
@@ -355,7 +360,7 @@ void Viewer::press_key(int key, int mods) {
 }
 
 void Viewer::on_char(unsigned codepoint) {
-  if (ImGui::GetIO().WantTextInput) return;  // the character goes into the panel's field
+  if (typing_in_panel()) return;  // the character goes into the panel's field
   typed(codepoint);
 }
 
@@ -771,7 +776,7 @@ void Viewer::frame() {
 // solver), slide 36's methods step, the camera flies or a script plays. Otherwise the loop
 // sleeps in glfwWaitEvents: an idle window costs no CPU.
 bool Viewer::needs_frames() const {
-  if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty()) return true;
+  if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty()) return true;
   if (script_ && !script_->finished() && !idle_until_) return true;
   if (classroom_.moving()) return true;
   const SolversState& s = state_.solvers;
@@ -798,10 +803,16 @@ int Viewer::loop() {
       idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
       idle_until_.reset();
     }
-    for (const DeferredRelease& r : deferred_releases_)
-      ImGui_ImplGlfw_KeyCallback(window_.handle(), r.key, r.scancode, GLFW_RELEASE, r.mods);
-    deferred_releases_.clear();
-    pressed_this_frame_.clear();
+    while (!input_.empty()) {  // this frame's share of the keys (see the key callback)
+      const InputEvent e = input_.front();
+      input_.pop_front();
+      if (!e.is_key) {
+        ImGui_ImplGlfw_CharCallback(window_.handle(), e.codepoint);  // ImGui's, then ours
+        continue;
+      }
+      ImGui_ImplGlfw_KeyCallback(window_.handle(), e.key, e.scancode, e.action, e.mods);
+      if (e.action != GLFW_RELEASE) break;
+    }
 
     const auto now = std::chrono::steady_clock::now();
     const double seconds = std::chrono::duration<double>(now - last).count();

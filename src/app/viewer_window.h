@@ -4,6 +4,7 @@
 // Viewer turns keys, clicks and script lines into actions on the shared ViewerState or on the
 // view shown, and each frame lays out the panel, the picture's viewport and the status line.
 #include <chrono>
+#include <deque>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -59,6 +60,7 @@ public:
   // ScriptTarget: a command runs through its verb's handler (script.h).
   bool run(const ScriptCommand& command, std::string& error) override;
   bool busy() const override;
+  bool holds(const std::string& condition) override;  // widget_verbs.cpp
 
   // ViewerServices.
   ViewerState& state() override { return state_; }
@@ -166,12 +168,15 @@ private:
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
   Layout last_layout_;
 
-  // Keys released in the frame they were pressed in: ImGui sees the release one frame later.
-  struct DeferredRelease {
-    int key, scancode, mods;
+  // Keys and typed characters in the order they came, handed to ImGui up to one key press a
+  // frame (the key callback in viewer.cpp says why).
+  struct InputEvent {
+    bool is_key;
+    int key, scancode, action, mods;
+    unsigned codepoint;
   };
-  std::vector<int> pressed_this_frame_;
-  std::vector<DeferredRelease> deferred_releases_;
+  std::deque<InputEvent> input_;
+  bool typing_in_panel() const;
 
   std::optional<std::chrono::steady_clock::time_point> idle_until_;
   double idle_cpu_start_ = 0.0, idle_wall_ = 1.0, idle_cpu_fraction_ = -1.0;

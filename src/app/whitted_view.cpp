@@ -41,7 +41,7 @@ void WhittedView::sync(const Scene& scene) {
 }
 
 void WhittedView::start(const Scene& scene, const Camera& camera, int width, int height,
-                        const rt::WhittedOptions& options, const gl::Framebuffer& raster) {
+                        const rt::WhittedOptions& options, const gl::Framebuffer& raster, bool held) {
   cancel();
   sync(scene);
   started_ = {camera.to_world, camera.yfov, width, height, options, editable_values(scene)};
@@ -66,7 +66,10 @@ void WhittedView::start(const Scene& scene, const Camera& camera, int width, int
   phase_ = TracePhase::tracing;
   began_ = std::chrono::steady_clock::now();
   // GL stays on this thread; the worker only traces and copies pixels (DESIGN.md "Threads").
-  worker_ = std::jthread([this, camera, width, height, options] {
+  worker_ = std::jthread([this, camera, width, height, options, held] {
+    if (held) {  // no tile until cancelled: the tracer then skips them all
+      while (!cancel_) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     tracer_.render(camera, width, height, options,
                    [this](const rt::TileDone& tile) {
                      std::lock_guard lock(mutex_);

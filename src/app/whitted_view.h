@@ -51,9 +51,11 @@ public:
   WhittedView& operator=(const WhittedView&) = delete;
 
   // Starts tracing (a running trace is cancelled first). `raster` holds the picture the local
-  // model drew of the same view, w x h: the tiles not traced yet show it.
+  // model drew of the same view, w x h: the tiles not traced yet show it. A `held` trace keeps
+  // every tile back until it is cancelled: a trace surely still running, for the tests of
+  // cancelling.
   void start(const Scene& scene, const Camera& camera, int width, int height,
-             const rt::WhittedOptions& options, const gl::Framebuffer& raster);
+             const rt::WhittedOptions& options, const gl::Framebuffer& raster, bool held = false);
   // Back to the raster view; true when a trace was running (and is now cancelled).
   bool cancel();
   // GL thread, once a frame: uploads the finished tiles, joins a finished worker.
