@@ -236,7 +236,6 @@ struct Refused {
 TEST(PaneLists, BadListsAreUsageErrorsNamingTheProblem) {
   for (const Refused& r : {Refused{"flat,nosuch", "unknown model \"nosuch\""},
                            Refused{"flat,gouraud,phong,whitted,radiosity", "at most 4 models, not 5"},
-                           Refused{"phong,path", "path: the window has no view of it"},
                            Refused{"phong,phong", "phong is in the list twice"},
                            Refused{"flat,", "unknown model \"\""}}) {
     SCOPED_TRACE(r.list);

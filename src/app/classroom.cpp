@@ -18,10 +18,7 @@ void Classroom::queue(std::vector<ScriptCommand> commands) {
     return c.verb == "solvers" || c.verb == "wait-solver-rows";
   });
   if (!opens_solvers) script.commands.push_back({player_->step().line, "solvers", {"close"}});
-  // The side-by-side panes are a verb of their own view; a viewer without it shows the step's
-  // model alone.
-  for (ScriptCommand& c : commands)
-    if (c.verb != "panes" || find_verb("panes")) script.commands.push_back(std::move(c));
+  for (ScriptCommand& c : commands) script.commands.push_back(std::move(c));
   moves_.emplace_back(std::move(script));
 }
 

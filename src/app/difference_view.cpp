@@ -14,6 +14,7 @@
 #include "app/overlays.h"
 #include "app/path_model.h"
 #include "app/viewer_window.h"
+#include "app/widget_registry.h"
 #include "gl/functions.h"
 
 namespace luz::app {
@@ -149,7 +150,12 @@ void difference_windows(const ViewerState& state, const Viewport& viewport, Wind
 
 void difference_panel(ViewerState& state) {
   DifferenceState& d = state.difference;
-  ImGui::Checkbox(tr("difference against the path tracer"), &d.on);
+  // On the model buttons' last row when it fits there (in the language shown), else below.
+  const char* label = tr("difference against the path tracer");
+  const float width = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+  if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+  ImGui::Checkbox(label, &d.on);
+  name_widget("difference against the path tracer");
   if (!d.on) return;
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   if (d.valid)

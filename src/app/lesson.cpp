@@ -519,14 +519,6 @@ std::vector<ScriptCommand> LessonPlayer::go_to(size_t index) {
   return out;
 }
 
-Script LessonPlayer::opening_script(size_t index) {
-  Script script;
-  script.file = lesson_.file;
-  for (ScriptCommand& c : go_to(index))
-    if (c.verb != "panes") script.commands.push_back(std::move(c));
-  return script;
-}
-
 nlohmann::json LessonPlayer::to_json(i18n::Language language) const {
   const LessonStep& s = step();
   json j;

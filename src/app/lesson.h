@@ -96,10 +96,6 @@ public:
   // false with `error` set when a file cannot be written or N is not a step.
   bool run(const ScriptCommand& command, std::vector<ScriptCommand>& to_run, std::string& error);
 
-  // The commands of go_to(index) as a script for the viewer of today, which shows one picture:
-  // `panes` is left out of it.
-  Script opening_script(size_t index);
-
 private:
   Lesson lesson_;
   size_t index_ = 0;

@@ -145,7 +145,7 @@ void model_header(ViewerState& state, ModelView& shown) {
     if (!m.in_viewer()) continue;
     const std::string label = fmt::format("{} [{}]", tr(m.label), m.key);
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
-    name_widget(label);
+    name_widget(fmt::format("{} [{}]", m.label, m.key));  // named in English, as every widget
     if (++column % 3 != 0) ImGui::SameLine();
   }
   difference_panel(state);  // on the radio buttons' last row when it has room
