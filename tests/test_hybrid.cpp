@@ -214,7 +214,7 @@ TEST_F(CornellSpheres, TheHighlightsAreWhittedsHighlights) {
   const Pictures& p = *pictures_;
   const Camera& camera = p.scene.cameras.front();
   rt::WhittedOptions no_highlight;
-  no_highlight.specular = false;
+  no_highlight.terms.specular = false;
   const Image whitted_dull = p.tracer->render(camera, kSize, kSize, no_highlight);
   const Image hybrid_dull = p.hybrid_tracer->render(camera, kSize, kSize, no_highlight);
   const auto highlight = [](const Image& shiny, const Image& dull, int x, int y) {

@@ -145,8 +145,8 @@ TEST(Lesson, UnnamedSwitchesGoBackToTheOptionsDefaults) {
   const RadiosityOptions radiosity;
   const auto& c = lesson.steps[0].commands;
   auto on = [](bool b) { return std::string(b ? "on" : "off"); };
-  EXPECT_TRUE(has(c, "set ambient " + on(local.ambient)));
-  EXPECT_TRUE(has(c, "set blinn " + on(local.blinn)));
+  EXPECT_TRUE(has(c, "set ambient " + on(local.terms.ambient)));
+  EXPECT_TRUE(has(c, "set blinn " + on(local.terms.blinn)));
   EXPECT_TRUE(has(c, "set shadows " + on(local.shadows.on)));
   EXPECT_TRUE(has(c, "set depth " + std::to_string(whitted.max_depth)));
   EXPECT_TRUE(has(c, "set spp " + std::to_string(whitted.spp)));

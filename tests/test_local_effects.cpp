@@ -217,7 +217,7 @@ TEST_P(Shadow, FloorIsAmbientOnlyInTheShadowAndUntouchedOutside) {
   LocalOptions on;
   on.shadows.on = true;
   LocalOptions ambient_only;
-  ambient_only.diffuse = ambient_only.specular = false;
+  ambient_only.terms.diffuse = ambient_only.terms.specular = false;
   const Image unshadowed = render(scene, off), shadowed = render(scene, on), ambient = render(scene, ambient_only);
 
   // A pixel counts when the floor around it, 2 pixels every way, is all in shadow or all lit

@@ -126,9 +126,9 @@ Light point_light(glm::vec3 position, Rgb intensity) {
 
 LocalOptions only(bool ambient, bool diffuse, bool specular) {
   LocalOptions o;
-  o.ambient = ambient;
-  o.diffuse = diffuse;
-  o.specular = specular;
+  o.terms.ambient = ambient;
+  o.terms.diffuse = diffuse;
+  o.terms.specular = specular;
   return o;
 }
 
@@ -286,7 +286,7 @@ TEST(LocalFormula, BlinnUsesTheHalfVector) {
   const glm::vec3 at(0.3f, -0.2f, 1.2f);
   scene.lights.push_back(point_light(at, Rgb(3.0f, 2.0f, 1.0f)));
   LocalOptions options = only(false, false, true);
-  options.blinn = true;
+  options.terms.blinn = true;
   const auto blinn = [&](const dvec3& P) {
     const Toward t = toward(P, dvec3(at));
     const dvec3 V = glm::normalize(eye - P);
@@ -501,7 +501,7 @@ TEST(LocalFormula, TextureModulatesKd) {
 
   // With textures switched off, kd alone.
   LocalOptions plain = only(false, true, false);
-  plain.textures = false;
+  plain.terms.textures = false;
   expect_formula(render(scene, Shading::phong, plain), Shading::phong,
                  [&](const dvec3& P) { return lambert(P, dvec3(1.0)); });
 }
@@ -569,7 +569,7 @@ TEST(LocalFormula, EmissiveSurfaceShowsLe) {
                    [&](const dvec3&) { return rgb(glow.emission); });
 
   LocalOptions off;
-  off.emission = false;
+  off.terms.emission = false;
   expect_formula(render(scene, Shading::phong, off), Shading::phong,
                  [](const dvec3&) { return dvec3(0.0); });
 

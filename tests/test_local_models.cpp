@@ -103,9 +103,9 @@ Scene sphere_scene() {
 Image render(const Scene& scene, Shading shading, bool ambient, bool diffuse, bool specular) {
   LocalOptions options;
   options.shading = shading;
-  options.ambient = ambient;
-  options.diffuse = diffuse;
-  options.specular = specular;
+  options.terms.ambient = ambient;
+  options.terms.diffuse = diffuse;
+  options.terms.specular = specular;
   LocalRenderer renderer(scene);
   return renderer.render(scene.cameras[0], size, size, options);
 }

@@ -92,7 +92,7 @@ TEST_P(CpuAndGpuAgree, AtEveryPickedPixel) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / (c.scene + ".gltf"));
   LocalOptions options;
   options.shading = c.shading;
-  options.blinn = c.blinn;
+  options.terms.blinn = c.blinn;
   if (c.effects) {
     options.shadows.on = true;
     options.reflection.on = true;
@@ -184,7 +184,7 @@ TEST(LocalTerms, SwitchedOffTermsAreZero) {
   EXPECT_NEAR(all.specular.r, IL * 0.5f, 1e-6f);
   EXPECT_NEAR(all.ambient.r, 0.08f, 1e-6f);
   LocalOptions off;
-  off.ambient = off.diffuse = off.specular = false;
+  off.terms.ambient = off.terms.diffuse = off.terms.specular = false;
   const TermValues none = evaluate_terms(scene, material, P, N, V, off);
   EXPECT_EQ(radiance(none, material, off, Rgb(1.0f), true), Rgb(0.0f));
   EXPECT_NEAR(none.lights[0].theta, 0.0f, 1e-3f);  // the angles are still shown

@@ -229,7 +229,7 @@ TEST(PathTracer, DepthOneEqualsWhittedsDirectLight) {
   const Camera camera = test::look_at({0.0f, 3.0f, 4.0f}, {0.0f, 0.3f, 0.0f}, 0.9f);
   WhittedOptions whitted;
   whitted.max_depth = 1;
-  whitted.ambient = false;
+  whitted.terms.ambient = false;
   whitted.light_samples = 4096;  // N-rooks over the lamp: its own error ~1e-4 here
   PathOptions path;
   path.max_depth = 1;
@@ -273,7 +273,7 @@ TEST(PathTracer, SpecularChainsEqualWhittedWithFresnel) {
 
   WhittedOptions whitted;
   whitted.max_depth = 3;
-  whitted.ambient = false;
+  whitted.terms.ambient = false;
   whitted.fresnel = true;
   PathOptions path;
   path.max_depth = 3;

@@ -45,6 +45,7 @@ protected:
   void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
   static fs::path file(const std::string& name) { return run_dir / name; }
 
+public:
   // `luz render SCENE --size WxH ARGS... --out OUT`, which must succeed.
   static void render(const std::string& size, std::vector<std::string> args, const fs::path& out) {
     std::vector<std::string> all = {"render", scene().string(), "--size", size, "-q", "--out", out.string()};
@@ -112,17 +113,18 @@ Printed parse_compare(const std::string& out) {
   return p;
 }
 
-TEST_F(ViewerPath, TheDifferenceViewsFiguresAreLuzCompares) {
-  const nlohmann::json d = json_of(file("difference.json"));
+// The figures dumped (Whitted's traced picture against 4 passes of seed 7) are what `luz compare`
+// prints for the headless renders of the same size; its heat map goes to `heatmap`.
+void expect_luz_compares(const nlohmann::json& d, const fs::path& heatmap) {
   ASSERT_TRUE(d["valid"].get<bool>()) << d.dump(1);
   EXPECT_EQ(d["reference_spp"], 4);
   EXPECT_EQ(d["model"], "Whitted");
   const std::string size = size_of(d);
   test::ScratchDir dir;
-  render(size, {"--model", "whitted"}, dir / "whitted.exr");
-  render(size, {"--model", "path", "--spp", "4", "--seed", "7"}, dir / "path.exr");
+  ViewerPath::render(size, {"--model", "whitted"}, dir / "whitted.exr");
+  ViewerPath::render(size, {"--model", "path", "--spp", "4", "--seed", "7"}, dir / "path.exr");
   const auto compare = test::run_luz({"compare", (dir / "whitted.exr").string(), (dir / "path.exr").string(),
-                                      "--heatmap", (dir / "heatmap.png").string()});
+                                      "--heatmap", heatmap.string()});
   ASSERT_EQ(compare.exit_code, 0) << compare.output;
   const Printed p = parse_compare(compare.output);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(d["mean_error"][size_t(c)].get<double>(), p.mean_error[c], 0.5e-6) << c;
@@ -130,6 +132,24 @@ TEST_F(ViewerPath, TheDifferenceViewsFiguresAreLuzCompares) {
   EXPECT_NEAR(d["mean_relative_error"].get<double>(), p.mean_relative_error, 0.5e-4);
   EXPECT_EQ(d["lit_pixels"].get<int>(), p.lit);
   EXPECT_GT(p.lit, 1000);
+}
+
+// The difference view's legend keeps its text inside its window.
+void expect_legend_whole(const nlohmann::json& windows) {
+  bool found = false;
+  for (const auto& w : windows["windows"]) {
+    if (!w["name"].get<std::string>().starts_with("difference view")) continue;
+    found = true;
+    EXPECT_LE(w["content_width"].get<double>(), w["visible_width"].get<double>() + 0.5) << w.dump();
+    EXPECT_FALSE(w["scrolls_sideways"].get<bool>()) << w.dump();
+  }
+  EXPECT_TRUE(found) << windows.dump(1);
+}
+
+TEST_F(ViewerPath, TheDifferenceViewsFiguresAreLuzCompares) {
+  test::ScratchDir dir;
+  expect_luz_compares(json_of(file("difference.json")), dir / "heatmap.png");
+  expect_legend_whole(json_of(file("difference-windows.json")));
 
   // The picture is luz compare's heat map (above its legend), code for code.
   const Codes viewer = codes(file("difference.png")), printed = codes(dir / "heatmap.png");
@@ -178,6 +198,21 @@ TEST_F(ViewerPath, TurnedOffThePictureIsTheModelsAgain) {
   const Codes off = codes(file("off.png"));
   render(off.size(), {"--model", "whitted", "--no-diffuse"}, dir / "model.png");
   EXPECT_EQ(largest_difference(off, codes(dir / "model.png")), 0);
+}
+
+// Side by side, the active pane is the one compared: its figures are luz compare's at the
+// pane's size; the reference shown in the other pane is not stopped with the difference.
+TEST_F(ViewerPath, SideBySideTheActivePaneShowsItsDifference) {
+  const nlohmann::json d = json_of(file("pane-difference.json"));
+  ASSERT_TRUE(d["valid"].get<bool>()) << d.dump(1);
+  const nlohmann::json whole = json_of(file("difference.json"));
+  EXPECT_LT(d["size"][0].get<int>(), whole["size"][0].get<int>()) << "a pane is narrower than the picture";
+  EXPECT_EQ(d["size"][1], whole["size"][1]);
+  test::ScratchDir dir;
+  expect_luz_compares(d, dir / "heatmap.png");
+  expect_legend_whole(json_of(file("pane-windows.json")));
+  const nlohmann::json reference = json_of(file("pane-path.json"));
+  EXPECT_EQ(reference["spp"], 8) << reference.dump(1);
 }
 
 }  // namespace

@@ -44,14 +44,14 @@ TEST_P(TracerAgreesWithGl, AtDepthOneWithoutShadowsAwayFromSilhouettes) {
 
   LocalOptions local;
   local.shading = Shading::phong;
-  local.blinn = c.blinn;
+  local.terms.blinn = c.blinn;
   LocalRenderer raster(scene);
   const Image gl = raster.render(camera, c.width, c.height, local);
 
   rt::WhittedOptions options;
   options.max_depth = 0;  // "depth 0": the local model only
   options.shadows = false;
-  options.blinn = c.blinn;
+  options.terms.blinn = c.blinn;
   rt::WhittedRenderer tracer(scene);
   const Image traced = tracer.render(camera, c.width, c.height, options);
   EXPECT_EQ(tracer.counters().total_rays(), tracer.counters()[rt::RayKind::primary]);

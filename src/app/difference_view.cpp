@@ -54,13 +54,13 @@ void upload(const Image& image, float scale, gl::Framebuffer& picture) {
 }  // namespace
 
 void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const Camera& camera,
-                     const Viewport& viewport, gl::Framebuffer& picture) {
+                     const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane) {
   ViewerState& state = viewer.state();
   DifferenceState& d = state.difference;
   const bool reference_shown = std::string_view(compared.name) == "path";
   if (!d.on || reference_shown) {
-    // The reference ran for the view: it stops (when shown itself, the viewer drives it).
-    if (d.running && !reference_shown) viewer.view("path").hidden();
+    // The reference ran for the comparison: it stops (when it is shown, the viewer drives it).
+    if (d.running && !reference_in_a_pane) viewer.view("path").hidden();
     d.running = d.refining = d.waiting = d.valid = false;
     d.why = d.on ? tr("the path tracer is the reference itself: choose another model to compare") : "";
     return;

@@ -12,8 +12,9 @@
 //   - the picture is read back and compared with the reference's latest whole pass;
 //   - the heat map replaces the picture's radiance, divided by 2^exposure so that the display
 //     pass shows its colours as they are (a screenshot is then `luz compare --heatmap`'s map).
-// It draws into whatever picture and viewport it is given, so a pane of the side-by-side view
-// can show it as well as the whole picture.
+// It draws into whatever picture and viewport it is given: the whole picture, or the active pane
+// of the side-by-side view (beside the model's neighbours, or beside the reference itself when
+// the path model is another pane).
 #include <span>
 #include <string>
 
@@ -27,9 +28,10 @@ namespace luz::app {
 struct ModelEntry;
 
 // After `compared` (the model whose view drew into `picture`) was drawn: does nothing while the
-// difference is off (and stops the reference when it was just turned off).
+// difference is off (and stops the reference when it was just turned off, unless the path
+// model is shown in a pane of its own: `reference_in_a_pane`).
 void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const Camera& camera,
-                     const Viewport& viewport, gl::Framebuffer& picture);
+                     const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane);
 
 // The figures of a comparison (image_compare.h) of two width x height pictures, with the heat
 // map's range (heatmap_range) and without the model's name and the reference's samples.

@@ -220,7 +220,7 @@ ScriptCommand command(int line, std::string verb, std::vector<std::string> args)
 // Each group emits every one of its switches: the step's value, else the options' default.
 
 void terms(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
-  const LocalOptions defaults;
+  const TermSwitches defaults;
   const std::vector<std::pair<std::string, bool>> terms = {
       {"ambient", defaults.ambient}, {"diffuse", defaults.diffuse}, {"specular", defaults.specular},
       {"emission", defaults.emission}, {"textures", defaults.textures}, {"blinn", defaults.blinn}};

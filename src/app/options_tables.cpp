@@ -27,17 +27,17 @@ bool square(double v) { return rt::is_square(int(v)); }
 const LocalRow local_table[] = {
     // The terms of I = I_A + I_D + I_S (+ Le): every model takes their switches.
     {"ambient", "--no-ambient", "terms", OptionKind::on_off, "Switch off the ambient term I_A = Ia*ka", 0, 1,
-     LUZ_FIELD(LocalOptions, ambient)},
+     LUZ_FIELD(LocalOptions, terms.ambient)},
     {"diffuse", "--no-diffuse", "terms", OptionKind::on_off, "Switch off the diffuse term I_D = IL*kd*cos(theta)", 0, 1,
-     LUZ_FIELD(LocalOptions, diffuse)},
+     LUZ_FIELD(LocalOptions, terms.diffuse)},
     {"specular", "--no-specular", "terms", OptionKind::on_off,
-     "Switch off the specular term I_S = IL*ks*cos^n(alpha)", 0, 1, LUZ_FIELD(LocalOptions, specular)},
+     "Switch off the specular term I_S = IL*ks*cos^n(alpha)", 0, 1, LUZ_FIELD(LocalOptions, terms.specular)},
     {"emission", "--no-emission", "terms", OptionKind::on_off,
-     "Do not show the emitted radiance Le of emissive surfaces", 0, 1, LUZ_FIELD(LocalOptions, emission)},
+     "Do not show the emitted radiance Le of emissive surfaces", 0, 1, LUZ_FIELD(LocalOptions, terms.emission)},
     {"textures", "--no-textures", "terms", OptionKind::on_off, "Ignore baseColorTexture", 0, 1,
-     LUZ_FIELD(LocalOptions, textures)},
+     LUZ_FIELD(LocalOptions, terms.textures)},
     {"blinn", "--blinn", "terms", OptionKind::on_off, "Blinn's half vector N.H instead of Phong's R.V", 0, 1,
-     LUZ_FIELD(LocalOptions, blinn)},
+     LUZ_FIELD(LocalOptions, terms.blinn)},
     // Slide 19's other possibilities: the local models' only.
     {"fog", "--fog", "local", OptionKind::choice, "Atmospheric attenuation (depth cueing) toward the fog colour", 0, 2,
      [](const LocalOptions& o) { return double(int(o.fog.mode)); },

@@ -309,13 +309,13 @@ void local_section(ViewerState& state) {
   ImGui::Spacing();
   draw_local_formula(o, *state.scene);
   ImGui::Spacing();
-  term_checkbox(N_("ambient I_A  [A]"), &o.ambient, ambient_colour);
-  term_checkbox(N_("diffuse I_D  [D]"), &o.diffuse, diffuse_colour);
-  term_checkbox(N_("specular I_S  [S]"), &o.specular, specular_colour);
-  term_checkbox(N_("emission Le  [E]"), &o.emission, emission_colour);
-  ImGui::Checkbox(tr("kd texture  [T]"), &o.textures);
+  term_checkbox(N_("ambient I_A  [A]"), &o.terms.ambient, ambient_colour);
+  term_checkbox(N_("diffuse I_D  [D]"), &o.terms.diffuse, diffuse_colour);
+  term_checkbox(N_("specular I_S  [S]"), &o.terms.specular, specular_colour);
+  term_checkbox(N_("emission Le  [E]"), &o.terms.emission, emission_colour);
+  ImGui::Checkbox(tr("kd texture  [T]"), &o.terms.textures);
   name_widget("kd texture  [T]");
-  int blinn = o.blinn ? 1 : 0;
+  int blinn = o.terms.blinn ? 1 : 0;
   ImGui::TextUnformatted(tr("cos(α):"));
   ImGui::SameLine();
   ImGui::RadioButton(tr("Phong R·V"), &blinn, 0);
@@ -323,7 +323,7 @@ void local_section(ViewerState& state) {
   ImGui::SameLine();
   ImGui::RadioButton(tr("Blinn N·H  [B]"), &blinn, 1);
   name_widget("Blinn N·H  [B]");
-  o.blinn = blinn == 1;
+  o.terms.blinn = blinn == 1;
   ImGui::Spacing();
   effects_section(o);
 }
@@ -341,15 +341,15 @@ void dim_text(const char* format, ...) {
 void draw_local_formula(const LocalOptions& o, const Scene& scene) {
   // I = Ia ka + sum_i S_i IL_i [kd cos(theta) + ks cos^n(alpha)] + Le + kr Ir + kt It
   ImGui::TextUnformatted("I =");
-  piece(" Ia·ka", o.ambient, ambient_colour);
+  piece(" Ia·ka", o.terms.ambient, ambient_colour);
   plain(" + Σᵢ");
   piece(" Sᵢ", o.shadows.on, shadow_colour);
   plain(" ILᵢ[");
-  piece("kd·cos θ", o.diffuse, diffuse_colour);
+  piece("kd·cos θ", o.terms.diffuse, diffuse_colour);
   plain(" + ");
-  piece(o.blinn ? "ks(N·H)ⁿ" : "ks(R·V)ⁿ", o.specular, specular_colour);
+  piece(o.terms.blinn ? "ks(N·H)ⁿ" : "ks(R·V)ⁿ", o.terms.specular, specular_colour);
   plain("]");
-  piece(" + Le", o.emission, emission_colour);
+  piece(" + Le", o.terms.emission, emission_colour);
   piece(" + kr·Ir", o.reflection.on, reflection_colour);
   piece(" + kt·It", o.transparency.on, transparency_colour);
   if (o.fog.mode != FogMode::off) ImGui::TextColored(fog_colour, tr("then I' = f·I + (1 - f)·C_fog (%s fog)"), tr(to_string(o.fog.mode)));

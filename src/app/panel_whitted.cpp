@@ -112,7 +112,7 @@ void options(ViewerState& state, bool hybrid) {
   name_widget("brute force (every triangle, counted)");
   // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
   // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
-  LocalOptions& l = state.local;
+  TermSwitches& l = state.local.terms;
   if (hybrid) {
     ImGui::Checkbox("B/π [D]", &l.diffuse);
     name_widget("B/π [D]");

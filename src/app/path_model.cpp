@@ -76,7 +76,7 @@ PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) co
   rt::PathOptions o = options;
   o.spp = 0;
   o.max_depth = rt::max_depth_of(o);
-  o.textures = viewer_.state().local.textures;  // the panel's T switch, as --no-textures
+  o.textures = viewer_.state().local.terms.textures;  // the panel's T switch, as --no-textures
   return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
 }
 

@@ -112,7 +112,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
                                                 ".exr (linear float)", settings.path.error_out));
   }
   rt::PathOptions options;
-  options.textures = settings.local.textures;
+  options.textures = settings.local.terms.textures;
   options.seed = settings.path.seed;
   // --spp and --depth are the Whitted tracer's flags too; unless given, the path tracer's
   // own defaults hold.

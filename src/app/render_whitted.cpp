@@ -42,12 +42,7 @@ private:
 
 rt::WhittedOptions tracer_options(const rt::WhittedOptions& whitted, const LocalOptions& local) {
   rt::WhittedOptions options = whitted;
-  options.ambient = local.ambient;
-  options.diffuse = local.diffuse;
-  options.specular = local.specular;
-  options.emission = local.emission;
-  options.textures = local.textures;
-  options.blinn = local.blinn;
+  options.terms = local.terms;
   return options;
 }
 

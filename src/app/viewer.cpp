@@ -475,14 +475,14 @@ void Viewer::apply(Action action) {
   switch (action) {
     case Action::none:
     case Action::choose_model: break;
-    case Action::toggle_ambient: toggle(o.ambient, N_("ambient I_A")); break;
-    case Action::toggle_diffuse: toggle(o.diffuse, N_("diffuse I_D")); break;
-    case Action::toggle_specular: toggle(o.specular, N_("specular I_S")); break;
-    case Action::toggle_emission: toggle(o.emission, N_("emission Le")); break;
-    case Action::toggle_textures: toggle(o.textures, N_("kd texture")); break;
+    case Action::toggle_ambient: toggle(o.terms.ambient, N_("ambient I_A")); break;
+    case Action::toggle_diffuse: toggle(o.terms.diffuse, N_("diffuse I_D")); break;
+    case Action::toggle_specular: toggle(o.terms.specular, N_("specular I_S")); break;
+    case Action::toggle_emission: toggle(o.terms.emission, N_("emission Le")); break;
+    case Action::toggle_textures: toggle(o.terms.textures, N_("kd texture")); break;
     case Action::toggle_blinn:
-      o.blinn = !o.blinn;
-      state_.note = o.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
+      o.terms.blinn = !o.terms.blinn;
+      state_.note = o.terms.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
       break;
     case Action::cycle_attenuation: {
       std::vector<Light>& lights = state_.scene->lights;
@@ -617,6 +617,8 @@ void Viewer::draw_picture(const Layout& l) {
   const Camera camera = current_camera();
   pictures_.resize(panes_.size());
   drawn_cameras_.assign(panes_.size(), camera);
+  const bool reference_in_a_pane =
+      std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
   for (size_t i = 0; i < panes_.size(); ++i) {
     const Viewport& v = l.panes[i];
     if (v.empty()) continue;
@@ -627,9 +629,9 @@ void Viewer::draw_picture(const Layout& l) {
     pane_view.advance(camera, v);
     picture->bind();
     pane_view.draw(camera, v, *picture);
-    // The heat map instead, when it is on: in one picture only (its reference is one film, of
-    // one size).
-    if (panes_.size() == 1) draw_difference(*this, *panes_[i], camera, v, *picture);
+    // The heat map instead, when it is on, in the active pane: the panes are of one size, so
+    // the reference's one film serves whichever pane is compared.
+    if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y);
@@ -674,6 +676,7 @@ void Viewer::draw_windows(const Layout& l) {
   if (panes_.size() > 1) {  // the active pane's windows, in its own corners
     WindowCorners pane_corners(l.panes[active_pane_], margin);
     shown().windows(l.panes[active_pane_], pane_corners);
+    difference_windows(state_, l.panes[active_pane_], pane_corners);
   } else {
     shown().windows(l.view, corners);
     difference_windows(state_, l.view, corners);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/color.h"
+#include "core/term_switches.h"
 
 namespace luz {
 
@@ -73,12 +74,7 @@ struct ReflectionMap {
 
 struct LocalOptions {
   Shading shading = Shading::phong;
-  bool ambient = true;    // I_A = I_a * k_a
-  bool diffuse = true;    // I_D = I_L * k_d * cos(theta)
-  bool specular = true;   // I_S = I_L * k_s * cos^n(alpha)
-  bool emission = true;   // emissive surfaces show their own Le
-  bool blinn = false;     // cos(alpha) from Blinn's half vector N.H instead of Phong's R.V
-  bool textures = true;   // baseColorTexture modulates k_d
+  TermSwitches terms;   // slides 15-18, one switch per term
 
   // Slide 19.
   Fog fog;

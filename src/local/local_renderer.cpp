@@ -251,7 +251,7 @@ struct LocalRenderer::Impl {
   void set_lights(gl::Program& p, bool shadows);
   void set_material(gl::Program& p, const Material& material, const LocalOptions& options);
   bool is_textured(const Material& material, const LocalOptions& options) const {
-    return options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < textures.size();
+    return options.terms.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < textures.size();
   }
   void set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view);
   float far_plane(const glm::vec3& eye) const;
@@ -428,11 +428,11 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   const bool shadows = options.shadows.on && shadow_maps;
   Switches common;
   common.shading = options.shading;
-  common.ambient = options.ambient;
-  common.diffuse = options.diffuse;
-  common.specular = options.specular;
-  common.emission = options.emission;
-  common.blinn = options.blinn;
+  common.ambient = options.terms.ambient;
+  common.diffuse = options.terms.diffuse;
+  common.specular = options.terms.specular;
+  common.emission = options.terms.emission;
+  common.blinn = options.terms.blinn;
   common.shadows = shadows;
   common.environment = environment_texture != 0 && !environment_path.empty();
   common.fog = pass.fog ? options.fog.mode : FogMode::off;

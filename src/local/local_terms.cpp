@@ -29,14 +29,14 @@ void add_light(TermValues& terms, LightTerm term, const ShadowView* shadow, cons
                const glm::vec3& V, const LocalOptions& options) {
   const float cos_theta = glm::dot(N, L);
   term.theta = angle_of(cos_theta);
-  const float cos_a = cos_alpha(N, L, V, options.blinn);
+  const float cos_a = cos_alpha(N, L, V, options.terms.blinn);
   term.alpha = angle_of(cos_a);
   term.lit = cos_theta > 0.0f;
   if (term.lit) {  // behind the surface: no diffuse, no highlight
     if (options.shadows.on && shadows && shadow)
       term.S = shadow_factor(*shadows, *shadow, P, N, cos_theta);
-    if (options.diffuse) term.diffuse = term.S * term.IL * material.kd * cos_theta;
-    if (options.specular)
+    if (options.terms.diffuse) term.diffuse = term.S * term.IL * material.kd * cos_theta;
+    if (options.terms.specular)
       term.specular = term.S * term.IL * material.ks * std::pow(cos_a, material.shininess);
   }
   terms.diffuse += term.diffuse;
@@ -54,7 +54,7 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
     return shadows && i < views->size() ? &(*views)[i] : nullptr;
   };
   TermValues terms;
-  if (options.ambient) terms.ambient = scene.ambient * material.ka;  // I_A = Ia ka
+  if (options.terms.ambient) terms.ambient = scene.ambient * material.ka;  // I_A = Ia ka
 
   // lighting.glsl punctual_IL(), for the first max_shader_lights enabled lights.
   int count = 0;
@@ -125,7 +125,7 @@ void add_reflection_and_fog(TermValues& terms, const Material& material, const L
 Rgb radiance(const TermValues& terms, const Material& material, const LocalOptions& options,
              const Rgb& kd_texture_factor, bool emitting_side) {
   Rgb I = terms.ambient + terms.diffuse * kd_texture_factor + terms.specular;
-  if (options.emission && emitting_side) I += material.emission;  // an emitter shows its own Le
+  if (options.terms.emission && emitting_side) I += material.emission;  // an emitter shows its own Le
   I += terms.reflection;                                          // + kr Ir
   return terms.fog * I + (1.0f - terms.fog) * terms.fog_colour;   // depth cueing
 }

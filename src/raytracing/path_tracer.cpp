@@ -178,7 +178,7 @@ public:
 private:
   static WhittedOptions surface_options(const PathOptions& options) {
     WhittedOptions o;
-    o.textures = options.textures;
+    o.terms.textures = options.textures;
     return o;
   }
 

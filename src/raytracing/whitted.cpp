@@ -66,10 +66,10 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   Rgb color(0.0f);
   if (!diffuse_) {
     // "color := color ambiental"
-    if (options_.ambient) color = scene_.ambient * o.ka;
+    if (options_.terms.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
-    if (options_.emission && p.front) color += o.emission;
-  } else if (options_.diffuse && p.front) {
+    if (options_.terms.emission && p.front) color += o.emission;
+  } else if (options_.terms.diffuse && p.front) {
     // The hybrid (slides 41-43): the diffuse part comes from the radiosity solution, B/pi
     // interpolated across the patches, which already holds everything view-independent:
     // Le (B = E + rho H with E = pi Le), the direct light of every source with its shadows, and
@@ -170,10 +170,10 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   const Material& o = *p.material;
   Rgb term(0.0f);
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
-  if (options_.diffuse && !diffuse_) term += IL * kd_at(p) * cos_theta;
-  if (options_.specular && positive(o.ks)) {
+  if (options_.terms.diffuse && !diffuse_) term += IL * kd_at(p) * cos_theta;
+  if (options_.terms.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
-    const float cos_alpha = options_.blinn
+    const float cos_alpha = options_.terms.blinn
                                 ? std::max(glm::dot(p.N, glm::normalize(L + V)), 0.0f)
                                 : std::max(glm::dot(reflect(-L, p.N), V), 0.0f);
     term += IL * o.ks * std::pow(cos_alpha, o.shininess);  // I_S = IL ks cos^n(alpha)
@@ -215,7 +215,7 @@ Rgb Whitted::kd_at(const SurfacePoint& p) const {
   const Material& o = *p.material;
   // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
   const Rgb kd = o.kd * scene_.meshes[size_t(p.mesh)].colour_at(size_t(p.triangle), p.barycentrics);
-  if (!options_.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
+  if (!options_.terms.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
       scene_.meshes[size_t(p.mesh)].uvs.empty())
     return kd;
   // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the

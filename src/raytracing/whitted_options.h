@@ -1,6 +1,8 @@
 #pragma once
 // The switches of the Whitted tracer (slides 20-27). One struct, defaults here only: the viewer's
 // panel edits it, `luz render --model whitted` fills it from flags, tests construct it.
+#include "core/term_switches.h"
+
 namespace luz::rt {
 
 enum class Sampling {
@@ -11,19 +13,13 @@ enum class Sampling {
 struct WhittedOptions {
   // Slide 26: the primary ray has depth 1 and a hit at depth d spawns reflected and transmitted
   // rays only while d < max_depth. So 1 is the local model with shadows and no secondary rays;
-  // 0 is taken as 1 (the "depth 0" of the issue: nothing but the local model).
+  // 0 is taken as 1.
   int max_depth = 5;
   bool shadows = true;      // shadow rays (S_i); off: every light counts as unoccluded
   bool fresnel = false;     // kr + kt*F and kt*(1-F) instead of kr and kt (SCENES.md)
   int light_samples = 1;    // per emissive triangle: 1 = its centroid, N = N-rooks over its area
 
-  // The local terms, as LocalOptions has them (a switch per term).
-  bool ambient = true;      // Ia * ka
-  bool diffuse = true;      // IL * kd * cos(theta)
-  bool specular = true;     // IL * ks * cos^n(alpha)
-  bool emission = true;     // Le of an emitter seen from its front
-  bool blinn = false;       // cos(alpha) = N.H instead of R.V
-  bool textures = true;     // baseColorTexture multiplies kd
+  TermSwitches terms;       // the local formula at every hit, as the local models have it
 
   // Slide 27's problems and their solutions.
   bool brute_force = false; // every ray against every triangle instead of Embree's BVH
