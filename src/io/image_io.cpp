@@ -121,10 +121,23 @@ bool is_integer_format(const OIIO::ImageSpec& spec) {
   return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
 }
 
+// No PNG or JPEG holds more than this many bytes of pixels per byte of file: deflate's best
+// ratio is 1032:1 (RFC 1951's longest match, 258 bytes, in at most 2 bits), and a JPEG spends at
+// least a bit per 8 x 8 block of each component (ITU T.81), 4096:1 with 2x2 chroma subsampling
+// of three 8-bit components being out of reach too. A header claiming more is a lie that would
+// only cost an allocation and a failed decode.
+constexpr int64_t kMaxCompressionRatio = 4096;
+
+bool is_png_or_jpeg(const OIIO::ImageInput& input) {
+  const std::string format = input.format_name();
+  return format == "png" || format == "jpeg";
+}
+
 // Reads an opened input into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
 // The size comes from the header, which costs nothing to read; it is checked against the caps
-// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535).
-std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
+// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535), and for a PNG
+// or JPEG of `encoded_bytes` against what so many bytes can hold.
+std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     error = "image has no pixels";
@@ -138,6 +151,12 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
   }
   if (spec.nchannels > 16) {
     error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
+    return std::nullopt;
+  }
+  const int64_t pixel_bytes = int64_t(spec.width) * spec.height * int64_t(spec.pixel_bytes(true));
+  if (is_png_or_jpeg(input) && pixel_bytes / kMaxCompressionRatio > int64_t(encoded_bytes)) {
+    error = fmt::format("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)",
+                        spec.width, spec.height, encoded_bytes, kMaxCompressionRatio);
     return std::nullopt;
   }
   std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
@@ -221,7 +240,8 @@ Image read_image(const fs::path& path) {
     throw Error(ErrorKind::bad_value,
                 fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
-  std::optional<Image> image = read_rgb(*input, error);
+  std::error_code no_size;
+  std::optional<Image> image = read_rgb(*input, fs::file_size(path, no_size), error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
   return std::move(*image);
 }
@@ -256,7 +276,7 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
     (void)OIIO::geterror();  // clear OpenImageIO's pending message
     return std::nullopt;
   }
-  std::optional<Image> image = read_rgb(*input, error);
+  std::optional<Image> image = read_rgb(*input, bytes.size(), error);
   if (!image) return std::nullopt;
   Texture texture;
   texture.name = name;
