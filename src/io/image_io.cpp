@@ -159,24 +159,36 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, 
                         spec.width, spec.height, encoded_bytes, kMaxCompressionRatio);
     return std::nullopt;
   }
-  std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
+  // 8 and 16-bit files are read in their own format, which OpenImageIO copies straight into our
+  // buffer; asked for floats, it would convert through a scratch buffer of its own (64 MB at
+  // once, whatever the image's size).
+  const OIIO::TypeDesc format = is_integer_format(spec) ? spec.format : OIIO::TypeDesc::FLOAT;
+  std::vector<unsigned char> data(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels) * format.size());
   bool read = false;
   {
     const QuietStderr quiet;
-    read = input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data());
+    read = input.read_image(0, 0, 0, spec.nchannels, format, data.data());
   }
   if (!read) {
     error = one_line(input.geterror());
     return std::nullopt;
   }
-  const bool decode = is_integer_format(spec);
+  // Channel k of pixel i as a linear float: the integer formats hold sRGB-encoded values.
+  auto value = [&](size_t i, int k) {
+    const size_t at = i * size_t(spec.nchannels) + size_t(k);
+    if (format == OIIO::TypeDesc::UINT8) return srgb_decode(float(data[at]) / 255.0f);
+    if (format == OIIO::TypeDesc::UINT16) {
+      uint16_t v;
+      std::memcpy(&v, &data[2 * at], sizeof v);
+      return srgb_decode(float(v) / 65535.0f);
+    }
+    float v;
+    std::memcpy(&v, &data[4 * at], sizeof v);
+    return v;
+  };
   Image image(spec.width, spec.height);
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const float* p = &data[i * spec.nchannels];
-    Rgb c = spec.nchannels >= 3 ? Rgb(p[0], p[1], p[2]) : Rgb(p[0]);
-    if (decode) c = Rgb(srgb_decode(c.r), srgb_decode(c.g), srgb_decode(c.b));
-    image.pixels[i] = c;
-  }
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = spec.nchannels >= 3 ? Rgb(value(i, 0), value(i, 1), value(i, 2)) : Rgb(value(i, 0));
   return image;
 }
 
