@@ -159,15 +159,17 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, 
                         spec.width, spec.height, encoded_bytes, kMaxCompressionRatio);
     return std::nullopt;
   }
-  // 8 and 16-bit files are read in their own format, which OpenImageIO copies straight into our
-  // buffer; asked for floats, it would convert through a scratch buffer of its own (64 MB at
-  // once, whatever the image's size).
-  const OIIO::TypeDesc format = is_integer_format(spec) ? spec.format : OIIO::TypeDesc::FLOAT;
+  // 8 and 16-bit files (PNG, JPEG) are read in their own format straight into our buffer and
+  // decoded below: read_image would first allocate a scratch buffer of its own, 64 MB whatever the
+  // image's size. Other formats (EXR, HDR) are read as floats.
+  const bool native = is_integer_format(spec);
+  const OIIO::TypeDesc format = native ? spec.format : OIIO::TypeDesc::FLOAT;
   std::vector<unsigned char> data(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels) * format.size());
   bool read = false;
   {
     const QuietStderr quiet;
-    read = input.read_image(0, 0, 0, spec.nchannels, format, data.data());
+    read = native ? input.read_native_scanlines(0, 0, spec.y, spec.y + spec.height, spec.z, 0, spec.nchannels, data.data())
+                  : input.read_image(0, 0, 0, spec.nchannels, format, data.data());
   }
   if (!read) {
     error = one_line(input.geterror());
