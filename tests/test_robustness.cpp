@@ -66,7 +66,7 @@ TEST(Robustness, HugePngHeaderIsRefusedBeforeDecoding) {
                                      (dir / "huge.png").string(), "--size", "16x12", "--out",
                                      (dir / "out.png").string()});
   EXPECT_EQ(run.exit_code, 1) << run.output;
-  EXPECT_TRUE(one_line_naming(run.output, "huge.png: 65535 x 65535 pixels is beyond the limit")) << run.output;
+  EXPECT_TRUE(one_line_naming(run.output, "huge.png: header: 65535 x 65535 pixels is beyond the limit")) << run.output;
 }
 
 // Within the caps, a header can still claim far more pixels than its bytes can hold: refused
@@ -79,6 +79,32 @@ TEST(Robustness, PngClaimingMorePixelsThanItsBytesCanHoldIsRefused) {
   const auto texture = io::decode_texture(flat, "flat", error);
   ASSERT_TRUE(texture) << error << " (" << flat.size() << " bytes)";
   EXPECT_EQ(texture->width, 1024);
+}
+
+// A JPEG's frame header read by Luz before OpenImageIO opens it (its reader allocates for the
+// claimed size as it opens: 2 GB for a fuzzed 140-byte file). SOI, an APP0 segment to walk over,
+// then SOF0 with height and width, big-endian.
+std::vector<unsigned char> jpeg_claiming(uint16_t width, uint16_t height) {
+  return {0xff, 0xd8, 0xff, 0xe0, 0x00, 0x04, 0x00, 0x00, 0xff, 0xc0, 0x00, 0x11, 0x08,
+          static_cast<unsigned char>(height >> 8), static_cast<unsigned char>(height & 0xff),
+          static_cast<unsigned char>(width >> 8), static_cast<unsigned char>(width & 0xff), 0x01, 0x01, 0x11, 0x00,
+          0xff, 0xd9};
+}
+
+TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeOpenImageIoOpensIt) {
+  std::string error;
+  EXPECT_FALSE(io::decode_texture(jpeg_claiming(62978, 31234), "huge", error));
+  EXPECT_EQ(error, "header: 62978 x 31234 pixels is beyond the limit of 16384 per side and 16777216 in all");
+  EXPECT_FALSE(io::decode_texture(jpeg_claiming(4000, 4000), "liar", error));
+  EXPECT_TRUE(error.starts_with("header: 4000 x 4000 pixels cannot come from 23 bytes")) << error;
+  // As --environment: the same check on the file, exit 1 naming it.
+  ScratchDir dir;
+  write_file(dir / "huge.jpg", jpeg_claiming(62978, 31234));
+  const CommandResult run = run_luz({"render", scene("whitted.gltf"), "--reflection-map", "--environment",
+                                     (dir / "huge.jpg").string(), "--size", "16x12", "--out",
+                                     (dir / "out.png").string()});
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_TRUE(one_line_naming(run.output, "huge.jpg: header: 62978 x 31234 pixels is beyond the limit")) << run.output;
 }
 
 TEST(Robustness, CorruptPngSaysSoInOneLineWithoutLibpngsOwn) {

@@ -6,7 +6,11 @@
 #include <cstring>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <memory>
+#include <optional>
+#include <span>
+#include <utility>
 #include <random>
 
 #include <signal.h>
@@ -128,6 +132,63 @@ bool is_integer_format(const OIIO::ImageSpec& spec) {
 // only cost an allocation and a failed decode.
 constexpr int64_t kMaxCompressionRatio = 4096;
 
+// The caps on an image of width x height with `pixel_bytes` bytes a pixel, and for a PNG or
+// JPEG of `encoded_bytes` (0: not one) what so many bytes can hold: an empty string when it passes.
+std::string size_problem(int64_t width, int64_t height, int64_t pixel_bytes, uintmax_t encoded_bytes) {
+  if (width <= 0 || height <= 0) return "image has no pixels";
+  if (width > kMaxImageSide || height > kMaxImageSide || width * height > kMaxImagePixels)
+    return fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", width, height,
+                       kMaxImageSide, kMaxImagePixels);
+  if (encoded_bytes > 0 && width * height * pixel_bytes / kMaxCompressionRatio > int64_t(encoded_bytes))
+    return fmt::format("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)",
+                       width, height, encoded_bytes, kMaxCompressionRatio);
+  return {};
+}
+
+uint32_t big_endian(std::span<const unsigned char> b, size_t at, int bytes) {
+  uint32_t v = 0;
+  for (int i = 0; i < bytes; ++i) v = (v << 8) | b[at + size_t(i)];
+  return v;
+}
+
+// The width and height a PNG's IHDR or a JPEG's frame header (SOFn) claims, read by us before
+// OpenImageIO opens the file: its JPEG reader allocates for the claimed size as it opens (2 GB
+// for a 140-byte file claiming 62978 x 31234). The JPEG's markers are walked from the start
+// (ITU T.81, B.1.1: FF xx, then a 2-byte length for all but SOI, RSTn and TEM).
+std::optional<std::pair<uint32_t, uint32_t>> claimed_size(std::span<const unsigned char> b) {
+  static constexpr unsigned char png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() >= 24 && std::equal(std::begin(png), std::end(png), b.begin()))
+    return std::pair{big_endian(b, 16, 4), big_endian(b, 20, 4)};
+  if (b.size() < 4 || b[0] != 0xff || b[1] != 0xd8) return std::nullopt;
+  size_t at = 2;
+  while (at + 1 < b.size()) {
+    if (b[at] != 0xff) return std::nullopt;  // not a marker where one must be
+    const unsigned char marker = b[at + 1];
+    if (marker == 0xff) {  // a fill byte
+      ++at;
+      continue;
+    }
+    if (marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {
+      at += 2;
+      continue;
+    }
+    if (marker == 0xd9 || marker == 0xda || at + 4 > b.size()) return std::nullopt;  // no frame header first
+    const bool frame = marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc;
+    if (frame) return at + 9 <= b.size() ? std::optional{std::pair{big_endian(b, at + 7, 2), big_endian(b, at + 5, 2)}}
+                                         : std::nullopt;
+    at += 2 + big_endian(b, at + 2, 2);
+  }
+  return std::nullopt;
+}
+
+// The header check before OpenImageIO sees the bytes (the first of the file suffice): one byte a
+// pixel at least, of a file of `file_bytes`.
+std::string header_problem(std::span<const unsigned char> head, uintmax_t file_bytes) {
+  const auto size = claimed_size(head);
+  const std::string problem = size ? size_problem(size->first, size->second, 1, file_bytes) : std::string();
+  return problem.empty() ? problem : "header: " + problem;
+}
+
 bool is_png_or_jpeg(const OIIO::ImageInput& input) {
   const std::string format = input.format_name();
   return format == "png" || format == "jpeg";
@@ -139,24 +200,15 @@ bool is_png_or_jpeg(const OIIO::ImageInput& input) {
 // or JPEG of `encoded_bytes` against what so many bytes can hold.
 std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+  if (spec.nchannels <= 0) {
     error = "image has no pixels";
     return std::nullopt;
   }
-  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
-      int64_t(spec.width) * spec.height > kMaxImagePixels) {
-    error = fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
-                        spec.height, kMaxImageSide, kMaxImagePixels);
-    return std::nullopt;
-  }
+  error = size_problem(spec.width, spec.height, int64_t(spec.pixel_bytes(true)),
+                       is_png_or_jpeg(input) ? encoded_bytes : 0);
+  if (!error.empty()) return std::nullopt;
   if (spec.nchannels > 16) {
     error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
-    return std::nullopt;
-  }
-  const int64_t pixel_bytes = int64_t(spec.width) * spec.height * int64_t(spec.pixel_bytes(true));
-  if (is_png_or_jpeg(input) && pixel_bytes / kMaxCompressionRatio > int64_t(encoded_bytes)) {
-    error = fmt::format("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)",
-                        spec.width, spec.height, encoded_bytes, kMaxCompressionRatio);
     return std::nullopt;
   }
   // 8 and 16-bit files (PNG, JPEG) are read in their own format straight into our buffer and
@@ -245,6 +297,16 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
 Image read_image(const fs::path& path) {
   if (!fs::exists(path))
     throw Error(ErrorKind::file_missing, fmt::format("{}: no such file", path.string()));
+  std::error_code no_size;
+  const uintmax_t file_bytes = fs::file_size(path, no_size);
+  {
+    std::vector<unsigned char> head(65536);
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    head.resize(size_t(file.gcount()));
+    if (const std::string problem = header_problem(head, file_bytes); !problem.empty())
+      throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), problem));
+  }
   std::unique_ptr<OIIO::ImageInput> input;
   {
     const QuietStderr quiet;
@@ -254,8 +316,7 @@ Image read_image(const fs::path& path) {
     throw Error(ErrorKind::bad_value,
                 fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
-  std::error_code no_size;
-  std::optional<Image> image = read_rgb(*input, fs::file_size(path, no_size), error);
+  std::optional<Image> image = read_rgb(*input, file_bytes, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
   return std::move(*image);
 }
@@ -276,6 +337,8 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
     error = "not a PNG or JPEG image";
     return std::nullopt;
   }
+  error = header_problem(bytes, bytes.size());
+  if (!error.empty()) return std::nullopt;
   OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(format, /*do_open=*/false);
   bool opened = false;
