@@ -97,6 +97,11 @@ TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeOpenImageIoOpensIt) {
   EXPECT_EQ(error, "header: 62978 x 31234 pixels is beyond the limit of 16384 per side and 16777216 in all");
   EXPECT_FALSE(io::decode_texture(jpeg_claiming(4000, 4000), "liar", error));
   EXPECT_TRUE(error.starts_with("header: 4000 x 4000 pixels cannot come from 23 bytes")) << error;
+  // Garbage before the frame header (a segment's length that lies) is skipped, as libjpeg does.
+  std::vector<unsigned char> resync = jpeg_claiming(62978, 31234);
+  resync[5] = 0x02;  // APP0's length now ends inside it: two bytes of junk before SOF0
+  EXPECT_FALSE(io::decode_texture(resync, "resync", error));
+  EXPECT_TRUE(error.starts_with("header: 62978 x 31234 pixels is beyond the limit")) << error;
   // As --environment: the same check on the file, exit 1 naming it.
   ScratchDir dir;
   write_file(dir / "huge.jpg", jpeg_claiming(62978, 31234));

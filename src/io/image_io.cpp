@@ -154,7 +154,8 @@ uint32_t big_endian(std::span<const unsigned char> b, size_t at, int bytes) {
 // The width and height a PNG's IHDR or a JPEG's frame header (SOFn) claims, read by us before
 // OpenImageIO opens the file: its JPEG reader allocates for the claimed size as it opens (2 GB
 // for a 140-byte file claiming 62978 x 31234). The JPEG's markers are walked from the start
-// (ITU T.81, B.1.1: FF xx, then a 2-byte length for all but SOI, RSTn and TEM).
+// (ITU T.81, B.1.1: FF xx, then a 2-byte length for all but SOI, RSTn and TEM); bytes that are
+// not a marker where one should be are skipped up to the next FF, as libjpeg resynchronises.
 std::optional<std::pair<uint32_t, uint32_t>> claimed_size(std::span<const unsigned char> b) {
   static constexpr unsigned char png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (b.size() >= 24 && std::equal(std::begin(png), std::end(png), b.begin()))
@@ -162,13 +163,16 @@ std::optional<std::pair<uint32_t, uint32_t>> claimed_size(std::span<const unsign
   if (b.size() < 4 || b[0] != 0xff || b[1] != 0xd8) return std::nullopt;
   size_t at = 2;
   while (at + 1 < b.size()) {
-    if (b[at] != 0xff) return std::nullopt;  // not a marker where one must be
+    if (b[at] != 0xff) {  // garbage where a marker should be
+      ++at;
+      continue;
+    }
     const unsigned char marker = b[at + 1];
     if (marker == 0xff) {  // a fill byte
       ++at;
       continue;
     }
-    if (marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {
+    if (marker == 0x00 || marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {
       at += 2;
       continue;
     }
