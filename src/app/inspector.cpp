@@ -99,7 +99,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       break;
     }
   }
-  if (options.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
+  if (options.terms.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
     reading.kd_texture = sample_texture(scene.textures[size_t(material.kd_texture)], uv);
   reading.vertex_colour = mesh.colour_at(size_t(pick.triangle), barycentric);
   // lighting.glsl write_fragment(): + kr Ir, then the fog at this pixel's distance.
