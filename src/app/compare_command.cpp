@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "core/image_compare.h"
 #include "io/image_io.h"
@@ -81,25 +82,25 @@ Image with_legend(const Image& heatmap, float range) {
 
 // ---- [command] ----------------------------------------------------------------------------------
 void add_compare_flags(CLI::App& compare, CompareSettings& settings) {
-  compare.add_option("A", settings.a, "The picture compared (.exr: linear radiance)")->required();
-  compare.add_option("B", settings.b, "The reference (e.g. luz render --model path)")->required();
+  compare.add_option("A", settings.a, tr("The picture compared (.exr: linear radiance)"))->required();
+  compare.add_option("B", settings.b, tr("The reference (e.g. luz render --model path)"))->required();
   compare.add_option("--heatmap", settings.heatmap,
-                     "Write the signed relative difference (A - B) / B as a PNG with a legend "
-                     "(blue: A darker, red: A brighter; grey: unlit)");
+                     tr("Write the signed relative difference (A - B) / B as a PNG with a legend "
+                        "(blue: A darker, red: A brighter; grey: unlit)"));
   compare.add_flag("--mask-emitters", settings.mask_emitters,
-                   "Leave out pixels 10x brighter than the median lit pixel (emitters) and their neighbours");
-  compare.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+                   tr("Leave out pixels 10x brighter than the median lit pixel (emitters) and their neighbours"));
+  compare.add_flag("-q,--quiet", settings.quiet, tr("Print nothing on success"));
 }
 
 int run_compare(const CompareSettings& settings) {
   try {
     if (!settings.heatmap.empty() && std::filesystem::path(settings.heatmap).extension() != ".png")
-      throw Error(ErrorKind::usage, fmt::format("--heatmap {}: the heat map is written as .png",
+      throw Error(ErrorKind::usage, trf("--heatmap {}: the heat map is written as .png",
                                                 settings.heatmap));
     const Image a = io::read_image(settings.a);
     const Image b = io::read_image(settings.b);
     if (a.width != b.width || a.height != b.height)
-      throw Error(ErrorKind::bad_value, fmt::format("{}: {}x{} pixels, but the reference {} has {}x{}",
+      throw Error(ErrorKind::bad_value, trf("{}: {}x{} pixels, but the reference {} has {}x{}",
                                                     settings.a, a.width, a.height, settings.b,
                                                     b.width, b.height));
     CompareOptions options;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
@@ -41,14 +42,14 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
   const std::string temporary = path + ".part";
   {
     std::ofstream out(temporary);
-    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
     out << "shot,unshot_power,fraction,seconds\n";
     for (const ShotRecord& r : solver.history())
       out << fmt::format("{},{:.9g},{:.9g},{:.6f}\n", r.shot, r.unshot_power, r.fraction, r.seconds);
-    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
 }  // namespace
@@ -56,7 +57,7 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
 void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& settings) {
   const RadiosityOptions& options = solver.options();
   const PatchMesh& mesh = solver.mesh();
-  for (const std::string& warning : solver.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+  for (const std::string& warning : solver.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 
   const bool bar = !settings.quiet && isatty(fileno(stderr));
   auto last_draw = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
@@ -50,13 +51,13 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream file(temporary, std::ios::binary);
     file << text;
     if (!file.flush())
-      throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+      throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
     std::filesystem::remove(temporary, error);
-    throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+    throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
   }
 }
 
@@ -100,7 +101,7 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
   if (settings.camera.empty()) return scene.cameras.front();
   const int index = scene.find_camera(settings.camera);
   if (index < 0)
-    throw Error(ErrorKind::usage, fmt::format("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
+    throw Error(ErrorKind::usage, trf("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
                                               camera_list(scene)));
   return scene.cameras[size_t(index)];
 }
@@ -108,21 +109,21 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
 int run_render(const RenderSettings& settings) {
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
-      throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+      throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
                                                 settings.local.fog.far, settings.local.fog.near));
     if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
     const ModelEntry* model = find_model(settings.model);
-    if (!model) throw Error(ErrorKind::usage, fmt::format("--model {}: no such model ({})", settings.model, model_names()));
+    if (!model) throw Error(ErrorKind::usage, trf("--model {}: no such model ({})", settings.model, model_names()));
     for (const RenderSettings::GivenFlag& given : settings.given_flags) {
       const bool taken = std::any_of(model->flag_groups.begin(), model->flag_groups.end(),
                                      [&](const char* group) { return given.group == group; });
       if (!taken)
-        throw Error(ErrorKind::usage, fmt::format("{}: only with --model {}", given.flag, models_accepting(given.group)));
+        throw Error(ErrorKind::usage, trf("{}: only with --model {}", given.flag, models_accepting(given.group)));
     }
     if (!io::is_supported_output(settings.out))
-      throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
+      throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
 
     const Camera& camera = chosen_camera(settings, scene);

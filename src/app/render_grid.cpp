@@ -19,7 +19,7 @@ namespace {
 // A flag given for one model must reach at least one pane; else it is the same usage error as
 // with a single model (its group is taken by no pane's model).
 void check_flags(const RenderSettings& settings, const std::vector<const ModelEntry*>& models) {
-  if (settings.ray_tree) throw Error(ErrorKind::usage, "--ray-tree: only with a single --model whitted or hybrid");
+  if (settings.ray_tree) throw Error(ErrorKind::usage, tr("--ray-tree: only with a single --model whitted or hybrid"));
   for (const RenderSettings::GivenFlag& given : settings.given_flags) {
     const bool taken = std::any_of(models.begin(), models.end(), [&](const ModelEntry* m) {
       return std::any_of(m->flag_groups.begin(), m->flag_groups.end(), [&](const char* g) { return given.group == g; });
@@ -122,7 +122,7 @@ int run_render_grid(const RenderSettings& settings) {
       throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     const LabelFont font;
     io::LoadedScene loaded = io::load_gltf(settings.scene);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
     const Camera& camera = chosen_camera(settings, scene);
     int width = settings.width, height = settings.height;

@@ -11,6 +11,7 @@
 
 #include "app/render_command.h"
 #include "app/model_registry.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "raytracing/path_tracer.h"
@@ -21,14 +22,14 @@ namespace luz::app {
 std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
   return {
       render.add_option("--seed", flags.seed,
-                        "path: seed of the random numbers (the same seed gives the same picture)")
+                        tr("path: seed of the random numbers (the same seed gives the same picture)"))
           ->capture_default_str(),
       render.add_option("--time", flags.seconds,
-                        "path: render passes of one sample per pixel until SECONDS are up "
-                        "(with --spp: at most that many samples)")
+                        tr("path: render passes of one sample per pixel until SECONDS are up "
+                           "(with --spp: at most that many samples)"))
           ->check(CLI::Range(0.001, 1e7)),
       render.add_option("--error-out", flags.error_out,
-                        "path: write the per-pixel standard error of the mean to this .exr"),
+                        tr("path: write the per-pixel standard error of the mean to this .exr")),
   };
 }
 
@@ -108,7 +109,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".exr")
-      throw Error(ErrorKind::usage, fmt::format("--error-out {}: the standard error is written as "
+      throw Error(ErrorKind::usage, trf("--error-out {}: the standard error is written as "
                                                 ".exr (linear float)", settings.path.error_out));
   }
   rt::PathOptions options;

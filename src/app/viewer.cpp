@@ -207,7 +207,7 @@ Layout Viewer::layout() const {
 void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view) {
   warnings_.clear();
   for (const std::string& warning : loaded.warnings) {
-    fmt::print(stderr, "warning: {}\n", warning);
+    fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     warnings_.push_back(warning);
   }
   for (auto& [name, view] : views_) view->scene_changed();  // before the scene they read goes
@@ -261,7 +261,7 @@ void Viewer::rebuild_renderer() {
   renderer_.reset();
   renderer_ = std::make_unique<LocalRenderer>(*state_.scene);
   for (const std::string& warning : renderer_->warnings()) {
-    fmt::print(stderr, "warning: {}\n", warning);
+    fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     warn(warning);
   }
 }

@@ -18,9 +18,11 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::io {
 namespace fs = std::filesystem;
+using i18n::trf;
 
 namespace {
 
@@ -132,12 +134,12 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
   }
   if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
       int64_t(spec.width) * spec.height > kMaxImagePixels) {
-    error = fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
+    error = trf("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
                         spec.height, kMaxImageSide, kMaxImagePixels);
     return std::nullopt;
   }
   if (spec.nchannels > 16) {
-    error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
+    error = trf("{} channels is beyond the limit of 16", spec.nchannels);
     return std::nullopt;
   }
   std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
@@ -170,7 +172,7 @@ bool is_supported_output(const fs::path& path) {
 
 void write_image(const Image& image, const fs::path& path, float exposure) {
   if (!is_supported_output(path))
-    throw Error(ErrorKind::usage, fmt::format("{}: output must be .png or .exr", path.string()));
+    throw Error(ErrorKind::usage, trf("{}: output must be .png or .exr", path.string()));
   const bool exr = lower_extension(path) == ".exr";
   // The last guard for every renderer: a NaN or infinite radiance is a bug upstream, and a file
   // that hides it (PNG clamps it to black or white) would only move the surprise elsewhere.
@@ -178,7 +180,7 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
     const Rgb& c = image.pixels[i];
     if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
       throw Error(ErrorKind::output,
-                  fmt::format("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
+                  trf("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
                               i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
                               c.r, c.g, c.b));
   }
@@ -187,7 +189,7 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    return Error(ErrorKind::output, fmt::format("{}: cannot write: {}", path.string(), why));
+    return Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), why));
   };
 
   auto output = OIIO::ImageOutput::create(temporary.string());
@@ -211,7 +213,7 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
 
 Image read_image(const fs::path& path) {
   if (!fs::exists(path))
-    throw Error(ErrorKind::file_missing, fmt::format("{}: no such file", path.string()));
+    throw Error(ErrorKind::file_missing, trf("{}: no such file", path.string()));
   std::unique_ptr<OIIO::ImageInput> input;
   {
     const QuietStderr quiet;
@@ -219,7 +221,7 @@ Image read_image(const fs::path& path) {
   }
   if (!input)
     throw Error(ErrorKind::bad_value,
-                fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
+                trf("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
   std::optional<Image> image = read_rgb(*input, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
