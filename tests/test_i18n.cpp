@@ -12,6 +12,7 @@
 
 #include <imgui.h>
 
+#include "app/command_language.h"
 #include "app/i18n.h"
 #include "app/label_text.h"
 #include "app/ui_glyphs.h"
@@ -139,6 +140,23 @@ TEST(Catalogues, SwitchAtRunTimeAndUseTheLecturesTerms) {
   EXPECT_EQ(app::trf("step {}", 3), "step 3");
   const char* unknown = "a message no catalogue has";
   EXPECT_EQ(app::tr(unknown), unknown);
+}
+
+// CLI11 writes its usage errors in English: each of its shapes comes back in the current
+// language with the names and values it quotes; a message of ours passes untouched.
+TEST(Catalogues, CliElevenUsageErrorsAreTranslatedKeepingTheirPieces) {
+  i18n::set_language(Language::es);
+  EXPECT_EQ(app::translated_usage_error("The following argument was not expected: --bogus"),
+            app::trf("The following argument was not expected: {}", "--bogus"));
+  EXPECT_EQ(app::translated_usage_error("--out is required"), app::trf("{} is required", "--out"));
+  EXPECT_EQ(app::translated_usage_error("--shots excludes --converge"), app::trf("{} excludes {}", "--shots", "--converge"));
+  EXPECT_EQ(app::translated_usage_error("--lang: fr not in {es,en}"), app::trf("{}: {} not in {{{}}}", "--lang", "fr", "es,en"));
+  EXPECT_EQ(app::translated_usage_error("--depth: Value 99 not in range 1 to 64"),
+            app::trf("{}: Value {} not in range {} to {}", "--depth", "99", "1", "64"));
+  EXPECT_NE(app::translated_usage_error("--out is required"), "--out is required");
+  EXPECT_EQ(app::translated_usage_error("--size: ya traducido"), "--size: ya traducido");
+  i18n::set_language(Language::en);
+  EXPECT_EQ(app::translated_usage_error("--out is required"), "--out is required");
 }
 
 // A translation must take its id's arguments: as many {} fields (fmt) and the same % directives

@@ -244,7 +244,7 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
 void Viewer::load(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
   if (extension != ".gltf" && extension != ".glb") {
-    state_.error = fmt::format("{}: not a glTF scene (.gltf or .glb)", path.string());
+    state_.error = trf("{}: not a glTF scene (.gltf or .glb)", path.string());
     return;
   }
   try {
