@@ -102,8 +102,9 @@ TEST_F(ClassroomViewer, ThePanelFitsItsWidthInBothLanguages) {
   }
   // The lights' tree nodes were open in both languages: their widgets were drawn, and measured.
   for (const char* dump : {"es_widgets_hybrid.json", "en_widgets_phong.json"}) {
+    const json widgets = json_of(run_dir / dump)["widgets"];  // a copy: the parsed file is a temporary
     std::set<std::string> labels;
-    for (const json& w : json_of(run_dir / dump)["widgets"]) labels.insert(w["label"].get<std::string>());
+    for (const json& w : widgets) labels.insert(w["label"].get<std::string>());
     for (const char* label : {"key_light/colour", "key_light/position", "key_light/f_att", "fill_light/c0 c1 c2"})
       EXPECT_TRUE(labels.count(label)) << dump << ": " << label;
   }
@@ -121,7 +122,8 @@ TEST_F(ClassroomViewer, TheLoadersWarningReachesTheWindowInSpanish) {
   for (const json& w : state["warnings"]) listed |= w.get<std::string>() == "unlit.gltf: " + notice;
   EXPECT_TRUE(listed) << state["warnings"].dump();
   bool window = false;
-  for (const json& w : json_of(run_dir / "es_warning_windows.json")["windows"])
+  const json windows = json_of(run_dir / "es_warning_windows.json")["windows"];
+  for (const json& w : windows)
     window |= w["name"].get<std::string>().rfind(spanish("1 warning"), 0) == 0;
   EXPECT_TRUE(window);
 }
