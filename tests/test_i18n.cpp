@@ -15,6 +15,7 @@
 #include "app/command_language.h"
 #include "app/i18n.h"
 #include "app/label_text.h"
+#include "app/shortcuts.h"
 #include "app/ui_glyphs.h"
 #include "core/error.h"
 #include "support.h"
@@ -157,6 +158,23 @@ TEST(Catalogues, CliElevenUsageErrorsAreTranslatedKeepingTheirPieces) {
   EXPECT_EQ(app::translated_usage_error("--size: ya traducido"), "--size: ya traducido");
   i18n::set_language(Language::en);
   EXPECT_EQ(app::translated_usage_error("--out is required"), "--out is required");
+}
+
+// F1 lists each shortcut's keys through tr(): every key name with a word in it ("Space",
+// "Shift+P", "Up / Down") is a catalogue id, so that Spanish shows "Espacio", "Mayús+P".
+TEST(Catalogues, TheKeyNamesOfF1AreTranslated) {
+  const std::regex word("[A-Za-z]{2,}");
+  size_t named = 0;
+  for (const app::Shortcut& s : app::shortcuts()) {
+    if (!std::regex_search(s.keys, word)) continue;
+    ++named;
+    EXPECT_NE(i18n::catalogue(Language::es).find(s.keys), nullptr) << s.keys;
+  }
+  EXPECT_GE(named, 8u);
+  i18n::set_language(Language::es);
+  EXPECT_STREQ(app::tr("Space"), "Espacio");
+  EXPECT_STREQ(app::tr("Shift+P"), "Mayús+P");
+  i18n::set_language(Language::en);
 }
 
 // A translation must take its id's arguments: as many {} fields (fmt) and the same % directives
