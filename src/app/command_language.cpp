@@ -11,24 +11,24 @@
 namespace luz::app {
 namespace {
 
-// CLI11's help headings, by its own keys (Formatter::get_label); the groups are named by us.
+// CLI11's help headings and type names, by its own keys (Formatter::get_label), which are also
+// their message ids.
+constexpr const char* kLabels[] = {N_("Usage"),       N_("OPTIONS"),  N_("SUBCOMMAND"), N_("SUBCOMMANDS"),
+                                   N_("Positionals"), N_("REQUIRED"), N_("Needs"),      N_("Excludes"),
+                                   N_("TEXT"),        N_("INT"),      N_("NUMBER"),     N_("FLOAT"),
+                                   N_("UINT")};
+// The group every option is in unless told otherwise: CLI11's "Options", translated where shown.
+[[maybe_unused]] constexpr const char* kOptionsGroup = N_("Options");
+
 class TranslatedFormatter : public CLI::Formatter {
 public:
   TranslatedFormatter() {
-    for (const char* key : {"Usage", "OPTIONS", "SUBCOMMAND", "SUBCOMMANDS", "Positionals", "REQUIRED", "Needs",
-                            "Excludes", "TEXT", "INT", "NUMBER", "FLOAT", "UINT"})
-      label(key, tr(key));
+    for (const char* key : kLabels) label(key, tr(key));
   }
   std::string make_group(std::string group, bool is_positional, std::vector<const CLI::Option*> opts) const override {
     return CLI::Formatter::make_group(tr(group.c_str()), is_positional, std::move(opts));
   }
 };
-
-// The headings' and type names' message ids, for xgettext (TranslatedFormatter translates them
-// by CLI11's keys).
-[[maybe_unused]] constexpr const char* kCliWords[] = {
-    N_("Usage"), N_("OPTIONS"), N_("SUBCOMMAND"), N_("SUBCOMMANDS"), N_("Positionals"), N_("REQUIRED"),
-    N_("Needs"), N_("Excludes"), N_("TEXT"), N_("INT"), N_("NUMBER"), N_("FLOAT"), N_("UINT"), N_("Options")};
 
 // One of CLI11's message shapes: its pieces in parentheses, and the message id they fill in order.
 struct Shape {

@@ -47,9 +47,9 @@ const CLI::Validator finite_number(
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
   fmt::print(stderr, "{}", trf("luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are "
-                                          "unset or unreachable).\nluz: for pictures without a display use `luz "
-                                          "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
-                                          "`luz render --help`)\n", scene));
+                               "unset or unreachable).\nluz: for pictures without a display use `luz "
+                               "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
+                               "`luz render --help`)\n", scene));
   return 1;
 }
 
