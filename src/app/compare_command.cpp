@@ -113,16 +113,18 @@ int run_compare(const CompareSettings& settings) {
     }
     if (!settings.quiet) {
       const size_t pixels = size_t(a.width) * size_t(a.height);
-      fmt::print("{} against {} (reference), {}x{}\n", settings.a, settings.b, a.width, a.height);
-      if (settings.mask_emitters) fmt::print("emitter pixels left out: {}\n", c.masked_pixels);
-      fmt::print("mean error (A - B):   R {:+.6f}  G {:+.6f}  B {:+.6f}\n", c.mean_error.r,
-                 c.mean_error.g, c.mean_error.b);
-      fmt::print("mean absolute error:  R {:.6f}  G {:.6f}  B {:.6f}\n", c.mean_absolute_error.r,
-                 c.mean_absolute_error.g, c.mean_absolute_error.b);
-      fmt::print("rel-RMSE:             {:.6f}\n", c.rel_rmse);
-      fmt::print("mean relative error over lit pixels: {:.4f} ({:.2f}%, {} of {} pixels lit)\n",
-                 c.mean_relative_error, 100.0 * c.mean_relative_error, c.lit_pixels, pixels);
-      if (!settings.heatmap.empty()) fmt::print("heat map: {}\n", settings.heatmap);
+      const auto line = [](const std::string& text) { fmt::print("{}\n", text); };
+      line(trf("{} against {} (reference), {}x{}", settings.a, settings.b, a.width, a.height));
+      if (settings.mask_emitters) line(trf("emitter pixels left out: {}", c.masked_pixels));
+      line(trf("mean error (A - B):   R {:+.6f}  G {:+.6f}  B {:+.6f}", c.mean_error.r, c.mean_error.g,
+               c.mean_error.b));
+      line(trf("mean absolute error:  R {:.6f}  G {:.6f}  B {:.6f}", c.mean_absolute_error.r,
+               c.mean_absolute_error.g, c.mean_absolute_error.b));
+      line(trf("rel-RMSE:             {:.6f}", c.rel_rmse));
+      // xgettext:no-c-format
+      line(trf("mean relative error over lit pixels: {:.4f} ({:.2f}%, {} of {} pixels lit)", c.mean_relative_error,
+               100.0 * c.mean_relative_error, c.lit_pixels, pixels));
+      if (!settings.heatmap.empty()) line(trf("heat map: {}", settings.heatmap));
     }
     return 0;
   } catch (const Error& error) {

@@ -32,9 +32,10 @@ double progress_of(const ProgressiveSolver& solver, const RadiosityOptions& opti
 void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& options) {
   constexpr int width = 30;
   const int filled = int(std::lround(progress_of(solver, options) * width));
-  fmt::print(stderr, "\rradiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
-             std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
-             solver.shots(), 100.0 * solver.unshot_fraction());
+  // xgettext:no-c-format
+  fmt::print(stderr, "\r{}", trf("radiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
+                                 std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
+                                 solver.shots(), 100.0 * solver.unshot_fraction()));
   std::fflush(stderr);
 }
 
@@ -73,10 +74,11 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   }
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
   if (!settings.quiet)
-    fmt::print("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, unshot "
-               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.shooters.size(), mesh.max_edge, mesh.size(),
-               options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
-               solver.history().back().seconds);
+    // xgettext:no-c-format
+    fmt::print("{}\n", trf("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, "
+                           "unshot {:.3f}% of the emitted power, {:.2f} s solving", mesh.shooters.size(),
+                           mesh.max_edge, mesh.size(), options.hemicube_res, solver.shots(),
+                           100.0 * solver.unshot_fraction(), solver.history().back().seconds));
 }
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,

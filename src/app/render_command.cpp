@@ -144,10 +144,10 @@ int run_render(const RenderSettings& settings) {
     if (rendered.ray_tree) write_text(ray_tree_path(settings.out), *rendered.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet) {
-      fmt::print("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s\n", settings.out,
-                 settings.model, width, height, camera.name, exposure, seconds);
+      fmt::print("{}\n", trf("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
+                             settings.model, width, height, camera.name, exposure, seconds));
       fmt::print("{}", rendered.summary);
-      if (rendered.ray_tree) fmt::print("ray tree: {}\n", ray_tree_path(settings.out).string());
+      if (rendered.ray_tree) fmt::print("{}\n", trf("ray tree: {}", ray_tree_path(settings.out).string()));
     }
     return 0;
   } catch (const Error& error) {

@@ -87,9 +87,9 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
   for (const Rgb& e : result.standard_error.pixels) error += double(e.r + e.g + e.b) / 3.0;
   error /= double(std::max<size_t>(1, result.standard_error.pixels.size()));
   const double samples = double(width) * double(height) * double(result.spp);
-  result.summary = fmt::format("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
-                               "error {:.4g}\n", result.spp, rt::max_depth_of(options), options.seed,
-                               samples / std::max(result.seconds, 1e-9), error);
+  result.summary = trf("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
+                       "error {:.4g}", result.spp, rt::max_depth_of(options), options.seed,
+                               samples / std::max(result.seconds, 1e-9), error) + "\n";
   return result;
 }
 
@@ -126,7 +126,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
     io::write_image(path.standard_error, settings.path.error_out, 0.0f);
   Rendered result{path.mean, path.summary, std::nullopt};
   if (!settings.path.error_out.empty())
-    result.summary += fmt::format("standard error: {}\n", settings.path.error_out);
+    result.summary += trf("standard error: {}", settings.path.error_out) + "\n";
   return result;
 }
 

@@ -98,13 +98,13 @@ int run_solvers(const SolversSettings& settings) {
     if (!settings.png.empty()) io::write_image(plot_curves(race, mesh.size()), settings.png, 0.0f);
 
     if (!settings.quiet) {
-      fmt::print("solvers: {} patches, {} form-factor entries, the matrix in {:.2f} s ({} "
-                 "hemicubes of {})\n", mesh.size(), race.system().F.nonzeros(),
-                 race.matrix_seconds(), mesh.size(), settings.hemicube_res);
+      fmt::print("{}\n", trf("solvers: {} patches, {} form-factor entries, the matrix in {:.2f} s ({} "
+                             "hemicubes of {})", mesh.size(), race.system().F.nonzeros(),
+                             race.matrix_seconds(), mesh.size(), settings.hemicube_res));
       for (const Method m : kMethods) {
         const SolverSample& last = race.curve(m).back();
-        fmt::print("  {:<13} {:>6} iterations {:>8} rows {:8.3f} s   residual {:.2e}   error {:.2e}\n",
-                   to_string(m), last.iteration, last.rows, last.seconds, last.residual, last.error);
+        fmt::print("{}\n", trf("  {:<13} {:>6} iterations {:>8} rows {:8.3f} s   residual {:.2e}   error {:.2e}",
+                               to_string(m), last.iteration, last.rows, last.seconds, last.residual, last.error));
       }
     }
     return 0;
