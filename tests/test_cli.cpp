@@ -309,6 +309,18 @@ TEST(CliSpanish, ABrokenSceneIsBadInputInSpanish) {
   EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+// The summary of a render that succeeded: its words ("camera", "exposure") in Spanish.
+TEST(CliSpanish, TheRunSummarySpeaksSpanish) {
+  test::ScratchDir dir;
+  const std::string summary = spanish("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s");
+  const size_t after_size = summary.find("{}x{}, ") + 7;
+  const std::string camera = summary.substr(after_size, summary.find(" \"") - after_size);  // "cámara"
+  ASSERT_NE(camera, "camera");
+  const auto result = run_luz({"--lang", "es", "render", cornell(), "--size", "40x30", "--out", (dir / "x.png").string()});
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "40x30, " + camera + " \"")) << result.output;
+}
+
 TEST(CliSpanish, HelpSpeaksSpanish) {
   for (const auto& [options, language] : spanish_ways()) {
     const auto render = run_luz(with_language(language, {"render", "--help"}), options);
