@@ -95,6 +95,19 @@ TEST(ImageIo, DecodeTextureRejectsGarbage) {
   EXPECT_FALSE(error.empty());
 }
 
+// glTF embeds PNG and JPEG only: the magic number picks the reader, and bytes that begin like
+// one but are not say which format they failed as.
+TEST(ImageIo, DecodeTextureNamesTheFormatItFailedAs) {
+  std::string error;
+  EXPECT_FALSE(io::decode_texture({'B', 'M', 0x3e, 0, 0, 0, 0, 0, 0, 0, 0x3e, 0}, "bitmap", error));
+  EXPECT_EQ(error, "not a PNG or JPEG image");
+  const std::vector<unsigned char> png_header = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H'};
+  EXPECT_FALSE(io::decode_texture(png_header, "cut", error));
+  EXPECT_TRUE(error.starts_with("not a readable PNG image")) << error;
+  EXPECT_FALSE(io::decode_texture({0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F'}, "cut", error));
+  EXPECT_TRUE(error.starts_with("not a readable JPEG image")) << error;
+}
+
 TEST(ImageIo, ReadingAMissingFileNamesIt) {
   try {
     io::read_image("/nonexistent/x.png");

@@ -101,7 +101,7 @@ TEST(PathCli, SameSeedSameFileAndMoreTimeLessNoise) {
   // A time shorter than one pass still renders one.
   const auto instant = render("i", {"--time", "0.001"});
   double lit = 0.0;
-  for (const Rgb& c : instant.first.pixels) lit += c.g;
+  for (const Rgb& pixel : instant.first.pixels) lit += pixel.g;
   EXPECT_GT(lit, 0.0);
   double noise_a = 0.0, noise_t = 0.0;
   for (size_t i = 0; i < a.second.pixels.size(); ++i) {

@@ -69,6 +69,18 @@ TEST(Robustness, HugePngHeaderIsRefusedBeforeDecoding) {
   EXPECT_TRUE(one_line_naming(run.output, "huge.png: 65535 x 65535 pixels is beyond the limit")) << run.output;
 }
 
+// Within the caps, a header can still claim far more pixels than its bytes can hold: refused
+// before the pixels are allocated, while a large image that does compress that well loads.
+TEST(Robustness, PngClaimingMorePixelsThanItsBytesCanHoldIsRefused) {
+  std::string error;
+  EXPECT_FALSE(io::decode_texture(png_claiming(2000, 2000), "liar", error));
+  EXPECT_NE(error.find("2000 x 2000 pixels cannot come from"), std::string::npos) << error;
+  const std::vector<unsigned char> flat = png_rgb8(1024, 1024, std::vector<unsigned char>(size_t(1024) * 1024 * 3, 200));
+  const auto texture = io::decode_texture(flat, "flat", error);
+  ASSERT_TRUE(texture) << error << " (" << flat.size() << " bytes)";
+  EXPECT_EQ(texture->width, 1024);
+}
+
 TEST(Robustness, CorruptPngSaysSoInOneLineWithoutLibpngsOwn) {
   ScratchDir dir;
   std::vector<unsigned char> png = png_rgb8(4, 4, std::vector<unsigned char>(48, 7));

@@ -96,13 +96,13 @@ int run_compare(const CompareSettings& settings) {
   try {
     if (!settings.heatmap.empty() && std::filesystem::path(settings.heatmap).extension() != ".png")
       throw Error(ErrorKind::usage, trf("--heatmap {}: the heat map is written as .png",
-                                                settings.heatmap));
+                                        settings.heatmap));
     const Image a = io::read_image(settings.a);
     const Image b = io::read_image(settings.b);
     if (a.width != b.width || a.height != b.height)
       throw Error(ErrorKind::bad_value, trf("{}: {}x{} pixels, but the reference {} has {}x{}",
-                                                    settings.a, a.width, a.height, settings.b,
-                                                    b.width, b.height));
+                                            settings.a, a.width, a.height, settings.b,
+                                            b.width, b.height));
     CompareOptions options;
     options.mask_emitters = settings.mask_emitters;
     const ImageComparison c = compare_images(a, b, options);

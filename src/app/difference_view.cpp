@@ -109,17 +109,24 @@ void difference_windows(const ViewerState& state, const Viewport& viewport, Wind
   corners.place(WindowCorners::bottom_right);
   ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);  // 0: its height fits the text
   ImGui::SetNextWindowBgAlpha(0.85f);
-  ImGui::Begin(tr("difference view"), nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  // A small pane (side by side, or a small window) gets the bar, its scale and the one figure,
+  // untitled: the whole legend would be a column of broken words there.
+  const bool compact = width < 16.0f * ImGui::GetFontSize() ||
+                       0.5f * viewport.size.y < 15.0f * ImGui::GetTextLineHeightWithSpacing();
+  ImGui::Begin(tr("difference view"), nullptr,
+               ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | (compact ? ImGuiWindowFlags_NoTitleBar : 0));
   if (!d.valid) {
     ImGui::TextWrapped("%s", d.why.c_str());
     ImGui::End();
     return;
   }
   const DifferenceFigures& f = d.figures;
-  ImGui::TextWrapped("%s", trf("{} against the path tracer ({} spp)", f.model, f.reference_spp).c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s", tr("(Y(model) - Y(reference)) / Y(reference), lit pixels"));
-  ImGui::PopStyleColor();
+  if (!compact) {
+    ImGui::TextWrapped("%s", trf("{} against the path tracer ({} spp)", f.model, f.reference_spp).c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", tr("(Y(model) - Y(reference)) / Y(reference), lit pixels"));
+    ImGui::PopStyleColor();
+  }
 
   // The colour bar, -range .. +range, as the heat map colours it.
   const float bar = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize();
@@ -134,11 +141,20 @@ void difference_windows(const ViewerState& state, const Viewport& viewport, Wind
   ImGui::Dummy(ImVec2(bar, height));
   const std::string low = fmt::format("-{:g}%", 100.0 * double(f.range)), high = fmt::format("+{:g}%", 100.0 * double(f.range));
   const float left = ImGui::GetCursorPosX();
-  ImGui::TextUnformatted(low.c_str());
-  ImGui::SameLine(left + 0.5f * (bar - ImGui::CalcTextSize("0").x));
-  ImGui::TextUnformatted("0");
-  ImGui::SameLine(left + bar - ImGui::CalcTextSize(high.c_str()).x);
-  ImGui::TextUnformatted(high.c_str());
+  if (ImGui::CalcTextSize((low + " 0 " + high).c_str()).x <= bar) {
+    ImGui::TextUnformatted(low.c_str());
+    ImGui::SameLine(left + 0.5f * (bar - ImGui::CalcTextSize("0").x));
+    ImGui::TextUnformatted("0");
+    ImGui::SameLine(left + bar - ImGui::CalcTextSize(high.c_str()).x);
+    ImGui::TextUnformatted(high.c_str());
+  } else {
+    ImGui::TextUnformatted(fmt::format("±{:g}%", 100.0 * double(f.range)).c_str());
+  }
+  if (compact) {
+    ImGui::TextWrapped("%s", trf("mean rel. error {}", percent(f.mean_relative_error)).c_str());
+    ImGui::End();
+    return;
+  }
   ImGui::TextWrapped("%s", tr("blue: the model is darker, red: brighter, grey: unlit"));
   ImGui::Separator();
   ImGui::TextWrapped("%s", trf("mean relative error: {} over {} lit pixels", percent(f.mean_relative_error), f.lit_pixels).c_str());

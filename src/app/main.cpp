@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         if (!CLI::detail::lexical_cast(text, scale) || !std::isfinite(scale) || scale < luz::app::kMinUiScale ||
             scale > luz::app::kMaxUiScale)
           throw CLI::ValidationError("--ui-scale", trf("{}: expected a size in {} .. {} (1: the default)", text,
-                                                               luz::app::kMinUiScale, luz::app::kMaxUiScale));
+                                                       luz::app::kMinUiScale, luz::app::kMaxUiScale));
         viewer.ui_scale = float(scale);
       },
       tr("Viewer: size of the interface (text, panel, windows), e.g. 1.5 for a projector; Ctrl+= / Ctrl+- change "
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
         solvers_settings.hemicube_res = n;
       },
       trf("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
-                  luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
+          luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes));
   solvers->add_option("--iterations", solvers_settings.iterations,
                       tr("Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows"))

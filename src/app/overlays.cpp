@@ -62,9 +62,20 @@ glm::vec4 WindowCorners::take_left_half() {
   return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
 }
 
-ImGuiWindowFlags hint_window_flags() {
-  return ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin) {
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin(name, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  const float text_width = viewport.size.x - 2.0f * (margin + ImGui::GetStyle().WindowPadding.x);
+  ImGui::PushTextWrapPos(std::max(text_width, 4.0f * ImGui::GetFontSize()));
+}
+
+void end_hint(WindowCorners& corners) {
+  ImGui::PopTextWrapPos();
+  corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
+  ImGui::End();
 }
 
 void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height) {

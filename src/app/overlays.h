@@ -44,8 +44,11 @@ private:
   bool taken_[4] = {false, false, false, false};
 };
 
-// ImGui's flags for a hint over the picture: no decoration, no input, sized to its text.
-ImGuiWindowFlags hint_window_flags();
+// A hint over the picture: a window without decoration or input at the top centre of
+// `viewport`, from `corners.top()` down, sized to its text, which wraps to the viewport's width
+// (a pane of the side-by-side view is narrow). end_hint reserves the top for it and ends it.
+void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin);
+void end_hint(WindowCorners& corners);
 
 // Model, its state, frame time, triangles, lights, camera and the latest message, in one line
 // at `top` (the status line; wrapped to a second line when it does not fit).

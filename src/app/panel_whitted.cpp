@@ -204,11 +204,11 @@ void ray_tree(ViewerState& state, TracedModel& view) {
   if (ImGui::BeginTable("ray tree", 5, flags, ImVec2(0.0f, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     // Shares of the panel's width: the tree's indentation needs the most.
-    ImGui::TableSetupColumn(tr("ray"), ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn(tr("ray"), ImGuiTableColumnFlags_WidthStretch, 2.1f);
     ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch, 0.25f);
-    ImGui::TableSetupColumn(tr("hit"), ImGuiTableColumnFlags_WidthStretch, 1.5f);
-    ImGui::TableSetupColumn(tr("local"), ImGuiTableColumnFlags_WidthStretch, 0.55f);
-    ImGui::TableSetupColumn(tr("share"), ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    ImGui::TableSetupColumn(tr("hit"), ImGuiTableColumnFlags_WidthStretch, 1.3f);
+    ImGui::TableSetupColumn(tr("local"), ImGuiTableColumnFlags_WidthStretch, 0.5f);
+    ImGui::TableSetupColumn(tr("share"), ImGuiTableColumnFlags_WidthStretch, 0.5f);
     ImGui::TableHeadersRow();
     for (const rt::RayTreeNode& n : tree.nodes)
       if (n.parent < 0) node_row(tree, children, n.id, state.exposure);

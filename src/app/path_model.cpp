@@ -206,20 +206,15 @@ std::string PathModel::status() const {
 }
 
 void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
-  const float margin = 8.0f * viewer_.ui_scale();
-  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin("path hint", nullptr, hint_window_flags());
+  begin_hint("path hint", viewport, corners, 8.0f * viewer_.ui_scale());
   const int target = std::max(1, options.spp);
   ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
   ImGui::SameLine();
-  // Short: it sits over the picture's top centre, however narrow the picture is.
   const std::string text = shown_.spp == 0 ? std::string(tr("(first pass)"))
                            : running_      ? trf("{} / {} spp, noise {:.2f}%", shown_.spp, target, 100.0 * shown_.noise)
                                            : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
   ImGui::TextUnformatted(text.c_str());
-  corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
-  ImGui::End();
+  end_hint(corners);
 }
 
 // ---- [panel] -------------------------------------------------------------------------------------

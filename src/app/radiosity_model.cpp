@@ -88,15 +88,10 @@ void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
-    const float margin = 8.0f * viewer_.ui_scale();
-    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("radiosity hint", nullptr, hint_window_flags());
+    begin_hint("radiosity hint", viewport, corners, 8.0f * viewer_.ui_scale());
     ImGui::TextUnformatted(tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."));
     ImGui::TextUnformatted(tr("Press Space to run the shooting, '.' for one shot."));
-    corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
-    ImGui::End();
+    end_hint(corners);
   }
   const Inspection& in = viewer_.inspection();
   if (in.pick && r.patch && state.show_inspector) {

@@ -87,8 +87,9 @@ void unshot_plot(RadiosityState& r) {
     draw->AddLine(ImVec2(min.x, y), ImVec2(max.x, y), IM_COL32(255, 255, 255, 40));
     const std::string label = decade >= -2 ? fmt::format("{:g} %", 100.0 * std::pow(10.0, decade))
                                            : fmt::format("1e{} ", decade);
-    draw->AddText(ImVec2(min.x + style.FramePadding.x, y - ImGui::GetFontSize()), IM_COL32(200, 200, 200, 160),
-                  label.c_str());
+    // Above its line, but inside the frame: the top decade's label would cover the caption.
+    draw->AddText(ImVec2(min.x + style.FramePadding.x, std::max(y - ImGui::GetFontSize(), min.y)),
+                  IM_COL32(200, 200, 200, 160), label.c_str());
   }
   if (r.options.converge > 0.0f) {
     const float y = y_of(stop);
@@ -277,7 +278,7 @@ void draw_item_buffer_window(ViewerState& state, float side) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
                                  ImGuiWindowFlags_NoCollapse;
-  ImGui::Begin(tr("item buffer of the shooter's hemicube"), &r.drive.show_item_buffer, flags);
+  ImGui::Begin(tr("item buffer (hemicube)"), &r.drive.show_item_buffer, flags);
   const RadiosityStatus& s = r.status;
   if (s.item_view_texture != 0) {
     ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());

@@ -102,7 +102,7 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
   const int index = scene.find_camera(settings.camera);
   if (index < 0)
     throw Error(ErrorKind::usage, trf("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
-                                              camera_list(scene)));
+                                      camera_list(scene)));
   return scene.cameras[size_t(index)];
 }
 
@@ -110,7 +110,7 @@ int run_render(const RenderSettings& settings) {
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
       throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
-                                                settings.local.fog.far, settings.local.fog.near));
+                                        settings.local.fog.far, settings.local.fog.near));
     if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
     const ModelEntry* model = find_model(settings.model);
     if (!model) throw Error(ErrorKind::usage, trf("--model {}: no such model ({})", settings.model, model_names()));

@@ -29,7 +29,7 @@ void check_flags(const RenderSettings& settings, const std::vector<const ModelEn
   }
   if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
     throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
-                                              settings.local.fog.far, settings.local.fog.near));
+                                      settings.local.fog.far, settings.local.fog.near));
 }
 
 // One pane: exactly what `luz render --model MODEL` computes for the same flags and size; the
@@ -61,7 +61,7 @@ std::vector<std::string> parse_model_list(const std::string& text) {
       throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" ({})", text, model, model_names()));
   if (models.size() != 2 && models.size() != 4)
     throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
-                                              models.size()));
+                                      models.size()));
   return models;
 }
 

@@ -89,7 +89,7 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
   const double samples = double(width) * double(height) * double(result.spp);
   result.summary = trf("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
                        "error {:.4g}", result.spp, rt::max_depth_of(options), options.seed,
-                               samples / std::max(result.seconds, 1e-9), error) + "\n";
+                       samples / std::max(result.seconds, 1e-9), error) + "\n";
   return result;
 }
 
@@ -110,7 +110,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".exr")
       throw Error(ErrorKind::usage, trf("--error-out {}: the standard error is written as "
-                                                ".exr (linear float)", settings.path.error_out));
+                                        ".exr (linear float)", settings.path.error_out));
   }
   rt::PathOptions options;
   options.textures = settings.local.terms.textures;

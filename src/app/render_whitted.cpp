@@ -55,7 +55,7 @@ std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
 void check_square_spp(const RenderSettings& settings) {
   if (!rt::is_square(settings.whitted.spp))
     throw Error(ErrorKind::usage, trf("--spp {}: expected a square number of samples: 1, 4, 9, 16, ... "
-                                              "(at most 4096)", settings.whitted.spp));
+                                      "(at most 4096)", settings.whitted.spp));
 }
 
 Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int height,
@@ -65,7 +65,7 @@ Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int
     const auto [x, y] = *settings.ray_tree;
     if (x < 0 || y < 0 || x >= width || y >= height)
       throw Error(ErrorKind::usage, trf("--ray-tree {},{}: outside the {}x{} image", x, y,
-                                                width, height));
+                                        width, height));
   }
   const rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
   rt::WhittedRenderer tracer(scene);

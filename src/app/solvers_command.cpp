@@ -86,9 +86,9 @@ int run_solvers(const SolversSettings& settings) {
     if (mesh.size() > kMaxSolverPatches)
       throw Error(ErrorKind::bad_value,
                   trf("{}: {} patches; the full form-factor matrix of slide 36 grows as the "
-                              "square of that, so luz solvers takes at most {} (use a larger "
-                              "--patch-size or fewer --patches)", settings.scene, mesh.size(),
-                              kMaxSolverPatches));
+                      "square of that, so luz solvers takes at most {} (use a larger "
+                      "--patch-size or fewer --patches)", settings.scene, mesh.size(),
+                      kMaxSolverPatches));
 
     gl::OffscreenContext context;
     const size_t max_rows = size_t(settings.iterations) * mesh.size();

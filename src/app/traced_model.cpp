@@ -143,10 +143,7 @@ std::string TracedModel::status() const {
 void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::done) return;
-  const float margin = 8.0f * viewer_.ui_scale();
-  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin("trace hint", nullptr, hint_window_flags());
+  begin_hint("trace hint", viewport, corners, 8.0f * viewer_.ui_scale());
   if (t.phase == TracePhase::tracing) {
     const std::string label = trf("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
                                           t.done, t.total, t.seconds);
@@ -156,8 +153,7 @@ void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
   } else {
     ImGui::TextUnformatted(hint().c_str());
   }
-  corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
-  ImGui::End();
+  end_hint(corners);
 }
 
 }  // namespace luz::app

@@ -675,6 +675,8 @@ void Viewer::draw_windows(const Layout& l) {
   }
   if (panes_.size() > 1) {  // the active pane's windows, in its own corners
     WindowCorners pane_corners(l.panes[active_pane_], margin);
+    const PaneLabel label = pane_label(panes_[active_pane_]->name, l.panes[active_pane_]);
+    pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
     shown().windows(l.panes[active_pane_], pane_corners);
     difference_windows(state_, l.panes[active_pane_], pane_corners);
   } else {

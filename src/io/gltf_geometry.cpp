@@ -83,7 +83,7 @@ const unsigned char* view_bytes(const Context& ctx, int index, const std::string
   if (view_end > data.size())
     ctx.fail(ErrorKind::truncated_buffer,
              trf("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
-                         buffer_view->buffer, view_end, data.size()));
+                 buffer_view->buffer, view_end, data.size()));
   return data.data() + buffer_view->byteOffset;
 }
 
@@ -96,7 +96,7 @@ const unsigned char* packed_run(const Context& ctx, int index, size_t offset, si
   if (needs > buffer_view->byteLength)
     ctx.fail(ErrorKind::truncated_buffer,
              trf("{} reaches past the end of bufferView {} (needs {} bytes, has {})", what,
-                         index, needs, buffer_view->byteLength));
+                 index, needs, buffer_view->byteLength));
   return bytes + offset;
 }
 
@@ -111,7 +111,7 @@ void make_dense(const Context& ctx, const tinygltf::Accessor& accessor, size_t e
   const size_t count = size_t(sparse.count);
   if (count > view.count)
     ctx.fail(ErrorKind::bad_value, trf("{} count {} exceeds the accessor's {} elements", what,
-                                               count, view.count));
+                                       count, view.count));
   const int index_type = sparse.indices.componentType;
   const size_t index_size = index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
                             : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
@@ -157,7 +157,7 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
   const size_t element_size = component_size(accessor.componentType) * component_count(accessor.type);
   if (element_size == 0)
     ctx.fail(ErrorKind::bad_value, trf("{}: unknown componentType {} or type {}", view.name,
-                                               accessor.componentType, accessor.type));
+                                       accessor.componentType, accessor.type));
   view.stride = element_size;
   if (accessor.bufferView != -1) {
     // The bufferView must lie inside its buffer ...
@@ -168,7 +168,7 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
       if (buffer_view->byteStride < element_size)
         ctx.fail(ErrorKind::bad_value,
                  trf("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
-                             buffer_view->byteStride, element_size, view.name));
+                     buffer_view->byteStride, element_size, view.name));
       view.stride = buffer_view->byteStride;
     }
     // ... and the accessor inside its bufferView: byteOffset + stride * (count - 1) + element size.
@@ -178,7 +178,7 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
       if (needs > buffer_view->byteLength)
         ctx.fail(ErrorKind::truncated_buffer,
                  trf("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
-                             view_name, needs, buffer_view->byteLength));
+                     view_name, needs, buffer_view->byteLength));
     }
     view.first = bytes + accessor.byteOffset;
   }
@@ -352,7 +352,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
       if (!warned_mode)
         ctx.warn(trf("{}: skipped its primitives that are not triangle lists (mode {})",
-                             mesh_name, primitive.mode));
+                     mesh_name, primitive.mode));
       warned_mode = true;
       continue;
     }
@@ -379,7 +379,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     auto same_count = [&](size_t n, const char* name) {
       if (n != 0 && n != vertex_count)
         ctx.fail(ErrorKind::bad_value, trf("{}: {} has {} elements but POSITION has {}",
-                                                   where, name, n, vertex_count));
+                                           where, name, n, vertex_count));
     };
     same_count(normals.size(), "NORMAL");
     same_count(uvs.size(), "TEXCOORD_0");
@@ -395,12 +395,12 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     }
     if (indices.size() % 3 != 0)
       ctx.fail(ErrorKind::bad_value, trf("{}: {} indices are not a whole number of "
-                                                 "triangles", where, indices.size()));
+                                         "triangles", where, indices.size()));
     for (size_t i = 0; i < indices.size(); ++i)
       if (indices[i] >= vertex_count)
         ctx.fail(ErrorKind::index_out_of_range,
                  trf("{}: index {} (element {}) is past the {} vertices", where, indices[i],
-                             i, vertex_count));
+                     i, vertex_count));
 
     // To world space.
     for (size_t i = 0; i < vertex_count; ++i) {

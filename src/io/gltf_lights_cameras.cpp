@@ -96,7 +96,7 @@ void add_light(const Context& ctx, const tinygltf::Node& node, const std::string
   if (!is_finite(light.intensity)) ctx.fail(ErrorKind::not_finite, trf("{}: color x intensity is infinite", what));
   if (std::max({light.intensity.r, light.intensity.g, light.intensity.b}) > kMaxEmitted)
     ctx.fail(ErrorKind::bad_value, trf("{}: color x intensity is above {:.0e}; sums of it would "
-                                               "overflow", what, kMaxEmitted));
+                                       "overflow", what, kMaxEmitted));
 
   const glm::mat4 m(to_world);
   light.position = glm::vec3(m[3]);
@@ -111,7 +111,7 @@ void add_light(const Context& ctx, const tinygltf::Node& node, const std::string
     if (!(light.inner_cone >= 0.0f && light.inner_cone <= light.outer_cone &&
           light.outer_cone <= 0.5f * std::numbers::pi_v<float>))
       ctx.fail(ErrorKind::bad_value, trf("{}: cones need 0 <= inner ({}) <= outer ({}) <= "
-                                                 "pi/2", what, light.inner_cone, light.outer_cone));
+                                         "pi/2", what, light.inner_cone, light.outer_cone));
   }
 
   if (const tinygltf::Value* a = member(source.extras, "attenuation")) {

@@ -214,13 +214,13 @@ std::string json_text(const Source& source, const std::vector<unsigned char>& by
   if (u32(4) != 2) source.fail(ErrorKind::not_gltf, trf("GLB version {} is not 2", u32(4)));
   if (u32(8) > bytes.size())
     source.fail(ErrorKind::truncated_buffer, trf("the GLB header says {} bytes, the file "
-                                                         "has {}", u32(8), bytes.size()));
+                                                 "has {}", u32(8), bytes.size()));
   const size_t json_length = u32(12);
   if (u32(16) != 0x4E4F534Au)  // "JSON"
     source.fail(ErrorKind::not_gltf, tr("the first GLB chunk is not JSON"));
   if (json_length > bytes.size() - 20)
     source.fail(ErrorKind::truncated_buffer, trf("the GLB JSON chunk needs {} bytes, the "
-                                                         "file has {}", json_length, bytes.size() - 20));
+                                                 "file has {}", json_length, bytes.size() - 20));
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + long(json_length));
 }
 
@@ -239,10 +239,10 @@ void check_version(const Source& source, const nlohmann::json& doc) {
   const std::string text = version->get<std::string>();
   if (text.rfind("1.", 0) == 0 || text == "1")
     source.fail(ErrorKind::not_gltf, trf("glTF 1.0 is not supported (asset.version \"{}\"; "
-                                                 "Luz reads glTF 2.0)", text));
+                                         "Luz reads glTF 2.0)", text));
   if (text.rfind("2.", 0) != 0)
     source.fail(ErrorKind::not_gltf, trf("glTF version \"{}\" is not supported (Luz reads "
-                                                 "glTF 2.0)", gltf::one_line(text)));
+                                         "glTF 2.0)", gltf::one_line(text)));
 }
 
 // The glTF extensions Luz reads. One that a file lists in extensionsRequired and that is not
@@ -265,7 +265,7 @@ void check_required_extensions(const Source& source, const nlohmann::json& doc) 
     if (name.is_string() && !is_implemented(name.get<std::string>()))
       source.fail(ErrorKind::bad_value,
                   trf("requires the glTF extension {}, which Luz does not implement",
-                              gltf::one_line(name.get<std::string>())));
+                      gltf::one_line(name.get<std::string>())));
 }
 
 // glTF: aspectRatio, when present, is > 0 (tinygltf reads an absent one as 0, which the camera
@@ -281,7 +281,7 @@ void check_camera_aspects(const Source& source, const nlohmann::json& doc) {
     if (auto a = p.find("aspectRatio"); a != p.end() && a->is_number() && !(a->get<double>() > 0.0))
       source.fail(ErrorKind::bad_value,
                   trf("camera {}: aspectRatio {} is not positive (leave it out to use the "
-                              "image's aspect)", i, a->dump()));
+                      "image's aspect)", i, a->dump()));
   }
 }
 
@@ -327,11 +327,11 @@ void check_before_parsing(const Source& source, const std::string& text) {
       if (declared >= 0 && has < declared)
         source.fail(ErrorKind::truncated_buffer,
                     trf("{} \"{}\" is cut short (has {} bytes, byteLength says {})", element,
-                                is_data_uri(uri) ? "data URI" : uri, has, declared));
+                        is_data_uri(uri) ? "data URI" : uri, has, declared));
       if (declared >= 0 && has > declared)  // tinygltf insists on the exact size
         source.fail(ErrorKind::bad_value,
                     trf("{} \"{}\" has {} bytes but byteLength says {}", element,
-                                is_data_uri(uri) ? "data URI" : uri, has, declared));
+                        is_data_uri(uri) ? "data URI" : uri, has, declared));
     }
   }
 
@@ -354,20 +354,20 @@ void check_before_parsing(const Source& source, const std::string& text) {
       if (view < 0 || size_t(view) >= view_count)
         source.fail(ErrorKind::index_out_of_range,
                     trf("{}: bufferView {} is out of range ({} bufferViews)", element,
-                                image["bufferView"].dump(), view_count));
+                        image["bufferView"].dump(), view_count));
       const nlohmann::json& bv = (*views)[size_t(view)];
       const long long buffer = json_size(bv, "buffer");
       if (buffer < 0 || size_t(buffer) >= buffer_lengths.size())
         source.fail(ErrorKind::index_out_of_range,
                     trf("bufferView {}: buffer {} is out of range ({} buffers)", view,
-                                buffer, buffer_lengths.size()));
+                        buffer, buffer_lengths.size()));
       const long long offset = std::max(json_size(bv, "byteOffset"), 0LL);
       const long long length = json_size(bv, "byteLength");
       const long long available = buffer_lengths[size_t(buffer)];
       if (length < 1 || available < 0 || offset > available || length > available - offset)
         source.fail(ErrorKind::truncated_buffer,
                     trf("bufferView {} of {} reaches past the end of buffer {} (needs {} "
-                                "bytes, has {})", view, element, buffer, offset + length, available));
+                        "bytes, has {})", view, element, buffer, offset + length, available));
     }
   }
 }
@@ -441,7 +441,7 @@ glm::dmat4 local_transform(const Context& ctx, const tinygltf::Node& node, const
     const std::vector<double>& m = node.matrix;
     if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0)
       ctx.fail(ErrorKind::bad_value, trf("{}: matrix's last row is {} {} {} {}, not 0 0 0 1",
-                                                 what, m[3], m[7], m[11], m[15]));
+                                         what, m[3], m[7], m[11], m[15]));
     return glm::make_mat4(node.matrix.data());  // column-major, as glTF
   }
   if (!node.matrix.empty())
@@ -573,8 +573,8 @@ LoadedScene load_gltf(const fs::path& path) {
   if (!ok) {
     const ErrorKind kind = kind_of_tinygltf_error(err);
     source.fail(kind, trf("{} (tinygltf: {})",
-                                  kind == ErrorKind::not_gltf ? "not valid glTF 2.0" : "cannot load",
-                                  first_line(err)));
+                          kind == ErrorKind::not_gltf ? "not valid glTF 2.0" : "cannot load",
+                          first_line(err)));
   }
   // tinygltf's warnings about images are replaced by ours (which name the URI and say what is
   // used instead); the others are passed on.

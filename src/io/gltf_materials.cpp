@@ -146,8 +146,8 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field("emitted radiance is infinite"));
   if (std::max({m.emission.r, m.emission.g, m.emission.b}) > kMaxEmitted)
     ctx.fail(ErrorKind::bad_value, trf("{} ({:.3g}) is above {:.0e}; sums of it would overflow",
-                                               field("emitted radiance"),
-                                               std::max({m.emission.r, m.emission.g, m.emission.b}), kMaxEmitted));
+                                       field("emitted radiance"),
+                                       std::max({m.emission.r, m.emission.g, m.emission.b}), kMaxEmitted));
 
   m.ka = clamp_to_one(ctx, m.ka, field("ka"));
   m.ks = clamp_to_one(ctx, m.ks, field("ks"));
@@ -176,7 +176,7 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
                       fmt::format("texture {}: source", t), "images");
       if (pbr.baseColorTexture.texCoord != 0)
         ctx.warn(trf("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
-                             what, pbr.baseColorTexture.texCoord));
+                     what, pbr.baseColorTexture.texCoord));
       m.kd_texture = texture_for_image(ctx, texture.source, textures, scene);
     }
   }
@@ -190,7 +190,7 @@ void check_energy(const Context& ctx, const Material& m, const std::string& what
   constexpr float kSlack = 1e-5f;  // float rounding of sums that are exactly 1 on paper
   if (sum.r > 1.0f + kSlack || sum.g > 1.0f + kSlack || sum.b > 1.0f + kSlack)
     ctx.warn(trf("{}: kd + kr + kt = ({:.3g}, {:.3g}, {:.3g}) exceeds 1; it reflects more "
-                         "light than it receives", what, sum.r, sum.g, sum.b));
+                 "light than it receives", what, sum.r, sum.g, sum.b));
 }
 
 }  // namespace

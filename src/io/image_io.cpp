@@ -22,6 +22,7 @@
 
 namespace luz::io {
 namespace fs = std::filesystem;
+using i18n::tr;
 using i18n::trf;
 
 namespace {
@@ -123,43 +124,74 @@ bool is_integer_format(const OIIO::ImageSpec& spec) {
   return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
 }
 
+// No PNG or JPEG holds more than this many bytes of pixels per byte of file: deflate's best
+// ratio is 1032:1 (RFC 1951's longest match, 258 bytes, in at most 2 bits), and a JPEG spends at
+// least a bit per 8 x 8 block of each component (ITU T.81), 4096:1 with 2x2 chroma subsampling
+// of three 8-bit components being out of reach too. A header claiming more is a lie that would
+// only cost an allocation and a failed decode.
+constexpr int64_t kMaxCompressionRatio = 4096;
+
+bool is_png_or_jpeg(const OIIO::ImageInput& input) {
+  const std::string format = input.format_name();
+  return format == "png" || format == "jpeg";
+}
+
 // Reads an opened input into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
 // The size comes from the header, which costs nothing to read; it is checked against the caps
-// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535).
-std::optional<Image> read_rgb(OIIO::ImageInput& input, std::string& error) {
+// before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535), and for a PNG
+// or JPEG of `encoded_bytes` against what so many bytes can hold.
+std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-    error = "image has no pixels";
+    error = tr("image has no pixels");
     return std::nullopt;
   }
   if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
       int64_t(spec.width) * spec.height > kMaxImagePixels) {
-    error = trf("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width,
-                        spec.height, kMaxImageSide, kMaxImagePixels);
+    error = trf("{} x {} pixels is beyond the limit of {} per side and {} in all", spec.width, spec.height,
+                kMaxImageSide, kMaxImagePixels);
     return std::nullopt;
   }
   if (spec.nchannels > 16) {
     error = trf("{} channels is beyond the limit of 16", spec.nchannels);
     return std::nullopt;
   }
-  std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
+  const int64_t pixel_bytes = int64_t(spec.width) * spec.height * int64_t(spec.pixel_bytes(true));
+  if (is_png_or_jpeg(input) && pixel_bytes / kMaxCompressionRatio > int64_t(encoded_bytes)) {
+    error = trf("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)",
+                spec.width, spec.height, encoded_bytes, kMaxCompressionRatio);
+    return std::nullopt;
+  }
+  // 8 and 16-bit files are read in their own format, which OpenImageIO copies straight into our
+  // buffer; asked for floats, it would convert through a scratch buffer of its own (64 MB at
+  // once, whatever the image's size).
+  const OIIO::TypeDesc format = is_integer_format(spec) ? spec.format : OIIO::TypeDesc::FLOAT;
+  std::vector<unsigned char> data(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels) * format.size());
   bool read = false;
   {
     const QuietStderr quiet;
-    read = input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data());
+    read = input.read_image(0, 0, 0, spec.nchannels, format, data.data());
   }
   if (!read) {
     error = one_line(input.geterror());
     return std::nullopt;
   }
-  const bool decode = is_integer_format(spec);
+  // Channel k of pixel i as a linear float: the integer formats hold sRGB-encoded values.
+  auto value = [&](size_t i, int k) {
+    const size_t at = i * size_t(spec.nchannels) + size_t(k);
+    if (format == OIIO::TypeDesc::UINT8) return srgb_decode(float(data[at]) / 255.0f);
+    if (format == OIIO::TypeDesc::UINT16) {
+      uint16_t v;
+      std::memcpy(&v, &data[2 * at], sizeof v);
+      return srgb_decode(float(v) / 65535.0f);
+    }
+    float v;
+    std::memcpy(&v, &data[4 * at], sizeof v);
+    return v;
+  };
   Image image(spec.width, spec.height);
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const float* p = &data[i * spec.nchannels];
-    Rgb c = spec.nchannels >= 3 ? Rgb(p[0], p[1], p[2]) : Rgb(p[0]);
-    if (decode) c = Rgb(srgb_decode(c.r), srgb_decode(c.g), srgb_decode(c.b));
-    image.pixels[i] = c;
-  }
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = spec.nchannels >= 3 ? Rgb(value(i, 0), value(i, 1), value(i, 2)) : Rgb(value(i, 0));
   return image;
 }
 
@@ -181,8 +213,8 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
     if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
       throw Error(ErrorKind::output,
                   trf("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
-                              i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
-                              c.r, c.g, c.b));
+                      i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
+                      c.r, c.g, c.b));
   }
   const fs::path temporary = temporary_beside(path);
   const TemporaryGuard guard(temporary);
@@ -223,29 +255,43 @@ Image read_image(const fs::path& path) {
     throw Error(ErrorKind::bad_value,
                 trf("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
-  std::optional<Image> image = read_rgb(*input, error);
+  std::error_code no_size;
+  std::optional<Image> image = read_rgb(*input, fs::file_size(path, no_size), error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
   return std::move(*image);
 }
 
 std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
                                       const std::string& name, std::string& error) {
-  // OpenImageIO picks a reader by the file name; a memory proxy carries the bytes. The
-  // extension only chooses which reader tries first: each one checks the magic number.
-  const bool png = bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P';
-  const std::string pseudo_name = png ? "texture.png" : "texture.jpg";
-  OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  std::unique_ptr<OIIO::ImageInput> input;
-  {
-    const QuietStderr quiet;
-    input = OIIO::ImageInput::open(pseudo_name, nullptr, &proxy);
+  // glTF embeds PNG or JPEG only (glTF 2.0, "Images"): the magic number picks the one reader,
+  // which reads the bytes through a memory proxy. Anything else is refused before OpenImageIO
+  // sees it; left to itself, OpenImageIO would try each of its readers in turn on bytes its
+  // first choice refused (hundreds of milliseconds for nothing).
+  auto starts_with = [&bytes](std::initializer_list<unsigned char> magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+  };
+  const char* format = starts_with({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}) ? "png"
+                       : starts_with({0xff, 0xd8, 0xff})                           ? "jpeg"
+                                                                                   : nullptr;
+  if (!format) {
+    error = tr("not a PNG or JPEG image");
+    return std::nullopt;
   }
-  if (!input) {
-    error = "not a PNG or JPEG image";
+  OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(format, /*do_open=*/false);
+  bool opened = false;
+  if (input && input->set_ioproxy(&proxy)) {
+    const QuietStderr quiet;
+    OIIO::ImageSpec spec;
+    opened = input->open(std::string("texture.") + format, spec);
+  }
+  if (!opened) {
+    error = trf("not a readable {} image{}", format == std::string("png") ? "PNG" : "JPEG",
+                input && input->has_error() ? ": " + one_line(input->geterror()) : std::string());
     (void)OIIO::geterror();  // clear OpenImageIO's pending message
     return std::nullopt;
   }
-  std::optional<Image> image = read_rgb(*input, error);
+  std::optional<Image> image = read_rgb(*input, bytes.size(), error);
   if (!image) return std::nullopt;
   Texture texture;
   texture.name = name;

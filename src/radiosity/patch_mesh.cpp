@@ -56,8 +56,8 @@ float longest_edge(const Mesh& mesh) {
       if (!std::isfinite(length))
         throw Error(ErrorKind::not_finite,
                     i18n::trf("radiosity: mesh \"{}\", triangle {}: an edge from ({:g}, {:g}, "
-                                "{:g}) to ({:g}, {:g}, {:g}) has no finite length", mesh.name, t,
-                                a.x, a.y, a.z, b.x, b.y, b.z));
+                              "{:g}) to ({:g}, {:g}, {:g}) has no finite length", mesh.name, t,
+                              a.x, a.y, a.z, b.x, b.y, b.z));
       longest = std::max(longest, length);
     }
   // Areas are squares of lengths: a triangle 1e20 m across has no float area.
@@ -68,8 +68,8 @@ float longest_edge(const Mesh& mesh) {
     if (!std::isfinite(glm::length(cross)))
       throw Error(ErrorKind::not_finite,
                   i18n::trf("radiosity: mesh \"{}\", triangle {}: its area overflows a float "
-                              "(edges up to {:g} m); radiosity needs finite areas", mesh.name, t,
-                              longest));
+                            "(edges up to {:g} m); radiosity needs finite areas", mesh.name, t,
+                            longest));
   }
   return longest;
 }
@@ -208,14 +208,14 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   const int k = elements_per_edge;
   if (k < 1 || k > kMaxElementsPerEdge)
     throw Error(ErrorKind::bad_value, i18n::trf("radiosity: {} elements per patch edge, expected "
-                                                  "1 .. {}", k, kMaxElementsPerEdge));
+                                                "1 .. {}", k, kMaxElementsPerEdge));
   const double elements = element_count(scene, max_edge, k);
   if (elements > kMaxElements)
     throw Error(ErrorKind::bad_value,
                 i18n::trf("radiosity: patch size {:g} m with {} x {} elements per patch would "
-                            "make {:.3g} elements, more than the budget of {:.3g} (about 300 bytes "
-                            "each); use a larger patch size or fewer elements per patch",
-                            max_edge, k, k, elements, kMaxElements));
+                          "make {:.3g} elements, more than the budget of {:.3g} (about 300 bytes "
+                          "each); use a larger patch size or fewer elements per patch",
+                          max_edge, k, k, elements, kMaxElements));
   PatchMesh result;
   result.max_edge = max_edge;
   result.elements_per_edge = k;

@@ -60,8 +60,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
     if (!light.enabled) continue;
     if (light.type == LightType::directional) {
       warnings_.push_back(i18n::trf("radiosity: directional light \"{}\" is not shot (a light "
-                                      "at infinity has no place for a cube of item buffers); "
-                                      "it is ignored", light.name));
+                                    "at infinity has no place for a cube of item buffers); "
+                                    "it is ignored", light.name));
       continue;
     }
     lights_.push_back(k);
