@@ -32,7 +32,7 @@ CommandResult run_luz(const std::vector<std::string>& args, const CommandOptions
   std::string command;
   if (!options.cwd.empty()) command += "cd " + shell_quote(options.cwd.string()) + " && ";
   if (options.no_display) command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
-  command += "LC_ALL=C ";  // the messages in English whatever the developer's language: tests match their words
+  command += options.locale + " ";
   command += shell_quote(luz_binary().string());
   for (const std::string& arg : args) command += " " + shell_quote(arg);
   command += " 2>&1 </dev/null";

@@ -26,6 +26,9 @@ struct CommandResult {
 struct CommandOptions {
   std::filesystem::path cwd;  // empty: the test's own
   bool no_display = false;    // unset DISPLAY and WAYLAND_DISPLAY, as on a headless machine
+  // The locale variables luz runs with: English by default, whatever the developer's language,
+  // since tests match the messages' words; "LC_ALL= LANG=es_ES.UTF-8" asks for Spanish.
+  std::string locale = "LC_ALL=C";
 };
 
 // Runs `luz ARGS...` (each argument shell-quoted) and collects its exit code and output.

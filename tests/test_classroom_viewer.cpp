@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 
 #include "app/i18n.h"
 #include "app/lesson.h"
 #include "app/viewer_settings.h"
+#include "io/default_lights.h"
 #include "viewer_support.h"
 
 namespace luz {
@@ -98,6 +100,32 @@ TEST_F(ClassroomViewer, ThePanelFitsItsWidthInBothLanguages) {
     }
     EXPECT_TRUE(found) << dump;
   }
+  // The lights' tree nodes were open in both languages: their widgets were drawn, and measured.
+  for (const char* dump : {"es_widgets_hybrid.json", "en_widgets_phong.json"}) {
+    const json widgets = json_of(run_dir / dump)["widgets"];  // a copy: the parsed file is a temporary
+    std::set<std::string> labels;
+    for (const json& w : widgets) labels.insert(w["label"].get<std::string>());
+    for (const char* label : {"key_light/colour", "key_light/position", "key_light/f_att", "fill_light/c0 c1 c2"})
+      EXPECT_TRUE(labels.count(label)) << dump << ": " << label;
+  }
+}
+
+// A warning of the loader reaches the window in the language chosen: listed in the state and in
+// the warnings window, whose title is Spanish too.
+TEST_F(ClassroomViewer, TheLoadersWarningReachesTheWindowInSpanish) {
+  const json state = json_of(run_dir / "es_warning.json");
+  EXPECT_EQ(state["language"], "es");
+  const std::string notice = spanish(io::kDefaultLightsNotice);
+  ASSERT_FALSE(notice.empty());
+  ASSERT_NE(notice, io::kDefaultLightsNotice);
+  bool listed = false;
+  for (const json& w : state["warnings"]) listed |= w.get<std::string>() == "unlit.gltf: " + notice;
+  EXPECT_TRUE(listed) << state["warnings"].dump();
+  bool window = false;
+  const json windows = json_of(run_dir / "es_warning_windows.json")["windows"];
+  for (const json& w : windows)
+    window |= w["name"].get<std::string>().rfind(spanish("1 warning"), 0) == 0;
+  EXPECT_TRUE(window);
 }
 
 TEST_F(ClassroomViewer, EachStepSetsItsModelAndSettings) {

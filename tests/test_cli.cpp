@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/i18n.h"
 #include "core/image.h"
 #include "io/image_io.h"
 #include "support.h"
@@ -224,6 +225,121 @@ TEST(Cli, WithoutADisplayTheViewerPointsToLuzRenderAndExitsWithOne) {
     EXPECT_TRUE(contains(result.output, "luz render")) << result.output;
     EXPECT_TRUE(fs::is_empty(dir.path));
   }
+}
+
+// ---- the messages in Spanish ----------------------------------------------------------------
+// The expectations are the catalogue's translations, read from the .mo the build compiled.
+
+std::string spanish(const char* id) {
+  const std::string* text = i18n::catalogue(i18n::Language::es).find(id);
+  EXPECT_NE(text, nullptr) << "no Spanish for " << id;
+  return text ? *text : std::string(id);
+}
+
+// A translated format string's text before its first field: what a message starts with whatever
+// it quotes.
+std::string spanish_start(const char* id) {
+  const std::string text = spanish(id);
+  return text.substr(0, text.find("{}"));
+}
+
+// --lang es on luz or on luz render, and LANG=es_ES.UTF-8 without --lang, choose Spanish.
+std::vector<std::pair<test::CommandOptions, std::vector<std::string>>> spanish_ways() {
+  test::CommandOptions environment;
+  environment.locale = "LC_ALL= LC_MESSAGES= LANG=es_ES.UTF-8";
+  return {{{}, {"--lang", "es"}}, {{}, {"--lang=es"}}, {environment, {}}};
+}
+
+std::vector<std::string> with_language(const std::vector<std::string>& language, std::vector<std::string> args) {
+  args.insert(args.begin(), language.begin(), language.end());
+  return args;
+}
+
+TEST(CliSpanish, UsageErrorsSpeakSpanishWithTheSameExitCode) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "x.png").string();
+  const std::vector<std::string> bogus = {"render", cornell(), "--out", out, "--bogus"};
+  const std::vector<std::string> size = {"render", cornell(), "--out", out, "--size", "12"};
+  const std::vector<std::string> no_out = {"render", cornell()};
+  const std::vector<std::string> model = {"render", cornell(), "--out", out, "--model", "cartoon"};
+  ASSERT_EQ(run_luz(bogus).exit_code, 2);
+  for (const auto& [options, language] : spanish_ways()) {
+    const auto unexpected = run_luz(with_language(language, bogus), options);
+    EXPECT_EQ(unexpected.exit_code, 2) << unexpected.output;
+    EXPECT_TRUE(contains(unexpected.output, spanish_start("The following argument was not expected: {}") + "--bogus"))
+        << unexpected.output;
+    EXPECT_TRUE(contains(unexpected.output, spanish_start("Run with {} for more information.") + "--help"))
+        << unexpected.output;
+    EXPECT_FALSE(contains(unexpected.output, "not expected")) << unexpected.output;
+    const auto bad_size = run_luz(with_language(language, size), options);
+    EXPECT_EQ(bad_size.exit_code, 2);
+    EXPECT_TRUE(contains(bad_size.output, "--size: " + spanish("expected WxH with 1 <= W, H <= 16384, e.g. 800x600")))
+        << bad_size.output;
+    const auto missing = run_luz(with_language(language, no_out), options);
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_TRUE(contains(missing.output, "--out" + spanish("{} is required").substr(2))) << missing.output;
+    const auto cartoon = run_luz(with_language(language, model), options);
+    EXPECT_EQ(cartoon.exit_code, 2);
+    EXPECT_TRUE(contains(cartoon.output, spanish_start("unknown model \"{}\" ({}, or 2 or 4 of them separated by commas)")))
+        << cartoon.output;
+  }
+  // --lang after the subcommand, as `luz render --help` lists it.
+  const auto after = run_luz({"render", "--lang", "es", cornell(), "--out", out, "--bogus"});
+  EXPECT_EQ(after.exit_code, 2);
+  EXPECT_TRUE(contains(after.output, spanish_start("The following argument was not expected: {}"))) << after.output;
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(CliSpanish, ABrokenSceneIsBadInputInSpanish) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "broken.gltf") << "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ {";
+  const std::vector<std::string> render = {"render", (dir / "broken.gltf").string(), "--out", (dir / "x.png").string()};
+  const auto english = run_luz(render);
+  EXPECT_EQ(english.exit_code, 1);
+  EXPECT_TRUE(contains(english.output, "broken.gltf: not glTF: the JSON does not parse")) << english.output;
+  for (const auto& [options, language] : spanish_ways()) {
+    const auto result = run_luz(with_language(language, render), options);
+    EXPECT_EQ(result.exit_code, english.exit_code) << result.output;
+    EXPECT_TRUE(contains(result.output, "broken.gltf: " + spanish_start("not glTF: the JSON does not parse ({})")))
+        << result.output;
+  }
+  const auto missing = run_luz({"--lang", "es", "render", (dir / "nope.gltf").string(), "--out", (dir / "x.png").string()});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_TRUE(contains(missing.output, "nope.gltf: " + spanish("no such file (or not a regular file)"))) << missing.output;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+// The summary of a render that succeeded: its words ("camera", "exposure") in Spanish.
+TEST(CliSpanish, TheRunSummarySpeaksSpanish) {
+  test::ScratchDir dir;
+  const std::string summary = spanish("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s");
+  const size_t after_size = summary.find("{}x{}, ") + 7;
+  const std::string camera = summary.substr(after_size, summary.find(" \"") - after_size);  // "cámara"
+  ASSERT_NE(camera, "camera");
+  const auto result = run_luz({"--lang", "es", "render", cornell(), "--size", "40x30", "--out", (dir / "x.png").string()});
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "40x30, " + camera + " \"")) << result.output;
+}
+
+TEST(CliSpanish, HelpSpeaksSpanish) {
+  for (const auto& [options, language] : spanish_ways()) {
+    const auto render = run_luz(with_language(language, {"render", "--help"}), options);
+    EXPECT_EQ(render.exit_code, 0);
+    for (const char* id : {"Print nothing on success", "Switch off the ambient term I_A = Ia*ka",
+                           "Output image: .png (sRGB, exposed) or .exr (linear radiance)"})
+      EXPECT_TRUE(contains(render.output, spanish(id))) << id << "\n" << render.output;
+    EXPECT_TRUE(contains(render.output, spanish("Usage") + ":")) << render.output;
+    EXPECT_TRUE(contains(render.output, spanish("Options") + ":")) << render.output;
+    EXPECT_TRUE(contains(render.output, "--no-ambient")) << "the flags keep their names";
+    EXPECT_FALSE(contains(render.output, "Print nothing on success")) << render.output;
+    const auto top = run_luz(with_language(language, {"--help"}), options);
+    EXPECT_EQ(top.exit_code, 0);
+    EXPECT_TRUE(contains(top.output, spanish("Render one picture headless (OSMesa, no display needed)"))) << top.output;
+    EXPECT_TRUE(contains(top.output, spanish("Subcommands") + ":")) << top.output;
+  }
+  const auto english = run_luz({"render", "--help"});
+  EXPECT_TRUE(contains(english.output, "Print nothing on success")) << english.output;
+  EXPECT_TRUE(contains(english.output, "Options:")) << english.output;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "gltf_fixture.h"
 #include "io/default_lights.h"
 #include "io/gltf_loader.h"
@@ -673,6 +674,28 @@ TEST(Error, BrokenJsonIsNotGltf) {
   ScratchDir dir;
   write_file(dir / "broken.gltf", std::string("{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [ "));
   expect_error(dir / "broken.gltf", ErrorKind::not_gltf);
+}
+
+// The loader's messages in the user's language (the catalogue's translation), with the same
+// kind and the file still first: "FILE: problem".
+TEST(Error, MessagesSpeakTheChosenLanguage) {
+  const i18n::Catalogue& spanish = i18n::catalogue(i18n::Language::es);
+  auto translation = [&](const char* id) {
+    const std::string* text = spanish.find(id);
+    EXPECT_NE(text, nullptr) << id;
+    return text ? *text : std::string(id);
+  };
+  i18n::set_language(i18n::Language::es);
+  ScratchDir dir;
+  write_file(dir / "array.gltf", std::string("[1, 2, 3]"));
+  const std::string error = expect_error(dir / "array.gltf", ErrorKind::not_gltf);
+  EXPECT_EQ(error, (dir / "array.gltf").string() + ": " + translation("not glTF: the JSON is not an object"));
+  const io::LoadedScene bare = io::load_gltf(one_triangle(diffuse(1, 1, 1)).write_gltf(dir));
+  EXPECT_TRUE(any_warning_contains(bare, ": " + translation(io::kDefaultLightsNotice)));
+  EXPECT_NE(translation(io::kDefaultLightsNotice), io::kDefaultLightsNotice);
+  i18n::set_language(i18n::Language::en);
+  EXPECT_EQ(expect_error(dir / "array.gltf", ErrorKind::not_gltf),
+            (dir / "array.gltf").string() + ": not glTF: the JSON is not an object");
 }
 
 TEST(Error, JsonThatIsNotGltf) {

@@ -12,8 +12,10 @@
 
 #include <imgui.h>
 
+#include "app/command_language.h"
 #include "app/i18n.h"
 #include "app/label_text.h"
+#include "app/shortcuts.h"
 #include "app/ui_glyphs.h"
 #include "core/error.h"
 #include "support.h"
@@ -139,6 +141,40 @@ TEST(Catalogues, SwitchAtRunTimeAndUseTheLecturesTerms) {
   EXPECT_EQ(app::trf("step {}", 3), "step 3");
   const char* unknown = "a message no catalogue has";
   EXPECT_EQ(app::tr(unknown), unknown);
+}
+
+// CLI11 writes its usage errors in English: each of its shapes comes back in the current
+// language with the names and values it quotes; a message of ours passes untouched.
+TEST(Catalogues, CliElevenUsageErrorsAreTranslatedKeepingTheirPieces) {
+  i18n::set_language(Language::es);
+  EXPECT_EQ(app::translated_usage_error("The following argument was not expected: --bogus"),
+            app::trf("The following argument was not expected: {}", "--bogus"));
+  EXPECT_EQ(app::translated_usage_error("--out is required"), app::trf("{} is required", "--out"));
+  EXPECT_EQ(app::translated_usage_error("--shots excludes --converge"), app::trf("{} excludes {}", "--shots", "--converge"));
+  EXPECT_EQ(app::translated_usage_error("--lang: fr not in {es,en}"), app::trf("{}: {} not in {{{}}}", "--lang", "fr", "es,en"));
+  EXPECT_EQ(app::translated_usage_error("--depth: Value 99 not in range 1 to 64"),
+            app::trf("{}: Value {} not in range {} to {}", "--depth", "99", "1", "64"));
+  EXPECT_NE(app::translated_usage_error("--out is required"), "--out is required");
+  EXPECT_EQ(app::translated_usage_error("--size: ya traducido"), "--size: ya traducido");
+  i18n::set_language(Language::en);
+  EXPECT_EQ(app::translated_usage_error("--out is required"), "--out is required");
+}
+
+// F1 lists each shortcut's keys through tr(): every key name with a word in it ("Space",
+// "Shift+P", "Up / Down") is a catalogue id, so that Spanish shows "Espacio", "Mayús+P".
+TEST(Catalogues, TheKeyNamesOfF1AreTranslated) {
+  const std::regex word("[A-Za-z]{2,}");
+  size_t named = 0;
+  for (const app::Shortcut& s : app::shortcuts()) {
+    if (!std::regex_search(s.keys, word)) continue;
+    ++named;
+    EXPECT_NE(i18n::catalogue(Language::es).find(s.keys), nullptr) << s.keys;
+  }
+  EXPECT_GE(named, 8u);
+  i18n::set_language(Language::es);
+  EXPECT_STREQ(app::tr("Space"), "Espacio");
+  EXPECT_STREQ(app::tr("Shift+P"), "Mayús+P");
+  i18n::set_language(Language::en);
 }
 
 // A translation must take its id's arguments: as many {} fields (fmt) and the same % directives

@@ -21,6 +21,7 @@
 
 #include "app/render_command.h"
 #include "app/resources.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "io/gltf_loader.h"
 #include "raytracing/renderer.h"
@@ -78,21 +79,21 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
       "--size",
       [&settings](const std::string& text) {
         if (!parse_size(text, settings.width, settings.height))
-          throw CLI::ValidationError("--size", "expected WxH, e.g. 1920x1080");
+          throw CLI::ValidationError("--size", tr("expected WxH, e.g. 1920x1080"));
       },
-      "Image size WxH (default 1920x1080)");
-  bench.add_option("--depth", settings.depth, "Maximum ray depth (slide 26)")
+      tr("Image size WxH (default 1920x1080)"));
+  bench.add_option("--depth", settings.depth, tr("Maximum ray depth (slide 26)"))
       ->check(CLI::Range(1, 64))->capture_default_str();
-  bench.add_option("--spp", settings.spp, "Samples per pixel (a square)")
+  bench.add_option("--spp", settings.spp, tr("Samples per pixel (a square)"))
       ->check(CLI::Validator([](std::string& text) {  // as luz render's --spp
         int n = 0;
         if (!CLI::detail::lexical_cast(text, n) || !rt::is_square(n) || n > 4096)
-          return std::string("expected a square number of samples: 1, 4, 9, 16, ... (at most 4096)");
+          return std::string(tr("expected a square number of samples: 1, 4, 9, 16, ... (at most 4096)"));
         return std::string();
       }, "SQUARE"))->capture_default_str();
-  bench.add_option("--repeats", settings.repeats, "Best of this many runs")
+  bench.add_option("--repeats", settings.repeats, tr("Best of this many runs"))
       ->check(CLI::Range(1, 100))->capture_default_str();
-  bench.add_option("--scenes", settings.scenes, "Shipped scene names or glTF paths")
+  bench.add_option("--scenes", settings.scenes, tr("Shipped scene names or glTF paths"))
       ->delimiter(',')->capture_default_str();
 }
 

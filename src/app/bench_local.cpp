@@ -19,6 +19,7 @@
 
 #include "app/render_command.h"
 #include "app/resources.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "gl/framebuffer.h"
 #include "gl/functions.h"
@@ -128,27 +129,27 @@ void add_local_bench_flags(CLI::App& bench, LocalBenchSettings& settings) {
       "--size",
       [&settings](const std::string& text) {
         if (!parse_size(text, settings.width, settings.height))
-          throw CLI::ValidationError("--size", "expected WxH, e.g. 1280x720");
+          throw CLI::ValidationError("--size", tr("expected WxH, e.g. 1280x720"));
       },
-      "Image size WxH (default 1280x720)");
-  bench.add_option("--frames", settings.frames, "Timed frames per row (best and median)")
+      tr("Image size WxH (default 1280x720)"));
+  bench.add_option("--frames", settings.frames, tr("Timed frames per row (best and median)"))
       ->check(CLI::Range(1, 1000))->capture_default_str();
-  bench.add_option("--scenes", settings.scenes, "Shipped scene names or glTF paths")
+  bench.add_option("--scenes", settings.scenes, tr("Shipped scene names or glTF paths"))
       ->delimiter(',')->capture_default_str();
-  bench.add_option("--shadings", settings.shadings, "flat, gouraud, phong")
+  bench.add_option("--shadings", settings.shadings, tr("flat, gouraud, phong"))
       ->delimiter(',')->capture_default_str();
   bench.add_option("--effects", settings.effects,
-                   "none, fog, shadows, transparency, reflection, all (slide 19)")
+                   tr("none, fog, shadows, transparency, reflection, all (slide 19)"))
       ->delimiter(',')->capture_default_str();
 }
 
 int run_bench_local(const LocalBenchSettings& settings) {
   try {
     for (const std::string& name : settings.shadings)
-      if (!shading_named(name)) throw Error(ErrorKind::usage, fmt::format("--shadings: unknown shading \"{}\"", name));
+      if (!shading_named(name)) throw Error(ErrorKind::usage, trf("--shadings: unknown shading \"{}\"", name));
     for (const std::string& effect : settings.effects)
       if (!options_for(Shading::phong, effect))
-        throw Error(ErrorKind::usage, fmt::format("--effects: unknown effect \"{}\"", effect));
+        throw Error(ErrorKind::usage, trf("--effects: unknown effect \"{}\"", effect));
 
     gl::OffscreenContext context;
     fmt::print("luz bench local: {}x{}, {} frames a row (best / median ms), orbiting 1 degree a frame; {}\n",

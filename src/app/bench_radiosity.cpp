@@ -14,6 +14,7 @@
 
 #include "app/bench_command.h"
 #include "app/resources.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "gl/functions.h"
 #include "gl/offscreen_context.h"
@@ -63,7 +64,7 @@ struct Way {
 int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScene& loaded) {
   const Image reference = io::read_image(settings.reference);
   const Scene& scene = loaded.scene;
-  if (scene.cameras.empty()) throw Error(ErrorKind::bad_value, "the scene has no camera to compare from");
+  if (scene.cameras.empty()) throw Error(ErrorKind::bad_value, tr("the scene has no camera to compare from"));
   RadiosityOptions uniform;
   uniform.elements_per_edge = 1;
   uniform.form_factors = FormFactorMethod::hemicube;

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "core/image_compare.h"
 #include "io/image_io.h"
@@ -81,27 +82,27 @@ Image with_legend(const Image& heatmap, float range) {
 
 // ---- [command] ----------------------------------------------------------------------------------
 void add_compare_flags(CLI::App& compare, CompareSettings& settings) {
-  compare.add_option("A", settings.a, "The picture compared (.exr: linear radiance)")->required();
-  compare.add_option("B", settings.b, "The reference (e.g. luz render --model path)")->required();
+  compare.add_option("A", settings.a, tr("The picture compared (.exr: linear radiance)"))->required();
+  compare.add_option("B", settings.b, tr("The reference (e.g. luz render --model path)"))->required();
   compare.add_option("--heatmap", settings.heatmap,
-                     "Write the signed relative difference (A - B) / B as a PNG with a legend "
-                     "(blue: A darker, red: A brighter; grey: unlit)");
+                     tr("Write the signed relative difference (A - B) / B as a PNG with a legend "
+                        "(blue: A darker, red: A brighter; grey: unlit)"));
   compare.add_flag("--mask-emitters", settings.mask_emitters,
-                   "Leave out pixels 10x brighter than the median lit pixel (emitters) and their neighbours");
-  compare.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+                   tr("Leave out pixels 10x brighter than the median lit pixel (emitters) and their neighbours"));
+  compare.add_flag("-q,--quiet", settings.quiet, tr("Print nothing on success"));
 }
 
 int run_compare(const CompareSettings& settings) {
   try {
     if (!settings.heatmap.empty() && std::filesystem::path(settings.heatmap).extension() != ".png")
-      throw Error(ErrorKind::usage, fmt::format("--heatmap {}: the heat map is written as .png",
-                                                settings.heatmap));
+      throw Error(ErrorKind::usage, trf("--heatmap {}: the heat map is written as .png",
+                                        settings.heatmap));
     const Image a = io::read_image(settings.a);
     const Image b = io::read_image(settings.b);
     if (a.width != b.width || a.height != b.height)
-      throw Error(ErrorKind::bad_value, fmt::format("{}: {}x{} pixels, but the reference {} has {}x{}",
-                                                    settings.a, a.width, a.height, settings.b,
-                                                    b.width, b.height));
+      throw Error(ErrorKind::bad_value, trf("{}: {}x{} pixels, but the reference {} has {}x{}",
+                                            settings.a, a.width, a.height, settings.b,
+                                            b.width, b.height));
     CompareOptions options;
     options.mask_emitters = settings.mask_emitters;
     const ImageComparison c = compare_images(a, b, options);
@@ -112,16 +113,18 @@ int run_compare(const CompareSettings& settings) {
     }
     if (!settings.quiet) {
       const size_t pixels = size_t(a.width) * size_t(a.height);
-      fmt::print("{} against {} (reference), {}x{}\n", settings.a, settings.b, a.width, a.height);
-      if (settings.mask_emitters) fmt::print("emitter pixels left out: {}\n", c.masked_pixels);
-      fmt::print("mean error (A - B):   R {:+.6f}  G {:+.6f}  B {:+.6f}\n", c.mean_error.r,
-                 c.mean_error.g, c.mean_error.b);
-      fmt::print("mean absolute error:  R {:.6f}  G {:.6f}  B {:.6f}\n", c.mean_absolute_error.r,
-                 c.mean_absolute_error.g, c.mean_absolute_error.b);
-      fmt::print("rel-RMSE:             {:.6f}\n", c.rel_rmse);
-      fmt::print("mean relative error over lit pixels: {:.4f} ({:.2f}%, {} of {} pixels lit)\n",
-                 c.mean_relative_error, 100.0 * c.mean_relative_error, c.lit_pixels, pixels);
-      if (!settings.heatmap.empty()) fmt::print("heat map: {}\n", settings.heatmap);
+      const auto line = [](const std::string& text) { fmt::print("{}\n", text); };
+      line(trf("{} against {} (reference), {}x{}", settings.a, settings.b, a.width, a.height));
+      if (settings.mask_emitters) line(trf("emitter pixels left out: {}", c.masked_pixels));
+      line(trf("mean error (A - B):   R {:+.6f}  G {:+.6f}  B {:+.6f}", c.mean_error.r, c.mean_error.g,
+               c.mean_error.b));
+      line(trf("mean absolute error:  R {:.6f}  G {:.6f}  B {:.6f}", c.mean_absolute_error.r,
+               c.mean_absolute_error.g, c.mean_absolute_error.b));
+      line(trf("rel-RMSE:             {:.6f}", c.rel_rmse));
+      // xgettext:no-c-format
+      line(trf("mean relative error over lit pixels: {:.4f} ({:.2f}%, {} of {} pixels lit)", c.mean_relative_error,
+               100.0 * c.mean_relative_error, c.lit_pixels, pixels));
+      if (!settings.heatmap.empty()) line(trf("heat map: {}", settings.heatmap));
     }
     return 0;
   } catch (const Error& error) {

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "app/bench_command.h"
+#include "app/command_language.h"
 #include "app/compare_command.h"
 #include "app/i18n.h"
 #include "app/lesson.h"
@@ -30,23 +31,25 @@
 namespace {
 
 using luz::app::RenderSettings;
+using luz::i18n::tr;
+using luz::i18n::trf;
 
 // A float flag takes finite numbers only: CLI11 reads "nan" and "inf" as numbers.
 const CLI::Validator finite_number(
     [](std::string& text) {
       double value = 0.0;
       if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value))
-        return fmt::format("{}: expected a finite number", text);
+        return trf("{}: expected a finite number", text);
       return std::string();
     },
     "NUMBER");
 
 // No display: the viewer cannot open; `luz render` makes the same pictures without one.
 int no_display(const std::string& scene) {
-  fmt::print(stderr, "{}", luz::i18n::trf("luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are "
-                                          "unset or unreachable).\nluz: for pictures without a display use `luz "
-                                          "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
-                                          "`luz render --help`)\n", scene));
+  fmt::print(stderr, "{}", trf("luz: no display to open the viewer on (DISPLAY and WAYLAND_DISPLAY are "
+                               "unset or unreachable).\nluz: for pictures without a display use `luz "
+                               "render`, e.g.\n  luz render {} --model phong --out picture.png\n(see "
+                               "`luz render --help`)\n", scene));
   return 1;
 }
 
@@ -55,31 +58,32 @@ int no_display(const std::string& scene) {
 int main(int argc, char** argv) {
   // The catalogue follows LC_ALL / LC_MESSAGES / LANG, and --lang over them. No setlocale():
   // the C locale keeps the decimal point that scenes and flags are read with.
-  luz::i18n::set_language(luz::i18n::language_from_environment());
-  CLI::App app{"Luz: an interactive lab for realistic image synthesis (\"Síntesis realista de imágenes\").\n"
-               "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships)."};
+  luz::app::choose_language(argc, argv);
+  CLI::App app{tr("Luz: an interactive lab for realistic image synthesis (\"Síntesis realista de imágenes\").\n"
+                  "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships).")};
+  luz::app::speak_the_language(app);
   app.require_subcommand(0, 1);
-  app.set_version_flag("--version", "luz " LUZ_VERSION);
-  app.footer("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error.");
+  app.set_version_flag("--version", "luz " LUZ_VERSION, tr("Display program version information and exit"));
+  app.footer(tr("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error."));
   const auto lang = [](const std::string& name) { luz::i18n::set_language(*luz::i18n::parse_language(name)); };
-  app.add_option_function<std::string>("--lang", lang, "Language of the messages and labels: es or en "
-                                       "(default: from LC_ALL, LC_MESSAGES, LANG)")
+  app.add_option_function<std::string>("--lang", lang, tr("Language of the messages and labels: es or en "
+                                                          "(default: from LC_ALL, LC_MESSAGES, LANG)"))
       ->check(CLI::IsMember({"es", "en"}));
   luz::app::ViewerSettings viewer;
   std::string script_file;
   std::optional<std::string> lesson_file;
-  app.add_option("--lesson", lesson_file, "Open a lesson (default: lessons/sintesis.json) at its first step")
+  app.add_option("--lesson", lesson_file, tr("Open a lesson (default: lessons/sintesis.json) at its first step"))
       ->expected(0, 1)->default_str("");
-  app.add_option("SCENE", viewer.scene, "glTF scene for the viewer");
+  app.add_option("SCENE", viewer.scene, tr("glTF scene for the viewer"));
   app.add_option("--script", script_file,
-                 "Run the viewer from a script of commands (key, click, screenshot, ...; see README)");
+                 tr("Run the viewer from a script of commands (key, click, screenshot, ...; see README)"));
   app.add_option_function<std::string>(
       "--size",
       [&viewer](const std::string& text) {
         if (!luz::app::parse_size(text, viewer.width, viewer.height))
-          throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, e.g. 1280x720");
+          throw CLI::ValidationError("--size", tr("expected WxH with 1 <= W, H <= 16384, e.g. 1280x720"));
       },
-      "Viewer window size WxH");
+      tr("Viewer window size WxH"));
 
   app.add_option_function<std::string>(
       "--model",
@@ -88,87 +92,88 @@ int main(int argc, char** argv) {
         if (const std::string problem = luz::app::pane_list_problem(viewer.models); !problem.empty())
           throw CLI::ValidationError("--model", text + ": " + problem);
       },
-      "Viewer: the model shown, or 2 to 4 of them side by side, e.g. --model flat,gouraud,phong,whitted");
+      tr("Viewer: the model shown, or 2 to 4 of them side by side, e.g. --model flat,gouraud,phong,whitted"));
   app.add_option_function<std::string>(
       "--ui-scale",
       [&viewer](const std::string& text) {
         double scale = 0.0;
         if (!CLI::detail::lexical_cast(text, scale) || !std::isfinite(scale) || scale < luz::app::kMinUiScale ||
             scale > luz::app::kMaxUiScale)
-          throw CLI::ValidationError("--ui-scale", fmt::format("{}: expected a size in {} .. {} (1: the default)", text,
-                                                               luz::app::kMinUiScale, luz::app::kMaxUiScale));
+          throw CLI::ValidationError("--ui-scale", trf("{}: expected a size in {} .. {} (1: the default)", text,
+                                                       luz::app::kMinUiScale, luz::app::kMaxUiScale));
         viewer.ui_scale = float(scale);
       },
-      "Viewer: size of the interface (text, panel, windows), e.g. 1.5 for a projector; Ctrl+= / Ctrl+- change it");
+      tr("Viewer: size of the interface (text, panel, windows), e.g. 1.5 for a projector; Ctrl+= / Ctrl+- change "
+         "it"));
 
   RenderSettings settings;
-  CLI::App* render = app.add_subcommand("render", "Render one picture headless (OSMesa, no display needed)");
-  std::string models_help = "Models (--model NAME; the key that shows it in the viewer):\n";
+  CLI::App* render = app.add_subcommand("render", tr("Render one picture headless (OSMesa, no display needed)"));
+  std::string models_help = std::string(tr("Models (--model NAME; the key that shows it in the viewer):")) + "\n";
   for (const luz::app::ModelEntry& m : luz::app::models())
     models_help += fmt::format("  {:<10} [{}] {}\n", m.name, m.key, luz::i18n::tr(m.help));
   render->footer(models_help +
-                 "A model takes the flags of its groups: slide 19's switches only the local models, the tracer's "
-                 "whitted and hybrid, --spp and --depth the three tracers (whitted, hybrid, path), the solver's "
-                 "radiosity and hybrid (all but --flat-patches and --outlines). --model A,B or A,B,C,D puts the "
-                 "models side by side.\n");
-  render->add_option_function<std::string>("--lang", lang, "Language of the messages and the panes' labels: es or en")
+                 tr("A model takes the flags of its groups: slide 19's switches only the local models, the tracer's "
+                    "whitted and hybrid, --spp and --depth the three tracers (whitted, hybrid, path), the solver's "
+                    "radiosity and hybrid (all but --flat-patches and --outlines). --model A,B or A,B,C,D puts the "
+                    "models side by side.") + std::string("\n"));
+  render->add_option_function<std::string>("--lang", lang, tr("Language of the messages and the panes' labels: es or en"))
       ->check(CLI::IsMember({"es", "en"}));
   const luz::app::RenderFlags render_flags = luz::app::add_render_flags(*render, settings);
 
   luz::app::SolversSettings solvers_settings;
   CLI::App* solvers = app.add_subcommand(
-      "solvers", "Slide 36: Jacobi, Gauss-Seidel and Southwell on the full form-factor matrix, beside "
-                 "slide 39's shooting; writes their convergence curves");
-  solvers->add_option("SCENE", solvers_settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+      "solvers", tr("Slide 36: Jacobi, Gauss-Seidel and Southwell on the full form-factor matrix, beside "
+                    "slide 39's shooting; writes their convergence curves"));
+  solvers->add_option("SCENE", solvers_settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
   solvers->add_option("--csv", solvers_settings.csv,
-                      "Curves as CSV: method,iteration,rows,seconds,residual,error")->required();
-  solvers->add_option("--png", solvers_settings.png, "Plot of the curves (residual and error against rows)");
+                      tr("Curves as CSV: method,iteration,rows,seconds,residual,error"))->required();
+  solvers->add_option("--png", solvers_settings.png, tr("Plot of the curves (residual and error against rows)"));
   CLI::Option* solver_patch_size = solvers->add_option("--patch-size", solvers_settings.patch_size,
-                                                       "Longest patch edge, metres")->check(finite_number)->check(CLI::PositiveNumber);
+                                                       tr("Longest patch edge, metres"))->check(finite_number)->check(CLI::PositiveNumber);
   CLI::Option* solver_patches = solvers->add_option("--patches", solvers_settings.patches,
-      fmt::format("About this many patches (at most {})", luz::app::kMaxSolverPatches))
+      trf("About this many patches (at most {})", luz::app::kMaxSolverPatches))
       ->check(CLI::PositiveNumber)->capture_default_str();
   solver_patch_size->excludes(solver_patches);
   solvers->add_option_function<int>(
       "--hemicube-res",
       [&solvers_settings](int n) {
-        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", "must be even");
+        if (n % 2 != 0) throw CLI::ValidationError("--hemicube-res", tr("must be even"));
         solvers_settings.hemicube_res = n;
       },
-      fmt::format("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
-                  luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
+      trf("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
+          luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes));
   solvers->add_option("--iterations", solvers_settings.iterations,
-                      "Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows")
+                      tr("Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows"))
       ->check(CLI::Range(1, 10000))->capture_default_str();
-  solvers->add_flag("-q,--quiet", solvers_settings.quiet, "Print nothing on success");
+  solvers->add_flag("-q,--quiet", solvers_settings.quiet, tr("Print nothing on success"));
 
   luz::app::WhittedBenchSettings bench_settings;
-  CLI::App* bench = app.add_subcommand("bench", "Benchmarks (timings, never pass/fail)");
+  CLI::App* bench = app.add_subcommand("bench", tr("Benchmarks (timings, never pass/fail)"));
   bench->require_subcommand(1);
-  CLI::App* bench_whitted = bench->add_subcommand("whitted", "The Whitted tracer against the same rays traced bare through Embree");
+  CLI::App* bench_whitted = bench->add_subcommand("whitted", tr("The Whitted tracer against the same rays traced bare through Embree"));
   luz::app::add_bench_flags(*bench_whitted, bench_settings);
   luz::app::LocalBenchSettings local_bench;
   CLI::App* bench_local = bench->add_subcommand(
-      "local", "Flat, Gouraud and Phong ms per frame, with slide 19's effects, against the same triangles drawn bare");
+      "local", tr("Flat, Gouraud and Phong ms per frame, with slide 19's effects, against the same triangles drawn bare"));
   luz::app::add_local_bench_flags(*bench_local, local_bench);
   luz::app::RadiosityBenchSettings radiosity_bench;
   CLI::App* bench_radiosity = bench->add_subcommand(
-      "radiosity", "Shots/s and time to converge on the Cornell box at about 1k, 4k, 16k, 64k patches");
-  bench_radiosity->add_option("--scene", radiosity_bench.scene, "Scene (default: the Cornell box)");
-  bench_radiosity->add_option("--patches", radiosity_bench.patches, "Target patch counts")
+      "radiosity", tr("Shots/s and time to converge on the Cornell box at about 1k, 4k, 16k, 64k patches"));
+  bench_radiosity->add_option("--scene", radiosity_bench.scene, tr("Scene (default: the Cornell box)"));
+  bench_radiosity->add_option("--patches", radiosity_bench.patches, tr("Target patch counts"))
       ->capture_default_str();
-  bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, "Hemicube resolution")
+  bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, tr("Hemicube resolution"))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
   bench_radiosity->add_option("--reference", radiosity_bench.reference,
-                              "Converged picture (linear EXR, first camera): print the error against it over "
-                              "time for uniform, substructured, analytic and overshot shooting instead");
-  bench_radiosity->add_option("--seconds", radiosity_bench.seconds, "Time cap per patch count")
+                              tr("Converged picture (linear EXR, first camera): print the error against it over "
+                                 "time for uniform, substructured, analytic and overshot shooting instead"));
+  bench_radiosity->add_option("--seconds", radiosity_bench.seconds, tr("Time cap per patch count"))
       ->check(finite_number)->check(CLI::PositiveNumber)->capture_default_str();
 
   luz::app::CompareSettings compare_settings;
   CLI::App* compare = app.add_subcommand(
-      "compare", "How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels");
+      "compare", tr("How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels"));
   luz::app::add_compare_flags(*compare, compare_settings);
 
   try {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "app/script.h"
 #include "raytracing/sampling.h"
 
@@ -26,119 +27,119 @@ bool square(double v) { return rt::is_square(int(v)); }
 
 const LocalRow local_table[] = {
     // The terms of I = I_A + I_D + I_S (+ Le): every model takes their switches.
-    {"ambient", "--no-ambient", "terms", OptionKind::on_off, "Switch off the ambient term I_A = Ia*ka", 0, 1,
+    {"ambient", "--no-ambient", "terms", OptionKind::on_off, N_("Switch off the ambient term I_A = Ia*ka"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.ambient)},
-    {"diffuse", "--no-diffuse", "terms", OptionKind::on_off, "Switch off the diffuse term I_D = IL*kd*cos(theta)", 0, 1,
+    {"diffuse", "--no-diffuse", "terms", OptionKind::on_off, N_("Switch off the diffuse term I_D = IL*kd*cos(theta)"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.diffuse)},
     {"specular", "--no-specular", "terms", OptionKind::on_off,
-     "Switch off the specular term I_S = IL*ks*cos^n(alpha)", 0, 1, LUZ_FIELD(LocalOptions, terms.specular)},
+     N_("Switch off the specular term I_S = IL*ks*cos^n(alpha)"), 0, 1, LUZ_FIELD(LocalOptions, terms.specular)},
     {"emission", "--no-emission", "terms", OptionKind::on_off,
-     "Do not show the emitted radiance Le of emissive surfaces", 0, 1, LUZ_FIELD(LocalOptions, terms.emission)},
-    {"textures", "--no-textures", "terms", OptionKind::on_off, "Ignore baseColorTexture", 0, 1,
+     N_("Do not show the emitted radiance Le of emissive surfaces"), 0, 1, LUZ_FIELD(LocalOptions, terms.emission)},
+    {"textures", "--no-textures", "terms", OptionKind::on_off, N_("Ignore baseColorTexture"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.textures)},
-    {"blinn", "--blinn", "terms", OptionKind::on_off, "Blinn's half vector N.H instead of Phong's R.V", 0, 1,
+    {"blinn", "--blinn", "terms", OptionKind::on_off, N_("Blinn's half vector N.H instead of Phong's R.V"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.blinn)},
     // Slide 19's other possibilities: the local models' only.
-    {"fog", "--fog", "local", OptionKind::choice, "Atmospheric attenuation (depth cueing) toward the fog colour", 0, 2,
+    {"fog", "--fog", "local", OptionKind::choice, N_("Atmospheric attenuation (depth cueing) toward the fog colour"), 0, 2,
      [](const LocalOptions& o) { return double(int(o.fog.mode)); },
      [](LocalOptions& o, double v) { o.fog.mode = FogMode(int(v)); }, fog_modes},
-    {"fog-near", "--fog-near", "local", OptionKind::real, "Linear fog: no fog closer than D metres", 0, 1000,
+    {"fog-near", "--fog-near", "local", OptionKind::real, N_("Linear fog: no fog closer than D metres"), 0, 1000,
      LUZ_FIELD(LocalOptions, fog.near)},
-    {"fog-far", "--fog-far", "local", OptionKind::real, "Linear fog: only fog beyond D metres", 0, 1000,
+    {"fog-far", "--fog-far", "local", OptionKind::real, N_("Linear fog: only fog beyond D metres"), 0, 1000,
      LUZ_FIELD(LocalOptions, fog.far)},
-    {"fog-density", "--fog-density", "local", OptionKind::real, "Exponential fog: f = exp(-K d), K per metre", 0, 10,
+    {"fog-density", "--fog-density", "local", OptionKind::real, N_("Exponential fog: f = exp(-K d), K per metre"), 0, 10,
      LUZ_FIELD(LocalOptions, fog.density)},
     {"shadows", "--shadows", "local", OptionKind::on_off,
-     "Blocking of the sources by occlusion (S_i), with shadow maps", 0, 1, LUZ_FIELD(LocalOptions, shadows.on)},
-    {"shadow-bias", "--shadow-bias", "local", OptionKind::real, "Constant shadow bias in metres", 0, 0.5,
+     N_("Blocking of the sources by occlusion (S_i), with shadow maps"), 0, 1, LUZ_FIELD(LocalOptions, shadows.on)},
+    {"shadow-bias", "--shadow-bias", "local", OptionKind::real, N_("Constant shadow bias in metres"), 0, 0.5,
      LUZ_FIELD(LocalOptions, shadows.constant_bias)},
     {"shadow-slope-bias", "--shadow-slope-bias", "local", OptionKind::real,
-     "Slope-scaled shadow bias, texels per unit of tan(theta)", 0, 20, LUZ_FIELD(LocalOptions, shadows.slope_bias)},
+     N_("Slope-scaled shadow bias, texels per unit of tan(theta)"), 0, 20, LUZ_FIELD(LocalOptions, shadows.slope_bias)},
     {"shadow-normal-offset", "--shadow-normal-offset", "local", OptionKind::real,
-     "Shadow lookup moved this many texels along the normal", 0, 20, LUZ_FIELD(LocalOptions, shadows.normal_offset)},
-    {"shadow-map-size", "--shadow-map-size", "local", OptionKind::integer, "Texels per side of each shadow map", 16,
+     N_("Shadow lookup moved this many texels along the normal"), 0, 20, LUZ_FIELD(LocalOptions, shadows.normal_offset)},
+    {"shadow-map-size", "--shadow-map-size", "local", OptionKind::integer, N_("Texels per side of each shadow map"), 16,
      8192, LUZ_FIELD(LocalOptions, shadows.map_size)},
     {"transparency", "--transparency", "local", OptionKind::on_off,
-     "Non-refractive transparency: I + kt * what lies behind", 0, 1, LUZ_FIELD(LocalOptions, transparency.on)},
+     N_("Non-refractive transparency: I + kt * what lies behind"), 0, 1, LUZ_FIELD(LocalOptions, transparency.on)},
     {"reflection-map", "--reflection-map", "local", OptionKind::on_off,
-     "Reflection maps: kr * Ir from a cube map around each object with kr > 0", 0, 1,
+     N_("Reflection maps: kr * Ir from a cube map around each object with kr > 0"), 0, 1,
      LUZ_FIELD(LocalOptions, reflection.on)},
-    {"reflection-map-size", "--reflection-map-size", "local", OptionKind::integer, "Texels per side of each cube face",
+    {"reflection-map-size", "--reflection-map-size", "local", OptionKind::integer, N_("Texels per side of each cube face"),
      8, 4096, LUZ_FIELD(LocalOptions, reflection.resolution)},
 };
 
 const WhittedRow whitted_table[] = {
     {"depth", "--depth", "sampling", OptionKind::integer,
-     "whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no reflected "
-     "or transmitted rays; path: default 16)",
+     N_("whitted/hybrid/path: maximum ray depth as on slide 26 (primary rays have depth 1; 1 or 0: no reflected "
+     "or transmitted rays; path: default 16)"),
      0, 64, LUZ_FIELD(rt::WhittedOptions, max_depth)},
     {"spp", "--spp", "sampling", OptionKind::integer,
-     "whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; path: any N up to 4096 (default "
-     "16)", 1, 4096,
-     LUZ_FIELD(rt::WhittedOptions, spp), {}, square, "a square: 1, 4, 9, 16, ..."},
+     N_("whitted/hybrid: samples per pixel on a jittered sqrt(N) x sqrt(N) grid; path: any N up to 4096 (default "
+     "16)"), 1, 4096,
+     LUZ_FIELD(rt::WhittedOptions, spp), {}, square, N_("a square: 1, 4, 9, 16, ...")},
     {"adaptive", "--adaptive", "whitted", OptionKind::on_off,
-     "whitted/hybrid: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of "
-     "--spp)",
+     N_("whitted/hybrid: Whitted's adaptive supersampling (pixel corners, subdivided where they differ; instead of "
+     "--spp)"),
      0, 1, [](const rt::WhittedOptions& o) { return o.sampling == rt::Sampling::adaptive ? 1.0 : 0.0; },
      [](rt::WhittedOptions& o, double v) { o.sampling = v != 0.0 ? rt::Sampling::adaptive : rt::Sampling::stratified; }},
-    {"adaptive-levels", nullptr, "whitted", OptionKind::integer, "adaptive: subdivide a pixel at most this often", 0, 4,
+    {"adaptive-levels", nullptr, "whitted", OptionKind::integer, N_("adaptive: subdivide a pixel at most this often"), 0, 4,
      LUZ_FIELD(rt::WhittedOptions, adaptive_levels)},
     {"adaptive-threshold", nullptr, "whitted", OptionKind::real,
-     "adaptive: corners differing by more (sRGB-encoded) split", 0, 1, LUZ_FIELD(rt::WhittedOptions, adaptive_threshold)},
+     N_("adaptive: corners differing by more (sRGB-encoded) split"), 0, 1, LUZ_FIELD(rt::WhittedOptions, adaptive_threshold)},
     {"fresnel", "--fresnel", "whitted", OptionKind::on_off,
-     "whitted/hybrid: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)", 0, 1,
+     N_("whitted/hybrid: Fresnel's reflectance F splits kt: reflection kr + kt*F, transmission kt*(1-F)"), 0, 1,
      LUZ_FIELD(rt::WhittedOptions, fresnel)},
     {"light-samples", "--light-samples", "whitted", OptionKind::integer,
-     "whitted/hybrid: shadow rays per emissive triangle (1: its centroid; N: soft shadows)", 1, 1024,
+     N_("whitted/hybrid: shadow rays per emissive triangle (1: its centroid; N: soft shadows)"), 1, 1024,
      LUZ_FIELD(rt::WhittedOptions, light_samples)},
     {"brute-force", "--brute-force", "whitted", OptionKind::on_off,
-     "whitted/hybrid: test every ray against every triangle instead of Embree's BVH (counts the tests)", 0, 1,
+     N_("whitted/hybrid: test every ray against every triangle instead of Embree's BVH (counts the tests)"), 0, 1,
      LUZ_FIELD(rt::WhittedOptions, brute_force)},
     {"shadow-rays", "--no-shadows", "whitted", OptionKind::on_off,
-     "whitted/hybrid: no shadow rays (every light unoccluded)", 0, 1, LUZ_FIELD(rt::WhittedOptions, shadows)},
+     N_("whitted/hybrid: no shadow rays (every light unoccluded)"), 0, 1, LUZ_FIELD(rt::WhittedOptions, shadows)},
 };
 
 const RadiosityRow radiosity_table[] = {
-    {"shots", "--shots", "radiosity", OptionKind::integer, "radiosity/hybrid: stop after N shots (lights included)", 1,
+    {"shots", "--shots", "radiosity", OptionKind::integer, N_("radiosity/hybrid: stop after N shots (lights included)"), 1,
      kUnbounded, [](const RadiosityOptions& o) { return double(o.max_shots); },
      [](RadiosityOptions& o, double v) {
        o.max_shots = int(v);
        o.converge = 0.0f;  // one stopping rule at a time
      }},
     {"converge", "--converge", "radiosity", OptionKind::real,
-     "radiosity/hybrid: stop when the unshot power is below EPS x the emitted power", 1e-9, 1,
+     N_("radiosity/hybrid: stop when the unshot power is below EPS x the emitted power"), 1e-9, 1,
      [](const RadiosityOptions& o) { return double(o.converge); },
      [](RadiosityOptions& o, double v) {
        o.converge = float(v);
        o.max_shots = 0;
      }},
     {"patch-size", "--patch-size", "radiosity", OptionKind::real,
-     "radiosity/hybrid: longest patch edge, metres (0: subdivision adds about target-patches patches)", 0, 100,
+     N_("radiosity/hybrid: longest patch edge, metres (0: subdivision adds about target-patches patches)"), 0, 100,
      LUZ_FIELD(RadiosityOptions, patch_size)},
-    {"target-patches", nullptr, "radiosity", OptionKind::integer, "the mesh's size when patch-size is 0", 10, 1000000,
+    {"target-patches", nullptr, "radiosity", OptionKind::integer, N_("the mesh's size when patch-size is 0"), 10, 1000000,
      LUZ_FIELD(RadiosityOptions, target_patches)},
     {"hemicube", "--hemicube-res", "radiosity", OptionKind::integer,
-     "radiosity/hybrid: hemicube resolution, pixels across its top face", double(kMinHemicubeRes),
-     double(kMaxHemicubeRes), LUZ_FIELD(RadiosityOptions, hemicube_res), {}, even, "even"},
+     N_("radiosity/hybrid: hemicube resolution, pixels across its top face"), double(kMinHemicubeRes),
+     double(kMaxHemicubeRes), LUZ_FIELD(RadiosityOptions, hemicube_res), {}, even, N_("even")},
     {"elements", "--elements", "radiosity", OptionKind::integer,
-     "radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
-     "(1: no substructuring)", 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},
+     N_("radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
+     "(1: no substructuring)"), 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},
     {"overshoot", "--overshoot", "radiosity", OptionKind::real,
-     "radiosity/hybrid: shoot W x the unshot radiosity (1: plain shooting)", double(kMinOvershoot),
+     N_("radiosity/hybrid: shoot W x the unshot radiosity (1: plain shooting)"), double(kMinOvershoot),
      double(kMaxOvershoot), LUZ_FIELD(RadiosityOptions, overshoot)},
     {"form-factors", "--form-factors", "radiosity", OptionKind::choice,
-     "radiosity/hybrid: the hemicube's delta form factors, or analytic (Lambert's contour integral from each "
-     "element to the shooter, the hemicube giving visibility)", 0, 1,
+     N_("radiosity/hybrid: the hemicube's delta form factors, or analytic (Lambert's contour integral from each "
+     "element to the shooter, the hemicube giving visibility)"), 0, 1,
      [](const RadiosityOptions& o) { return double(int(o.form_factors)); },
      [](RadiosityOptions& o, double v) { o.form_factors = FormFactorMethod(int(v)); }, form_factor_methods},
-    {"rotation", nullptr, "radiosity", OptionKind::on_off, "turn the hemicube about the normal at every shot", 0, 1,
+    {"rotation", nullptr, "radiosity", OptionKind::on_off, N_("turn the hemicube about the normal at every shot"), 0, 1,
      LUZ_FIELD(RadiosityOptions, random_rotation)},
     {"ambient-estimate", "--ambient-estimate", "radiosity", OptionKind::on_off,
-     "radiosity/hybrid: add Cohen's ambient term for the light not yet shot", 0, 1,
+     N_("radiosity/hybrid: add Cohen's ambient term for the light not yet shot"), 0, 1,
      LUZ_FIELD(RadiosityOptions, ambient_estimate)},
     {"flat-patches", "--flat-patches", "radiosity-display", OptionKind::on_off,
-     "radiosity: one colour per patch instead of Gouraud shading", 0, 1, LUZ_FIELD(RadiosityOptions, flat_patches)},
-    {"outlines", "--outlines", "radiosity-display", OptionKind::on_off, "radiosity: draw the patch edges", 0, 1,
+     N_("radiosity: one colour per patch instead of Gouraud shading"), 0, 1, LUZ_FIELD(RadiosityOptions, flat_patches)},
+    {"outlines", "--outlines", "radiosity-display", OptionKind::on_off, N_("radiosity: draw the patch edges"), 0, 1,
      LUZ_FIELD(RadiosityOptions, outlines)},
 };
 
@@ -173,20 +174,25 @@ std::string default_text(const OptionRow<Options>& row) {
 }
 
 template <class Options>
-std::string accepted_text(const OptionRow<Options>& row) {
+std::string accepted_text(const OptionRow<Options>& row, Wording wording) {
+  const auto say = [wording](const char* id) { return wording == Wording::translated ? tr(id) : id; };
   switch (row.kind) {
-    case OptionKind::on_off: return "on or off";
+    case OptionKind::on_off: return say(N_("on or off"));
     case OptionKind::choice: {
       std::string names;
       for (const char* c : row.choices) names += (names.empty() ? "" : ", ") + std::string(c);
-      return "one of " + names;
+      return fmt::format(fmt::runtime(say(N_("one of {}"))), names);
     }
     default: break;
   }
-  const char* what = row.kind == OptionKind::integer ? "a whole number" : "a finite number";
-  std::string text = row.high == kUnbounded ? fmt::format("{} >= {}", what, number_text(row.low))
-                                            : fmt::format("{} in {} .. {}", what, number_text(row.low), number_text(row.high));
-  if (row.rule_text) text += fmt::format(", {}", row.rule_text);
+  const bool whole = row.kind == OptionKind::integer;
+  std::string text =
+      row.high == kUnbounded
+          ? fmt::format(fmt::runtime(say(whole ? N_("a whole number >= {}") : N_("a finite number >= {}"))),
+                        number_text(row.low))
+          : fmt::format(fmt::runtime(say(whole ? N_("a whole number in {} .. {}") : N_("a finite number in {} .. {}"))),
+                        number_text(row.low), number_text(row.high));
+  if (row.rule_text) text += fmt::format(", {}", say(row.rule_text));
   return text;
 }
 
@@ -219,9 +225,9 @@ std::optional<double> parse_value(const OptionRow<Options>& row, const std::stri
 template std::string default_text(const LocalRow&);
 template std::string default_text(const WhittedRow&);
 template std::string default_text(const RadiosityRow&);
-template std::string accepted_text(const LocalRow&);
-template std::string accepted_text(const WhittedRow&);
-template std::string accepted_text(const RadiosityRow&);
+template std::string accepted_text(const LocalRow&, Wording);
+template std::string accepted_text(const WhittedRow&, Wording);
+template std::string accepted_text(const RadiosityRow&, Wording);
 template std::optional<double> parse_value(const LocalRow&, const std::string&, bool);
 template std::optional<double> parse_value(const WhittedRow&, const std::string&, bool);
 template std::optional<double> parse_value(const RadiosityRow&, const std::string&, bool);

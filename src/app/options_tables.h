@@ -30,7 +30,7 @@ struct OptionRow {
   const char* flag;   // `luz render`'s flag, or nullptr (the viewer's only)
   const char* group;  // the flag group (model_registry.h): which models take the flag
   OptionKind kind;
-  const char* help;
+  const char* help;   // an N_() message id: shown through tr()
   double low, high;   // integer, real: the accepted range (kUnbounded: no upper end)
   double (*get)(const Options&);
   void (*set)(Options&, double);
@@ -59,9 +59,11 @@ const OptionRow<Options>* find_row(std::span<const OptionRow<Options>> rows, std
 template <class Options>
 std::string default_text(const OptionRow<Options>& row);
 
-// "expected a whole number in 0 .. 64" / "expected a number >= 0, finite": what a row accepts.
+// "a whole number in 0 .. 64" / "a finite number >= 0": what a row accepts. In English for the
+// script's messages (written for the teacher preparing a demo), translated for `luz render`.
+enum class Wording { english, translated };
 template <class Options>
-std::string accepted_text(const OptionRow<Options>& row);
+std::string accepted_text(const OptionRow<Options>& row, Wording wording = Wording::english);
 
 // Parses `text` for the row ("on"/"off" for a switch, a choice's name, a number in range and,
 // `with_rule`, meeting the row's rule); nullopt when it is not accepted.

@@ -117,7 +117,7 @@ void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
     };
     for (const ModelEntry& m : models()) row(std::to_string(m.key), tr(m.help));
     for (const Shortcut& s : shortcuts())
-      if (s.action != Action::choose_model) row(s.keys, tr(s.what));
+      if (s.action != Action::choose_model) row(tr(s.keys), tr(s.what));
     row(tr("left drag"), tr("orbit around the scene"));
     row(tr("right drag"), tr("pan"));
     row(tr("wheel"), tr("zoom"));

@@ -139,7 +139,9 @@ void effects_section(LocalOptions& o) {
 // The radio buttons of the registry's models the viewer shows, three to a row, then the shown
 // model's section. A `luz render` only model has no button: its key says where it is.
 void model_header(ViewerState& state, ModelView& shown) {
-  if (!ImGui::CollapsingHeader(tr("Model"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool section_open = ImGui::CollapsingHeader(tr("Model"), ImGuiTreeNodeFlags_DefaultOpen);
+  name_widget("Model");  // a script folds a section to reach the ones below
+  if (!section_open) return;
   int column = 0;
   for (const ModelEntry& m : models()) {
     if (!m.in_viewer()) continue;
@@ -164,7 +166,9 @@ const char* light_type_label(LightType type) {
 
 void lights_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader(tr("Lights"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool section_open = ImGui::CollapsingHeader(tr("Lights"), ImGuiTreeNodeFlags_DefaultOpen);
+  name_widget("Lights");  // a script folds a section to reach the ones below
+  if (!section_open) return;
   if (scene.lights.empty()) dim_text(tr("no punctual lights"));
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     Light& light = scene.lights[i];
@@ -230,7 +234,9 @@ void lights_header(ViewerState& state) {
 // ---- [material] --------------------------------------------------------------------------------
 void material_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader(tr("Material"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool section_open = ImGui::CollapsingHeader(tr("Material"), ImGuiTreeNodeFlags_DefaultOpen);
+  name_widget("Material");  // a script folds a section to reach the ones below
+  if (!section_open) return;
   if (state.selected_material < 0 || size_t(state.selected_material) >= scene.materials.size()) {
     dim_text(tr("click an object in the picture"));
     return;
@@ -268,7 +274,9 @@ void material_header(ViewerState& state) {
 // ---- [scene] -----------------------------------------------------------------------------------
 void scene_header(ViewerState& state) {
   Scene& scene = *state.scene;
-  if (!ImGui::CollapsingHeader(tr("Scene"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool section_open = ImGui::CollapsingHeader(tr("Scene"), ImGuiTreeNodeFlags_DefaultOpen);
+  name_widget("Scene");  // a script folds a section to reach the ones below
+  if (!section_open) return;
   const ImGuiColorEditFlags hdr = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
   ImGui::ColorEdit3(tr("ambient Ia"), &scene.ambient.r, hdr);
   name_widget("ambient Ia");

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
@@ -31,9 +32,10 @@ double progress_of(const ProgressiveSolver& solver, const RadiosityOptions& opti
 void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& options) {
   constexpr int width = 30;
   const int filled = int(std::lround(progress_of(solver, options) * width));
-  fmt::print(stderr, "\rradiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
-             std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
-             solver.shots(), 100.0 * solver.unshot_fraction());
+  // xgettext:no-c-format
+  fmt::print(stderr, "\r{}", trf("radiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
+                                 std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
+                                 solver.shots(), 100.0 * solver.unshot_fraction()));
   std::fflush(stderr);
 }
 
@@ -41,14 +43,14 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
   const std::string temporary = path + ".part";
   {
     std::ofstream out(temporary);
-    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
     out << "shot,unshot_power,fraction,seconds\n";
     for (const ShotRecord& r : solver.history())
       out << fmt::format("{},{:.9g},{:.9g},{:.6f}\n", r.shot, r.unshot_power, r.fraction, r.seconds);
-    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
 }  // namespace
@@ -56,7 +58,7 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
 void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& settings) {
   const RadiosityOptions& options = solver.options();
   const PatchMesh& mesh = solver.mesh();
-  for (const std::string& warning : solver.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+  for (const std::string& warning : solver.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 
   const bool bar = !settings.quiet && isatty(fileno(stderr));
   auto last_draw = std::chrono::steady_clock::now();
@@ -72,10 +74,11 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   }
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
   if (!settings.quiet)
-    fmt::print("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, unshot "
-               "{:.3f}% of the emitted power, {:.2f} s solving\n", mesh.shooters.size(), mesh.max_edge, mesh.size(),
-               options.hemicube_res, solver.shots(), 100.0 * solver.unshot_fraction(),
-               solver.history().back().seconds);
+    // xgettext:no-c-format
+    fmt::print("{}\n", trf("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, "
+                           "unshot {:.3f}% of the emitted power, {:.2f} s solving", mesh.shooters.size(),
+                           mesh.max_edge, mesh.size(), options.hemicube_res, solver.shots(),
+                           100.0 * solver.unshot_fraction(), solver.history().back().seconds));
 }
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,

@@ -17,7 +17,7 @@ namespace luz::app {
 RadiosityView::RadiosityView(const Scene& scene, const RadiosityOptions& options)
     : scene_(scene), built_with_(options), mesh_(PatchMesh::build(scene, options)),
       solver_(scene, mesh_, options), renderer_(scene, mesh_), shown_with_(options) {
-  for (const std::string& warning : solver_.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+  for (const std::string& warning : solver_.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 }
 
 bool RadiosityView::built_for(const RadiosityOptions& o) const {

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
@@ -50,13 +51,13 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream file(temporary, std::ios::binary);
     file << text;
     if (!file.flush())
-      throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+      throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
     std::filesystem::remove(temporary, error);
-    throw Error(ErrorKind::output, fmt::format("{}: cannot be written", path.string()));
+    throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
   }
 }
 
@@ -100,29 +101,29 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
   if (settings.camera.empty()) return scene.cameras.front();
   const int index = scene.find_camera(settings.camera);
   if (index < 0)
-    throw Error(ErrorKind::usage, fmt::format("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
-                                              camera_list(scene)));
+    throw Error(ErrorKind::usage, trf("{}: no camera \"{}\" (cameras: {})", settings.scene, settings.camera,
+                                      camera_list(scene)));
   return scene.cameras[size_t(index)];
 }
 
 int run_render(const RenderSettings& settings) {
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
-      throw Error(ErrorKind::usage, fmt::format("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
-                                                settings.local.fog.far, settings.local.fog.near));
+      throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
+                                        settings.local.fog.far, settings.local.fog.near));
     if (is_model_list(settings.model)) return run_render_grid(settings);  // side by side
     const ModelEntry* model = find_model(settings.model);
-    if (!model) throw Error(ErrorKind::usage, fmt::format("--model {}: no such model ({})", settings.model, model_names()));
+    if (!model) throw Error(ErrorKind::usage, trf("--model {}: no such model ({})", settings.model, model_names()));
     for (const RenderSettings::GivenFlag& given : settings.given_flags) {
       const bool taken = std::any_of(model->flag_groups.begin(), model->flag_groups.end(),
                                      [&](const char* group) { return given.group == group; });
       if (!taken)
-        throw Error(ErrorKind::usage, fmt::format("{}: only with --model {}", given.flag, models_accepting(given.group)));
+        throw Error(ErrorKind::usage, trf("{}: only with --model {}", given.flag, models_accepting(given.group)));
     }
     if (!io::is_supported_output(settings.out))
-      throw Error(ErrorKind::usage, fmt::format("--out {}: the output must end in .png or .exr", settings.out));
+      throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
 
     const Camera& camera = chosen_camera(settings, scene);
@@ -143,10 +144,10 @@ int run_render(const RenderSettings& settings) {
     if (rendered.ray_tree) write_text(ray_tree_path(settings.out), *rendered.ray_tree);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet) {
-      fmt::print("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s\n", settings.out,
-                 settings.model, width, height, camera.name, exposure, seconds);
+      fmt::print("{}\n", trf("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
+                             settings.model, width, height, camera.name, exposure, seconds));
       fmt::print("{}", rendered.summary);
-      if (rendered.ray_tree) fmt::print("ray tree: {}\n", ray_tree_path(settings.out).string());
+      if (rendered.ray_tree) fmt::print("{}\n", trf("ray tree: {}", ray_tree_path(settings.out).string()));
     }
     return 0;
   } catch (const Error& error) {

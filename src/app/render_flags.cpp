@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "app/model_registry.h"
 #include "app/options_tables.h"
 #include "app/render_grid.h"
@@ -18,8 +19,8 @@ namespace {
 
 template <class Options>
 std::string help_of(const OptionRow<Options>& row) {
-  if (row.kind == OptionKind::on_off) return row.help;
-  return fmt::format("{} ({}; default {})", row.help, accepted_text(row), default_text(row));
+  if (row.kind == OptionKind::on_off) return tr(row.help);
+  return trf("{} ({}; default {})", tr(row.help), accepted_text(row, Wording::translated), default_text(row));
 }
 
 // One flag from a row, writing into `options`.
@@ -37,7 +38,7 @@ CLI::Option* add_row(CLI::App& render, const OptionRow<Options>& row, Options& o
         // render's check, since the path tracer takes any count.
         const bool shared = std::string_view(row.group) == "sampling";
         const std::optional<double> value = parse_value(row, text, !shared);
-        if (!value) throw CLI::ValidationError(row.flag, fmt::format("{}: expected {}", text, accepted_text(row)));
+        if (!value) throw CLI::ValidationError(row.flag, trf("{}: expected {}", text, accepted_text(row, Wording::translated)));
         row.set(options, *value);
       },
       help_of(row));
@@ -61,31 +62,31 @@ void add_rows(CLI::App& render, std::span<const OptionRow<Options>> rows, Option
 
 RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   RenderFlags flags;
-  render.add_option("SCENE", settings.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
-  render.add_option("--model", settings.model, "Illumination model, or 2 or 4 of them side by side (flat,phong)")
+  render.add_option("SCENE", settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
+  render.add_option("--model", settings.model, tr("Illumination model, or 2 or 4 of them side by side (flat,phong)"))
       ->check(CLI::Validator([](std::string& text) { return model_option_problem(text); },
                              fmt::format("{{{}}}[,...]", model_names(","))))
       ->capture_default_str();
-  render.add_option("--out", settings.out, "Output image: .png (sRGB, exposed) or .exr (linear radiance)")->required();
+  render.add_option("--out", settings.out, tr("Output image: .png (sRGB, exposed) or .exr (linear radiance)"))->required();
   render.add_option_function<std::string>(
       "--size",
       [&settings](const std::string& text) {
         if (!parse_size(text, settings.width, settings.height))
-          throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, e.g. 800x600");
+          throw CLI::ValidationError("--size", tr("expected WxH with 1 <= W, H <= 16384, e.g. 800x600"));
       },
-      "Image size WxH (default: 600 pixels high, the camera's aspect ratio)");
-  render.add_option("--camera", settings.camera, "Scene camera by name or index (default: the first)");
+      tr("Image size WxH (default: 600 pixels high, the camera's aspect ratio)"));
+  render.add_option("--camera", settings.camera, tr("Scene camera by name or index (default: the first)"));
   render.add_option_function<std::string>(
       "--exposure",
       [&settings](const std::string& text) {
-        if (!is_number(text)) throw CLI::ValidationError("--exposure", fmt::format("{}: expected a finite number", text));
+        if (!is_number(text)) throw CLI::ValidationError("--exposure", trf("{}: expected a finite number", text));
         settings.exposure = std::stof(text);
       },
-      "Exposure in EV for PNG output (default: the scene's)");
-  render.add_flag("-q,--quiet", settings.quiet, "Print nothing on success");
+      tr("Exposure in EV for PNG output (default: the scene's)"));
+  render.add_flag("-q,--quiet", settings.quiet, tr("Print nothing on success"));
   render.add_option_function<std::string>(
       "--gl", [](const std::string& name) { gl::set_default_backend(*gl::parse_backend(name)); },
-      "Headless OpenGL: egl or osmesa (default: $LUZ_GL, else EGL when it works, else OSMesa)")
+      tr("Headless OpenGL: egl or osmesa (default: $LUZ_GL, else EGL when it works, else OSMesa)"))
       ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
 
   add_rows(render, local_rows(), settings.local, flags);
@@ -93,30 +94,30 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       "--fog-colour",
       [&settings](const std::string& text) {
         if (!parse_rgb(text, settings.local.fog.colour))
-          throw CLI::ValidationError("--fog-colour", "expected R,G,B radiance, three numbers >= 0, e.g. 0.3,0.3,0.35");
+          throw CLI::ValidationError("--fog-colour", tr("expected R,G,B radiance, three numbers >= 0, e.g. 0.3,0.3,0.35"));
       },
       [] {
         const Rgb c = LocalOptions{}.fog.colour;
-        return fmt::format("Fog colour as R,G,B radiance (default {:g},{:g},{:g})", c.r, c.g, c.b);
+        return trf("Fog colour as R,G,B radiance (default {:g},{:g},{:g})", c.r, c.g, c.b);
       }())});
   flags.grouped.push_back({"local", render.add_option("--environment", settings.local.reflection.environment,
-      "Equirectangular image of the surroundings, seen in reflections where no object is")});
+      tr("Equirectangular image of the surroundings, seen in reflections where no object is"))});
 
   add_rows(render, whitted_rows(), settings.whitted, flags);
   flags.grouped.push_back({"whitted", render.add_option_function<std::string>(
       "--ray-tree",
       [&settings](const std::string& text) {
         int x = 0, y = 0;
-        if (!parse_pixel(text, x, y)) throw CLI::ValidationError("--ray-tree", "expected a pixel X,Y, e.g. 320,240");
+        if (!parse_pixel(text, x, y)) throw CLI::ValidationError("--ray-tree", tr("expected a pixel X,Y, e.g. 320,240"));
         settings.ray_tree = std::make_pair(x, y);
       },
-      "whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json")});
+      tr("whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"))});
 
   for (CLI::Option* option : add_path_flags(render, settings.path)) flags.grouped.push_back({"path", option});
 
   add_rows(render, radiosity_rows(), settings.radiosity, flags);
   flags.grouped.push_back({"radiosity", render.add_option("--csv", settings.csv,
-      "radiosity/hybrid: write the unshot power after every shot to this CSV file")});
+      tr("radiosity/hybrid: write the unshot power after every shot to this CSV file"))});
   // One stopping rule: a number of shots or a threshold.
   CLI::Option* shots = render.get_option("--shots");
   shots->excludes(render.get_option("--converge"));

@@ -19,7 +19,7 @@ namespace {
 // A flag given for one model must reach at least one pane; else it is the same usage error as
 // with a single model (its group is taken by no pane's model).
 void check_flags(const RenderSettings& settings, const std::vector<const ModelEntry*>& models) {
-  if (settings.ray_tree) throw Error(ErrorKind::usage, "--ray-tree: only with a single --model whitted or hybrid");
+  if (settings.ray_tree) throw Error(ErrorKind::usage, tr("--ray-tree: only with a single --model whitted or hybrid"));
   for (const RenderSettings::GivenFlag& given : settings.given_flags) {
     const bool taken = std::any_of(models.begin(), models.end(), [&](const ModelEntry* m) {
       return std::any_of(m->flag_groups.begin(), m->flag_groups.end(), [&](const char* g) { return given.group == g; });
@@ -29,7 +29,7 @@ void check_flags(const RenderSettings& settings, const std::vector<const ModelEn
   }
   if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
     throw Error(ErrorKind::usage, trf("--fog linear: --fog-far ({}) must be beyond --fog-near ({})",
-                                              settings.local.fog.far, settings.local.fog.near));
+                                      settings.local.fog.far, settings.local.fog.near));
 }
 
 // One pane: exactly what `luz render --model MODEL` computes for the same flags and size; the
@@ -61,7 +61,7 @@ std::vector<std::string> parse_model_list(const std::string& text) {
       throw Error(ErrorKind::usage, trf("--model {}: unknown model \"{}\" ({})", text, model, model_names()));
   if (models.size() != 2 && models.size() != 4)
     throw Error(ErrorKind::usage, trf("--model {}: side by side takes 2 or 4 models, not {}", text,
-                                              models.size()));
+                                      models.size()));
   return models;
 }
 
@@ -122,7 +122,7 @@ int run_render_grid(const RenderSettings& settings) {
       throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
     const LabelFont font;
     io::LoadedScene loaded = io::load_gltf(settings.scene);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
     const Camera& camera = chosen_camera(settings, scene);
     int width = settings.width, height = settings.height;

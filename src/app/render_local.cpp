@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "gl/offscreen_context.h"
 #include "local/local_renderer.h"
 
@@ -15,7 +16,7 @@ Rendered render_local(Shading shading, const Scene& scene, const Camera& camera,
   LocalRenderer renderer(scene);
   Rendered rendered;
   rendered.image = renderer.render(camera, width, height, options);
-  for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+  for (const std::string& warning : renderer.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
   return rendered;
 }
 

@@ -11,6 +11,7 @@
 
 #include "app/render_command.h"
 #include "app/model_registry.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "raytracing/path_tracer.h"
@@ -21,14 +22,14 @@ namespace luz::app {
 std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
   return {
       render.add_option("--seed", flags.seed,
-                        "path: seed of the random numbers (the same seed gives the same picture)")
+                        tr("path: seed of the random numbers (the same seed gives the same picture)"))
           ->capture_default_str(),
       render.add_option("--time", flags.seconds,
-                        "path: render passes of one sample per pixel until SECONDS are up "
-                        "(with --spp: at most that many samples)")
+                        tr("path: render passes of one sample per pixel until SECONDS are up "
+                           "(with --spp: at most that many samples)"))
           ->check(CLI::Range(0.001, 1e7)),
       render.add_option("--error-out", flags.error_out,
-                        "path: write the per-pixel standard error of the mean to this .exr"),
+                        tr("path: write the per-pixel standard error of the mean to this .exr")),
   };
 }
 
@@ -86,9 +87,9 @@ PathResult render_path(const Scene& scene, const Camera& camera, int width, int 
   for (const Rgb& e : result.standard_error.pixels) error += double(e.r + e.g + e.b) / 3.0;
   error /= double(std::max<size_t>(1, result.standard_error.pixels.size()));
   const double samples = double(width) * double(height) * double(result.spp);
-  result.summary = fmt::format("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
-                               "error {:.4g}\n", result.spp, rt::max_depth_of(options), options.seed,
-                               samples / std::max(result.seconds, 1e-9), error);
+  result.summary = trf("path: {} spp, depth {}, seed {}: {:.3g} samples/s, mean standard "
+                       "error {:.4g}", result.spp, rt::max_depth_of(options), options.seed,
+                       samples / std::max(result.seconds, 1e-9), error) + "\n";
   return result;
 }
 
@@ -108,8 +109,8 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".exr")
-      throw Error(ErrorKind::usage, fmt::format("--error-out {}: the standard error is written as "
-                                                ".exr (linear float)", settings.path.error_out));
+      throw Error(ErrorKind::usage, trf("--error-out {}: the standard error is written as "
+                                        ".exr (linear float)", settings.path.error_out));
   }
   rt::PathOptions options;
   options.textures = settings.local.terms.textures;
@@ -125,7 +126,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
     io::write_image(path.standard_error, settings.path.error_out, 0.0f);
   Rendered result{path.mean, path.summary, std::nullopt};
   if (!settings.path.error_out.empty())
-    result.summary += fmt::format("standard error: {}\n", settings.path.error_out);
+    result.summary += trf("standard error: {}", settings.path.error_out) + "\n";
   return result;
 }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "app/i18n.h"
 #include "core/error.h"
 #include "raytracing/renderer.h"
 #include "raytracing/sampling.h"
@@ -53,8 +54,8 @@ std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
 
 void check_square_spp(const RenderSettings& settings) {
   if (!rt::is_square(settings.whitted.spp))
-    throw Error(ErrorKind::usage, fmt::format("--spp {}: expected a square number of samples: 1, 4, 9, 16, ... "
-                                              "(at most 4096)", settings.whitted.spp));
+    throw Error(ErrorKind::usage, trf("--spp {}: expected a square number of samples: 1, 4, 9, 16, ... "
+                                      "(at most 4096)", settings.whitted.spp));
 }
 
 Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int height,
@@ -63,8 +64,8 @@ Rendered render_whitted(const Scene& scene, const Camera& camera, int width, int
   if (settings.ray_tree) {
     const auto [x, y] = *settings.ray_tree;
     if (x < 0 || y < 0 || x >= width || y >= height)
-      throw Error(ErrorKind::usage, fmt::format("--ray-tree {},{}: outside the {}x{} image", x, y,
-                                                width, height));
+      throw Error(ErrorKind::usage, trf("--ray-tree {},{}: outside the {}x{} image", x, y,
+                                        width, height));
   }
   const rt::WhittedOptions options = tracer_options(settings.whitted, settings.local);
   rt::WhittedRenderer tracer(scene);

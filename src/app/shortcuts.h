@@ -34,7 +34,7 @@ struct Shortcut {
   int key;            // GLFW_KEY_*, or 0 for a character's shortcut
   int mods;           // GLFW_MOD_* that must be held (0: none)
   unsigned character; // the character typed, for a character's shortcut (else 0)
-  const char* keys;   // as shown to people: "Shift+P"
+  const char* keys;   // as shown to people: "Shift+P" (a message id where it has words: N_("Space"))
   Action action;
   const char* what;
 };

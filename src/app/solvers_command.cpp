@@ -11,6 +11,7 @@
 
 #include "app/line_plot.h"
 #include "app/solvers_view.h"
+#include "app/i18n.h"
 #include "core/error.h"
 #include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
@@ -26,16 +27,16 @@ void write_csv(const std::string& path, const SolverComparison& race) {
   const std::string temporary = path + ".part";
   {
     std::ofstream out(temporary);
-    if (!out) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
     out << "method,iteration,rows,seconds,residual,error\n";
     for (const Method m : kMethods)
       for (const SolverSample& s : race.curve(m))
         out << fmt::format("{},{},{},{:.6f},{:.9g},{:.9g}\n", to_string(m), s.iteration, s.rows,
                            s.seconds, s.residual, s.error);
-    if (!out.flush()) throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    if (!out.flush()) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Error(ErrorKind::output, fmt::format("--csv {}: cannot write the file", path));
+    throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
 // Two panels, residual and error against the rows used (log axes), one line per method.
@@ -71,9 +72,9 @@ Image plot_curves(const SolverComparison& race, size_t patches) {
 int run_solvers(const SolversSettings& settings) {
   try {
     if (!settings.png.empty() && std::filesystem::path(settings.png).extension() != ".png")
-      throw Error(ErrorKind::usage, fmt::format("--png {}: the plot must end in .png", settings.png));
+      throw Error(ErrorKind::usage, trf("--png {}: the plot must end in .png", settings.png));
     io::LoadedScene loaded = io::load_gltf(settings.scene);
-    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
 
     RadiosityOptions options;
@@ -84,10 +85,10 @@ int run_solvers(const SolversSettings& settings) {
     const PatchMesh mesh = PatchMesh::build(scene, options);
     if (mesh.size() > kMaxSolverPatches)
       throw Error(ErrorKind::bad_value,
-                  fmt::format("{}: {} patches; the full form-factor matrix of slide 36 grows as the "
-                              "square of that, so luz solvers takes at most {} (use a larger "
-                              "--patch-size or fewer --patches)", settings.scene, mesh.size(),
-                              kMaxSolverPatches));
+                  trf("{}: {} patches; the full form-factor matrix of slide 36 grows as the "
+                      "square of that, so luz solvers takes at most {} (use a larger "
+                      "--patch-size or fewer --patches)", settings.scene, mesh.size(),
+                      kMaxSolverPatches));
 
     gl::OffscreenContext context;
     const size_t max_rows = size_t(settings.iterations) * mesh.size();
@@ -97,13 +98,13 @@ int run_solvers(const SolversSettings& settings) {
     if (!settings.png.empty()) io::write_image(plot_curves(race, mesh.size()), settings.png, 0.0f);
 
     if (!settings.quiet) {
-      fmt::print("solvers: {} patches, {} form-factor entries, the matrix in {:.2f} s ({} "
-                 "hemicubes of {})\n", mesh.size(), race.system().F.nonzeros(),
-                 race.matrix_seconds(), mesh.size(), settings.hemicube_res);
+      fmt::print("{}\n", trf("solvers: {} patches, {} form-factor entries, the matrix in {:.2f} s ({} "
+                             "hemicubes of {})", mesh.size(), race.system().F.nonzeros(),
+                             race.matrix_seconds(), mesh.size(), settings.hemicube_res));
       for (const Method m : kMethods) {
         const SolverSample& last = race.curve(m).back();
-        fmt::print("  {:<13} {:>6} iterations {:>8} rows {:8.3f} s   residual {:.2e}   error {:.2e}\n",
-                   to_string(m), last.iteration, last.rows, last.seconds, last.residual, last.error);
+        fmt::print("{}\n", trf("  {:<13} {:>6} iterations {:>8} rows {:8.3f} s   residual {:.2e}   error {:.2e}",
+                               to_string(m), last.iteration, last.rows, last.seconds, last.residual, last.error));
       }
     }
     return 0;

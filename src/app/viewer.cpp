@@ -207,7 +207,7 @@ Layout Viewer::layout() const {
 void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view) {
   warnings_.clear();
   for (const std::string& warning : loaded.warnings) {
-    fmt::print(stderr, "warning: {}\n", warning);
+    fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     warnings_.push_back(warning);
   }
   for (auto& [name, view] : views_) view->scene_changed();  // before the scene they read goes
@@ -244,7 +244,7 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
 void Viewer::load(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
   if (extension != ".gltf" && extension != ".glb") {
-    state_.error = fmt::format("{}: not a glTF scene (.gltf or .glb)", path.string());
+    state_.error = trf("{}: not a glTF scene (.gltf or .glb)", path.string());
     return;
   }
   try {
@@ -261,7 +261,7 @@ void Viewer::rebuild_renderer() {
   renderer_.reset();
   renderer_ = std::make_unique<LocalRenderer>(*state_.scene);
   for (const std::string& warning : renderer_->warnings()) {
-    fmt::print(stderr, "warning: {}\n", warning);
+    fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     warn(warning);
   }
 }

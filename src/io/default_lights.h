@@ -1,11 +1,13 @@
 #pragma once
 // SCENES.md "Scenes without lights": the lights a scene gets when it brings none.
+#include "core/i18n.h"
 #include "core/scene.h"
 
 namespace luz::io {
 
-// The message the loader adds to its warnings when it calls add_default_lights.
-inline constexpr const char* kDefaultLightsNotice = "no lights in the scene: using the default lights";
+// The message the loader adds to its warnings when it calls add_default_lights (a message id:
+// the warning is its translation).
+inline constexpr const char* kDefaultLightsNotice = i18n::N_("no lights in the scene: using the default lights");
 
 // Does the scene have no light at all (no punctual light, no emissive triangle)?
 // Needs scene.area_lights filled (Scene::find_area_lights).

@@ -82,8 +82,8 @@ const unsigned char* view_bytes(const Context& ctx, int index, const std::string
   const size_t view_end = add_sat(buffer_view->byteOffset, buffer_view->byteLength);
   if (view_end > data.size())
     ctx.fail(ErrorKind::truncated_buffer,
-             fmt::format("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
-                         buffer_view->buffer, view_end, data.size()));
+             trf("{} reaches past the end of buffer {} (needs {} bytes, has {})", view_name,
+                 buffer_view->buffer, view_end, data.size()));
   return data.data() + buffer_view->byteOffset;
 }
 
@@ -95,8 +95,8 @@ const unsigned char* packed_run(const Context& ctx, int index, size_t offset, si
   const size_t needs = add_sat(offset, mul_sat(count, size));
   if (needs > buffer_view->byteLength)
     ctx.fail(ErrorKind::truncated_buffer,
-             fmt::format("{} reaches past the end of bufferView {} (needs {} bytes, has {})", what,
-                         index, needs, buffer_view->byteLength));
+             trf("{} reaches past the end of bufferView {} (needs {} bytes, has {})", what,
+                 index, needs, buffer_view->byteLength));
   return bytes + offset;
 }
 
@@ -107,18 +107,18 @@ void make_dense(const Context& ctx, const tinygltf::Accessor& accessor, size_t e
   const auto& sparse = accessor.sparse;
   const std::string what = view.name + ": sparse";
   if (sparse.count < 1)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} count {} is not positive", what, sparse.count));
+    ctx.fail(ErrorKind::bad_value, trf("{} count {} is not positive", what, sparse.count));
   const size_t count = size_t(sparse.count);
   if (count > view.count)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} count {} exceeds the accessor's {} elements", what,
-                                               count, view.count));
+    ctx.fail(ErrorKind::bad_value, trf("{} count {} exceeds the accessor's {} elements", what,
+                                       count, view.count));
   const int index_type = sparse.indices.componentType;
   const size_t index_size = index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
                             : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
                             : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
                                                                                    : 0;
   if (index_size == 0)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}.indices must be unsigned bytes, shorts or ints", what));
+    ctx.fail(ErrorKind::bad_value, trf("{}.indices must be unsigned bytes, shorts or ints", what));
   const unsigned char* indices = packed_run(ctx, sparse.indices.bufferView,
                                             size_t(std::max(sparse.indices.byteOffset, 0)), count,
                                             index_size, what + ".indices");
@@ -137,7 +137,7 @@ void make_dense(const Context& ctx, const tinygltf::Accessor& accessor, size_t e
     else std::memcpy(&target, indices + 4 * k, 4);
     if (target >= view.count)
       ctx.fail(ErrorKind::index_out_of_range,
-               fmt::format("{}.indices: element {} is {}, past the {} elements", what, k, target, view.count));
+               trf("{}.indices: element {} is {}, past the {} elements", what, k, target, view.count));
     std::memcpy(dense->data() + size_t(target) * element_size, values + k * element_size, element_size);
   }
   view.dense = std::move(dense);
@@ -156,8 +156,8 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
   view.normalized = accessor.normalized;
   const size_t element_size = component_size(accessor.componentType) * component_count(accessor.type);
   if (element_size == 0)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}: unknown componentType {} or type {}", view.name,
-                                               accessor.componentType, accessor.type));
+    ctx.fail(ErrorKind::bad_value, trf("{}: unknown componentType {} or type {}", view.name,
+                                       accessor.componentType, accessor.type));
   view.stride = element_size;
   if (accessor.bufferView != -1) {
     // The bufferView must lie inside its buffer ...
@@ -167,8 +167,8 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
     if (buffer_view->byteStride != 0) {
       if (buffer_view->byteStride < element_size)
         ctx.fail(ErrorKind::bad_value,
-                 fmt::format("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
-                             buffer_view->byteStride, element_size, view.name));
+                 trf("{}: byteStride {} is smaller than the {}-byte elements of {}", view_name,
+                     buffer_view->byteStride, element_size, view.name));
       view.stride = buffer_view->byteStride;
     }
     // ... and the accessor inside its bufferView: byteOffset + stride * (count - 1) + element size.
@@ -177,8 +177,8 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
                                    element_size);
       if (needs > buffer_view->byteLength)
         ctx.fail(ErrorKind::truncated_buffer,
-                 fmt::format("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
-                             view_name, needs, buffer_view->byteLength));
+                 trf("{} reaches past the end of {} (needs {} bytes, has {})", view.name,
+                     view_name, needs, buffer_view->byteLength));
     }
     view.first = bytes + accessor.byteOffset;
   }
@@ -189,10 +189,15 @@ AccessorView view_accessor(const Context& ctx, int index, const std::string& wha
 void require_type(const Context& ctx, int index, const AccessorView& view, int type,
                   const char* type_name, const std::string& what) {
   if (ctx.model.accessors[size_t(index)].type != type)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must be {}", what, view.name, type_name));
+    ctx.fail(ErrorKind::bad_value, trf("{}: {} must be {}", what, view.name, type_name));
 }
 
 // One component as a float; normalized integers map to [0, 1] (or [-1, 1]) as glTF defines.
+// What is wrong with a number an attribute may not hold, in the user's language.
+const char* what_number_is(float v) {
+  return tr(std::isnan(v) ? N_("NaN") : std::isinf(v) ? N_("infinite") : N_("negative"));
+}
+
 float read_component(const unsigned char* p, int component_type, bool normalized) {
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_FLOAT: {
@@ -218,7 +223,7 @@ std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::strin
   const AccessorView view = view_accessor(ctx, index, what);
   require_type(ctx, index, view, TINYGLTF_TYPE_VEC3, "VEC3", what);
   if (view.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must hold floats", what, view.name));
+    ctx.fail(ErrorKind::bad_value, trf("{}: {} must hold floats", what, view.name));
   std::vector<glm::vec3> out(view.count, glm::vec3(0.0f));
   if (!view.first) return out;
   for (size_t i = 0; i < view.count; ++i) {
@@ -226,8 +231,7 @@ std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::strin
     for (int c = 0; c < 3; ++c) {
       out[i][c] = read_component(p + 4 * c, view.component_type, false);
       if (!std::isfinite(out[i][c]))
-        ctx.fail(ErrorKind::not_finite, fmt::format("{}: element {} is {}", what, i,
-                                                    std::isnan(out[i][c]) ? "NaN" : "infinite"));
+        ctx.fail(ErrorKind::not_finite, trf("{}: element {} is {}", what, i, what_number_is(out[i][c])));
     }
   }
   return out;
@@ -241,7 +245,7 @@ std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::
                        view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
   if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
     ctx.fail(ErrorKind::bad_value,
-             fmt::format("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
+             trf("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
   std::vector<glm::vec2> out(view.count, glm::vec2(0.0f));
   if (!view.first) return out;
   const size_t size = component_size(view.component_type);
@@ -249,8 +253,7 @@ std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::
     for (int c = 0; c < 2; ++c) {
       out[i][c] = read_component(view.element(i) + size * size_t(c), view.component_type, true);
       if (!std::isfinite(out[i][c]))
-        ctx.fail(ErrorKind::not_finite, fmt::format("{}: element {} is {}", what, i,
-                                                    std::isnan(out[i][c]) ? "NaN" : "infinite"));
+        ctx.fail(ErrorKind::not_finite, trf("{}: element {} is {}", what, i, what_number_is(out[i][c])));
     }
   }
   return out;
@@ -261,12 +264,12 @@ std::vector<Rgb> read_colors(const Context& ctx, int index, const std::string& w
   const AccessorView view = view_accessor(ctx, index, what);
   const int type = ctx.model.accessors[size_t(index)].type;
   if (type != TINYGLTF_TYPE_VEC3 && type != TINYGLTF_TYPE_VEC4)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} must be VEC3 or VEC4", what, view.name));
+    ctx.fail(ErrorKind::bad_value, trf("{}: {} must be VEC3 or VEC4", what, view.name));
   const bool integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                        view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
   if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
     ctx.fail(ErrorKind::bad_value,
-             fmt::format("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
+             trf("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
   std::vector<Rgb> out(view.count, Rgb(0.0f));
   if (!view.first) return out;
   const size_t size = component_size(view.component_type);
@@ -275,8 +278,7 @@ std::vector<Rgb> read_colors(const Context& ctx, int index, const std::string& w
       const float v = read_component(view.element(i) + size * size_t(c), view.component_type, true);
       if (!std::isfinite(v) || v < 0.0f)
         ctx.fail(v < 0.0f ? ErrorKind::bad_value : ErrorKind::not_finite,
-                 fmt::format("{}: element {} is {}", what, i,
-                             std::isnan(v) ? "NaN" : std::isinf(v) ? "infinite" : "negative"));
+                 trf("{}: element {} is {}", what, i, what_number_is(v)));
       out[i][c] = v;
     }
   }
@@ -302,7 +304,7 @@ std::vector<uint32_t> read_indices(const Context& ctx, int index, const std::str
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, sizeof(uint32_t)); break;
       default:
         ctx.fail(ErrorKind::bad_value,
-                 fmt::format("{}: {} must hold unsigned bytes, shorts or ints", what, view.name));
+                 trf("{}: {} must hold unsigned bytes, shorts or ints", what, view.name));
     }
   }
   return out;
@@ -349,8 +351,8 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     const tinygltf::Primitive& primitive = gltf_mesh.primitives[p];
     if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
       if (!warned_mode)
-        ctx.warn(fmt::format("{}: skipped its primitives that are not triangle lists (mode {})",
-                             mesh_name, primitive.mode));
+        ctx.warn(trf("{}: skipped its primitives that are not triangle lists (mode {})",
+                     mesh_name, primitive.mode));
       warned_mode = true;
       continue;
     }
@@ -360,7 +362,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       return it == primitive.attributes.end() ? -1 : it->second;
     };
     const int position_accessor = attribute("POSITION");
-    if (position_accessor == -1) ctx.fail(ErrorKind::bad_value, where + ": has no POSITION");
+    if (position_accessor == -1) ctx.fail(ErrorKind::bad_value, trf("{}: has no POSITION", where));
 
     std::vector<glm::vec3> positions = read_vec3(ctx, position_accessor, where + ": POSITION");
     const size_t vertex_count = positions.size();
@@ -376,8 +378,8 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       apply_texture_transform(ctx, primitive.material, uvs);
     auto same_count = [&](size_t n, const char* name) {
       if (n != 0 && n != vertex_count)
-        ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} has {} elements but POSITION has {}",
-                                                   where, name, n, vertex_count));
+        ctx.fail(ErrorKind::bad_value, trf("{}: {} has {} elements but POSITION has {}",
+                                           where, name, n, vertex_count));
     };
     same_count(normals.size(), "NORMAL");
     same_count(uvs.size(), "TEXCOORD_0");
@@ -392,27 +394,27 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
     }
     if (indices.size() % 3 != 0)
-      ctx.fail(ErrorKind::bad_value, fmt::format("{}: {} indices are not a whole number of "
-                                                 "triangles", where, indices.size()));
+      ctx.fail(ErrorKind::bad_value, trf("{}: {} indices are not a whole number of "
+                                         "triangles", where, indices.size()));
     for (size_t i = 0; i < indices.size(); ++i)
       if (indices[i] >= vertex_count)
         ctx.fail(ErrorKind::index_out_of_range,
-                 fmt::format("{}: index {} (element {}) is past the {} vertices", where, indices[i],
-                             i, vertex_count));
+                 trf("{}: index {} (element {}) is past the {} vertices", where, indices[i],
+                     i, vertex_count));
 
     // To world space.
     for (size_t i = 0; i < vertex_count; ++i) {
       positions[i] = glm::vec3(position_matrix * glm::vec4(positions[i], 1.0f));
       if (!is_finite(positions[i]))
         ctx.fail(ErrorKind::not_finite,
-                 fmt::format("{}: vertex {} is not finite in world space", where, i));
+                 trf("{}: vertex {} is not finite in world space", where, i));
     }
     if (has_normals) {
       for (size_t i = 0; i < vertex_count; ++i) {
         const glm::vec3 n = normal_matrix * normals[i];
         const float length = glm::length(n);
         if (!(length > 0.0f) || !std::isfinite(length))
-          ctx.fail(ErrorKind::bad_value, fmt::format("{}: NORMAL {} has no direction", where, i));
+          ctx.fail(ErrorKind::bad_value, trf("{}: NORMAL {} has no direction", where, i));
         normals[i] = n / length;
       }
     }
@@ -459,8 +461,8 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     if (!mesh.indices.empty()) scene.meshes.push_back(std::move(mesh));
   }
   if (dropped > 0)
-    ctx.warn(fmt::format("{}: dropped {} zero-area triangle{}", mesh_name, dropped,
-                         dropped == 1 ? "" : "s"));
+    ctx.warn(dropped == 1 ? trf("{}: dropped 1 zero-area triangle", mesh_name)
+                          : trf("{}: dropped {} zero-area triangles", mesh_name, dropped));
 }
 
 }  // namespace luz::io::gltf

@@ -10,9 +10,16 @@
 #include <tiny_gltf.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "core/scene.h"
 
 namespace luz::io::gltf {
+
+// Every message of the loader is in the user's language (tr, trf: core/i18n.h); the glTF names
+// it quotes (node 3 "lamp", baseColorFactor, KHR_lights_punctual) stay as the file has them.
+using i18n::N_;
+using i18n::tr;
+using i18n::trf;
 
 // Messages are one line: control characters (a newline in a material's name, say) become '?'.
 inline std::string one_line(std::string text) {

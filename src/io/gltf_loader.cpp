@@ -41,6 +41,9 @@ namespace luz::io {
 namespace fs = std::filesystem;
 using gltf::Context;
 using gltf::describe;
+using i18n::N_;
+using i18n::tr;
+using i18n::trf;
 
 // ------------------------------------------------------------------------------------------------
 // [SECTION] Shared helpers
@@ -52,7 +55,7 @@ void Context::check_index(int index, size_t size, const std::string& what,
                           const std::string& array) const {
   if (index < 0 || size_t(index) >= size)
     fail(ErrorKind::index_out_of_range,
-         fmt::format("{} {} is out of range ({} {})", what, index, size, array));
+         trf("{} {} is out of range ({} {})", what, index, size, array));
 }
 
 std::string describe(const std::string& kind, size_t index, const std::string& name) {
@@ -61,18 +64,18 @@ std::string describe(const std::string& kind, size_t index, const std::string& n
 }
 
 float read_number(const Context& ctx, const tinygltf::Value& value, const std::string& what) {
-  if (!value.IsNumber()) ctx.fail(ErrorKind::bad_value, what + " must be a number");
+  if (!value.IsNumber()) ctx.fail(ErrorKind::bad_value, trf("{} must be a number", what));
   // The program computes in float: a value beyond its range is as unusable as infinity.
   const float f = float(value.GetNumberAsDouble());
-  if (std::isnan(f)) ctx.fail(ErrorKind::not_finite, what + " is NaN");
-  if (!std::isfinite(f)) ctx.fail(ErrorKind::not_finite, what + " is infinite");
+  if (std::isnan(f)) ctx.fail(ErrorKind::not_finite, trf("{} is NaN", what));
+  if (!std::isfinite(f)) ctx.fail(ErrorKind::not_finite, trf("{} is infinite", what));
   return f;
 }
 
 Rgb read_rgb(const Context& ctx, const tinygltf::Value& value, const std::string& what) {
   if (value.IsNumber()) return Rgb(read_number(ctx, value, what));  // a scalar means grey
   if (!value.IsArray() || value.ArrayLen() != 3)
-    ctx.fail(ErrorKind::bad_value, what + " must be a number or [r, g, b]");
+    ctx.fail(ErrorKind::bad_value, trf("{} must be a number or [r, g, b]", what));
   return Rgb(read_number(ctx, value.Get(0), what), read_number(ctx, value.Get(1), what),
              read_number(ctx, value.Get(2), what));
 }
@@ -152,26 +155,25 @@ bool inside(const fs::path& folder, const fs::path& path) {
 // paths that a symbolic link leads out of the folder.
 void check_uri(const Source& source, const std::string& element, const std::string& uri) {
   const std::string decoded = percent_decode(uri);
-  auto refuse = [&](const char* why) {
+  auto refuse = [&](const char* why) {  // why: an N_() message id
     source.fail(ErrorKind::uri_outside_folder,
-                fmt::format("{}: URI \"{}\" {}; only files in the scene's folder are read", element,
-                            uri, why));
+                trf("{}: URI \"{}\" {}; only files in the scene's folder are read", element, uri, tr(why)));
   };
   const size_t colon = decoded.find(':');
   const size_t slash = decoded.find_first_of("/\\");
   if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
-    refuse("has a scheme or drive");
-  if (!decoded.empty() && (decoded[0] == '/' || decoded[0] == '\\')) refuse("is absolute");
+    refuse(N_("has a scheme or drive"));
+  if (!decoded.empty() && (decoded[0] == '/' || decoded[0] == '\\')) refuse(N_("is absolute"));
   std::string component;
   for (char c : decoded + "/") {
     if (c == '/' || c == '\\') {
-      if (component == "..") refuse("goes up with ..");
+      if (component == "..") refuse(N_("goes up with .."));
       component.clear();
     } else {
       component += c;
     }
   }
-  if (!inside(source.folder, source.folder / decoded)) refuse("leads out of the folder");
+  if (!inside(source.folder, source.folder / decoded)) refuse(N_("leads out of the folder"));
 }
 
 // The size of the data a base64 data URI holds, or -1 when it is not base64.
@@ -208,17 +210,17 @@ std::string json_text(const Source& source, const std::vector<unsigned char>& by
     std::memcpy(&v, bytes.data() + at, 4);
     return v;
   };
-  if (bytes.size() < 20) source.fail(ErrorKind::truncated_buffer, "the GLB header is cut short");
-  if (u32(4) != 2) source.fail(ErrorKind::not_gltf, fmt::format("GLB version {} is not 2", u32(4)));
+  if (bytes.size() < 20) source.fail(ErrorKind::truncated_buffer, tr("the GLB header is cut short"));
+  if (u32(4) != 2) source.fail(ErrorKind::not_gltf, trf("GLB version {} is not 2", u32(4)));
   if (u32(8) > bytes.size())
-    source.fail(ErrorKind::truncated_buffer, fmt::format("the GLB header says {} bytes, the file "
-                                                         "has {}", u32(8), bytes.size()));
+    source.fail(ErrorKind::truncated_buffer, trf("the GLB header says {} bytes, the file "
+                                                 "has {}", u32(8), bytes.size()));
   const size_t json_length = u32(12);
   if (u32(16) != 0x4E4F534Au)  // "JSON"
-    source.fail(ErrorKind::not_gltf, "the first GLB chunk is not JSON");
+    source.fail(ErrorKind::not_gltf, tr("the first GLB chunk is not JSON"));
   if (json_length > bytes.size() - 20)
-    source.fail(ErrorKind::truncated_buffer, fmt::format("the GLB JSON chunk needs {} bytes, the "
-                                                         "file has {}", json_length, bytes.size() - 20));
+    source.fail(ErrorKind::truncated_buffer, trf("the GLB JSON chunk needs {} bytes, the "
+                                                 "file has {}", json_length, bytes.size() - 20));
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + long(json_length));
 }
 
@@ -229,18 +231,18 @@ void check_version(const Source& source, const nlohmann::json& doc) {
   if (asset == doc.end() || !asset->is_object()) {
     for (const char* array : {"meshes", "nodes", "scenes", "accessors", "materials"})
       if (auto it = doc.find(array); it != doc.end() && it->is_object())
-        source.fail(ErrorKind::not_gltf, "glTF 1.0 is not supported (Luz reads glTF 2.0)");
+        source.fail(ErrorKind::not_gltf, tr("glTF 1.0 is not supported (Luz reads glTF 2.0)"));
     return;  // tinygltf reports the missing asset object
   }
   auto version = asset->find("version");
   if (version == asset->end() || !version->is_string()) return;  // tinygltf reports it
   const std::string text = version->get<std::string>();
   if (text.rfind("1.", 0) == 0 || text == "1")
-    source.fail(ErrorKind::not_gltf, fmt::format("glTF 1.0 is not supported (asset.version \"{}\"; "
-                                                 "Luz reads glTF 2.0)", text));
+    source.fail(ErrorKind::not_gltf, trf("glTF 1.0 is not supported (asset.version \"{}\"; "
+                                         "Luz reads glTF 2.0)", text));
   if (text.rfind("2.", 0) != 0)
-    source.fail(ErrorKind::not_gltf, fmt::format("glTF version \"{}\" is not supported (Luz reads "
-                                                 "glTF 2.0)", gltf::one_line(text)));
+    source.fail(ErrorKind::not_gltf, trf("glTF version \"{}\" is not supported (Luz reads "
+                                         "glTF 2.0)", gltf::one_line(text)));
 }
 
 // The glTF extensions Luz reads. One that a file lists in extensionsRequired and that is not
@@ -262,8 +264,8 @@ void check_required_extensions(const Source& source, const nlohmann::json& doc) 
   for (const nlohmann::json& name : *required)
     if (name.is_string() && !is_implemented(name.get<std::string>()))
       source.fail(ErrorKind::bad_value,
-                  fmt::format("requires the glTF extension {}, which Luz does not implement",
-                              gltf::one_line(name.get<std::string>())));
+                  trf("requires the glTF extension {}, which Luz does not implement",
+                      gltf::one_line(name.get<std::string>())));
 }
 
 // glTF: aspectRatio, when present, is > 0 (tinygltf reads an absent one as 0, which the camera
@@ -278,8 +280,8 @@ void check_camera_aspects(const Source& source, const nlohmann::json& doc) {
     const nlohmann::json& p = camera["perspective"];
     if (auto a = p.find("aspectRatio"); a != p.end() && a->is_number() && !(a->get<double>() > 0.0))
       source.fail(ErrorKind::bad_value,
-                  fmt::format("camera {}: aspectRatio {} is not positive (leave it out to use the "
-                              "image's aspect)", i, a->dump()));
+                  trf("camera {}: aspectRatio {} is not positive (leave it out to use the "
+                      "image's aspect)", i, a->dump()));
   }
 }
 
@@ -291,11 +293,11 @@ void check_before_parsing(const Source& source, const std::string& text) {
   try {
     doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::out_of_range& e) {  // 406: number overflow, e.g. 1e999
-    source.fail(ErrorKind::not_finite, fmt::format("a number is not finite ({})", json_error(e)));
+    source.fail(ErrorKind::not_finite, trf("a number is not finite ({})", json_error(e)));
   } catch (const nlohmann::json::exception& e) {
-    source.fail(ErrorKind::not_gltf, fmt::format("not glTF: the JSON does not parse ({})", json_error(e)));
+    source.fail(ErrorKind::not_gltf, trf("not glTF: the JSON does not parse ({})", json_error(e)));
   }
-  if (!doc.is_object()) source.fail(ErrorKind::not_gltf, "not glTF: the JSON is not an object");
+  if (!doc.is_object()) source.fail(ErrorKind::not_gltf, tr("not glTF: the JSON is not an object"));
   check_version(source, doc);
   check_required_extensions(source, doc);
   check_camera_aspects(source, doc);
@@ -312,24 +314,24 @@ void check_before_parsing(const Source& source, const std::string& text) {
       long long has = -1;
       if (is_data_uri(uri)) {
         has = data_uri_size(uri);
-        if (has < 0) source.fail(ErrorKind::not_gltf, element + ": its data URI is not base64");
+        if (has < 0) source.fail(ErrorKind::not_gltf, trf("{}: its data URI is not base64", element));
       } else {
         check_uri(source, element, uri);
         const fs::path file = source.folder / percent_decode(uri);
         std::error_code ec;
         if (!fs::is_regular_file(file, ec))
           source.fail(ErrorKind::file_missing,
-                      fmt::format("{}: \"{}\" does not exist or is not a file", element, uri));
+                      trf("{}: \"{}\" does not exist or is not a file", element, uri));
         has = static_cast<long long>(fs::file_size(file, ec));
       }
       if (declared >= 0 && has < declared)
         source.fail(ErrorKind::truncated_buffer,
-                    fmt::format("{} \"{}\" is cut short (has {} bytes, byteLength says {})", element,
-                                is_data_uri(uri) ? "data URI" : uri, has, declared));
+                    trf("{} \"{}\" is cut short (has {} bytes, byteLength says {})", element,
+                        is_data_uri(uri) ? "data URI" : uri, has, declared));
       if (declared >= 0 && has > declared)  // tinygltf insists on the exact size
         source.fail(ErrorKind::bad_value,
-                    fmt::format("{} \"{}\" has {} bytes but byteLength says {}", element,
-                                is_data_uri(uri) ? "data URI" : uri, has, declared));
+                    trf("{} \"{}\" has {} bytes but byteLength says {}", element,
+                        is_data_uri(uri) ? "data URI" : uri, has, declared));
     }
   }
 
@@ -344,28 +346,28 @@ void check_before_parsing(const Source& source, const std::string& text) {
         const std::string uri = image["uri"].get<std::string>();
         if (!is_data_uri(uri)) check_uri(source, element, uri);
         else if (uri.rfind(";base64,") != std::string::npos && data_uri_size(uri) < 0)
-          source.fail(ErrorKind::not_gltf, element + ": its data URI is not base64");
+          source.fail(ErrorKind::not_gltf, trf("{}: its data URI is not base64", element));
       }
       const long long view = json_size(image, "bufferView");
       if (!image.contains("bufferView")) continue;
       const size_t view_count = views ? views->size() : 0;
       if (view < 0 || size_t(view) >= view_count)
         source.fail(ErrorKind::index_out_of_range,
-                    fmt::format("{}: bufferView {} is out of range ({} bufferViews)", element,
-                                image["bufferView"].dump(), view_count));
+                    trf("{}: bufferView {} is out of range ({} bufferViews)", element,
+                        image["bufferView"].dump(), view_count));
       const nlohmann::json& bv = (*views)[size_t(view)];
       const long long buffer = json_size(bv, "buffer");
       if (buffer < 0 || size_t(buffer) >= buffer_lengths.size())
         source.fail(ErrorKind::index_out_of_range,
-                    fmt::format("bufferView {}: buffer {} is out of range ({} buffers)", view,
-                                buffer, buffer_lengths.size()));
+                    trf("bufferView {}: buffer {} is out of range ({} buffers)", view,
+                        buffer, buffer_lengths.size()));
       const long long offset = std::max(json_size(bv, "byteOffset"), 0LL);
       const long long length = json_size(bv, "byteLength");
       const long long available = buffer_lengths[size_t(buffer)];
       if (length < 1 || available < 0 || offset > available || length > available - offset)
         source.fail(ErrorKind::truncated_buffer,
-                    fmt::format("bufferView {} of {} reaches past the end of buffer {} (needs {} "
-                                "bytes, has {})", view, element, buffer, offset + length, available));
+                    trf("bufferView {} of {} reaches past the end of buffer {} (needs {} "
+                        "bytes, has {})", view, element, buffer, offset + length, available));
     }
   }
 }
@@ -424,7 +426,7 @@ ErrorKind kind_of_tinygltf_error(const std::string& err) {
 void check_float_range(const Context& ctx, const std::vector<double>& values, const std::string& what) {
   for (double v : values)
     if (!std::isfinite(float(v)))
-      ctx.fail(ErrorKind::not_finite, fmt::format("{} is not finite ({} is beyond float range)", what, v));
+      ctx.fail(ErrorKind::not_finite, trf("{} is not finite ({} is beyond float range)", what, v));
 }
 
 // The node's local matrix: `matrix`, or T * R * S (glTF).
@@ -438,25 +440,25 @@ glm::dmat4 local_transform(const Context& ctx, const tinygltf::Node& node, const
     // 0 0 0 1. Another last row (0 0 0 0 collapses every point onto w = 0) is no placement.
     const std::vector<double>& m = node.matrix;
     if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0)
-      ctx.fail(ErrorKind::bad_value, fmt::format("{}: matrix's last row is {} {} {} {}, not 0 0 0 1",
-                                                 what, m[3], m[7], m[11], m[15]));
+      ctx.fail(ErrorKind::bad_value, trf("{}: matrix's last row is {} {} {} {}, not 0 0 0 1",
+                                         what, m[3], m[7], m[11], m[15]));
     return glm::make_mat4(node.matrix.data());  // column-major, as glTF
   }
   if (!node.matrix.empty())
-    ctx.fail(ErrorKind::bad_value, fmt::format("{}: matrix has {} numbers, not 16", what, node.matrix.size()));
+    ctx.fail(ErrorKind::bad_value, trf("{}: matrix has {} numbers, not 16", what, node.matrix.size()));
   glm::dmat4 t(1.0), r(1.0), s(1.0);
   if (node.translation.size() == 3) t[3] = glm::dvec4(glm::make_vec3(node.translation.data()), 1.0);
-  else if (!node.translation.empty()) ctx.fail(ErrorKind::bad_value, what + ": translation needs 3 numbers");
+  else if (!node.translation.empty()) ctx.fail(ErrorKind::bad_value, trf("{}: translation needs 3 numbers", what));
   if (node.rotation.size() == 4) {
     // glTF stores x, y, z, w; glm's constructor takes w first.
     const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-    if (!(glm::length(q) > 0.0)) ctx.fail(ErrorKind::bad_value, what + ": rotation is a zero quaternion");
+    if (!(glm::length(q) > 0.0)) ctx.fail(ErrorKind::bad_value, trf("{}: rotation is a zero quaternion", what));
     r = glm::mat4_cast(glm::normalize(q));
   } else if (!node.rotation.empty()) {
-    ctx.fail(ErrorKind::bad_value, what + ": rotation needs 4 numbers");
+    ctx.fail(ErrorKind::bad_value, trf("{}: rotation needs 4 numbers", what));
   }
   if (node.scale.size() == 3) s = glm::scale(glm::dmat4(1.0), glm::make_vec3(node.scale.data()));
-  else if (!node.scale.empty()) ctx.fail(ErrorKind::bad_value, what + ": scale needs 3 numbers");
+  else if (!node.scale.empty()) ctx.fail(ErrorKind::bad_value, trf("{}: scale needs 3 numbers", what));
   return t * r * s;
 }
 
@@ -493,7 +495,7 @@ void walk_nodes(const Context& ctx, int default_material, Scene& scene) {
     const tinygltf::Node& node = model.nodes[size_t(pending.node)];
     const std::string what = describe("node", size_t(pending.node), node.name);
     if (visited[size_t(pending.node)])
-      ctx.fail(ErrorKind::bad_value, what + ": reached twice; the node hierarchy must be a tree");
+      ctx.fail(ErrorKind::bad_value, trf("{}: reached twice; the node hierarchy must be a tree", what));
     visited[size_t(pending.node)] = true;
 
     const glm::dmat4 to_world = pending.parent_to_world * local_transform(ctx, node, what);
@@ -528,7 +530,7 @@ void read_scene_extras(const Context& ctx, Scene& scene) {
     scene.exposure = gltf::read_number(ctx, *v, what + ": extras.exposure");
   for (const Rgb* c : {&scene.ambient, &scene.background})
     if (c->r < 0.0f || c->g < 0.0f || c->b < 0.0f)
-      ctx.fail(ErrorKind::bad_value, what + ": extras.ambient and extras.background must not be negative");
+      ctx.fail(ErrorKind::bad_value, trf("{}: extras.ambient and extras.background must not be negative", what));
 }
 
 }  // namespace
@@ -542,12 +544,12 @@ LoadedScene load_gltf(const fs::path& path) {
   source.file = path.string();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
-    source.fail(ErrorKind::file_missing, "no such file (or not a regular file)");
+    source.fail(ErrorKind::file_missing, tr("no such file (or not a regular file)"));
   source.folder = fs::weakly_canonical(fs::absolute(path).parent_path(), ec);
   std::ifstream probe(path, std::ios::binary);
-  if (!probe) source.fail(ErrorKind::file_missing, "cannot be read");
+  if (!probe) source.fail(ErrorKind::file_missing, tr("cannot be read"));
   const std::vector<unsigned char> bytes = read_bytes(path);
-  if (bytes.size() > 0xFFFFFFF0u) source.fail(ErrorKind::bad_value, "files over 4 GB are not supported");
+  if (bytes.size() > 0xFFFFFFF0u) source.fail(ErrorKind::bad_value, tr("files over 4 GB are not supported"));
 
   // A .glb starts with the magic "glTF"; anything else is taken as JSON text.
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -570,9 +572,9 @@ LoadedScene load_gltf(const fs::path& path) {
                                                       size, base_dir);
   if (!ok) {
     const ErrorKind kind = kind_of_tinygltf_error(err);
-    source.fail(kind, fmt::format("{} (tinygltf: {})",
-                                  kind == ErrorKind::not_gltf ? "not valid glTF 2.0" : "cannot load",
-                                  first_line(err)));
+    source.fail(kind, trf("{} (tinygltf: {})",
+                          kind == ErrorKind::not_gltf ? "not valid glTF 2.0" : "cannot load",
+                          first_line(err)));
   }
   // tinygltf's warnings about images are replaced by ours (which name the URI and say what is
   // used instead); the others are passed on.
@@ -583,7 +585,7 @@ LoadedScene load_gltf(const fs::path& path) {
       ctx.warn("tinygltf: " + first_line(line));
 
   for (const std::string& name : model.extensionsUsed)
-    if (!is_implemented(name)) ctx.warn(fmt::format("the glTF extension {} is not implemented; ignored", name));
+    if (!is_implemented(name)) ctx.warn(trf("the glTF extension {} is not implemented; ignored", name));
 
   Scene& scene = loaded.scene;
   scene.path = source.file;
@@ -596,7 +598,7 @@ LoadedScene load_gltf(const fs::path& path) {
     for (const std::string& warning : loaded.warnings)
       if (warning.rfind(source.file + ": mesh ", 0) == 0)
         why += "; " + warning.substr(source.file.size() + 2);
-    source.fail(ErrorKind::no_triangles, "no triangles to draw in the default scene" + why);
+    source.fail(ErrorKind::no_triangles, tr("no triangles to draw in the default scene") + why);
   }
   if (std::any_of(scene.meshes.begin(), scene.meshes.end(),
                   [&](const Mesh& m) { return m.material == default_material; }))
@@ -606,7 +608,7 @@ LoadedScene load_gltf(const fs::path& path) {
   scene.find_area_lights();
   if (io::has_no_lights(scene)) {
     io::add_default_lights(scene);
-    ctx.warn(io::kDefaultLightsNotice);
+    ctx.warn(tr(io::kDefaultLightsNotice));
   }
   return loaded;
 }

@@ -29,15 +29,15 @@ namespace {
 // (1e39, say) is as unusable as infinity and is reported as such.
 float to_float(const Context& ctx, double value, const std::string& what) {
   const float f = float(value);
-  if (std::isnan(f)) ctx.fail(ErrorKind::not_finite, what + " is NaN");
-  if (!std::isfinite(f)) ctx.fail(ErrorKind::not_finite, what + " is infinite");
+  if (std::isnan(f)) ctx.fail(ErrorKind::not_finite, trf("{} is NaN", what));
+  if (!std::isfinite(f)) ctx.fail(ErrorKind::not_finite, trf("{} is infinite", what));
   return f;
 }
 
 Rgb to_rgb(const Context& ctx, const std::vector<double>& values, size_t expected,
            const std::string& what) {
   if (values.size() != expected)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} has {} numbers, not {}", what, values.size(), expected));
+    ctx.fail(ErrorKind::bad_value, trf("{} has {} numbers, not {}", what, values.size(), expected));
   return Rgb(to_float(ctx, values[0], what), to_float(ctx, values[1], what),
              to_float(ctx, values[2], what));
 }
@@ -47,14 +47,14 @@ Rgb to_rgb(const Context& ctx, const std::vector<double>& values, size_t expecte
 // a warning, so every renderer stays finite. (glTF limits baseColorFactor to [0, 1] itself.)
 Rgb clamp_to_one(const Context& ctx, Rgb c, const std::string& what) {
   if (c.r <= 1.0f && c.g <= 1.0f && c.b <= 1.0f) return c;
-  ctx.warn(fmt::format("{} ({:.3g}, {:.3g}, {:.3g}) is above 1; clamped to 1", what, c.r, c.g, c.b));
+  ctx.warn(trf("{} ({:.3g}, {:.3g}, {:.3g}) is above 1; clamped to 1", what, c.r, c.g, c.b));
   for (int i = 0; i < 3; ++i) c[i] = std::min(c[i], 1.0f);
   return c;
 }
 
 void require_non_negative(const Context& ctx, const Rgb& c, const std::string& what) {
   if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} ({}, {}, {}) is negative", what, c.r, c.g, c.b));
+    ctx.fail(ErrorKind::bad_value, trf("{} ({}, {}, {}) is negative", what, c.r, c.g, c.b));
 }
 
 // A short label for an image in messages: its URI when it has one (data URIs are not printed,
@@ -73,13 +73,13 @@ int texture_for_image(const Context& ctx, int index, std::map<int, int>& texture
   Texture texture;  // 1x1 white until decoded
   auto bytes = ctx.image_bytes.find(index);
   if (bytes == ctx.image_bytes.end()) {
-    ctx.warn(label + ": cannot be read; using a white texture");
+    ctx.warn(trf("{}: cannot be read; using a white texture", label));
   } else {
     std::string error;
     if (std::optional<Texture> decoded = decode_texture(bytes->second, label, error))
       texture = std::move(*decoded);
     else
-      ctx.warn(fmt::format("{}: cannot be decoded ({}); using a white texture", label, error));
+      ctx.warn(trf("{}: cannot be decoded ({}); using a white texture", label, error));
   }
   texture.name = !image.name.empty() ? image.name
                  : !image.uri.empty() && image.uri.rfind("data:", 0) != 0
@@ -104,9 +104,9 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   const float metallic = to_float(ctx, pbr.metallicFactor, field("metallicFactor"));
   const float roughness = to_float(ctx, pbr.roughnessFactor, field("roughnessFactor"));
   if (metallic < 0.0f || metallic > 1.0f)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is outside [0, 1]", field("metallicFactor"), metallic));
+    ctx.fail(ErrorKind::bad_value, trf("{} {} is outside [0, 1]", field("metallicFactor"), metallic));
   if (roughness < 0.0f || roughness > 1.0f)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is outside [0, 1]", field("roughnessFactor"), roughness));
+    ctx.fail(ErrorKind::bad_value, trf("{} {} is outside [0, 1]", field("roughnessFactor"), roughness));
 
   const tinygltf::Value& extras = source.extras;
   m.kd = base * (1.0f - metallic);
@@ -145,9 +145,9 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
     m.emission = to_rgb(ctx, source.emissiveFactor, 3, field("emissiveFactor")) * strength;
   if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field("emitted radiance is infinite"));
   if (std::max({m.emission.r, m.emission.g, m.emission.b}) > kMaxEmitted)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} ({:.3g}) is above {:.0e}; sums of it would overflow",
-                                               field("emitted radiance"),
-                                               std::max({m.emission.r, m.emission.g, m.emission.b}), kMaxEmitted));
+    ctx.fail(ErrorKind::bad_value, trf("{} ({:.3g}) is above {:.0e}; sums of it would overflow",
+                                       field("emitted radiance"),
+                                       std::max({m.emission.r, m.emission.g, m.emission.b}), kMaxEmitted));
 
   m.ka = clamp_to_one(ctx, m.ka, field("ka"));
   m.ks = clamp_to_one(ctx, m.ks, field("ks"));
@@ -162,21 +162,21 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   require_non_negative(ctx, m.emission, field("emission"));
   require_non_negative(ctx, strength * Rgb(1.0f), field("emissiveStrength"));
   if (m.shininess < 0.0f)
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is negative", field("shininess"), m.shininess));
+    ctx.fail(ErrorKind::bad_value, trf("{} {} is negative", field("shininess"), m.shininess));
   if (!(m.ior > 0.0f))
-    ctx.fail(ErrorKind::bad_value, fmt::format("{} {} is not positive", field("ior"), m.ior));
+    ctx.fail(ErrorKind::bad_value, trf("{} {} is not positive", field("ior"), m.ior));
 
   if (const int t = pbr.baseColorTexture.index; t != -1) {
     ctx.check_index(t, ctx.model.textures.size(), field("baseColorTexture"), "textures");
     const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
     if (texture.source == -1) {
-      ctx.warn(fmt::format("{}: texture {} has no image; ignored", what, t));
+      ctx.warn(trf("{}: texture {} has no image; ignored", what, t));
     } else {
       ctx.check_index(texture.source, ctx.model.images.size(),
                       fmt::format("texture {}: source", t), "images");
       if (pbr.baseColorTexture.texCoord != 0)
-        ctx.warn(fmt::format("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
-                             what, pbr.baseColorTexture.texCoord));
+        ctx.warn(trf("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
+                     what, pbr.baseColorTexture.texCoord));
       m.kd_texture = texture_for_image(ctx, texture.source, textures, scene);
     }
   }
@@ -189,8 +189,8 @@ void check_energy(const Context& ctx, const Material& m, const std::string& what
   const Rgb sum = m.kd + m.kr + m.kt;
   constexpr float kSlack = 1e-5f;  // float rounding of sums that are exactly 1 on paper
   if (sum.r > 1.0f + kSlack || sum.g > 1.0f + kSlack || sum.b > 1.0f + kSlack)
-    ctx.warn(fmt::format("{}: kd + kr + kt = ({:.3g}, {:.3g}, {:.3g}) exceeds 1; it reflects more "
-                         "light than it receives", what, sum.r, sum.g, sum.b));
+    ctx.warn(trf("{}: kd + kr + kt = ({:.3g}, {:.3g}, {:.3g}) exceeds 1; it reflects more "
+                 "light than it receives", what, sum.r, sum.g, sum.b));
 }
 
 }  // namespace
@@ -211,7 +211,7 @@ void apply_texture_transform(const Context& ctx, int material, std::vector<glm::
     const tinygltf::Value* v = member(*transform, key);
     if (!v) return fallback;
     if (!v->IsArray() || v->ArrayLen() != 2)
-      ctx.fail(ErrorKind::bad_value, fmt::format("{}.{} must be [u, v]", what, key));
+      ctx.fail(ErrorKind::bad_value, trf("{}.{} must be [u, v]", what, key));
     return glm::vec2(read_number(ctx, v->Get(0), what + "." + key),
                      read_number(ctx, v->Get(1), what + "." + key));
   };
@@ -220,7 +220,7 @@ void apply_texture_transform(const Context& ctx, int material, std::vector<glm::
   const tinygltf::Value* r = member(*transform, "rotation");
   const float rotation = r ? read_number(ctx, *r, what + ".rotation") : 0.0f;
   if (const tinygltf::Value* t = member(*transform, "texCoord"); t && t->IsNumber() && t->GetNumberAsInt() != 0)
-    ctx.warn(fmt::format("{}.texCoord {} is ignored; TEXCOORD_0 is read", what, t->GetNumberAsInt()));
+    ctx.warn(trf("{}.texCoord {} is ignored; TEXCOORD_0 is read", what, t->GetNumberAsInt()));
   const float c = std::cos(rotation), s = std::sin(rotation);
   for (glm::vec2& uv : uvs) {
     const glm::vec2 scaled = scale * uv;

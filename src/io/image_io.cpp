@@ -22,9 +22,12 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::io {
 namespace fs = std::filesystem;
+using i18n::tr;
+using i18n::trf;
 
 namespace {
 
@@ -135,13 +138,13 @@ constexpr int64_t kMaxCompressionRatio = 4096;
 // The caps on an image of width x height with `pixel_bytes` bytes a pixel, and for a PNG or
 // JPEG of `encoded_bytes` (0: not one) what so many bytes can hold: an empty string when it passes.
 std::string size_problem(int64_t width, int64_t height, int64_t pixel_bytes, uintmax_t encoded_bytes) {
-  if (width <= 0 || height <= 0) return "image has no pixels";
+  if (width <= 0 || height <= 0) return tr("image has no pixels");
   if (width > kMaxImageSide || height > kMaxImageSide || width * height > kMaxImagePixels)
-    return fmt::format("{} x {} pixels is beyond the limit of {} per side and {} in all", width, height,
-                       kMaxImageSide, kMaxImagePixels);
+    return trf("{} x {} pixels is beyond the limit of {} per side and {} in all", width, height, kMaxImageSide,
+               kMaxImagePixels);
   if (encoded_bytes > 0 && width * height * pixel_bytes / kMaxCompressionRatio > int64_t(encoded_bytes))
-    return fmt::format("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)",
-                       width, height, encoded_bytes, kMaxCompressionRatio);
+    return trf("{} x {} pixels cannot come from {} bytes (more than {}:1; the file is cut or its header lies)", width,
+               height, encoded_bytes, kMaxCompressionRatio);
   return {};
 }
 
@@ -190,7 +193,7 @@ std::optional<std::pair<uint32_t, uint32_t>> claimed_size(std::span<const unsign
 std::string header_problem(std::span<const unsigned char> head, uintmax_t file_bytes) {
   const auto size = claimed_size(head);
   const std::string problem = size ? size_problem(size->first, size->second, 1, file_bytes) : std::string();
-  return problem.empty() ? problem : "header: " + problem;
+  return problem.empty() ? problem : trf("header: {}", problem);
 }
 
 bool is_png_or_jpeg(const OIIO::ImageInput& input) {
@@ -205,14 +208,14 @@ bool is_png_or_jpeg(const OIIO::ImageInput& input) {
 std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, std::string& error) {
   const OIIO::ImageSpec& spec = input.spec();
   if (spec.nchannels <= 0) {
-    error = "image has no pixels";
+    error = tr("image has no pixels");
     return std::nullopt;
   }
   error = size_problem(spec.width, spec.height, int64_t(spec.pixel_bytes(true)),
                        is_png_or_jpeg(input) ? encoded_bytes : 0);
   if (!error.empty()) return std::nullopt;
   if (spec.nchannels > 16) {
-    error = fmt::format("{} channels is beyond the limit of 16", spec.nchannels);
+    error = trf("{} channels is beyond the limit of 16", spec.nchannels);
     return std::nullopt;
   }
   // 8 and 16-bit files (PNG, JPEG) are read in their own format straight into our buffer and
@@ -259,7 +262,7 @@ bool is_supported_output(const fs::path& path) {
 
 void write_image(const Image& image, const fs::path& path, float exposure) {
   if (!is_supported_output(path))
-    throw Error(ErrorKind::usage, fmt::format("{}: output must be .png or .exr", path.string()));
+    throw Error(ErrorKind::usage, trf("{}: output must be .png or .exr", path.string()));
   const bool exr = lower_extension(path) == ".exr";
   // The last guard for every renderer: a NaN or infinite radiance is a bug upstream, and a file
   // that hides it (PNG clamps it to black or white) would only move the surprise elsewhere.
@@ -267,16 +270,16 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
     const Rgb& c = image.pixels[i];
     if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
       throw Error(ErrorKind::output,
-                  fmt::format("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
-                              i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
-                              c.r, c.g, c.b));
+                  trf("{}: not written: pixel ({}, {}) is not finite ({}, {}, {})", path.string(),
+                      i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
+                      c.r, c.g, c.b));
   }
   const fs::path temporary = temporary_beside(path);
   const TemporaryGuard guard(temporary);
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    return Error(ErrorKind::output, fmt::format("{}: cannot write: {}", path.string(), why));
+    return Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), why));
   };
 
   auto output = OIIO::ImageOutput::create(temporary.string());
@@ -300,7 +303,7 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
 
 Image read_image(const fs::path& path) {
   if (!fs::exists(path))
-    throw Error(ErrorKind::file_missing, fmt::format("{}: no such file", path.string()));
+    throw Error(ErrorKind::file_missing, trf("{}: no such file", path.string()));
   std::error_code no_size;
   const uintmax_t file_bytes = fs::file_size(path, no_size);
   {
@@ -318,7 +321,7 @@ Image read_image(const fs::path& path) {
   }
   if (!input)
     throw Error(ErrorKind::bad_value,
-                fmt::format("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
+                trf("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
   std::string error;
   std::optional<Image> image = read_rgb(*input, file_bytes, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
@@ -338,7 +341,7 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
                        : starts_with({0xff, 0xd8, 0xff})                           ? "jpeg"
                                                                                    : nullptr;
   if (!format) {
-    error = "not a PNG or JPEG image";
+    error = tr("not a PNG or JPEG image");
     return std::nullopt;
   }
   error = header_problem(bytes, bytes.size());
@@ -352,8 +355,8 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
     opened = input->open(std::string("texture.") + format, spec);
   }
   if (!opened) {
-    error = fmt::format("not a readable {} image{}", format == std::string("png") ? "PNG" : "JPEG",
-                        input && input->has_error() ? ": " + one_line(input->geterror()) : std::string());
+    error = trf("not a readable {} image{}", format == std::string("png") ? "PNG" : "JPEG",
+                input && input->has_error() ? ": " + one_line(input->geterror()) : std::string());
     (void)OIIO::geterror();  // clear OpenImageIO's pending message
     return std::nullopt;
   }

@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "gl/functions.h"
 #include "gl/mesh_buffers.h"
 #include "gl/shader.h"
@@ -163,9 +164,9 @@ void ShadowMaps::allocate(int size, int layers) {
     const int largest =
         gl::largest_allocatable_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, gl::power_of_two_below(size));
     throw Error(ErrorKind::usage,
-                fmt::format("--shadow-map-size {}: this OpenGL context has no memory for {} shadow-map "
-                            "layers of {}x{} ({}); use --shadow-map-size {} or less", size, layers, size,
-                            size, gl_version_string(), largest));
+                i18n::trf("--shadow-map-size {}: this OpenGL context has no memory for {} shadow-map "
+                          "layers of {}x{} ({}); use --shadow-map-size {} or less", size, layers, size,
+                          size, gl_version_string(), largest));
   }
   // texelFetch only: the lookup picks one texel, as the CPU twin does.
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -227,9 +228,9 @@ void ShadowMaps::update(const Scene& scene, std::span<const AreaLight> area_ligh
   // as an incomplete framebuffer below).
   if (const int largest = gl::largest_square_array(GL_R32F, GL_RED, GL_FLOAT, layers, size); largest < size)
     throw Error(ErrorKind::usage,
-                fmt::format("--shadow-map-size {}: this OpenGL context holds {} shadow-map layers of at "
-                            "most {}x{} ({}); use --shadow-map-size {} or less", size, layers, largest,
-                            largest, gl_version_string(), largest));
+                i18n::trf("--shadow-map-size {}: this OpenGL context holds {} shadow-map layers of at "
+                          "most {}x{} ({}); use --shadow-map-size {} or less", size, layers, largest,
+                          largest, gl_version_string(), largest));
   allocate(size, layers);
 
   // The passes: every layer cleared to "nothing in the way", then the scene's depth drawn in.

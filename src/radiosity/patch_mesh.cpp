@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz {
 namespace {
@@ -54,9 +55,9 @@ float longest_edge(const Mesh& mesh) {
       const float length = glm::length(b - a);
       if (!std::isfinite(length))
         throw Error(ErrorKind::not_finite,
-                    fmt::format("radiosity: mesh \"{}\", triangle {}: an edge from ({:g}, {:g}, "
-                                "{:g}) to ({:g}, {:g}, {:g}) has no finite length", mesh.name, t,
-                                a.x, a.y, a.z, b.x, b.y, b.z));
+                    i18n::trf("radiosity: mesh \"{}\", triangle {}: an edge from ({:g}, {:g}, "
+                              "{:g}) to ({:g}, {:g}, {:g}) has no finite length", mesh.name, t,
+                              a.x, a.y, a.z, b.x, b.y, b.z));
       longest = std::max(longest, length);
     }
   // Areas are squares of lengths: a triangle 1e20 m across has no float area.
@@ -66,9 +67,9 @@ float longest_edge(const Mesh& mesh) {
                                        mesh.positions[mesh.indices[3 * t + 2]] - a);
     if (!std::isfinite(glm::length(cross)))
       throw Error(ErrorKind::not_finite,
-                  fmt::format("radiosity: mesh \"{}\", triangle {}: its area overflows a float "
-                              "(edges up to {:g} m); radiosity needs finite areas", mesh.name, t,
-                              longest));
+                  i18n::trf("radiosity: mesh \"{}\", triangle {}: its area overflows a float "
+                            "(edges up to {:g} m); radiosity needs finite areas", mesh.name, t,
+                            longest));
   }
   return longest;
 }
@@ -206,15 +207,15 @@ double PatchMesh::element_count(const Scene& scene, float max_edge, int elements
 PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_edge) {
   const int k = elements_per_edge;
   if (k < 1 || k > kMaxElementsPerEdge)
-    throw Error(ErrorKind::bad_value, fmt::format("radiosity: {} elements per patch edge, expected "
-                                                  "1 .. {}", k, kMaxElementsPerEdge));
+    throw Error(ErrorKind::bad_value, i18n::trf("radiosity: {} elements per patch edge, expected "
+                                                "1 .. {}", k, kMaxElementsPerEdge));
   const double elements = element_count(scene, max_edge, k);
   if (elements > kMaxElements)
     throw Error(ErrorKind::bad_value,
-                fmt::format("radiosity: patch size {:g} m with {} x {} elements per patch would "
-                            "make {:.3g} elements, more than the budget of {:.3g} (about 300 bytes "
-                            "each); use a larger patch size or fewer elements per patch",
-                            max_edge, k, k, elements, kMaxElements));
+                i18n::trf("radiosity: patch size {:g} m with {} x {} elements per patch would "
+                          "make {:.3g} elements, more than the budget of {:.3g} (about 300 bytes "
+                          "each); use a larger patch size or fewer elements per patch",
+                          max_edge, k, k, elements, kMaxElements));
   PatchMesh result;
   result.max_edge = max_edge;
   result.elements_per_edge = k;

@@ -4,6 +4,7 @@
 //           [the loop] [state]
 #include "radiosity/shooting.h"
 
+#include "core/i18n.h"
 #include "radiosity/polygon_form_factor.h"
 
 #include <algorithm>
@@ -58,9 +59,9 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
     const Light& light = scene.lights[k];
     if (!light.enabled) continue;
     if (light.type == LightType::directional) {
-      warnings_.push_back(fmt::format("radiosity: directional light \"{}\" is not shot (a light "
-                                      "at infinity has no place for a cube of item buffers); "
-                                      "it is ignored", light.name));
+      warnings_.push_back(i18n::trf("radiosity: directional light \"{}\" is not shot (a light "
+                                    "at infinity has no place for a cube of item buffers); "
+                                    "it is ignored", light.name));
       continue;
     }
     lights_.push_back(k);

@@ -14,6 +14,15 @@ mkdir -p "$out"
 cd "$out"
 # A scene the viewer must refuse while keeping the one it shows.
 printf '{ "asset": { "version": "2.0" }, "meshes": [ {' > broken.gltf
+# A scene that loads with a warning (it brings no light: the default lights, said in the window).
+cat > unlit.gltf <<'EOF'
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+EOF
 # -noreset: by default an X server resets when its last client leaves, and `luz` first checks
 # that a display is there (a connection it closes) before opening its window (a second one); on
 # a loaded machine the second connection can fall into the reset and fail.

@@ -1,4 +1,4 @@
-#include "app/i18n.h"
+#include "core/i18n.h"
 
 #include <atomic>
 #include <cstdint>
