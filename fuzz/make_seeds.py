@@ -1,26 +1,60 @@
 #!/usr/bin/env python3
-"""Writes the glTF fuzzer's seed corpus to fuzz/seeds/: small files (a few hundred bytes to 2 kB)
-that between them use every part of the format the loader reads, so that libFuzzer's mutations
-start from inputs that reach deep into it (accessors, sparse accessors, materials, textures with
-KHR_texture_transform, vertex colours, the three light types, cameras, node transforms, GLB).
+"""Writes the fuzzers' seed corpora: small files that between them use every part of the format
+their target reads, so that libFuzzer's mutations start from inputs that reach deep into it.
 Small seeds keep each execution short: 10^6 of them fit in an hour.
-  fuzz/make_seeds.py        (rewrites fuzz/seeds/)
+- fuzz/seeds/ (glTF loader, a few hundred bytes to 2 kB): accessors, sparse accessors, materials,
+  textures with KHR_texture_transform, vertex colours, the three light types, cameras, node
+  transforms, GLB;
+- fuzz/image_seeds/ (image decoder, under 1 kB): PNGs of every colour type the readers decode
+  (grey, grey 16-bit, RGB, RGBA, palette) and, when Debian's cjpeg (libjpeg-turbo-progs) is on
+  the PATH, baseline, greyscale and progressive JPEGs of a 2x2 picture.
+  fuzz/make_seeds.py        (rewrites both)
 """
 import base64
 import json
 import pathlib
+import shutil
 import struct
+import subprocess
 import zlib
 
 OUT = pathlib.Path(__file__).resolve().parent / "seeds"
+IMAGE_OUT = pathlib.Path(__file__).resolve().parent / "image_seeds"
+
+
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def png_of(width, height, colour_type, bit_depth, rows, extra=b""):
+    """A PNG of already filtered rows (a filter byte, 0, before each)."""
+    header = struct.pack(">IIBBBBB", width, height, bit_depth, colour_type, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + extra + chunk(b"IDAT", zlib.compress(rows)) +
+            chunk(b"IEND", b""))
 
 
 def png(width, height, rgb):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
     rows = b"".join(b"\0" + bytes(rgb[3 * width * y:3 * width * (y + 1)]) for y in range(height))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+    return png_of(width, height, 2, 8, rows)
+
+
+def write_image_seeds():
+    IMAGE_OUT.mkdir(exist_ok=True)
+    rgb = [255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255]
+    (IMAGE_OUT / "rgb2x2.png").write_bytes(png(2, 2, rgb))
+    (IMAGE_OUT / "rgb4x3.png").write_bytes(png(4, 3, list(range(36))))
+    (IMAGE_OUT / "grey2x2.png").write_bytes(png_of(2, 2, 0, 8, b"\0\x10\x80\0\xff\x40"))
+    (IMAGE_OUT / "grey16_1x1.png").write_bytes(png_of(1, 1, 0, 16, b"\0\x12\x34"))
+    (IMAGE_OUT / "rgba1x2.png").write_bytes(png_of(1, 2, 6, 8, b"\0\xff\0\0\x80\0\0\xff\0\xff"))
+    (IMAGE_OUT / "palette2x1.png").write_bytes(png_of(2, 1, 3, 8, b"\0\0\1", chunk(b"PLTE", b"\xff\0\0\0\0\xff")))
+    cjpeg = shutil.which("cjpeg")
+    if not cjpeg:
+        print("cjpeg not found (apt-get install libjpeg-turbo-progs): no JPEG seeds")
+        return
+    ppm = b"P6\n2 2\n255\n" + bytes(rgb)
+    for name, flags in (("rgb2x2.jpg", ["-quality", "90"]), ("grey2x2.jpg", ["-grayscale"]),
+                        ("progressive2x2.jpg", ["-progressive"])):
+        (IMAGE_OUT / name).write_bytes(subprocess.run([cjpeg, *flags], input=ppm, capture_output=True, check=True).stdout)
 
 
 def data_uri(mime, data):
@@ -132,7 +166,8 @@ def main():
     (OUT / "lit_textured.gltf").write_text(lit_textured().text())
     (OUT / "lit_textured.glb").write_bytes(lit_textured().glb())
     (OUT / "emissive_sparse.gltf").write_text(emissive_sparse().text())
-    for path in sorted(OUT.iterdir()):
+    write_image_seeds()
+    for path in sorted(OUT.iterdir()) + sorted(IMAGE_OUT.iterdir()):
         print(f"{path}: {path.stat().st_size} bytes")
 
 
