@@ -48,6 +48,11 @@ done
   --out "$out/whitted-radiosity.png"
 "$luz" render "$root/scenes/phong_spheres.gltf" --model radiosity --size 480x360 -q \
   --out "$out/phong_spheres-radiosity.png"
+# Whitted's scene at the radiosity defaults and with finer elements (docs/radiosity-meshing.md).
+"$luz" render "$root/scenes/whitted.gltf" --model radiosity --size 480x360 -q \
+  --out "$out/whitted-radiosity-elements4.png"
+"$luz" render "$root/scenes/whitted.gltf" --model radiosity --elements 8 --size 480x360 -q \
+  --out "$out/whitted-radiosity-elements8.png"
 # The hybrid (slides 41-43) on the Cornell spheres, beside radiosity and Whitted alone; the
 # radiosity solution is the same in the first and the last (3000 patches, 1% unshot).
 spheres="$root/scenes/cornell_spheres.gltf"

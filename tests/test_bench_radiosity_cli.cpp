@@ -17,13 +17,17 @@ using test::run_luz;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// The cells of the table's data rows: "| 1024 | 310 | ... |" lines that start with a number.
+// The cells of the table's data rows: "| rays | 1024 | 310 | ... |" lines whose second cell is a
+// number.
 std::vector<std::vector<std::string>> table_rows(const std::string& output) {
   std::vector<std::vector<std::string>> rows;
   std::istringstream lines(output);
   std::string line;
   while (std::getline(lines, line)) {
-    if (line.size() < 3 || line[0] != '|' || !std::isdigit(static_cast<unsigned char>(line[2]))) continue;
+    const size_t second = line.find("| ", 1);
+    if (line.size() < 3 || line[0] != '|' || second == std::string::npos || second + 2 >= line.size() ||
+        !std::isdigit(static_cast<unsigned char>(line[second + 2])))
+      continue;
     std::vector<std::string> cells;
     std::istringstream parts(line.substr(1));
     std::string cell;
@@ -42,8 +46,9 @@ TEST(BenchRadiosityCli, PrintsOneRowPerPatchCount) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
   for (const char* part : {"cornell_box", "hemicube 64", "shots/s", "draw ms", "update ms"})
     EXPECT_TRUE(contains(result.output, part)) << part << " in " << result.output;
+  // One row per patch count for each form-factor method, rays first, then the hemicube.
   const auto rows = table_rows(result.output);
-  ASSERT_EQ(rows.size(), 2u) << result.output;
+  ASSERT_EQ(rows.size(), 4u) << result.output;
   // The criterion the header states: "until unshot < C of the emitted power".
   const size_t at = result.output.find("until unshot < ");
   ASSERT_NE(at, std::string::npos) << result.output;
@@ -51,17 +56,18 @@ TEST(BenchRadiosityCli, PrintsOneRowPerPatchCount) {
   const size_t targets[2] = {60, 240};
   for (size_t k = 0; k < rows.size(); ++k) {
     const auto& row = rows[k];
-    ASSERT_EQ(row.size(), 9u) << result.output;
+    ASSERT_EQ(row.size(), 10u) << result.output;
+    EXPECT_EQ(row[0], k < 2 ? "rays" : "hemicube");
     // The mesh is subdivided to about the patch count asked for (square patches on walls whose
     // sides are not multiples of the patch size: within a factor of 2).
-    const double patches = std::stod(row[0]);
-    EXPECT_GT(patches, 0.5 * double(targets[k])) << row[0];
-    EXPECT_LT(patches, 2.0 * double(targets[k])) << row[0];
-    EXPECT_GT(std::stoi(row[1]), 0) << "shots";
+    const double patches = std::stod(row[1]);
+    EXPECT_GT(patches, 0.5 * double(targets[k % 2])) << row[1];
+    EXPECT_LT(patches, 2.0 * double(targets[k % 2])) << row[1];
+    EXPECT_GT(std::stoi(row[2]), 0) << "shots";
     // Converged within the 20 s cap: the time is given, and what is left unshot (in percent,
     // rounded to two decimals) is not above the criterion.
-    EXPECT_TRUE(row[7].ends_with(" s")) << row[7];
-    EXPECT_LE(std::stod(row[8]), 100.0 * criterion) << row[8];
+    EXPECT_TRUE(row[8].ends_with(" s")) << row[8];
+    EXPECT_LE(std::stod(row[9]), 100.0 * criterion) << row[9];
   }
 }
 

@@ -609,6 +609,7 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
     RadiosityOptions options;
     options.hemicube_res = 64;
     options.max_shots = 5;
+    options.pixel_samples = 1;  // a crack shows in one sample, not averaged away
     ProgressiveSolver solver(scene, mesh, options);
     while (solver.step()) {}
     RadiosityRenderer renderer(scene, mesh);
@@ -628,6 +629,43 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
     EXPECT_EQ(background, 0) << "patch size " << size;
     EXPECT_GT(highlighted, 0) << "patch size " << size;
   }
+}
+
+// Supersampling is a box filter: 16 pictures shifted on a 4 x 4 grid over the pixel average to
+// what one picture at 4 x the size gives, each 4 x 4 block of its pixels averaged (their
+// centres are the same points of the screen).
+TEST(RadiosityRenderer, PixelSamplesAreABoxFilterOverThePixel) {
+  const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
+  const Scene& scene = loaded.scene;
+  const PatchMesh mesh = PatchMesh::build(scene, 0.1f);
+  RadiosityOptions options;
+  options.max_shots = 20;
+  ProgressiveSolver solver(scene, mesh, options);
+  while (solver.step()) {}
+  RadiosityRenderer renderer(scene, mesh);
+  renderer.update(RadianceField::of(solver), options);
+  const int size = 48;
+  options.pixel_samples = 16;
+  const Image supersampled = renderer.render(scene.cameras.front(), size, size, options);
+  options.pixel_samples = 1;
+  const Image large = renderer.render(scene.cameras.front(), 4 * size, 4 * size, options);
+  const Image single = renderer.render(scene.cameras.front(), size, size, options);
+  double off = 0.0, total = 0.0, edges = 0.0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      Rgb block(0.0f);
+      for (int dy = 0; dy < 4; ++dy)
+        for (int dx = 0; dx < 4; ++dx) block += large.at(4 * x + dx, 4 * y + dy) / 16.0f;
+      for (int c = 0; c < 3; ++c) {
+        off += std::abs(double(supersampled.at(x, y)[c]) - double(block[c]));
+        edges += std::abs(double(single.at(x, y)[c]) - double(block[c]));
+        total += double(block[c]);
+      }
+    }
+  printf("16 samples against the 4x picture's blocks: %.2e of the light apart; 1 sample: %.2e\n",
+         off / total, edges / total);
+  EXPECT_LT(off / total, 1e-3);
+  EXPECT_GT(edges / total, 10.0 * off / total) << "one sample a pixel is not the block mean at edges";
 }
 
 }  // namespace

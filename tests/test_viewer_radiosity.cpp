@@ -144,6 +144,7 @@ TEST_F(ViewerRadiosity, TheLightSpreadsAsTheShotsGoOn) {
   EXPECT_GT(share_moved(later, codes(file("heat.png")), 8), 0.5);
 }
 
+// The viewer draws each frame once; `luz render` then draws one sample per pixel too.
 TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   const nlohmann::json converged = json_of(file("converged.json"));
   EXPECT_TRUE(converged["done"].get<bool>());
@@ -154,7 +155,7 @@ TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", scene().string(), "--model", "radiosity", "--patch-size", "0.1",
                                      "--hemicube-res", "128", "--converge", "0.01", "--size",
-                                     viewer.size(), "--out",
+                                     viewer.size(), "--pixel-samples", "1", "--out",
                                      out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::smatch shots;

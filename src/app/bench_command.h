@@ -34,7 +34,13 @@ struct RadiosityBenchSettings {
   // With a reference picture (linear EXR of the scene's first camera, e.g. a converged Mitsuba
   // render): instead of the table above, the time-to-error curve of each way of solving.
   std::string reference;
+  // Which ways of solving the curve compares (names of kRadiosityWays); empty: all.
+  std::vector<std::string> ways;
 };
+
+// The ways of solving `luz bench radiosity --reference` compares, by the names --ways takes.
+inline constexpr const char* kRadiosityWays[] = {"uniform", "hemicube", "analytic", "overshoot",
+                                                 "rays", "rays-ambient"};
 
 // Prints a Markdown table to stdout; returns the exit code.
 int run_radiosity_bench(const RadiosityBenchSettings& settings);

@@ -57,7 +57,8 @@ double mean_relative_error(const Image& image, const Image& reference) {
 }
 
 struct Way {
-  const char* name;
+  const char* key;   // as --ways names it
+  const char* name;  // as the table prints it
   RadiosityOptions options;
 };
 
@@ -72,15 +73,27 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
   RadiosityOptions substructured = RadiosityOptions{};
   substructured.form_factors = FormFactorMethod::hemicube;
   RadiosityOptions analytic = RadiosityOptions{};
-  RadiosityOptions overshot = RadiosityOptions{};
+  analytic.form_factors = FormFactorMethod::analytic;
+  RadiosityOptions overshot = analytic;
   overshot.overshoot = 1.5f;
-  const Way ways[] = {{"uniform (every element shoots), hemicube", uniform},
-                      {"substructured 4x4, hemicube", substructured},
-                      {"substructured 4x4, analytic (the default)", analytic},
-                      {"substructured 4x4, analytic, overshoot 1.5", overshot}};
+  RadiosityOptions rays = RadiosityOptions{};
+  rays.form_factors = FormFactorMethod::rays;
+  RadiosityOptions rays_ambient = rays;
+  rays_ambient.ambient_estimate = true;
+  const Way ways[] = {{"uniform", "uniform (every element shoots), hemicube", uniform},
+                      {"hemicube", "substructured 4x4, hemicube", substructured},
+                      {"analytic", "substructured 4x4, analytic", analytic},
+                      {"overshoot", "substructured 4x4, analytic, overshoot 1.5", overshot},
+                      {"rays", "substructured 4x4, rays", rays},
+                      {"rays-ambient", "substructured 4x4, rays, shown with the ambient estimate", rays_ambient}};
+  const auto chosen = [&](const Way& way) {
+    return settings.ways.empty() ||
+           std::find(settings.ways.begin(), settings.ways.end(), way.key) != settings.ways.end();
+  };
   fmt::print("| way | patches | elements | seconds solving | shots | unshot | error over lit pixels |\n");
   fmt::print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   for (const Way& way : ways) {
+    if (!chosen(way)) continue;
     RadiosityOptions options = way.options;
     options.hemicube_res = settings.hemicube_res;
     options.converge = 1e-4f;
@@ -122,35 +135,38 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
     fmt::print("luz bench radiosity: {}, hemicube {}, until unshot < {:g} of the emitted power or "
                "{:g} s\n{}; {}\n\n", path, settings.hemicube_res, settings.converge,
                settings.seconds, cpu_model(), gl_version_string());
-    fmt::print("| patches | shots | shots/s | draw ms | read ms | accumulate ms | update ms | "
+    fmt::print("| form factors | patches | shots | shots/s | draw ms | read ms | accumulate ms | update ms | "
                "time to {:g}% | unshot at the end |\n", 100.0 * settings.converge);
-    fmt::print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
-    for (const int target : settings.patches) {
-      const float size = PatchMesh::patch_size_for(loaded.scene, size_t(target));
-      const PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
-      RadiosityOptions options;
-      options.hemicube_res = settings.hemicube_res;
-      options.converge = settings.converge;
-      ProgressiveSolver solver(loaded.scene, mesh, options);
-      RowTimes sum;
-      double update = 0.0;
-      const auto start = std::chrono::steady_clock::now();
-      double elapsed = 0.0;
-      while (elapsed < settings.seconds && solver.step()) {
-        sum.draw += solver.last_row_times().draw;
-        sum.read += solver.last_row_times().read;
-        sum.accumulate += solver.last_row_times().accumulate;
-        update += solver.last_update_seconds();
-        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const FormFactorMethod method : {FormFactorMethod::rays, FormFactorMethod::hemicube}) {
+      for (const int target : settings.patches) {
+        const float size = PatchMesh::patch_size_for(loaded.scene, size_t(target));
+        const PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
+        RadiosityOptions options;
+        options.hemicube_res = settings.hemicube_res;
+        options.converge = settings.converge;
+        options.form_factors = method;
+        ProgressiveSolver solver(loaded.scene, mesh, options);
+        RowTimes sum;
+        double update = 0.0;
+        const auto start = std::chrono::steady_clock::now();
+        double elapsed = 0.0;
+        while (elapsed < settings.seconds && solver.step()) {
+          sum.draw += solver.last_row_times().draw;
+          sum.read += solver.last_row_times().read;
+          sum.accumulate += solver.last_row_times().accumulate;
+          update += solver.last_update_seconds();
+          elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        }
+        const double shots = std::max(1, solver.shots());
+        const bool converged = solver.unshot_fraction() < double(settings.converge);
+        fmt::print("| {} | {} | {} | {:.0f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.2f}% |\n",
+                   to_string(method), mesh.size(), solver.shots(), solver.shots() / elapsed, 1e3 * sum.draw / shots,
+                   1e3 * sum.read / shots, 1e3 * sum.accumulate / shots, 1e3 * update / shots,
+                   converged ? fmt::format("{:.1f} s", elapsed) : std::string("not within the cap"),
+                   100.0 * solver.unshot_fraction());
+        std::fflush(stdout);
       }
-      const double shots = std::max(1, solver.shots());
-      const bool converged = solver.unshot_fraction() < double(settings.converge);
-      fmt::print("| {} | {} | {:.0f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.2f}% |\n",
-                 mesh.size(), solver.shots(), solver.shots() / elapsed, 1e3 * sum.draw / shots,
-                 1e3 * sum.read / shots, 1e3 * sum.accumulate / shots, 1e3 * update / shots,
-                 converged ? fmt::format("{:.1f} s", elapsed) : std::string("not within the cap"),
-                 100.0 * solver.unshot_fraction());
-      std::fflush(stdout);
     }
     return 0;
   } catch (const Error& error) {

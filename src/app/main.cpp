@@ -167,7 +167,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
   bench_radiosity->add_option("--reference", radiosity_bench.reference,
                               tr("Converged picture (linear EXR, first camera): print the error against it over "
-                                 "time for uniform, substructured, analytic and overshot shooting instead"));
+                                 "time for uniform, substructured, analytic, overshot and ray-cast shooting instead"));
+  bench_radiosity->add_option("--ways", radiosity_bench.ways,
+                              tr("With --reference: the ways to compare (uniform, hemicube, analytic, overshoot, "
+                                 "rays, rays-ambient; default all)"))
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kRadiosityWays),
+                                                     std::end(luz::app::kRadiosityWays))));
   bench_radiosity->add_option("--seconds", radiosity_bench.seconds, tr("Time cap per patch count"))
       ->check(finite_number)->check(CLI::PositiveNumber)->capture_default_str();
 

@@ -20,7 +20,7 @@ namespace {
   [](Options& o, double v) { o.field = decltype(o.field)(v); }
 
 constexpr const char* fog_modes[] = {"off", "linear", "exponential"};  // FogMode's order
-constexpr const char* form_factor_methods[] = {"hemicube", "analytic"};  // FormFactorMethod's order
+constexpr const char* form_factor_methods[] = {"hemicube", "analytic", "rays"};  // FormFactorMethod's order
 
 bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
 bool square(double v) { return rt::is_square(int(v)); }
@@ -128,10 +128,14 @@ const RadiosityRow radiosity_table[] = {
      N_("radiosity/hybrid: shoot W x the unshot radiosity (1: plain shooting)"), double(kMinOvershoot),
      double(kMaxOvershoot), LUZ_FIELD(RadiosityOptions, overshoot)},
     {"form-factors", "--form-factors", "radiosity", OptionKind::choice,
-     N_("radiosity/hybrid: the hemicube's delta form factors, or analytic (Lambert's contour integral from each "
-     "element to the shooter, the hemicube giving visibility)"), 0, 1,
+     N_("radiosity/hybrid: the hemicube's delta form factors; analytic (Lambert's contour integral from each "
+     "element to the shooter, the hemicube giving visibility); or rays (the same integral, visibility by rays "
+     "to points of the shooter, no hemicube)"), 0, 2,
      [](const RadiosityOptions& o) { return double(int(o.form_factors)); },
      [](RadiosityOptions& o, double v) { o.form_factors = FormFactorMethod(int(v)); }, form_factor_methods},
+    {"visibility-rays", "--visibility-rays", "radiosity", OptionKind::integer,
+     N_("radiosity/hybrid: with --form-factors rays, rays from each element to the shooter per shot"), 1,
+     double(kMaxVisibilityRays), LUZ_FIELD(RadiosityOptions, visibility_rays)},
     {"rotation", nullptr, "radiosity", OptionKind::on_off, N_("turn the hemicube about the normal at every shot"), 0, 1,
      LUZ_FIELD(RadiosityOptions, random_rotation)},
     {"ambient-estimate", "--ambient-estimate", "radiosity", OptionKind::on_off,
@@ -141,6 +145,10 @@ const RadiosityRow radiosity_table[] = {
      N_("radiosity: one colour per patch instead of Gouraud shading"), 0, 1, LUZ_FIELD(RadiosityOptions, flat_patches)},
     {"outlines", "--outlines", "radiosity-display", OptionKind::on_off, N_("radiosity: draw the patch edges"), 0, 1,
      LUZ_FIELD(RadiosityOptions, outlines)},
+    {"pixel-samples", "--pixel-samples", "radiosity-display", OptionKind::integer,
+     N_("radiosity: samples per pixel of the picture, on a sqrt(N) x sqrt(N) grid (1: aliased edges, as the "
+     "viewer draws)"), 1, double(kMaxPixelSamples), LUZ_FIELD(RadiosityOptions, pixel_samples), {}, square,
+     N_("a square: 1, 4, 9, 16, ...")},
 };
 
 #undef LUZ_FIELD

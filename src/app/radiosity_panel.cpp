@@ -177,12 +177,18 @@ void mesh_settings(RadiosityState& r) {
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
   dim_text(pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
-  int analytic = o.form_factors == FormFactorMethod::analytic ? 1 : 0;
-  ImGui::RadioButton(tr("hemicube form factors"), &analytic, 0);
+  int method = int(o.form_factors);  // FormFactorMethod's order
+  ImGui::RadioButton(tr("hemicube form factors"), &method, 0);
   name_widget("hemicube form factors");
-  ImGui::RadioButton(tr("analytic near the shooter"), &analytic, 1);
+  ImGui::RadioButton(tr("analytic near the shooter"), &method, 1);
   name_widget("analytic near the shooter");
-  o.form_factors = analytic == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemicube;
+  ImGui::RadioButton(tr("analytic, visibility by rays"), &method, 2);
+  name_widget("analytic, visibility by rays");
+  o.form_factors = FormFactorMethod(method);
+  if (o.form_factors == FormFactorMethod::rays) {
+    ImGui::SliderInt(tr("rays per element"), &o.visibility_rays, 1, 16);
+    name_widget("rays per element");
+  }
   const SliderRange overshoot = radiosity_range("overshoot");
   ImGui::SliderFloat(tr("overshoot"), &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
   name_widget("overshoot");
@@ -289,6 +295,8 @@ void draw_item_buffer_window(ViewerState& state, float side) {
     r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
     dim_text(tr("top face, 4 half faces folded out; a colour per patch"));
     dim_text(tr("black: no patch (an open side) or a patch's back"));
+    if (r.options.form_factors == FormFactorMethod::rays)
+      dim_text(tr("(form factors by rays: this hemicube is drawn for the window only)"));
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     ImGui::TextUnformatted(s.shooter.c_str());
     dim_text(tr("a point light: shot through a cube of 6 item buffers"));

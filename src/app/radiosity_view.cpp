@@ -36,6 +36,7 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
   o.converge = state.options.converge;
   o.overshoot = state.options.overshoot;
   o.form_factors = state.options.form_factors;
+  o.visibility_rays = state.options.visibility_rays;
   o.ambient_estimate = state.options.ambient_estimate;
   o.flat_patches = state.options.flat_patches;
   o.outlines = state.options.outlines;
@@ -117,6 +118,10 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
   }
   // The overlay: the item buffer of the last patch that shot (lights shoot through their own cube).
   if (drive.show_item_buffer && solver_.last_shooter() >= 0 && item_view_shot_ != solver_.shots()) {
+    if (o.form_factors == FormFactorMethod::rays) {  // rays draw no hemicube: draw it for the window
+      const ShootingPatch& p = solver_.mesh().shooters[size_t(solver_.last_shooter())];
+      solver_.hemicube().row(p.centre, p.normal, p.clearance, 0.0f);
+    }
     item_view_.update(solver_.hemicube());
     item_view_shot_ = solver_.shots();
   }

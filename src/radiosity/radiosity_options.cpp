@@ -9,7 +9,12 @@
 namespace luz {
 
 const char* to_string(FormFactorMethod method) {
-  return method == FormFactorMethod::hemicube ? "hemicube" : "analytic";
+  switch (method) {
+    case FormFactorMethod::hemicube: return "hemicube";
+    case FormFactorMethod::analytic: return "analytic";
+    case FormFactorMethod::rays: return "rays";
+  }
+  return "?";
 }
 
 std::string RadiosityOptions::to_string() const {
@@ -21,7 +26,10 @@ std::string RadiosityOptions::to_string() const {
                                          : fmt::format("until unshot < {:.3g}", converge);
   return fmt::format("RadiosityOptions [{}, hemicube {}{}, {} form factors, {}{}{}{}{}]", mesh,
                      hemicube_res, random_rotation ? " rotated" : "",
-                     luz::to_string(form_factors), stop,
+                     form_factors == FormFactorMethod::rays
+                         ? fmt::format("rays ({} per element)", visibility_rays)
+                         : luz::to_string(form_factors),
+                     stop,
                      overshoot != 1.0f ? fmt::format(", overshoot {:g}", overshoot) : "",
                      ambient_estimate ? ", ambient estimate" : "", flat_patches ? ", flat" : "",
                      outlines ? ", outlines" : "");
@@ -40,6 +48,13 @@ void RadiosityOptions::validate() const {
   if (hemicube_res < kMinHemicubeRes || hemicube_res > kMaxHemicubeRes || hemicube_res % 2 != 0)
     refuse(fmt::format("hemicube resolution {} must be even and in {} .. {}", hemicube_res,
                        kMinHemicubeRes, kMaxHemicubeRes));
+  if (visibility_rays < 1 || visibility_rays > kMaxVisibilityRays)
+    refuse(fmt::format("{} visibility rays per element, expected 1 .. {}", visibility_rays,
+                       kMaxVisibilityRays));
+  const int root = int(std::lround(std::sqrt(double(pixel_samples))));
+  if (pixel_samples < 1 || pixel_samples > kMaxPixelSamples || root * root != pixel_samples)
+    refuse(fmt::format("{} samples per pixel, expected a square in 1 .. {}", pixel_samples,
+                       kMaxPixelSamples));
   if (max_shots < 0) refuse(fmt::format("{} shots must not be negative", max_shots));
   if (!std::isfinite(converge) || converge < 0.0f || converge >= 1.0f)
     refuse(fmt::format("convergence threshold {} must be in [0, 1) (0 = run until --shots)", converge));

@@ -6,8 +6,8 @@
 
 namespace luz {
 
-enum class FormFactorMethod { hemicube, analytic };
-const char* to_string(FormFactorMethod method);  // "hemicube", "analytic"
+enum class FormFactorMethod { hemicube, analytic, rays };
+const char* to_string(FormFactorMethod method);  // "hemicube", "analytic", "rays"
 
 struct RadiosityOptions {
   // ---- Meshing (slide 40, "Mallado - Subestructuracion") ----
@@ -28,9 +28,13 @@ struct RadiosityOptions {
   // Lambert's exact contour integral from the element to the patch polygon
   // (polygon_form_factor.h), right where the point-to-area estimate fails, next to the shooter
   // (the proximity error of Baum, Rushmeier & Winget 1989).
-  FormFactorMethod form_factors = FormFactorMethod::analytic;
+  // rays: no hemicube; F is the same contour integral and the visibility the fraction of
+  // `visibility_rays` rays from the element to points of the patch that arrive
+  // (ray_form_factors.h; Wallace, Elmquist & Haines 1989).
+  FormFactorMethod form_factors = FormFactorMethod::rays;
+  int visibility_rays = 4;
   bool random_rotation = true;  // turn the hemicube about the normal at every shot (aliasing)
-  uint32_t seed = 1;            // of those rotations: the same seed gives the same solution
+  uint32_t seed = 1;            // of those rotations and the rays: the same seed, the same solution
 
   // ---- The shooting loop (slide 39) ----
   int max_shots = 0;        // stop after this many shots (lights included); 0 = no limit
@@ -45,6 +49,10 @@ struct RadiosityOptions {
   bool ambient_estimate = false;  // add Cohen et al.'s ambient term for the light not yet shot
   bool flat_patches = false;      // one colour per patch instead of Gouraud-interpolated vertices
   bool outlines = false;          // draw the patch edges over the picture
+  // A headless picture is drawn this many times (a square), each shifted within the pixel on a
+  // regular grid, and averaged: the box filter the tracers' supersampling also has, so that
+  // edges compare with theirs. The viewer draws once.
+  int pixel_samples = 16;
 
   std::string to_string() const;
   // Throws luz::Error (bad_value) naming the first setting that is non-finite or out of its
@@ -52,6 +60,8 @@ struct RadiosityOptions {
   void validate() const;
 };
 
+inline constexpr int kMaxVisibilityRays = 64;
+inline constexpr int kMaxPixelSamples = 256;
 inline constexpr float kMinOvershoot = 1.0f;
 inline constexpr float kMaxOvershoot = 1.9f;
 

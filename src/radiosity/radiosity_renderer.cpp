@@ -1,8 +1,10 @@
 #include "radiosity/radiosity_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
@@ -89,7 +91,7 @@ void RadiosityRenderer::update(const RadianceField& field, const RadiosityOption
 }
 
 void RadiosityRenderer::draw(const Camera& camera, int width, int height,
-                             const RadiosityOptions& options, int highlight) {
+                             const RadiosityOptions& options, int highlight, glm::vec2 shift) {
   Impl& s = *impl_;
   glViewport(0, 0, width, height);
   glEnable(GL_DEPTH_TEST);
@@ -107,8 +109,11 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
   // A finite far plane past the farthest patch from the camera.
   const float far = glm::length(camera.position() - s.mesh.vertices.front()) + 2.0f * s.far;
   s.program.use();
+  // A shift of (dx, dy) pixels is 2 dx / width in normalised device coordinates.
+  const glm::mat4 shifted = glm::translate(
+      glm::mat4(1.0f), glm::vec3(2.0f * shift.x / float(width), 2.0f * shift.y / float(height), 0.0f));
   s.program.set("u_view_projection",
-                camera.projection(float(width) / float(height), far) * camera.view());
+                shifted * camera.projection(float(width) / float(height), far) * camera.view());
   s.program.set("u_outline", false);
   const bool lit = highlight >= 0 && size_t(highlight) < s.mesh.shooters.size();
   s.program.set("u_highlight_first", lit ? int(s.mesh.shooters[size_t(highlight)].first) : -1);
@@ -141,8 +146,17 @@ Image RadiosityRenderer::render(const Camera& camera, int width, int height,
   GLint previous = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
   s.target->bind();
-  draw(camera, width, height, options, highlight);
-  Image image = s.target->read();
+  const int root = std::max(1, int(std::lround(std::sqrt(double(options.pixel_samples)))));
+  Image image(width, height);
+  for (int sy = 0; sy < root; ++sy)
+    for (int sx = 0; sx < root; ++sx) {  // cell centres of a root x root grid, about the pixel's
+      const glm::vec2 shift((float(sx) + 0.5f) / float(root) - 0.5f, (float(sy) + 0.5f) / float(root) - 0.5f);
+      draw(camera, width, height, options, highlight, shift);
+      const Image pass = s.target->read();
+      for (size_t k = 0; k < image.pixels.size(); ++k) image.pixels[k] += pass.pixels[k];
+    }
+  const float weight = 1.0f / float(root * root);
+  for (Rgb& p : image.pixels) p *= weight;
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   return image;
 }

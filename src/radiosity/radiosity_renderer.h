@@ -4,6 +4,8 @@
 // patch outlines. Back sides of patches are black (they have no radiosity).
 #include <memory>
 
+#include <glm/vec2.hpp>
+
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
@@ -27,9 +29,11 @@ public:
 
   // Draws into the currently bound framebuffer of the given size. `highlight`: a shooting patch
   // (all its elements) drawn in a flat highlight colour (the solver's last shooter), -1 for none.
+  // `shift`: the picture moved by that fraction of a pixel (a sample position in the pixel).
   void draw(const Camera& camera, int width, int height, const RadiosityOptions& options,
-            int highlight = -1);
-  // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
+            int highlight = -1, glm::vec2 shift = glm::vec2(0.0f));
+  // Renders into a float framebuffer and reads back linear radiance (row 0 at the top), the mean
+  // of options.pixel_samples pictures at the points of a regular grid over the pixel.
   Image render(const Camera& camera, int width, int height, const RadiosityOptions& options,
                int highlight = -1);
 

@@ -5,6 +5,7 @@
 #include "radiosity/shooting.h"
 
 #include "core/i18n.h"
+#include "radiosity/element_form_factor.h"
 #include "radiosity/polygon_form_factor.h"
 
 #include <algorithm>
@@ -13,6 +14,8 @@
 #include <numbers>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
 namespace luz {
@@ -116,9 +119,11 @@ void ProgressiveSolver::shoot(size_t i) {
   // and leaves (1 - w) times it behind.
   const float w = options_.overshoot;
   glm::dvec3 shot_power_rgb(0.0);
+  sent_.clear();
   for (uint32_t k = shooter.first; k < shooter.first + shooter.count; ++k) {
     const uint32_t e = mesh_.members[k];
     const Rgb sent = w * unshot_[e];
+    sent_.push_back(sent);
     shot_power_rgb += glm::dvec3(sent) * double(mesh_.patches[e].area);
     radiosity_[e] += sent;
     unshot_[e] -= sent;
@@ -127,22 +132,28 @@ void ProgressiveSolver::shoot(size_t i) {
   const Rgb shot = Rgb(shot_power_rgb / double(shooter.area));
 
   // para cada j: calcular F_ji;  carga[j] = carga[j] + rho_j F_ji carga[i]
-  const std::vector<FormFactor>& row =
-      hemicube_.row(shooter.centre, shooter.normal, shooter.clearance, rotation);
-  row_times_ = hemicube_.last_times();
+  const std::vector<FormFactor>& row = this->row(i, rotation);
   const auto update_start = std::chrono::steady_clock::now();
-  const double shot_power = power(shot, shooter.area);
-  double row_sum = 0.0;
-  for (const FormFactor& f : row) {
-    const Patch& receiver = mesh_.patches[f.patch];
-    const double F_ij = form_factor_to(shooter, f);
-    const float F_ji = float(F_ij * double(shooter.area) / double(receiver.area));  // reciprocity
-    receive(f.patch, receiver.rho * F_ji * shot);
-    // Of the power F_ij * (shot * A_i) arriving at j, rho_j is reflected, the rest absorbed.
-    tally_.absorbed += F_ij * power((Rgb(1.0f) - receiver.rho) * shot, shooter.area);
-    row_sum += F_ij;
+  // The power arriving at each j, F_ij A_i x what i sends (on TBB's threads: the analytic
+  // factors are most of a shot's work); by reciprocity j's unshot radiosity then grows by
+  // rho_j F_ji x what i sends, F_ji = F_ij A_i / A_j.
+  arriving_.resize(row.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, row.size(), 128), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t k = r.begin(); k != r.end(); ++k) {
+      const Patch& receiver = mesh_.patches[row[k].patch];
+      const double F_ij = form_factor_to(shooter, row[k]);
+      arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot);
+    }
+  });
+  double delivered = 0.0;
+  for (size_t k = 0; k < row.size(); ++k) {
+    const Patch& receiver = mesh_.patches[row[k].patch];
+    receive(row[k].patch, receiver.rho * arriving_[k] / receiver.area);
+    // Of what arrives, rho_j is reflected, the rest absorbed.
+    tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * arriving_[k]);
+    delivered += mean(arriving_[k]);
   }
-  tally_.escaped += (1.0 - row_sum) * shot_power;
+  tally_.escaped += power(shot, shooter.area) - delivered;
   update_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - update_start).count();
   ++shots_;
   record(int(i));
@@ -154,8 +165,7 @@ void ProgressiveSolver::shoot(size_t i) {
 // point, the hemicube's eye), and integrates the rest exactly: F_ji by Lambert's contour
 // integral from element j to the patch's triangle, so F_ij = visible * F_ji A_j / A_i. Every
 // receiver of the row is done so (mixing two estimates in one row would not sum to what the
-// patch sends); the quadrature over the element grows next to the patch, where the integrand
-// varies fastest (polygon_form_factor.h).
+// patch sends).
 double ProgressiveSolver::form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const {
   if (options_.form_factors != FormFactorMethod::analytic) return double(hemicube.value);
   const Patch& element = mesh_.patches[hemicube.patch];
@@ -166,21 +176,55 @@ double ProgressiveSolver::form_factor_to(const ShootingPatch& shooter, const For
   const double unoccluded = point_to_polygon_form_factor(eye, shooter.normal, corners);
   if (!(unoccluded > 0.0)) return double(hemicube.value);
   const double visible = double(hemicube.value) / unoccluded;
+  return visible * element_to_patch_form_factor(mesh_, element, shooter) * double(element.area) /
+         double(shooter.area);
+}
 
-  float radius = 0.0f, element_radius = 0.0f;
-  for (int k = 0; k < 3; ++k) {
-    radius = std::max(radius, glm::length(shooter.corners[k] - shooter.centre));
-    element_radius = std::max(element_radius, glm::length(corners[k] - element.centre));
+// The shooter's row F_ij: from its hemicube, or cast with rays (which need no GL and are
+// timed as the row's "draw").
+const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) {
+  const ShootingPatch& shooter = mesh_.shooters[i];
+  if (options_.form_factors != FormFactorMethod::rays) {
+    const std::vector<FormFactor>& row =
+        hemicube_.row(shooter.centre, shooter.normal, shooter.clearance, rotation);
+    row_times_ = hemicube_.last_times();
+    return row;
   }
-  const float distance = glm::length(element.centre - shooter.centre);
-  double F_ji = 0.0;
-  if (distance > kNearRadii * radius)  // far: the element's centroid stands for it
-    F_ji = point_to_polygon_form_factor(element.centre, element.normal, shooter.corners);
-  else  // near: 12 points, 48 next to the patch (a row then sums to 1 within 0.1% in a box)
-    F_ji = triangle_to_polygon_form_factor(corners[0], corners[1], corners[2], element.normal,
-                                           shooter.corners,
-                                           distance < 2.0f * (radius + element_radius) ? 2 : 1);
-  return visible * F_ji * double(element.area) / double(shooter.area);
+  if (!rays_) rays_ = std::make_unique<RayFormFactors>(scene_, mesh_);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<FormFactor>& row =
+      rays_->row(i, options_.visibility_rays, options_.seed, uint32_t(shots_));
+  row_times_ = RowTimes{};
+  row_times_.draw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return row;
+}
+
+// What element j receives of the shot, per square metre the shooter sends it: the patch's
+// area-weighted mean `shot`, except, with the analytic methods, next to the patch (where the
+// shooter is not small seen from j), where each of its elements counts with its own form factor
+// from j: the mean of its elements' sent radiosity weighted by F(j -> element). A patch half
+// under a block then lights the block's foot with its bright half, as its elements would.
+Rgb ProgressiveSolver::seen_from(const ShootingPatch& shooter, const Patch& receiver,
+                                 const Rgb& shot) const {
+  if (options_.form_factors == FormFactorMethod::hemicube || shooter.count < 2) return shot;
+  float radius = 0.0f;
+  for (const glm::vec3& c : shooter.corners) radius = std::max(radius, glm::length(c - shooter.centre));
+  if (glm::length(receiver.centre - shooter.centre) > kNearRadii * radius) return shot;
+  const glm::vec3 corners[3] = {mesh_.vertices[receiver.vertices[0]],
+                                mesh_.vertices[receiver.vertices[1]],
+                                mesh_.vertices[receiver.vertices[2]]};
+  glm::dvec3 weighted(0.0);
+  double total = 0.0;
+  for (uint32_t k = 0; k < shooter.count; ++k) {
+    const Patch& part = mesh_.patches[mesh_.members[shooter.first + k]];
+    const glm::vec3 polygon[3] = {mesh_.vertices[part.vertices[0]], mesh_.vertices[part.vertices[1]],
+                                  mesh_.vertices[part.vertices[2]]};
+    const double F = triangle_to_polygon_form_factor(corners[0], corners[1], corners[2],
+                                                     receiver.normal, polygon);
+    weighted += F * glm::dvec3(sent_[k]);
+    total += F;
+  }
+  return total > 0.0 ? Rgb(weighted / total) : shot;
 }
 
 void ProgressiveSolver::receive(size_t element, const Rgb& gain) {
@@ -194,7 +238,12 @@ void ProgressiveSolver::receive(size_t element, const Rgb& gain) {
 // light), so its irradiance is Phi_j / A_j and it gains rho_j Phi_j / A_j of unshot exitance.
 void ProgressiveSolver::shoot_light(size_t k) {
   const Light& light = scene_.lights[lights_[k]];
-  const std::vector<FormFactor>& omegas = cube_->solid_angles(light);
+  if (options_.form_factors == FormFactorMethod::rays && !rays_)
+    rays_ = std::make_unique<RayFormFactors>(scene_, mesh_);
+  const std::vector<FormFactor>& omegas =
+      options_.form_factors == FormFactorMethod::rays
+          ? rays_->solid_angles(light, 4 * options_.visibility_rays, options_.seed, uint32_t(shots_))
+          : cube_->solid_angles(light);
   row_times_ = RowTimes{};
   double delivered = 0.0;
   for (const FormFactor& f : omegas) {

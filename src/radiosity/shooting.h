@@ -9,7 +9,8 @@
 //   3. display every patch with radiosity + unshot
 //   4. repeat until no difference shows (the unshot power is a small part of the emitted one)
 //
-// F_ji comes from the hemicube row of the shooter, F_ij, by reciprocity: F_ji = F_ij A_i / A_j.
+// F_ji comes from the shooter's row F_ij by reciprocity, F_ji = F_ij A_i / A_j; the row from its
+// hemicube, or cast with rays (options.form_factors, ray_form_factors.h).
 // The scene's punctual lights are shot first, each once, as point sources (point_source.h).
 //
 // Substructuring (patch_mesh.h): i runs over the shooting patches and j over the elements. Each
@@ -41,6 +42,7 @@
 #include "radiosity/item_buffer.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/point_source.h"
+#include "radiosity/ray_form_factors.h"
 #include "radiosity/radiosity_options.h"
 
 namespace luz {
@@ -66,11 +68,6 @@ struct EnergyTally {
 
 class ProgressiveSolver {
 public:
-  // With FormFactorMethod::analytic, elements whose centre lies within this many of the
-  // shooting patch's radii (centroid to farthest corner) are integrated over their area; the
-  // others from their centroid.
-  static constexpr float kNearRadii = 3.0f;
-
   // Needs a current GL context (the hemicube draws through it) for its whole life. `mesh` and
   // `scene` must outlive the solver. Directional lights are not shot (no position to put a
   // cube at): warnings() says so.
@@ -128,6 +125,8 @@ private:
   size_t most_unshot_patch() const;
   static double power(const Rgb& exitance, float area);
   double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
+  const std::vector<FormFactor>& row(size_t shooter, float rotation);
+  Rgb seen_from(const ShootingPatch& shooter, const Patch& receiver, const Rgb& shot) const;
   // Element j's unshot radiosity grows by `gain` (its patch's unshot power with it).
   void receive(size_t element, const Rgb& gain);
 
@@ -136,12 +135,15 @@ private:
   RadiosityOptions options_;
   PatchItems items_;
   Hemicube hemicube_;
+  std::unique_ptr<RayFormFactors> rays_;  // made at the first shot with FormFactorMethod::rays
   std::unique_ptr<PointSource> cube_;  // made when the scene has punctual lights
   std::vector<size_t> lights_;         // the scene's lights that shoot (enabled point and spot)
   size_t next_light_ = 0;
   std::vector<Rgb> light_power_;       // I * sum(spot d_omega), filled when each light shoots
   double unshot_light_power_ = 0.0;    // estimate for lights not yet shot (I * 4 pi)
   std::vector<Rgb> radiosity_, unshot_;  // per element
+  std::vector<Rgb> sent_;                 // per element of the patch shooting now
+  std::vector<Rgb> arriving_;             // per entry of its row: the power arriving (W)
   std::vector<glm::dvec3> patch_unshot_;  // per shooting patch: sum of A_j unshot_j (W)
   EnergyTally tally_;
   int shots_ = 0;

@@ -1,0 +1,176 @@
+// Ray-cast form factors (Wallace, Elmquist & Haines 1989). See ray_form_factors.h.
+#include "radiosity/ray_form_factors.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "radiosity/element_form_factor.h"
+#include "radiosity/radiosity_options.h"
+#include "raytracing/embree_scene.h"
+
+namespace luz {
+namespace {
+
+// SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators", OOPSLA
+// 2014): a generator whose whole state is one integer, so every (shot, element) pair starts its
+// own sequence and the row does not depend on which thread computed which element.
+struct Random {
+  uint64_t state;
+  float next() {
+    state += 0x9e3779b97f4a7c15ULL;
+    uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return float(z >> 40) * 0x1.0p-24f;  // [0, 1)
+  }
+};
+
+// A point of triangle (a, b, c), uniform over its area for (u, v) uniform over the unit square
+// (the square root keeps strata of u equal in area).
+glm::vec3 point_in(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, float u, float v) {
+  const float s = std::sqrt(u);
+  return (1.0f - s) * a + (s * (1.0f - v)) * b + (s * v) * c;
+}
+
+// True when some corner of the triangle lies strictly in front of the plane (x, n).
+bool any_in_front(const glm::vec3 (&corners)[3], const glm::vec3& x, const glm::vec3& n) {
+  for (const glm::vec3& c : corners)
+    if (glm::dot(n, c - x) > 0.0f) return true;
+  return false;
+}
+
+// The solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee, "The
+// Solid Angle of a Plane Triangle", IEEE Trans. Biomed. Eng. 1983):
+//   tan(Omega / 2) = |a . (b x c)| / (|a||b||c| + (a . b)|c| + (a . c)|b| + (b . c)|a|).
+double triangle_solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  const double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
+  const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+float scene_size(const PatchMesh& mesh) {
+  Bounds bounds;
+  for (const glm::vec3& v : mesh.vertices) bounds.grow(v);
+  return bounds.empty() ? 1.0f : glm::length(bounds.extent());
+}
+
+}  // namespace
+
+RayFormFactors::RayFormFactors(const Scene& scene, const PatchMesh& mesh)
+    : mesh_(mesh), offset_(1e-5f * scene_size(mesh)),
+      bvh_(std::make_unique<rt::EmbreeIntersector>(scene)), values_(mesh.size(), 0.0f) {}
+
+RayFormFactors::~RayFormFactors() = default;
+
+// F_ij for one element: 0 unless the two face each other; else V * F(j -> i) * A_j / A_i.
+double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t seed,
+                                      uint32_t shot) const {
+  const ShootingPatch& shooter = mesh_.shooters[i];
+  const Patch& element = mesh_.patches[j];
+  if (mesh_.shooter_of[j] == i) return 0.0;  // its own elements lie in its plane
+  const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
+                                mesh_.vertices[element.vertices[1]],
+                                mesh_.vertices[element.vertices[2]]};
+  if (!any_in_front(shooter.corners, element.centre, element.normal) ||
+      !any_in_front(corners, shooter.centre, shooter.normal))
+    return 0.0;
+  const double unoccluded = element_to_patch_form_factor(mesh_, element, shooter);
+  if (!(unoccluded > 0.0)) return 0.0;
+
+  // V: m rays, from a random point of the element to a point of the patch in its k-th stratum.
+  // A ray between a point and one behind its own surface carries no light in the integral (the
+  // contour integral clips that part off): it counts neither as open nor as blocked.
+  Random random{(uint64_t(seed) << 48) ^ (uint64_t(shot) << 24) ^ uint64_t(j)};
+  std::array<rt::Ray, kMaxVisibilityRays> rays;
+  std::array<bool, kMaxVisibilityRays> blocked{};
+  size_t valid = 0;
+  for (size_t k = 0; k < m; ++k) {
+    const float u = random.next(), v = random.next();
+    const glm::vec3 from = point_in(corners[0], corners[1], corners[2], u, v);
+    const float su = (float(k) + random.next()) / float(m), sv = random.next();
+    const glm::vec3 to = point_in(shooter.corners[0], shooter.corners[1], shooter.corners[2], su, sv);
+    const glm::vec3 d = to - from;
+    if (!(glm::dot(d, element.normal) > 0.0f && glm::dot(d, shooter.normal) < 0.0f)) continue;
+    const glm::vec3 start = from + offset_ * element.normal, end = to + offset_ * shooter.normal;
+    const float length = glm::length(end - start);
+    rays[valid++] = {start, (end - start) / length, length * (1.0f - 1e-4f)};
+  }
+  if (valid == 0) return 0.0;
+  uint64_t tests = 0;
+  bvh_->occluded(std::span(rays.data(), valid), std::span(blocked.data(), valid), tests);
+  traced_.fetch_add(uint64_t(valid), std::memory_order_relaxed);
+  const auto open = std::count(blocked.begin(), blocked.begin() + long(valid), false);
+  if (open == 0) return 0.0;
+  const double visible = double(open) / double(valid);
+  return visible * unoccluded * double(element.area) / double(shooter.area);
+}
+
+const std::vector<FormFactor>& RayFormFactors::row(size_t shooter, int rays, uint32_t seed,
+                                                   uint32_t shot) {
+  const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
+  traced_ = 0;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t j = range.begin(); j != range.end(); ++j)
+                        values_[j] = float(element_factor(shooter, j, m, seed, shot));
+                    });
+  return gather();
+}
+
+double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t m, uint32_t seed,
+                                           uint32_t shot) const {
+  const Patch& element = mesh_.patches[j];
+  if (!(glm::dot(element.normal, light.position - element.centre) > 0.0f)) return 0.0;  // its back
+  const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
+                                mesh_.vertices[element.vertices[1]],
+                                mesh_.vertices[element.vertices[2]]};
+  const double spot = double(light.spot_factor(glm::normalize(element.centre - light.position)));
+  if (!(spot > 0.0)) return 0.0;
+  const glm::dvec3 from(light.position);
+  const double omega = triangle_solid_angle(glm::dvec3(corners[0]) - from, glm::dvec3(corners[1]) - from,
+                                            glm::dvec3(corners[2]) - from);
+  Random random{(uint64_t(seed) << 48) ^ (uint64_t(shot) << 24) ^ uint64_t(j)};
+  std::array<rt::Ray, kMaxVisibilityRays> rays;
+  std::array<bool, kMaxVisibilityRays> blocked{};
+  for (size_t k = 0; k < m; ++k) {  // from the element's point toward the light, as for patches
+    const float u = (float(k) + random.next()) / float(m), v = random.next();
+    const glm::vec3 start = point_in(corners[0], corners[1], corners[2], u, v) + offset_ * element.normal;
+    const glm::vec3 d = light.position - start;
+    const float length = glm::length(d);
+    rays[k] = {start, d / length, length * (1.0f - 1e-4f)};
+  }
+  uint64_t tests = 0;
+  bvh_->occluded(std::span(rays.data(), m), std::span(blocked.data(), m), tests);
+  traced_.fetch_add(uint64_t(m), std::memory_order_relaxed);
+  const auto open = std::count(blocked.begin(), blocked.begin() + long(m), false);
+  return spot * omega * double(open) / double(m);
+}
+
+const std::vector<FormFactor>& RayFormFactors::solid_angles(const Light& light, int rays,
+                                                            uint32_t seed, uint32_t shot) {
+  const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
+  traced_ = 0;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t j = range.begin(); j != range.end(); ++j)
+                        values_[j] = float(element_solid_angle(light, j, m, seed, shot));
+                    });
+  return gather();
+}
+
+const std::vector<FormFactor>& RayFormFactors::gather() {
+  row_.clear();
+  for (size_t j = 0; j < values_.size(); ++j)
+    if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});
+  last_rays_ = traced_;
+  return row_;
+}
+
+}  // namespace luz
