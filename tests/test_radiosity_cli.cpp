@@ -22,7 +22,8 @@ TEST(RadiosityCli, HelpListsTheFlags) {
   const auto help = run_luz({"render", "--help"});
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"radiosity", "--shots", "--converge", "--patch-size", "--hemicube-res",
-                           "--ambient-estimate", "--csv"})
+                           "--ambient-estimate", "--csv", "--form-factors", "--visibility-rays",
+                           "--pixel-samples"})
     EXPECT_TRUE(contains(help.output, flag)) << flag;
 }
 
@@ -31,7 +32,8 @@ TEST(RadiosityCli, RadiosityFlagsWithAnotherModelAreUsageErrors) {
   for (const std::vector<std::string>& flag :
        std::vector<std::vector<std::string>>{{"--shots", "5"}, {"--converge", "0.1"},
                                              {"--patch-size", "0.1"}, {"--hemicube-res", "64"},
-                                             {"--ambient-estimate"}, {"--csv", "x.csv"}}) {
+                                             {"--ambient-estimate"}, {"--csv", "x.csv"},
+                                             {"--visibility-rays", "8"}, {"--pixel-samples", "4"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "phong", "--out",
                                      (dir / "a.png").string()};
     args.insert(args.end(), flag.begin(), flag.end());
@@ -49,7 +51,10 @@ TEST(RadiosityCli, BadValuesAreUsageErrors) {
        std::vector<std::vector<std::string>>{{"--hemicube-res", "65"}, {"--hemicube-res", "32"},
                                              {"--hemicube-res", "2048"}, {"--shots", "0"},
                                              {"--patch-size", "-1"}, {"--converge", "0"},
-                                             {"--shots", "3", "--converge", "0.1"}}) {
+                                             {"--shots", "3", "--converge", "0.1"},
+                                             {"--visibility-rays", "0"}, {"--visibility-rays", "65"},
+                                             {"--pixel-samples", "3"}, {"--pixel-samples", "0"},
+                                             {"--form-factors", "raytraced"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
     args.insert(args.end(), bad.begin(), bad.end());
     EXPECT_EQ(run_luz(args).exit_code, 2) << bad[0] << " " << bad[1];

@@ -291,6 +291,14 @@ TEST(RadiosityOptions, BadSettingsAreRefusedByName) {
   o = {};
   o.elements_per_edge = 0;
   EXPECT_TRUE(refused(o, "elements"));
+  o = {};
+  o.visibility_rays = 0;
+  EXPECT_TRUE(refused(o, "visibility rays"));
+  o.visibility_rays = kMaxVisibilityRays + 1;
+  EXPECT_TRUE(refused(o, "visibility rays"));
+  o = {};
+  o.pixel_samples = 3;  // not a square
+  EXPECT_TRUE(refused(o, "samples per pixel"));
 }
 
 }  // namespace
