@@ -69,6 +69,21 @@ RayFormFactors::RayFormFactors(const Scene& scene, const PatchMesh& mesh)
 
 RayFormFactors::~RayFormFactors() = default;
 
+// Every element's value on TBB's threads, then the elements with a positive one, in order.
+template <typename Value>
+const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& value) {
+  traced_ = 0;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t j = range.begin(); j != range.end(); ++j) values_[j] = float(value(j));
+                    });
+  row_.clear();
+  for (size_t j = 0; j < values_.size(); ++j)
+    if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});
+  last_rays_ = traced_;
+  return row_;
+}
+
 // F_ij for one element: 0 unless the two face each other; else V * F(j -> i) * A_j / A_i.
 double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t seed,
                                       uint32_t shot) const {
@@ -115,13 +130,7 @@ double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t see
 const std::vector<FormFactor>& RayFormFactors::row(size_t shooter, int rays, uint32_t seed,
                                                    uint32_t shot) {
   const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
-  traced_ = 0;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t j = range.begin(); j != range.end(); ++j)
-                        values_[j] = float(element_factor(shooter, j, m, seed, shot));
-                    });
-  return gather();
+  return for_each_element([&](size_t j) { return element_factor(shooter, j, m, seed, shot); });
 }
 
 double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t m, uint32_t seed,
@@ -156,21 +165,7 @@ double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t 
 const std::vector<FormFactor>& RayFormFactors::solid_angles(const Light& light, int rays,
                                                             uint32_t seed, uint32_t shot) {
   const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
-  traced_ = 0;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t j = range.begin(); j != range.end(); ++j)
-                        values_[j] = float(element_solid_angle(light, j, m, seed, shot));
-                    });
-  return gather();
-}
-
-const std::vector<FormFactor>& RayFormFactors::gather() {
-  row_.clear();
-  for (size_t j = 0; j < values_.size(); ++j)
-    if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});
-  last_rays_ = traced_;
-  return row_;
+  return for_each_element([&](size_t j) { return element_solid_angle(light, j, m, seed, shot); });
 }
 
 }  // namespace luz

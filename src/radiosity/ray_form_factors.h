@@ -54,8 +54,8 @@ private:
                         uint32_t shot) const;
   double element_solid_angle(const Light& light, size_t element, size_t rays, uint32_t seed,
                              uint32_t shot) const;
-  // values_ -> row_, the elements with a positive value.
-  const std::vector<FormFactor>& gather();
+  template <typename Value>
+  const std::vector<FormFactor>& for_each_element(const Value& value);
 
   const PatchMesh& mesh_;
   float offset_;  // how far a ray's ends sit off their surfaces (the scene's size x 1e-5)
