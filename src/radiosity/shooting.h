@@ -16,8 +16,10 @@
 // Substructuring (patch_mesh.h): i runs over the shooting patches and j over the elements. Each
 // element keeps its own radiosity and unshot radiosity; a patch's unshot radiosity is the
 // area-weighted mean of its elements', and when it shoots, all of its elements' unshot
-// radiosity goes out at once from the patch's centroid through one hemicube whose item buffer
-// holds element IDs. What is displayed is the elements' radiosity + unshot.
+// radiosity goes out at once, through one row of form factors to the elements (the hemicube's
+// item buffer holds element IDs; rays go to element points). A receiver next to the patch sees
+// each of its elements with its own form factor (seen_from). What is displayed is the elements'
+// radiosity + unshot.
 //
 // Overshooting (options.overshoot = w > 1): the shooter sends w x its unshot radiosity and keeps
 // (1 - w) x unshot, a negative amount shot back later; radiosity + unshot, what is displayed,
