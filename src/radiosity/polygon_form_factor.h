@@ -1,5 +1,5 @@
 #pragma once
-// The second form-factor method of slide 40's "multitud de métodos": the exact form factor from
+// The exact form factor of slide 40's "multitud de métodos": from
 // a point to a polygon, by Lambert's contour integral (Lambert 1760; Hottel & Sarofim,
 // "Radiative Transfer", 1967; Baum, Rushmeier & Winget, SIGGRAPH 1989, use it where the
 // hemicube's point-to-area estimate fails, for receivers close to the shooter):
@@ -9,12 +9,13 @@
 //
 // with R_k the vector from the point to polygon vertex k and n the point's unit normal. It
 // integrates cos(theta) cos(theta') / (pi r^2) over the polygon exactly, with no visibility:
-// the caller supplies that (shooting.cpp takes it from the hemicube). The part of the polygon
-// below the point's tangent plane is clipped off first (the formula assumes it sees all of it).
+// the caller supplies that (from the hemicube, or from rays: shooting.cpp, ray_form_factors.cpp).
+// The part of the polygon below the point's tangent plane is clipped off first (the formula
+// assumes it sees all of it).
 //
-// ProgressiveSolver uses it for the elements near a shooting patch: the light element j gets is
-// rho_j F(j -> patch) unshot, with F(j -> patch) the mean of this formula at three points of the
-// element (the degree-2 quadrature points (2/3, 1/6, 1/6)), so its area is integrated too.
+// The solver integrates it over a receiving element (element_form_factor.h): the light element j
+// gets is rho_j F(j -> patch) unshot, with F(j -> patch) near the patch the mean of this formula
+// at three points of the element (the degree-2 quadrature points (2/3, 1/6, 1/6)) or more.
 #include <span>
 
 #include <glm/vec3.hpp>
