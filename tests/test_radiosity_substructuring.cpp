@@ -192,7 +192,7 @@ TEST(Overshooting, ConvergesToTheSameRadiosityAndBalancesEnergy) {
 // form factors, their visibility from the hemicube or from rays: B = E / (1 - rho) on every
 // element, the box's edges included, where the hemicube's point-to-area estimate is 6.7% off
 // (test_radiosity's furnace). Both with every element shooting and substructured. Tolerances:
-// 2% per element (the bound; measured 0.5%), 0.5% on the area-weighted mean (a row sums
+// 2% per element (the bound the class is promised; measured 0.5%), 0.5% on the area-weighted mean (a row sums
 // to 1 within the visibility estimate and the quadrature, measured +0.2%).
 TEST(AnalyticFormFactors, FurnaceIsFlatUpToTheEdges) {
   Scene scene;
