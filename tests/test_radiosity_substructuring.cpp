@@ -192,8 +192,9 @@ TEST(Overshooting, ConvergesToTheSameRadiosityAndBalancesEnergy) {
 // form factors, their visibility from the hemicube or from rays: B = E / (1 - rho) on every
 // element, the box's edges included, where the hemicube's point-to-area estimate is 6.7% off
 // (test_radiosity's furnace). Both with every element shooting and substructured. Tolerances:
-// 2% per element (the bound the class is promised; measured 0.5%), 0.5% on the area-weighted mean (a row sums
-// to 1 within the visibility estimate and the quadrature, measured +0.2%).
+// 2% per element (the bound asked of slide 40's methods; measured 0.5%), 0.5% on the
+// area-weighted mean (a row sums to 1 within the visibility estimate and the quadrature,
+// measured +0.2%).
 TEST(AnalyticFormFactors, FurnaceIsFlatUpToTheEdges) {
   Scene scene;
   const float rho = 0.5f, E = 1.0f;
