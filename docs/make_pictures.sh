@@ -5,6 +5,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 luz=${1:-$root/build/luz}
+case $luz in /*) ;; */*) luz=$PWD/$luz ;; esac  # the viewer's script runs in another folder
 out="$root/docs/images"
 mkdir -p "$out"
 for model in flat gouraud phong; do
