@@ -9,8 +9,10 @@
 namespace luz {
 
 // Elements whose centre lies within this many of the shooting patch's radii (centroid to
-// farthest corner) are integrated over their area; the others from their centroid.
+// farthest corner) are near it: integrated over their area, not from their centroid, and (the
+// solver) lit by each of the patch's elements with its own factor.
 inline constexpr float kNearRadii = 3.0f;
+bool near_the_patch(const Patch& element, const ShootingPatch& shooter);
 
 double element_to_patch_form_factor(const PatchMesh& mesh, const Patch& element,
                                     const ShootingPatch& shooter);

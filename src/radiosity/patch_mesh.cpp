@@ -282,8 +282,11 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
     }
   }
   // Centroids, and the members grouped by shooter (a counting sort keeps each group in order).
-  for (ShootingPatch& shooter : result.shooters)
+  for (ShootingPatch& shooter : result.shooters) {
     if (shooter.area > 0.0f) shooter.centre /= shooter.area;
+    for (const glm::vec3& corner : shooter.corners)
+      shooter.radius = std::max(shooter.radius, glm::length(corner - shooter.centre));
+  }
   for (const uint32_t s : result.shooter_of) ++result.shooters[s].count;
   uint32_t first = 0;
   for (ShootingPatch& shooter : result.shooters) {

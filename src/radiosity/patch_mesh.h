@@ -55,6 +55,7 @@ struct ShootingPatch {
   glm::vec3 normal{0, 1, 0};  // unit, the front side (that of its elements)
   float area = 0.0f;          // sum of its elements' areas, m^2
   float clearance = 0.0f;     // centroid to the nearest edge of the patch
+  float radius = 0.0f;        // centroid to the farthest corner
   glm::vec3 corners[3] = {};  // counter-clockwise seen from the front
   uint32_t first = 0;         // its elements: PatchMesh::members[first .. first + count)
   uint32_t count = 0;

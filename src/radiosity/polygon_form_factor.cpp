@@ -2,7 +2,6 @@
 #include "radiosity/polygon_form_factor.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -12,45 +11,20 @@
 namespace luz {
 namespace {
 
-// The clipped polygon, on the stack up to kSmall corners: the solver evaluates the contour
-// integral millions of times a second on triangles, and a heap allocation each time cost more
-// than the sum. Larger polygons (a disc in a test) go to the heap.
+// Sutherland-Hodgman against one plane: the part with dot(n, v - x) >= 0, into `out`. The
+// solver evaluates the integral millions of times a second: `out` is a buffer kept per thread,
+// so no call allocates once it has grown.
 template <typename T>
-class Polygon {
-public:
-  using V = glm::vec<3, T>;
-  void push(const V& v) {
-    if (large_.empty() && size_ < kSmall) {
-      small_[size_++] = v;
-      return;
-    }
-    if (large_.empty()) large_.assign(small_.begin(), small_.begin() + long(size_));
-    large_.push_back(v);
-    ++size_;
-  }
-  size_t size() const { return size_; }
-  const V& operator[](size_t k) const { return large_.empty() ? small_[k] : large_[k]; }
-
-private:
-  static constexpr size_t kSmall = 8;
-  std::array<V, kSmall> small_;
-  std::vector<V> large_;
-  size_t size_ = 0;
-};
-
-// Sutherland-Hodgman against one plane: keeps the part with dot(n, v - x) >= 0.
-template <typename T>
-Polygon<T> clipped_above(const glm::vec<3, T>& x, const glm::vec<3, T>& n,
-                         std::span<const glm::vec3> polygon) {
-  Polygon<T> out;
+void clip_above(const glm::vec<3, T>& x, const glm::vec<3, T>& n, std::span<const glm::vec3> polygon,
+                std::vector<glm::vec<3, T>>& out) {
+  out.clear();
   const size_t count = polygon.size();
   for (size_t k = 0; k < count; ++k) {
     const glm::vec<3, T> p(polygon[k]), q(polygon[(k + 1) % count]);
     const T hp = glm::dot(n, p - x), hq = glm::dot(n, q - x);
-    if (hp >= T(0)) out.push(p);
-    if ((hp >= T(0)) != (hq >= T(0))) out.push(p + (hp / (hp - hq)) * (q - p));
+    if (hp >= T(0)) out.push_back(p);
+    if ((hp >= T(0)) != (hq >= T(0))) out.push_back(p + (hp / (hp - hq)) * (q - p));
   }
-  return out;
 }
 
 template <typename T>
@@ -61,7 +35,8 @@ double contour_integral(const glm::vec3& x, const glm::vec3& n, std::span<const 
   // The polygon's front must face x: its vertices run counter-clockwise seen from x.
   const V face = glm::cross(V(polygon[1]) - V(polygon[0]), V(polygon[2]) - V(polygon[0]));
   if (glm::dot(face, xd - V(polygon[0])) <= T(0)) return 0.0;
-  const Polygon<T> visible = clipped_above(xd, nd, polygon);
+  thread_local std::vector<V> visible;
+  clip_above(xd, nd, polygon, visible);
   if (visible.size() < 3) return 0.0;
   T sum = 0;
   for (size_t k = 0; k < visible.size(); ++k) {

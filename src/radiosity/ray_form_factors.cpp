@@ -72,21 +72,23 @@ RayFormFactors::~RayFormFactors() = default;
 // Every element's value on TBB's threads, then the elements with a positive one, in order.
 template <typename Value>
 const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& value) {
-  traced_ = 0;
+  std::atomic<uint64_t> traced{0};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
                     [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t j = range.begin(); j != range.end(); ++j) values_[j] = float(value(j));
+                      uint64_t rays = 0;  // summed per range: one atomic add, not one per element
+                      for (size_t j = range.begin(); j != range.end(); ++j) values_[j] = float(value(j, rays));
+                      traced.fetch_add(rays, std::memory_order_relaxed);
                     });
   row_.clear();
   for (size_t j = 0; j < values_.size(); ++j)
     if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});
-  last_rays_ = traced_;
+  last_rays_ = traced;
   return row_;
 }
 
 // F_ij for one element: 0 unless the two face each other; else V * F(j -> i) * A_j / A_i.
-double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t seed,
-                                      uint32_t shot) const {
+double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t seed, uint32_t shot,
+                                      uint64_t& traced) const {
   const ShootingPatch& shooter = mesh_.shooters[i];
   const Patch& element = mesh_.patches[j];
   if (mesh_.shooter_of[j] == i) return 0.0;  // its own elements lie in its plane
@@ -120,7 +122,7 @@ double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t see
   if (valid == 0) return 0.0;
   uint64_t tests = 0;
   bvh_->occluded(std::span(rays.data(), valid), std::span(blocked.data(), valid), tests);
-  traced_.fetch_add(uint64_t(valid), std::memory_order_relaxed);
+  traced += valid;
   const auto open = std::count(blocked.begin(), blocked.begin() + long(valid), false);
   if (open == 0) return 0.0;
   const double visible = double(open) / double(valid);
@@ -130,11 +132,13 @@ double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t see
 const std::vector<FormFactor>& RayFormFactors::row(size_t shooter, int rays, uint32_t seed,
                                                    uint32_t shot) {
   const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
-  return for_each_element([&](size_t j) { return element_factor(shooter, j, m, seed, shot); });
+  return for_each_element([&](size_t j, uint64_t& traced) {
+    return element_factor(shooter, j, m, seed, shot, traced);
+  });
 }
 
 double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t m, uint32_t seed,
-                                           uint32_t shot) const {
+                                           uint32_t shot, uint64_t& traced) const {
   const Patch& element = mesh_.patches[j];
   if (!(glm::dot(element.normal, light.position - element.centre) > 0.0f)) return 0.0;  // its back
   const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
@@ -157,7 +161,7 @@ double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t 
   }
   uint64_t tests = 0;
   bvh_->occluded(std::span(rays.data(), m), std::span(blocked.data(), m), tests);
-  traced_.fetch_add(uint64_t(m), std::memory_order_relaxed);
+  traced += m;
   const auto open = std::count(blocked.begin(), blocked.begin() + long(m), false);
   return spot * omega * double(open) / double(m);
 }
@@ -165,7 +169,9 @@ double RayFormFactors::element_solid_angle(const Light& light, size_t j, size_t 
 const std::vector<FormFactor>& RayFormFactors::solid_angles(const Light& light, int rays,
                                                             uint32_t seed, uint32_t shot) {
   const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
-  return for_each_element([&](size_t j) { return element_solid_angle(light, j, m, seed, shot); });
+  return for_each_element([&](size_t j, uint64_t& traced) {
+    return element_solid_angle(light, j, m, seed, shot, traced);
+  });
 }
 
 }  // namespace luz

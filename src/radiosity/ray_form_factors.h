@@ -50,10 +50,11 @@ public:
   uint64_t last_rays() const { return last_rays_; }
 
 private:
-  double element_factor(size_t shooter, size_t element, size_t rays, uint32_t seed,
-                        uint32_t shot) const;
+  // `traced` grows by the rays they trace.
+  double element_factor(size_t shooter, size_t element, size_t rays, uint32_t seed, uint32_t shot,
+                        uint64_t& traced) const;
   double element_solid_angle(const Light& light, size_t element, size_t rays, uint32_t seed,
-                             uint32_t shot) const;
+                             uint32_t shot, uint64_t& traced) const;
   template <typename Value>
   const std::vector<FormFactor>& for_each_element(const Value& value);
 
@@ -62,7 +63,6 @@ private:
   std::unique_ptr<rt::EmbreeIntersector> bvh_;
   std::vector<float> values_;  // per element, F_ij of the last row (0: not reached)
   std::vector<FormFactor> row_;
-  mutable std::atomic<uint64_t> traced_{0};
   uint64_t last_rays_ = 0;
 };
 

@@ -207,9 +207,7 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
 Rgb ProgressiveSolver::seen_from(const ShootingPatch& shooter, const Patch& receiver,
                                  const Rgb& shot) const {
   if (options_.form_factors == FormFactorMethod::hemicube || shooter.count < 2) return shot;
-  float radius = 0.0f;
-  for (const glm::vec3& c : shooter.corners) radius = std::max(radius, glm::length(c - shooter.centre));
-  if (glm::length(receiver.centre - shooter.centre) > kNearRadii * radius) return shot;
+  if (!near_the_patch(receiver, shooter)) return shot;
   const glm::vec3 corners[3] = {mesh_.vertices[receiver.vertices[0]],
                                 mesh_.vertices[receiver.vertices[1]],
                                 mesh_.vertices[receiver.vertices[2]]};
