@@ -48,7 +48,7 @@ Scene closed_cube() {
 
 TEST(LightCube, EachWallOfACubeSubtendsASixthOfTheSphereFromItsCentre) {
   const Scene scene = closed_cube();
-  const PatchMesh mesh = PatchMesh::build(scene, 0.25f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.25f);
   const PatchItems items(mesh);
   const int res = 128;
   PointSource cube(mesh, items, res);

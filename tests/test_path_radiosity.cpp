@@ -41,7 +41,7 @@ TEST(PathVsRadiosity, CornellBoxMeshMeansAgreeWithinTheDiscretisationError) {
   radiosity.patch_size = 0.1f;
   radiosity.hemicube_res = 64;
   radiosity.converge = 0.002f;  // converged: 0.2% of the power left unshot
-  const PatchMesh mesh = PatchMesh::build(scene, radiosity);
+  PatchMesh mesh = PatchMesh::build(scene, radiosity);
   ProgressiveSolver solver(scene, mesh, radiosity);
   while (solver.step()) {}
   const hybrid::RadiosityDiffuse diffuse(mesh, RadianceField::of(solver));

@@ -201,7 +201,7 @@ TEST(Shooting, FurnaceConvergesToEOverOneMinusRho) {
   const int glowing = add_material(scene, rho, E / std::numbers::pi_v<float>);  // E = pi Le
   const int materials[6] = {glowing, glowing, glowing, glowing, glowing, glowing};
   add_closed_box(scene, materials);
-  const PatchMesh mesh = PatchMesh::build(scene, 0.25f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.25f);
   RadiosityOptions options;
   options.form_factors = FormFactorMethod::hemicube;  // the analytic ones: test_radiosity_form_factors
   options.hemicube_res = 128;
@@ -288,7 +288,7 @@ TEST(Shooting, EmittedEqualsAbsorbedPlusUnshotAtEveryStep) {
                             add_material(scene, 0.2f), add_material(scene, 0.8f),
                             add_material(scene, 0.6f)};
   add_closed_box(scene, materials);
-  const PatchMesh mesh = PatchMesh::build(scene, 0.25f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.25f);
   RadiosityOptions options;
   options.form_factors = FormFactorMethod::hemicube;  // its rows sum to 1 within 1e-3 here
   options.hemicube_res = 64;
@@ -326,7 +326,7 @@ TEST(PointSource, SquareReceivesIntensityTimesItsSolidAngle) {
     light.position = {0.0f, h, 0.0f};
     light.intensity = Rgb(3.0f);
     scene.lights.push_back(light);
-    const PatchMesh mesh = PatchMesh::build(scene, 0.1f);
+    PatchMesh mesh = PatchMesh::build(scene, 0.1f);
     RadiosityOptions options;
     options.hemicube_res = 256;
     ProgressiveSolver solver(scene, mesh, options);
@@ -357,7 +357,7 @@ TEST(PointSource, SpotSendsItsWholePowerIntoItsCone) {
   spot.outer_cone = 0.6f;  // the cone reaches tan(0.6) = 0.68 m: inside the floor
   spot.intensity = Rgb(5.0f);
   scene.lights.push_back(spot);
-  const PatchMesh mesh = PatchMesh::build(scene, 0.2f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.2f);
   RadiosityOptions options;
   options.hemicube_res = 256;
   ProgressiveSolver solver(scene, mesh, options);
@@ -372,7 +372,7 @@ TEST(PatchMesh, ConformingSubdivisionWithoutTJunctions) {
   Scene scene;
   const int grey = add_material(scene, 0.5f);
   add_quad(scene, {0, 0, 0}, {0, 0, 1}, {1.3f, 0, 1}, {1.3f, 0, 0}, grey, "quad");
-  const PatchMesh mesh = PatchMesh::build(scene, 0.2f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.2f);
   const int n = mesh.subdivisions(0);
   ASSERT_EQ(mesh.size(), size_t(2 * n * n));
   EXPECT_NEAR(mesh.total_area(), 1.3f, 1e-5f);
@@ -395,7 +395,7 @@ TEST(PatchMesh, ConformingSubdivisionWithoutTJunctions) {
 TEST(PatchMesh, TargetCountAndLocate) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
   for (const size_t target : {1000u, 4000u}) {
-    const PatchMesh mesh = PatchMesh::build(loaded.scene, PatchMesh::patch_size_for(loaded.scene, target));
+    PatchMesh mesh = PatchMesh::build(loaded.scene, PatchMesh::patch_size_for(loaded.scene, target));
     EXPECT_GT(mesh.size(), target * 7 / 10);
     EXPECT_LT(mesh.size(), target * 13 / 10);
     // locate() finds the patch whose corners interpolate back to the point.
@@ -420,7 +420,7 @@ TEST(VertexColours, NodalAveragingAcrossSmoothSurfacesNotAcrossCreases) {
   add_quad(scene, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, grey, "smooth");
   // A second quad meeting the first along x = 1 (a crease: its own vertices).
   add_quad(scene, {1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}, grey, "wall");
-  const PatchMesh mesh = PatchMesh::build(scene, 10.0f);  // one patch per triangle
+  PatchMesh mesh = PatchMesh::build(scene, 10.0f);  // one patch per triangle
   ASSERT_EQ(mesh.size(), 4u);
   const float pi_f = std::numbers::pi_v<float>;
   const std::vector<Rgb> B = {Rgb(pi_f), Rgb(3 * pi_f), Rgb(10 * pi_f), Rgb(10 * pi_f)};
@@ -452,7 +452,7 @@ TEST(VertexColours, UnshotHeatMapShowsTheEmittersFirst) {
   const int grey = add_material(scene, 0.5f), lamp = add_material(scene, 0.5f, 1.0f);
   const int materials[6] = {grey, lamp, grey, grey, grey, grey};
   add_closed_box(scene, materials);
-  const PatchMesh mesh = PatchMesh::build(scene, 0.5f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.5f);
   RadiosityOptions options;
   options.hemicube_res = 64;
   ProgressiveSolver solver(scene, mesh, options);
@@ -470,7 +470,7 @@ TEST(VertexColours, UnshotHeatMapShowsTheEmittersFirst) {
 TEST(CornellBox, ConvergesBleedsColourAndLightsTheCeilingIndirectly) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
   const Scene& scene = loaded.scene;
-  const PatchMesh mesh = PatchMesh::build(scene, 0.1f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.1f);
   RadiosityOptions options;
   options.hemicube_res = 128;
   options.converge = 0.03f;
@@ -527,7 +527,7 @@ TEST(CornellBox, DirectLightUnderTheLampAgreesWithTheLocalModel) {
   std::erase_if(loaded.scene.meshes, [](const Mesh& m) { return m.name.ends_with("_block"); });
   loaded.scene.find_area_lights();
   const Scene& scene = loaded.scene;
-  const PatchMesh mesh = PatchMesh::build(scene, 0.03f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.03f);
   RadiosityOptions options;
   options.hemicube_res = 256;
   ProgressiveSolver solver(scene, mesh, options);
@@ -605,7 +605,7 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
   loaded.scene.background = Rgb(0.0f, 0.0f, 100.0f);  // unmistakable
   const Scene& scene = loaded.scene;
   for (const float size : {0.1f, 0.037f}) {
-    const PatchMesh mesh = PatchMesh::build(scene, size);
+    PatchMesh mesh = PatchMesh::build(scene, size);
     RadiosityOptions options;
     options.hemicube_res = 64;
     options.max_shots = 5;
@@ -637,7 +637,7 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
 TEST(RadiosityRenderer, PixelSamplesAreABoxFilterOverThePixel) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
   const Scene& scene = loaded.scene;
-  const PatchMesh mesh = PatchMesh::build(scene, 0.1f);
+  PatchMesh mesh = PatchMesh::build(scene, 0.1f);
   RadiosityOptions options;
   options.max_shots = 20;
   ProgressiveSolver solver(scene, mesh, options);

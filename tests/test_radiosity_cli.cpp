@@ -23,7 +23,7 @@ TEST(RadiosityCli, HelpListsTheFlags) {
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"radiosity", "--shots", "--converge", "--patch-size", "--hemicube-res",
                            "--ambient-estimate", "--csv", "--form-factors", "--visibility-rays",
-                           "--pixel-samples"})
+                           "--pixel-samples", "--meshing", "--refine-threshold", "--refine-levels"})
     EXPECT_TRUE(contains(help.output, flag)) << flag;
 }
 
@@ -33,7 +33,8 @@ TEST(RadiosityCli, RadiosityFlagsWithAnotherModelAreUsageErrors) {
        std::vector<std::vector<std::string>>{{"--shots", "5"}, {"--converge", "0.1"},
                                              {"--patch-size", "0.1"}, {"--hemicube-res", "64"},
                                              {"--ambient-estimate"}, {"--csv", "x.csv"},
-                                             {"--visibility-rays", "8"}, {"--pixel-samples", "4"}}) {
+                                             {"--visibility-rays", "8"}, {"--pixel-samples", "4"},
+                                             {"--meshing", "uniform"}, {"--refine-threshold", "0.2"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "phong", "--out",
                                      (dir / "a.png").string()};
     args.insert(args.end(), flag.begin(), flag.end());
@@ -54,7 +55,9 @@ TEST(RadiosityCli, BadValuesAreUsageErrors) {
                                              {"--shots", "3", "--converge", "0.1"},
                                              {"--visibility-rays", "0"}, {"--visibility-rays", "65"},
                                              {"--pixel-samples", "3"}, {"--pixel-samples", "0"},
-                                             {"--form-factors", "raytraced"}}) {
+                                             {"--form-factors", "raytraced"}, {"--meshing", "fine"},
+                                             {"--refine-threshold", "0"}, {"--refine-threshold", "-1"},
+                                             {"--refine-levels", "0"}, {"--refine-levels", "13"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
     args.insert(args.end(), bad.begin(), bad.end());
     EXPECT_EQ(run_luz(args).exit_code, 2) << bad[0] << " " << bad[1];

@@ -53,7 +53,7 @@ TEST(RayFormFactors, APointLightInAClosedBoxReachesTheWholeSphere) {
                              {0.5f + a, 0.7f, 0.5f + a}, {0.5f - a, 0.7f, 0.5f + a}, plate_material, "plate");
   Light light;
   light.position = {0.5f, 0.7f - d, 0.5f};
-  const PatchMesh mesh = PatchMesh::build(scene, 0.1f, 2);
+  PatchMesh mesh = PatchMesh::build(scene, 0.1f, 2);
   RayFormFactors rays(scene, mesh);
   const std::vector<FormFactor>& omegas = rays.solid_angles(light, 16, 1, 0);
   double box = 0.0, on_plate = 0.0;
@@ -68,7 +68,7 @@ TEST(RayFormFactors, APointLightInAClosedBoxReachesTheWholeSphere) {
 
 TEST(RayFormFactors, ARowOfAnEmptyClosedBoxSumsToOne) {
   const Scene scene = grey_box();
-  const PatchMesh mesh = PatchMesh::build(scene, 0.25f, 3);
+  PatchMesh mesh = PatchMesh::build(scene, 0.25f, 3);
   RayFormFactors rays(scene, mesh);
   double worst = 0.0;
   for (size_t i = 0; i < mesh.shooters.size(); i += 7) {  // corners, edges and middles
@@ -91,7 +91,7 @@ TEST(RayFormFactors, AgreeWithTheHemicubesVisibilityOnTheCornellBox) {
   RadiosityOptions options;
   options.patch_size = 0.2f;
   options.converge = 0.005f;
-  const PatchMesh mesh = PatchMesh::build(loaded.scene, options);
+  PatchMesh mesh = PatchMesh::build(loaded.scene, options);
   options.form_factors = FormFactorMethod::rays;
   ProgressiveSolver by_rays(loaded.scene, mesh, options);
   options.form_factors = FormFactorMethod::analytic;
@@ -117,7 +117,7 @@ TEST(RayFormFactors, APointLightDeliversWhatTheCubeOfItemBuffersDelivers) {
   const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "whitted.gltf");
   RadiosityOptions options;
   options.patch_size = 0.5f;
-  const PatchMesh mesh = PatchMesh::build(loaded.scene, options);
+  PatchMesh mesh = PatchMesh::build(loaded.scene, options);
   const auto delivered = [&](FormFactorMethod method) {
     options.form_factors = method;
     ProgressiveSolver solver(loaded.scene, mesh, options);

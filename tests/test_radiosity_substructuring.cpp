@@ -68,8 +68,8 @@ TEST(Substructuring, ElementsAreTheUniformMeshAndEachLiesInOnePatch) {
   const Scene scene = lit_box();
   // The longest edge of a face is its diagonal: n = ceil(diagonal / size).
   const float diagonal = std::sqrt(2.0f);
-  const PatchMesh two_level = PatchMesh::build(scene, diagonal / 2.0f, 4);
-  const PatchMesh fine = PatchMesh::build(scene, diagonal / 8.0f, 1);
+  PatchMesh two_level = PatchMesh::build(scene, diagonal / 2.0f, 4);
+  PatchMesh fine = PatchMesh::build(scene, diagonal / 8.0f, 1);
   ASSERT_EQ(two_level.size(), fine.size());
   ASSERT_EQ(two_level.size(), size_t(6 * 2 * 8 * 8));
   EXPECT_EQ(two_level.shooters.size(), size_t(6 * 2 * 2 * 2));
@@ -116,8 +116,8 @@ TEST(Substructuring, SameElementsAsEveryElementShooting) {
   options.converge = 1e-3f;
   // The longest edge of a face is its diagonal: n = ceil(diagonal / size).
   const float diagonal = std::sqrt(2.0f);
-  const PatchMesh two_level = PatchMesh::build(scene, diagonal / 2.0f, 4);
-  const PatchMesh fine = PatchMesh::build(scene, diagonal / 8.0f, 1);
+  PatchMesh two_level = PatchMesh::build(scene, diagonal / 2.0f, 4);
+  PatchMesh fine = PatchMesh::build(scene, diagonal / 8.0f, 1);
   ProgressiveSolver substructured(scene, two_level, options), every_element(scene, fine, options);
   while (substructured.step()) {
     ASSERT_LT(std::abs(energy_imbalance(substructured)), 1e-3 * substructured.emitted_power())
@@ -164,7 +164,7 @@ TEST(Substructuring, SameElementsAsEveryElementShooting) {
 // 0.5% per element is well above both.
 TEST(Overshooting, ConvergesToTheSameRadiosityAndBalancesEnergy) {
   const Scene scene = lit_box();
-  const PatchMesh mesh = PatchMesh::build(scene, 0.5f, 2);
+  PatchMesh mesh = PatchMesh::build(scene, 0.5f, 2);
   RadiosityOptions plain;
   plain.hemicube_res = 64;
   plain.random_rotation = false;  // the same rows for both: only the order of shots differs
@@ -203,7 +203,7 @@ TEST(AnalyticFormFactors, FurnaceIsFlatUpToTheEdges) {
   add_closed_box(scene, materials);
   for (const FormFactorMethod method : {FormFactorMethod::analytic, FormFactorMethod::rays})
     for (const int k : {1, 3}) {
-      const PatchMesh mesh = PatchMesh::build(scene, 0.25f * float(k), k);
+      PatchMesh mesh = PatchMesh::build(scene, 0.25f * float(k), k);
       RadiosityOptions options;
       options.form_factors = method;
       options.hemicube_res = 128;

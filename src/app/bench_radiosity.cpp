@@ -97,7 +97,7 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
     RadiosityOptions options = way.options;
     options.hemicube_res = settings.hemicube_res;
     options.converge = 1e-4f;
-    const PatchMesh mesh = PatchMesh::build(scene, options);
+    PatchMesh mesh = PatchMesh::build(scene, options);
     ProgressiveSolver solver(scene, mesh, options);
     RadiosityRenderer renderer(scene, mesh);
     double solving = 0.0, next = 0.25;
@@ -141,7 +141,7 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
     for (const FormFactorMethod method : {FormFactorMethod::rays, FormFactorMethod::hemicube}) {
       for (const int target : settings.patches) {
         const float size = PatchMesh::patch_size_for(loaded.scene, size_t(target));
-        const PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
+        PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
         RadiosityOptions options;
         options.hemicube_res = settings.hemicube_res;
         options.converge = settings.converge;

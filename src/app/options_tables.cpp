@@ -21,6 +21,7 @@ namespace {
 
 constexpr const char* fog_modes[] = {"off", "linear", "exponential"};  // FogMode's order
 constexpr const char* form_factor_methods[] = {"hemicube", "analytic", "rays"};  // FormFactorMethod's order
+constexpr const char* meshings[] = {"uniform", "adaptive"};                        // Meshing's order
 
 bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
 bool square(double v) { return rt::is_square(int(v)); }
@@ -124,6 +125,17 @@ const RadiosityRow radiosity_table[] = {
     {"elements", "--elements", "radiosity", OptionKind::integer,
      N_("radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
      "(1: no substructuring)"), 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},
+    {"meshing", "--meshing", "radiosity", OptionKind::choice,
+     N_("radiosity/hybrid: uniform (the elements as built) or adaptive (elements cut in two where the light "
+     "arriving changes fast, while the solution runs)"), 0, 1,
+     [](const RadiosityOptions& o) { return double(int(o.meshing)); },
+     [](RadiosityOptions& o, double v) { o.meshing = Meshing(int(v)); }, meshings},
+    {"refine-threshold", "--refine-threshold", "radiosity", OptionKind::real,
+     N_("radiosity/hybrid: with --meshing adaptive, cut an element whose irradiance differs from the mean of "
+     "its neighbours' by more than T x the scene's mean irradiance"), 0.001, 10, LUZ_FIELD(RadiosityOptions, refine_threshold)},
+    {"refine-levels", "--refine-levels", "radiosity", OptionKind::integer,
+     N_("radiosity/hybrid: with --meshing adaptive, cut an element at most N times (2 cuts halve its edges)"), 1,
+     double(kMaxRefineLevels), LUZ_FIELD(RadiosityOptions, refine_levels)},
     {"overshoot", "--overshoot", "radiosity", OptionKind::real,
      N_("radiosity/hybrid: shoot W x the unshot radiosity (1: plain shooting)"), double(kMinOvershoot),
      double(kMaxOvershoot), LUZ_FIELD(RadiosityOptions, overshoot)},

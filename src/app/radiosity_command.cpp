@@ -84,7 +84,7 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings) {
   const RadiosityOptions& options = settings.radiosity;
-  const PatchMesh mesh = PatchMesh::build(scene, options);
+  PatchMesh mesh = PatchMesh::build(scene, options);
   ProgressiveSolver solver(scene, mesh, options);
   run_radiosity_solver(solver, settings);
 

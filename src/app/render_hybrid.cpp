@@ -15,7 +15,7 @@ Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int 
                             const RenderSettings& settings) {
   check_square_spp(settings);  // before the solve, not after it
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
-  const PatchMesh mesh = PatchMesh::build(scene, settings.radiosity);
+  PatchMesh mesh = PatchMesh::build(scene, settings.radiosity);
   std::optional<hybrid::RadiosityDiffuse> diffuse;
   {
     gl::OffscreenContext context;  // the hemicubes draw through GL; released before tracing

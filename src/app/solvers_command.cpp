@@ -82,7 +82,7 @@ int run_solvers(const SolversSettings& settings) {
     options.target_patches = settings.patches;
     options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
     options.hemicube_res = settings.hemicube_res;
-    const PatchMesh mesh = PatchMesh::build(scene, options);
+    PatchMesh mesh = PatchMesh::build(scene, options);
     if (mesh.size() > kMaxSolverPatches)
       throw Error(ErrorKind::bad_value,
                   trf("{}: {} patches; the full form-factor matrix of slide 36 grows as the "

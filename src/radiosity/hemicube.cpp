@@ -126,6 +126,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
   const auto t2 = clock::now();
 
   // F_ij = sum of the delta form factors of the pixels showing patch j.
+  sums_.resize(mesh_.size(), 0.0);  // adaptive subdivision adds elements between rows
   touched_.clear();
   for (size_t pixel = 0; pixel < ids_.size(); ++pixel) {
     const uint32_t id = ids_[pixel];

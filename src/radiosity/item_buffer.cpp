@@ -10,15 +10,19 @@
 namespace luz {
 
 PatchItems::PatchItems(const PatchMesh& mesh) {
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &vbo_);
+  upload(mesh);
+}
+
+void PatchItems::upload(const PatchMesh& mesh) {
   std::vector<glm::vec3> corners;
   corners.reserve(mesh.size() * 3);
   for (const Patch& p : mesh.patches)
     for (const uint32_t v : p.vertices) corners.push_back(mesh.vertices[v]);
   vertex_count_ = GLsizei(corners.size());
 
-  glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
-  glGenBuffers(1, &vbo_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data(),
                GL_STATIC_DRAW);

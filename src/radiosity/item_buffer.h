@@ -16,6 +16,8 @@ public:
   ~PatchItems();
   PatchItems(const PatchItems&) = delete;
   PatchItems& operator=(const PatchItems&) = delete;
+  // The mesh's elements again, after adaptive subdivision changed them.
+  void upload(const PatchMesh& mesh);
 
   // Sets the GL state an item buffer needs (depth test, no blending, both faces rasterised) and
   // makes the program current; then draw() once per face.

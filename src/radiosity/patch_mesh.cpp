@@ -169,7 +169,9 @@ private:
   std::unordered_map<uint64_t, uint32_t> keys_;
 };
 
-Patch make_patch(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v1, uint32_t v2) {
+}  // namespace
+
+Patch make_element(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v1, uint32_t v2) {
   Patch p;
   p.vertices[0] = v0;
   p.vertices[1] = v1;
@@ -187,8 +189,6 @@ Patch make_patch(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v
   p.clearance = clearance;
   return p;
 }
-
-}  // namespace
 
 // ---- [build] -----------------------------------------------------------------------------------
 // Elements of one triangle in grid_cell()'s order: they keep the source triangle's winding, and
@@ -247,8 +247,8 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
         for (int i = 0; i + j < n; ++i) {
           for (int half = 0; half < 2; ++half) {
             if (half == 1 && i + j > n - 2) break;
-            Patch p = half == 0 ? make_patch(result.vertices, at(i, j), at(i + 1, j), at(i, j + 1))
-                                : make_patch(result.vertices, at(i + 1, j), at(i + 1, j + 1),
+            Patch p = half == 0 ? make_element(result.vertices, at(i, j), at(i + 1, j), at(i, j + 1))
+                                : make_element(result.vertices, at(i + 1, j), at(i + 1, j + 1),
                                              at(i, j + 1));
             p.mesh = int(m);
             p.triangle = int(t);
@@ -287,19 +287,25 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
     for (const glm::vec3& corner : shooter.corners)
       shooter.radius = std::max(shooter.radius, glm::length(corner - shooter.centre));
   }
-  for (const uint32_t s : result.shooter_of) ++result.shooters[s].count;
+  result.group_by_shooter();
+  return result;
+}
+
+// A counting sort: keeps each group in index order.
+void PatchMesh::group_by_shooter() {
+  for (ShootingPatch& shooter : shooters) shooter.count = 0;
+  for (const uint32_t s : shooter_of) ++shooters[s].count;
   uint32_t first = 0;
-  for (ShootingPatch& shooter : result.shooters) {
+  for (ShootingPatch& shooter : shooters) {
     shooter.first = first;
     first += shooter.count;
     shooter.count = 0;
   }
-  result.members.resize(result.patches.size());
-  for (size_t e = 0; e < result.patches.size(); ++e) {
-    ShootingPatch& shooter = result.shooters[result.shooter_of[e]];
-    result.members[shooter.first + shooter.count++] = uint32_t(e);
+  members.resize(patches.size());
+  for (size_t e = 0; e < patches.size(); ++e) {
+    ShootingPatch& shooter = shooters[shooter_of[e]];
+    members[shooter.first + shooter.count++] = uint32_t(e);
   }
-  return result;
 }
 
 PatchMesh PatchMesh::build(const Scene& scene, const RadiosityOptions& options) {
@@ -346,6 +352,25 @@ float PatchMesh::total_area() const {
 }
 
 // ---- [locate] ----------------------------------------------------------------------------------
+namespace {
+
+// The weights of the element's vertices that give `point` (projected into its plane), clamped
+// to the element.
+glm::vec3 barycentric_weights(const std::vector<glm::vec3>& vertices, const Patch& p,
+                              const glm::vec3& point) {
+  const glm::vec3 &a = vertices[p.vertices[0]], &b = vertices[p.vertices[1]], &c = vertices[p.vertices[2]];
+  const glm::vec3 ab = b - a, ac = c - a, ap = point - a;
+  const float d00 = glm::dot(ab, ab), d01 = glm::dot(ab, ac), d11 = glm::dot(ac, ac);
+  const float d20 = glm::dot(ap, ab), d21 = glm::dot(ap, ac);
+  const float denominator = d00 * d11 - d01 * d01;
+  if (!(denominator > 0.0f)) return {1.0f, 0.0f, 0.0f};
+  const float v = (d11 * d20 - d01 * d21) / denominator, w = (d00 * d21 - d01 * d20) / denominator;
+  glm::vec3 weights = glm::max(glm::vec3(1.0f - v - w, v, w), glm::vec3(0.0f));
+  return weights / (weights.x + weights.y + weights.z);
+}
+
+}  // namespace
+
 PatchMesh::Location PatchMesh::locate(int mesh, int triangle, glm::vec2 b) const {
   const Source& source = sources_[size_t(mesh)];
   const size_t n = size_t(source.n);
@@ -353,6 +378,28 @@ PatchMesh::Location PatchMesh::locate(int mesh, int triangle, glm::vec2 b) const
   Location location;
   location.patch = source.first_patch + size_t(triangle) * n * n + cell.index(source.n);
   location.weights = cell.weights;
+  if (location.patch >= refinements.size() || refinements[location.patch].steps.empty())
+    return location;
+  // Cut since: the point in space, then down the cuts to the element now holding it.
+  const Refinement& cut = refinements[location.patch];
+  const glm::vec3 point = cell.weights.x * vertices[cut.corners[0]] +
+                          cell.weights.y * vertices[cut.corners[1]] +
+                          cell.weights.z * vertices[cut.corners[2]];
+  size_t e = location.patch, step = 0;
+  while (step < refinements[e].steps.size()) {
+    const Bisection& cut_here = refinements[e].steps[step];
+    // The cut runs from `middle` to `apex`; the second half is on the side of `end`.
+    const glm::vec3 &m = vertices[cut_here.middle], &c = vertices[cut_here.apex];
+    const glm::vec3 across = glm::cross(c - m, patches[e].normal);
+    if (glm::dot(point - m, across) * glm::dot(vertices[cut_here.end] - m, across) > 0.0f) {
+      e = cut_here.second;
+      step = 0;
+    } else {
+      ++step;
+    }
+  }
+  location.patch = e;
+  location.weights = barycentric_weights(vertices, patches[e], point);
   return location;
 }
 

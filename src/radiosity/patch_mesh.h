@@ -23,6 +23,10 @@
 // are already shorter than the element size (max_edge / k) gets fewer elements per patch, down
 // to one: a finely tessellated sphere is not cut further.
 //
+// Adaptive subdivision (mesh_bisection.h) cuts elements in two after the mesh is built; the
+// halves keep their source triangle and shooting patch, and `refinements` records the cuts so
+// that locate() still finds the element holding a point.
+//
 // Front side: a patch emits and receives only on the side its normal points to, the side from
 // which its triangle is wound counter-clockwise (glTF's front face, which the loader keeps).
 #include <cstdint>
@@ -47,7 +51,11 @@ struct Patch {
   float clearance = 0.0f;       // distance from the centroid to the nearest edge of the patch
   Rgb rho{0.0f};                // diffuse reflectance kd
   Rgb emission{0.0f};           // exitance E = pi * Le (W/m^2)
+  int level = 0;                // times adaptive subdivision has halved it
 };
+
+// An element's geometry (area, normal, centroid, clearance) from its three vertices.
+Patch make_element(const std::vector<glm::vec3>& vertices, uint32_t v0, uint32_t v1, uint32_t v2);
 
 // A shooting patch: a group of elements that shoots as one, from its centroid.
 struct ShootingPatch {
@@ -83,6 +91,7 @@ public:
   std::vector<uint32_t> shooter_of;  // per element, its shooting patch
   float max_edge = 0.0f;             // of a shooting patch
   int elements_per_edge = 1;
+  int revision = 0;                  // changes whenever the elements change after build()
 
   size_t size() const { return patches.size(); }
   float total_area() const;
@@ -97,6 +106,22 @@ public:
     glm::vec3 weights{1.0f, 0.0f, 0.0f};
   };
   Location locate(int mesh, int triangle, glm::vec2 b) const;
+
+  // The cuts made in element slot e since the mesh was built, in order (mesh_bisection.h): each
+  // split the element then in that slot, with vertices (a, middle, apex) kept there and
+  // (middle, end, apex) put in slot `second`. Empty when adaptive subdivision has not run.
+  struct Bisection {
+    uint32_t second, middle, apex, end;
+  };
+  struct Refinement {
+    uint32_t corners[3] = {};          // of the slot's element before its first cut
+    std::vector<Bisection> steps;
+  };
+  std::vector<Refinement> refinements;
+
+  // Fills `members` and every shooter's (first, count) from `shooter_of`, keeping the elements of
+  // a patch in index order.
+  void group_by_shooter();
 
 private:
   struct Source {

@@ -69,6 +69,7 @@ const std::vector<FormFactor>& PointSource::solid_angles(const Light& light) {
   glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 
   // Sum spot(direction) * d_omega per patch, pixel by pixel.
+  sums_.assign(mesh_.size(), 0.0);  // adaptive subdivision adds elements between shots
   emitted_ = 0.0;
   const double step = 2.0 / res_, dA = step * step;
   const int width = 3 * res_;

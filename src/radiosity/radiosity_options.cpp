@@ -17,11 +17,17 @@ const char* to_string(FormFactorMethod method) {
   return "?";
 }
 
+const char* to_string(Meshing meshing) {
+  return meshing == Meshing::adaptive ? "adaptive" : "uniform";
+}
+
 std::string RadiosityOptions::to_string() const {
   const std::string patches = patch_size > 0.0f ? fmt::format("patch size {:.4g} m", patch_size)
                                                 : fmt::format("~{} patches", target_patches);
-  const std::string mesh = fmt::format("{}, {}x{} elements each", patches, elements_per_edge,
-                                       elements_per_edge);
+  std::string mesh = fmt::format("{}, {}x{} elements each", patches, elements_per_edge,
+                                 elements_per_edge);
+  if (meshing == Meshing::adaptive)
+    mesh += fmt::format(", adaptive ({:g}, {} cuts)", refine_threshold, refine_levels);
   const std::string stop = max_shots > 0 ? fmt::format("{} shots", max_shots)
                                          : fmt::format("until unshot < {:.3g}", converge);
   return fmt::format("RadiosityOptions [{}, hemicube {}{}, {} form factors, {}{}{}{}{}]", mesh,
@@ -45,6 +51,12 @@ void RadiosityOptions::validate() const {
   if (elements_per_edge < 1 || elements_per_edge > kMaxElementsPerEdge)
     refuse(fmt::format("{} elements per patch edge, expected 1 .. {}", elements_per_edge,
                        kMaxElementsPerEdge));
+  if (!std::isfinite(refine_threshold) || !(refine_threshold > 0.0f))
+    refuse(fmt::format("refinement threshold {} must be a positive fraction of the mean "
+                       "irradiance (0 would cut every element down to the last level)",
+                       refine_threshold));
+  if (refine_levels < 1 || refine_levels > kMaxRefineLevels)
+    refuse(fmt::format("{} refinement levels, expected 1 .. {}", refine_levels, kMaxRefineLevels));
   if (hemicube_res < kMinHemicubeRes || hemicube_res > kMaxHemicubeRes || hemicube_res % 2 != 0)
     refuse(fmt::format("hemicube resolution {} must be even and in {} .. {}", hemicube_res,
                        kMinHemicubeRes, kMaxHemicubeRes));

@@ -8,6 +8,8 @@ namespace luz {
 
 enum class FormFactorMethod { hemicube, analytic, rays };
 const char* to_string(FormFactorMethod method);  // "hemicube", "analytic", "rays"
+enum class Meshing { uniform, adaptive };
+const char* to_string(Meshing meshing);  // "uniform", "adaptive"
 
 struct RadiosityOptions {
   // ---- Meshing (slide 40, "Mallado - Subestructuracion") ----
@@ -20,6 +22,16 @@ struct RadiosityOptions {
   float patch_size = 0.0f;
   int target_patches = 500;
   int elements_per_edge = 4;
+  // Adaptive subdivision (Cohen et al. 1986): while the solution runs, an element whose
+  // irradiance differs from the mean of its neighbours' on the same surface by more than
+  // refine_threshold x the scene's mean irradiance (where the light is not the linear ramp Gouraud
+  // shading draws) is cut in two (mesh_bisection.h), down to refine_levels cuts (4 cuts halve
+  // its edges twice); the new elements gather what every patch has shot so far. The light
+  // arriving is compared, not the radiosity, so that a checkerboard's own pattern is not taken
+  // for a shadow. uniform: the mesh stays as built.
+  Meshing meshing = Meshing::adaptive;
+  float refine_threshold = 0.1f;
+  int refine_levels = 4;
 
   // ---- Form factors: the hemicube (slide 37) ----
   int hemicube_res = 128;       // pixels across the top face (64 .. 1024, even)
@@ -61,6 +73,7 @@ struct RadiosityOptions {
 };
 
 inline constexpr int kMaxVisibilityRays = 64;
+inline constexpr int kMaxRefineLevels = 12;
 inline constexpr int kMaxPixelSamples = 256;
 inline constexpr float kMinOvershoot = 1.0f;
 inline constexpr float kMaxOvershoot = 1.9f;

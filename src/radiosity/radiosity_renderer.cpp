@@ -20,6 +20,7 @@ struct RadiosityRenderer::Impl {
   gl::Program program{{"radiosity.vert", "radiosity.frag"}};
   GLuint vao = 0, positions = 0, colours = 0;
   GLsizei vertex_count = 0;
+  int revision = 0;  // of the mesh uploaded
   float far = 1.0f;
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
@@ -42,8 +43,17 @@ static const Scene& with_gl_loaded(const Scene& scene) {
 RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
     : impl_(std::make_unique<Impl>(with_gl_loaded(scene), mesh)) {
   Impl& s = *impl_;
-  // Non-indexed: three corners per element, so a flat picture can give each its own colour.
-  // Drawn grouped by shooting patch (PatchMesh::members), so a patch is a range of primitives.
+  glGenVertexArrays(1, &s.vao);
+  glGenBuffers(1, &s.positions);
+  glGenBuffers(1, &s.colours);
+  upload_elements();
+}
+
+// Non-indexed: three corners per element, so a flat picture can give each its own colour.
+// Drawn grouped by shooting patch (PatchMesh::members), so a patch is a range of primitives.
+void RadiosityRenderer::upload_elements() {
+  Impl& s = *impl_;
+  const PatchMesh& mesh = s.mesh;
   std::vector<glm::vec3> corners;
   corners.reserve(3 * mesh.size());
   Bounds bounds;
@@ -54,16 +64,14 @@ RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
     }
   s.vertex_count = GLsizei(corners.size());
   s.corner_colours.assign(corners.size(), Rgb(0.0f));
+  s.revision = mesh.revision;
 
-  glGenVertexArrays(1, &s.vao);
   glBindVertexArray(s.vao);
-  glGenBuffers(1, &s.positions);
   glBindBuffer(GL_ARRAY_BUFFER, s.positions);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data(),
                GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-  glGenBuffers(1, &s.colours);
   glBindBuffer(GL_ARRAY_BUFFER, s.colours);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(s.corner_colours.size() * sizeof(Rgb)),
                s.corner_colours.data(), GL_DYNAMIC_DRAW);
@@ -78,6 +86,7 @@ RadiosityRenderer::~RadiosityRenderer() = default;
 
 void RadiosityRenderer::update(const RadianceField& field, const RadiosityOptions& options) {
   Impl& s = *impl_;
+  if (s.revision != s.mesh.revision) upload_elements();  // adaptive subdivision cut elements
   for (size_t drawn = 0; drawn < s.mesh.size(); ++drawn) {
     const uint32_t e = s.mesh.members[drawn];
     for (int k = 0; k < 3; ++k)

@@ -24,7 +24,8 @@ public:
   RadiosityRenderer(const RadiosityRenderer&) = delete;
   RadiosityRenderer& operator=(const RadiosityRenderer&) = delete;
 
-  // New colours (after solver steps). Uses options.flat_patches to pick patch or vertex values.
+  // New colours (after solver steps), and the elements again if adaptive subdivision changed
+  // them. Uses options.flat_patches to pick patch or vertex values.
   void update(const RadianceField& field, const RadiosityOptions& options);
 
   // Draws into the currently bound framebuffer of the given size. `highlight`: a shooting patch
@@ -38,6 +39,7 @@ public:
                int highlight = -1);
 
 private:
+  void upload_elements();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

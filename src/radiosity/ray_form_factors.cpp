@@ -73,6 +73,7 @@ RayFormFactors::~RayFormFactors() = default;
 template <typename Value>
 const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& value) {
   std::atomic<uint64_t> traced{0};
+  values_.resize(mesh_.size());  // adaptive subdivision adds elements between rows
   tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
                     [&](const tbb::blocked_range<size_t>& range) {
                       uint64_t rays = 0;  // summed per range: one atomic add, not one per element

@@ -49,12 +49,14 @@ public:
   // Rays traced for the last row or lights' solid angles.
   uint64_t last_rays() const { return last_rays_; }
 
-private:
-  // `traced` grows by the rays they trace.
+  // One element's entry of row() and of solid_angles() (safe on any thread, for an element
+  // added since the last row); `traced` grows by the rays they trace.
   double element_factor(size_t shooter, size_t element, size_t rays, uint32_t seed, uint32_t shot,
                         uint64_t& traced) const;
   double element_solid_angle(const Light& light, size_t element, size_t rays, uint32_t seed,
                              uint32_t shot, uint64_t& traced) const;
+
+private:
   template <typename Value>
   const std::vector<FormFactor>& for_each_element(const Value& value);
 

@@ -54,7 +54,7 @@ double ProgressiveSolver::power(const Rgb& exitance, float area) {
 }
 
 // ---- [construction and reset] ------------------------------------------------------------------
-ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
+ProgressiveSolver::ProgressiveSolver(const Scene& scene, PatchMesh& mesh,
                                      const RadiosityOptions& options)
     : scene_(scene), mesh_(mesh), options_(options), items_(mesh),
       hemicube_(mesh, items_, options.hemicube_res) {
@@ -80,14 +80,23 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
   reset();
 }
 
-// Step 1: radiosity = 0, unshot = E for every patch.
+// Step 1: radiosity = 0, unshot = E for every patch, on the mesh as it was given.
 void ProgressiveSolver::reset() {
+  if (refinement_passes_ > 0) {
+    const int revision = mesh_.revision;
+    mesh_ = original_;
+    mesh_.revision = revision + 1;
+    items_.upload(mesh_);
+    refinement_passes_ = 0;
+  }
+  next_refinement_ = 0;
   radiosity_.assign(mesh_.size(), Rgb(0.0f));
   unshot_.assign(mesh_.size(), Rgb(0.0f));
+  irradiance_.assign(mesh_.size(), Rgb(0.0f));
   patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   tally_ = EnergyTally{};
   for (size_t j = 0; j < mesh_.size(); ++j) {
-    receive(j, mesh_.patches[j].emission);
+    add_unshot(j, mesh_.patches[j].emission);
     tally_.emitted += power(unshot_[j], mesh_.patches[j].area);
   }
   light_power_.clear();
@@ -142,13 +151,13 @@ void ProgressiveSolver::shoot(size_t i) {
     for (size_t k = r.begin(); k != r.end(); ++k) {
       const Patch& receiver = mesh_.patches[row[k].patch];
       const double F_ij = form_factor_to(shooter, row[k]);
-      arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot);
+      arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot, sent_);
     }
   });
   double delivered = 0.0;
   for (size_t k = 0; k < row.size(); ++k) {
     const Patch& receiver = mesh_.patches[row[k].patch];
-    receive(row[k].patch, receiver.rho * arriving_[k] / receiver.area);
+    receive(row[k].patch, arriving_[k] / receiver.area);
     // Of what arrives, rho_j is reflected, the rest absorbed.
     tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * arriving_[k]);
     delivered += mean(arriving_[k]);
@@ -190,10 +199,9 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
     row_times_ = hemicube_.last_times();
     return row;
   }
-  if (!rays_) rays_ = std::make_unique<RayFormFactors>(scene_, mesh_);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<FormFactor>& row =
-      rays_->row(i, options_.visibility_rays, options_.seed, uint32_t(shots_));
+      rays().row(i, options_.visibility_rays, options_.seed, uint32_t(shots_));
   row_times_ = RowTimes{};
   row_times_.draw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return row;
@@ -204,8 +212,9 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
 // shooter is not small seen from j), where each of its elements counts with its own form factor
 // from j: the mean of its elements' sent radiosity weighted by F(j -> element). A patch half
 // under a block then lights the block's foot with its bright half, as its elements would.
+// `parts`: what each of the patch's elements sent, in the order of its members.
 Rgb ProgressiveSolver::seen_from(const ShootingPatch& shooter, const Patch& receiver,
-                                 const Rgb& shot) const {
+                                 const Rgb& shot, const std::vector<Rgb>& parts) const {
   if (options_.form_factors == FormFactorMethod::hemicube || shooter.count < 2) return shot;
   if (!near_the_patch(receiver, shooter)) return shot;
   const glm::vec3 corners[3] = {mesh_.vertices[receiver.vertices[0]],
@@ -219,40 +228,49 @@ Rgb ProgressiveSolver::seen_from(const ShootingPatch& shooter, const Patch& rece
                                   mesh_.vertices[part.vertices[2]]};
     const double F = triangle_to_polygon_form_factor(corners[0], corners[1], corners[2],
                                                      receiver.normal, polygon);
-    weighted += F * glm::dvec3(sent_[k]);
+    weighted += F * glm::dvec3(parts[k]);
     total += F;
   }
   return total > 0.0 ? Rgb(weighted / total) : shot;
 }
 
-void ProgressiveSolver::receive(size_t element, const Rgb& gain) {
+void ProgressiveSolver::receive(size_t element, const Rgb& arriving) {
+  irradiance_[element] += arriving;
+  add_unshot(element, mesh_.patches[element].rho * arriving);
+}
+
+void ProgressiveSolver::add_unshot(size_t element, const Rgb& gain) {
   unshot_[element] += gain;
   patch_unshot_[mesh_.shooter_of[element]] +=
       glm::dvec3(gain) * double(mesh_.patches[element].area);
 }
 
 // ---- [point lights] ----------------------------------------------------------------------------
+// The flux I * omega reaching an element of solid angle omega from the light, with the classroom
+// attenuation where the scene asks for it (f_att(d) d^2: 1 for the physical 1/d^2).
+Rgb ProgressiveSolver::light_flux(const Light& light, const Patch& receiver, float omega) {
+  float attenuation = 1.0f;
+  if (light.attenuation.classroom) {
+    const float d = glm::length(receiver.centre - light.position);
+    attenuation = light.attenuation.factor(d) * d * d;
+  }
+  return light.intensity * (omega * attenuation);
+}
+
 // Patch j receives the flux Phi_j = I * omega_j (omega_j: its spot-weighted solid angle from the
 // light), so its irradiance is Phi_j / A_j and it gains rho_j Phi_j / A_j of unshot exitance.
 void ProgressiveSolver::shoot_light(size_t k) {
   const Light& light = scene_.lights[lights_[k]];
-  if (options_.form_factors == FormFactorMethod::rays && !rays_)
-    rays_ = std::make_unique<RayFormFactors>(scene_, mesh_);
   const std::vector<FormFactor>& omegas =
       options_.form_factors == FormFactorMethod::rays
-          ? rays_->solid_angles(light, 4 * options_.visibility_rays, options_.seed, uint32_t(shots_))
+          ? rays().solid_angles(light, 4 * options_.visibility_rays, options_.seed, uint32_t(shots_))
           : cube_->solid_angles(light);
   row_times_ = RowTimes{};
   double delivered = 0.0;
   for (const FormFactor& f : omegas) {
     const Patch& receiver = mesh_.patches[f.patch];
-    float attenuation = 1.0f;  // f_att(d) d^2: 1 for the physical 1/d^2
-    if (light.attenuation.classroom) {
-      const float d = glm::length(receiver.centre - light.position);
-      attenuation = light.attenuation.factor(d) * d * d;
-    }
-    const Rgb flux = light.intensity * (f.value * attenuation);
-    receive(f.patch, receiver.rho * flux / receiver.area);
+    const Rgb flux = light_flux(light, receiver, f.value);
+    receive(f.patch, flux / receiver.area);
     tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * flux);
     delivered += mean(flux);
   }
@@ -289,6 +307,7 @@ bool ProgressiveSolver::step() {
     shoot_light(next_light_++);  // punctual lights first, each once
     return true;
   }
+  if (refinement_due()) refine();
   shoot(most_unshot_patch());
   return true;
 }
@@ -310,6 +329,16 @@ std::vector<Rgb> ProgressiveSolver::displayed() const {
   std::vector<Rgb> b(radiosity_.size());
   for (size_t i = 0; i < b.size(); ++i) b[i] = radiosity_[i] + unshot_[i];  // step 3
   return b;
+}
+
+Rgb ProgressiveSolver::patch_sent(size_t shooter) const {
+  const ShootingPatch& s = mesh_.shooters[shooter];
+  glm::dvec3 sum(0.0);
+  for (uint32_t k = s.first; k < s.first + s.count; ++k) {
+    const uint32_t e = mesh_.members[k];
+    sum += glm::dvec3(radiosity_[e]) * double(mesh_.patches[e].area);
+  }
+  return Rgb(sum / double(s.area));
 }
 
 Rgb ProgressiveSolver::patch_radiosity(size_t shooter) const {

@@ -27,6 +27,15 @@
 // over-relaxation of Southwell's method, Gortler, Cohen & Slusallek 1993). The patch to shoot
 // is then the one with the largest |unshot power|, and "unshot power" sums magnitudes.
 //
+// Adaptive subdivision (options.meshing): when the unshot power first falls below each of
+// kRefineAt's fractions (once every light has shot), elements whose irradiance differs from a
+// neighbour's are cut in two (mesh_bisection.h) and each new element gathers what every patch
+// and light has shot so far, F(j -> i) x V x what i sent in all its shots (radiosity[i] is
+// exactly that sum), so it holds what it would have received had it existed from the start.
+// Its unshot radiosity is then that minus what its parent had already sent; the light the
+// coarser element had counted wrongly is moved between "escaped", "absorbed" and "unshot", so
+// the energy balance holds at every step. The solver refines the mesh it was given.
+//
 // The solver steps on the thread that owns the GL context: step() is one shot, so the viewer
 // can spend a time budget per frame and show each step. All quantities are RGB exitances
 // (W/m^2) per patch; powers are those times the area, summed as the mean of R, G and B.
@@ -49,6 +58,8 @@
 
 namespace luz {
 
+class MeshBisection;
+
 // One row of the history: after shot `shot` (1-based), the unshot power left.
 struct ShotRecord {
   int shot = 0;
@@ -61,6 +72,11 @@ struct ShotRecord {
 // Where the emitted power has gone so far (W, mean of R, G, B). emitted = absorbed + unshot +
 // escaped at every step; escaped is what left the scene or hit the back of a patch (0 up to the
 // hemicube's discretisation in a closed room of front faces).
+// Adaptive subdivision's passes: when the unshot power first falls below each fraction of the
+// emitted power (the first once the direct light has been shot, the others for the gradients the
+// interreflections make).
+inline constexpr double kRefineAt[] = {0.5, 0.15, 0.05};
+
 struct EnergyTally {
   double emitted = 0.0;
   double absorbed = 0.0;
@@ -71,9 +87,10 @@ struct EnergyTally {
 class ProgressiveSolver {
 public:
   // Needs a current GL context (the hemicube draws through it) for its whole life. `mesh` and
-  // `scene` must outlive the solver. Directional lights are not shot (no position to put a
+  // `scene` must outlive the solver; with adaptive subdivision the solver refines `mesh`, and
+  // reset() puts it back as it was given. Directional lights are not shot (no position to put a
   // cube at): warnings() says so.
-  ProgressiveSolver(const Scene& scene, const PatchMesh& mesh, const RadiosityOptions& options);
+  ProgressiveSolver(const Scene& scene, PatchMesh& mesh, const RadiosityOptions& options);
 
   // Step 1 again: radiosity = 0, unshot = E, lights unshot, history cleared.
   void reset();
@@ -86,11 +103,16 @@ public:
   void shoot(size_t i);
   // Shoots the scene's light k as a point source.
   void shoot_light(size_t k);
+  // One pass of adaptive subdivision now (step() makes them at kRefineAt); returns the elements
+  // it added.
+  size_t refine();
 
   // ---- State ----
   // Per element.
   const std::vector<Rgb>& radiosity() const { return radiosity_; }
   const std::vector<Rgb>& unshot() const { return unshot_; }
+  // The light that has arrived, per square metre (W/m^2): displayed = E + rho x irradiance.
+  const std::vector<Rgb>& irradiance() const { return irradiance_; }
   // Step 3: what each element shows, radiosity + unshot (exitance B, W/m^2).
   std::vector<Rgb> displayed() const;
   // A shooting patch's radiosity: the area-weighted mean of its elements' displayed values.
@@ -108,6 +130,9 @@ public:
   // Shooting patch, -1 - k for light k, or -1 before any.
   int last_shooter() const { return last_shooter_; }
   size_t lights_left() const { return lights_.size() - next_light_; }
+  // Adaptive subdivision's passes so far, and the elements they added.
+  int refinement_passes() const { return refinement_passes_; }
+  size_t refined_elements() const { return refinement_passes_ > 0 ? mesh_.size() - original_.size() : 0; }
   const std::vector<ShotRecord>& history() const { return history_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
   // Seconds spent in the last shot on drawing, reading back, accumulating (hemicube) and on
@@ -128,12 +153,26 @@ private:
   static double power(const Rgb& exitance, float area);
   double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
   const std::vector<FormFactor>& row(size_t shooter, float rotation);
-  Rgb seen_from(const ShootingPatch& shooter, const Patch& receiver, const Rgb& shot) const;
+  Rgb seen_from(const ShootingPatch& shooter, const Patch& receiver, const Rgb& shot,
+                const std::vector<Rgb>& parts) const;
+  // Element j receives `arriving` W/m^2: its irradiance grows by it and its unshot radiosity by
+  // rho_j times it.
+  void receive(size_t element, const Rgb& arriving);
   // Element j's unshot radiosity grows by `gain` (its patch's unshot power with it).
-  void receive(size_t element, const Rgb& gain);
+  void add_unshot(size_t element, const Rgb& gain);
+  static Rgb light_flux(const Light& light, const Patch& receiver, float omega);
+  bool refinement_due() const;
+  // Adaptive subdivision's pieces (adaptive_subdivision.cpp).
+  std::vector<uint32_t> too_coarse(const MeshBisection& bisection,
+                                   const std::vector<uint32_t>& candidates) const;
+  Rgb gather(uint32_t element, const std::vector<Rgb>& sent, std::vector<Rgb>& parts) const;
+  // What a shooting patch has sent in all its shots, per square metre.
+  Rgb patch_sent(size_t shooter) const;
+  RayFormFactors& rays();
 
   const Scene& scene_;
-  const PatchMesh& mesh_;
+  PatchMesh& mesh_;
+  PatchMesh original_;  // the mesh as given, kept at the first refinement for reset()
   RadiosityOptions options_;
   PatchItems items_;
   Hemicube hemicube_;
@@ -143,13 +182,15 @@ private:
   size_t next_light_ = 0;
   std::vector<Rgb> light_power_;       // I * sum(spot d_omega), filled when each light shoots
   double unshot_light_power_ = 0.0;    // estimate for lights not yet shot (I * 4 pi)
-  std::vector<Rgb> radiosity_, unshot_;  // per element
+  std::vector<Rgb> radiosity_, unshot_, irradiance_;  // per element
   std::vector<Rgb> sent_;                 // per element of the patch shooting now
   std::vector<Rgb> arriving_;             // per entry of its row: the power arriving (W)
   std::vector<glm::dvec3> patch_unshot_;  // per shooting patch: sum of A_j unshot_j (W)
   EnergyTally tally_;
   int shots_ = 0;
   int last_shooter_ = -1;
+  int refinement_passes_ = 0;
+  size_t next_refinement_ = 0;  // into kRefineAt
   std::mt19937 random_;
   std::vector<ShotRecord> history_;
   std::vector<std::string> warnings_;

@@ -30,7 +30,7 @@ const char* to_string(Method method) {
   return "?";
 }
 
-SolverComparison::SolverComparison(const Scene& scene, const PatchMesh& mesh,
+SolverComparison::SolverComparison(const Scene& scene, PatchMesh& mesh,
                                    const RadiosityOptions& options, size_t max_rows)
     : mesh_(mesh), max_rows_(max_rows) {
   // The shooting of slide 39, its hemicube unrotated so that its rows are the matrix's rows:
@@ -38,6 +38,7 @@ SolverComparison::SolverComparison(const Scene& scene, const PatchMesh& mesh,
   RadiosityOptions shooting_options = options;
   shooting_options.random_rotation = false;
   shooting_options.form_factors = FormFactorMethod::hemicube;  // the matrix's own rows
+  shooting_options.meshing = Meshing::uniform;                 // the matrix's own elements
   shooting_options.max_shots = 0;
   shooting_options.converge = 0.0f;
   shooting_options.ambient_estimate = false;

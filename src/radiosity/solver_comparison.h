@@ -57,7 +57,7 @@ public:
   // Builds F (one unrotated hemicube per patch, options.hemicube_res), the system, and B*.
   // Point lights are shot once first, and what their light leaves on the patches is part of E
   // for every method. Each method stops after `max_rows` rows (or once its residual is 1e-12).
-  SolverComparison(const Scene& scene, const PatchMesh& mesh, const RadiosityOptions& options,
+  SolverComparison(const Scene& scene, PatchMesh& mesh, const RadiosityOptions& options,
                    size_t max_rows);
   ~SolverComparison();
 

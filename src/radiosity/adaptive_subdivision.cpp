@@ -1,0 +1,172 @@
+// Adaptive subdivision inside progressive radiosity (slide 40, "Mallado"; Cohen, Greenberg,
+// Immel & Brock 1986): find the elements too coarse for the light on them, cut them
+// (mesh_bisection.h), and let the new elements gather what has been shot. See shooting.h.
+#include <algorithm>
+#include <iterator>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/i18n.h"
+#include "radiosity/mesh_bisection.h"
+#include "radiosity/shooting.h"
+
+namespace luz {
+namespace {
+
+double mean(const Rgb& c) { return (double(c.r) + double(c.g) + double(c.b)) / 3.0; }
+
+// The rays of a gather draw their points from a stream no shot uses.
+constexpr uint32_t kGatherShot = 0xffffff;
+
+bool emits(const Patch& p) { return mean(p.emission) > 0.0; }
+
+}  // namespace
+
+RayFormFactors& ProgressiveSolver::rays() {
+  if (!rays_) rays_ = std::make_unique<RayFormFactors>(scene_, mesh_);
+  return *rays_;
+}
+
+bool ProgressiveSolver::refinement_due() const {
+  if (options_.meshing != Meshing::adaptive || next_light_ < lights_.size()) return false;
+  return next_refinement_ < std::size(kRefineAt) && unshot_fraction() < kRefineAt[next_refinement_];
+}
+
+// The candidates whose irradiance differs from the mean of their neighbours' on the same surface
+// by more than the threshold times the scene's mean irradiance, and that may still be cut. Gouraud
+// shading draws the light as linear between vertices: where it is linear (a smooth falloff), an
+// element is its neighbours' mean and needs no cut; along a shadow's edge or into a corner it is
+// not. Emitters are left whole: what they show is E.
+std::vector<uint32_t> ProgressiveSolver::too_coarse(const MeshBisection& bisection,
+                                                    const std::vector<uint32_t>& candidates) const {
+  double area = 0.0, arrived = 0.0;
+  for (size_t e = 0; e < mesh_.size(); ++e) {
+    area += double(mesh_.patches[e].area);
+    arrived += mean(irradiance_[e]) * double(mesh_.patches[e].area);
+  }
+  const double step = area > 0.0 ? double(options_.refine_threshold) * arrived / area : 0.0;
+  std::vector<uint32_t> marked, around;
+  if (!(step > 0.0)) return marked;
+  for (const uint32_t e : candidates) {
+    const Patch& p = mesh_.patches[e];
+    if (p.level >= options_.refine_levels || emits(p) || !(p.area > 0.0f)) continue;
+    around.clear();
+    bisection.neighbours(e, around);
+    if (around.empty()) continue;
+    double neighbours = 0.0;
+    for (const uint32_t f : around) neighbours += mean(irradiance_[f]);
+    if (std::abs(mean(irradiance_[e]) - neighbours / double(around.size())) > step) marked.push_back(e);
+  }
+  return marked;
+}
+
+// What element j has received so far, per square metre: from every patch i that has shot,
+// F(j -> i) V_ij times all it sent (its elements' radiosity, seen from j as a shot is), and from
+// every light already shot, its flux through the element.
+Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<Rgb>& sent, std::vector<Rgb>& parts) const {
+  const Patch& element = mesh_.patches[j];
+  const size_t m = size_t(options_.visibility_rays);
+  uint64_t traced = 0;
+  glm::dvec3 arrived(0.0);
+  for (size_t i = 0; i < mesh_.shooters.size(); ++i) {
+    if (mean(sent[i]) == 0.0) continue;
+    const ShootingPatch& shooter = mesh_.shooters[i];
+    const double F_ij = rays_->element_factor(i, j, m, options_.seed, kGatherShot, traced);
+    if (!(F_ij > 0.0)) continue;
+    parts.clear();
+    for (uint32_t k = shooter.first; k < shooter.first + shooter.count; ++k)
+      parts.push_back(radiosity_[mesh_.members[k]]);
+    const double F_ji = F_ij * double(shooter.area) / double(element.area);
+    arrived += F_ji * glm::dvec3(seen_from(shooter, element, sent[i], parts));
+  }
+  // A light's shadow edge is where the cuts are: its rays are the most a ray estimate takes.
+  for (size_t k = 0; k < next_light_; ++k) {
+    const Light& light = scene_.lights[lights_[k]];
+    const double omega = rays_->element_solid_angle(light, j, kMaxVisibilityRays, options_.seed,
+                                                    kGatherShot, traced);
+    arrived += glm::dvec3(light_flux(light, element, float(omega))) / double(element.area);
+  }
+  return Rgb(arrived);
+}
+
+// Cut, gather, and look again at what was cut and its neighbours, until nothing is too coarse
+// or the elements are refine_levels cuts deep.
+size_t ProgressiveSolver::refine() {
+  if (refinement_passes_ == 0) original_ = mesh_;  // for reset()
+  const size_t before = mesh_.size();
+  rays();
+  MeshBisection bisection(mesh_);
+  // What each patch has sent in all its shots, per square metre (its elements' radiosity).
+  std::vector<Rgb> sent(mesh_.shooters.size(), Rgb(0.0f));
+  for (size_t i = 0; i < mesh_.shooters.size(); ++i) sent[i] = patch_sent(i);
+
+  std::vector<uint32_t> candidates(mesh_.size()), changed;
+  std::iota(candidates.begin(), candidates.end(), 0u);
+  for (int depth = 0; depth < options_.refine_levels; ++depth) {
+    const std::vector<uint32_t> marked = too_coarse(bisection, candidates);
+    if (marked.empty()) break;
+    if (double(mesh_.size()) + 2.0 * double(marked.size()) > kMaxElements) {
+      warnings_.push_back(i18n::trf("radiosity: adaptive subdivision stopped at {} elements, the "
+                                    "budget of {:.3g}", mesh_.size(), kMaxElements));
+      break;
+    }
+    std::vector<int> level(marked.size());
+    for (size_t k = 0; k < marked.size(); ++k) level[k] = mesh_.patches[marked[k]].level;
+    changed.clear();
+    for (size_t k = 0; k < marked.size(); ++k)  // unless a neighbour's cut already cut it
+      if (mesh_.patches[marked[k]].level == level[k]) bisection.split(marked[k], changed);
+
+    // A new half starts as a copy of the element it came from (the half that kept the slot),
+    // in the order they were made, so a half cut again copies its own values.
+    radiosity_.resize(mesh_.size());
+    unshot_.resize(mesh_.size());
+    irradiance_.resize(mesh_.size());
+    for (size_t k = 0; k + 1 < changed.size(); k += 2) {
+      const uint32_t kept = changed[k], made = changed[k + 1];
+      radiosity_[made] = radiosity_[kept];
+      unshot_[made] = unshot_[kept];
+      irradiance_[made] = irradiance_[kept];
+    }
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    mesh_.group_by_shooter();
+
+    std::vector<Rgb> gathered(changed.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        std::vector<Rgb> parts;
+                        for (size_t k = range.begin(); k != range.end(); ++k)
+                          gathered[k] = gather(changed[k], sent, parts);
+                      });
+    for (size_t k = 0; k < changed.size(); ++k) {
+      const uint32_t e = changed[k];
+      const Patch& p = mesh_.patches[e];
+      // The light the coarser element counted wrongly: of it, rho goes to unshot (below), the
+      // rest to absorbed, and it came from (or goes back to) what was counted as escaped.
+      const Rgb correction = (gathered[k] - irradiance_[e]) * p.area;
+      tally_.absorbed += mean((Rgb(1.0f) - p.rho) * correction);
+      tally_.escaped -= mean(correction);
+      irradiance_[e] = gathered[k];
+      unshot_[e] = p.emission + p.rho * gathered[k] - radiosity_[e];  // displayed = E + rho H
+    }
+    candidates = changed;
+    for (const uint32_t e : changed) bisection.neighbours(e, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  }
+  bisection.finish();
+  patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
+  for (size_t e = 0; e < mesh_.size(); ++e)
+    patch_unshot_[mesh_.shooter_of[e]] += glm::dvec3(unshot_[e]) * double(mesh_.patches[e].area);
+  ++mesh_.revision;
+  items_.upload(mesh_);
+  ++refinement_passes_;
+  while (next_refinement_ < std::size(kRefineAt) && unshot_fraction() < kRefineAt[next_refinement_])
+    ++next_refinement_;
+  return mesh_.size() - before;
+}
+
+}  // namespace luz
