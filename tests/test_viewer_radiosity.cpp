@@ -161,6 +161,14 @@ TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   std::smatch shots;
   ASSERT_TRUE(std::regex_search(result.output, shots, std::regex("(\\d+) shots"))) << result.output;
   EXPECT_EQ(converged["shots"].get<int>(), std::stoi(shots[1])) << result.output;
+  // Adaptive subdivision (the default) cut elements while the class watched, and the command's
+  // mesh is the same one.
+  const nlohmann::json start = json_of(file("start.json"));
+  EXPECT_GE(converged["refinement_passes"].get<int>(), 1);
+  EXPECT_EQ(converged["elements"].get<size_t>(),
+            start["elements"].get<size_t>() + converged["refined_elements"].get<size_t>());
+  EXPECT_GT(converged["refined_elements"].get<size_t>(), 0u);
+  EXPECT_EQ(json_of(file("reset.json"))["elements"], start["elements"]) << "reset: the mesh as built";
 
   test::expect_same_picture(codes(out), viewer);
 }

@@ -157,6 +157,21 @@ void mesh_settings(RadiosityState& r) {
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
   name_widget("elements per patch edge");
   dim_text(tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
+  bool adaptive = o.meshing == Meshing::adaptive;
+  ImGui::Checkbox(tr("adaptive subdivision"), &adaptive);
+  name_widget("adaptive subdivision");
+  o.meshing = adaptive ? Meshing::adaptive : Meshing::uniform;
+  if (adaptive) {
+    const SliderRange threshold = radiosity_range("refine-threshold");
+    ImGui::SliderFloat(tr("cut where the light is off linear by"), &o.refine_threshold, threshold.low, 1.0f,
+                       tr("%.3f x mean"), ImGuiSliderFlags_Logarithmic);
+    name_widget("cut where the light is off linear by");
+    const SliderRange levels = radiosity_range("refine-levels");
+    ImGui::SliderInt(tr("cuts per element at most"), &o.refine_levels, int(levels.low), 8);
+    name_widget("cuts per element at most");
+    dim_text("%s", trf("{} elements added in {} passes (outlines show them)", r.status.refined_elements,
+                       r.status.refinement_passes).c_str());
+  }
   // The powers of two in the table's range.
   const SliderRange res = radiosity_range("hemicube");
   std::vector<int> sizes;

@@ -48,6 +48,8 @@ struct RadiosityStatus {
   bool built = false;
   size_t patches = 0;          // shooting patches built
   size_t elements = 0;         // the elements they are cut into (what receives and is drawn)
+  size_t refined_elements = 0; // of those, added by adaptive subdivision so far
+  int refinement_passes = 0;
   float patch_size = 0.0f;     // the mesh's longest edge, m
   int hemicube_res = 0;        // of the solver that runs
   bool remesh_pending = false; // the options ask for another patch size or hemicube

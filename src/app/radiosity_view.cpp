@@ -37,6 +37,9 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
   o.overshoot = state.options.overshoot;
   o.form_factors = state.options.form_factors;
   o.visibility_rays = state.options.visibility_rays;
+  o.meshing = state.options.meshing;  // from the next pass on; restart to refine from the start
+  o.refine_threshold = state.options.refine_threshold;
+  o.refine_levels = state.options.refine_levels;
   o.ambient_estimate = state.options.ambient_estimate;
   o.flat_patches = state.options.flat_patches;
   o.outlines = state.options.outlines;
@@ -134,6 +137,8 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   s.remesh_pending = !built_for(state.options);
   s.patches = mesh_.shooters.size();
   s.elements = mesh_.size();
+  s.refined_elements = solver_.refined_elements();
+  s.refinement_passes = solver_.refinement_passes();
   s.patch_size = mesh_.max_edge;
   s.hemicube_res = built_with_.hemicube_res;
   s.shots = solver_.shots();
@@ -237,6 +242,8 @@ nlohmann::json to_json(const RadiosityState& state) {
   return {{"built", s.built},
           {"patches", s.patches},
           {"elements", s.elements},
+          {"refined_elements", s.refined_elements},
+          {"refinement_passes", s.refinement_passes},
           {"patch_size", s.patch_size},
           {"hemicube_res", s.hemicube_res},
           {"shots", s.shots},
