@@ -3,6 +3,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -340,6 +344,93 @@ TEST(CliSpanish, HelpSpeaksSpanish) {
   const auto english = run_luz({"render", "--help"});
   EXPECT_TRUE(contains(english.output, "Print nothing on success")) << english.output;
   EXPECT_TRUE(contains(english.output, "Options:")) << english.output;
+}
+
+// The text of a translated format string between its fields ("{}", "{:.3f}", ...): what the
+// message prints whatever figures it holds.
+std::vector<std::string> spanish_pieces(const char* id) {
+  const std::string text = spanish(id);
+  std::vector<std::string> pieces;
+  size_t from = 0;
+  for (size_t open = text.find('{'); open != std::string::npos; open = text.find('{', from)) {
+    pieces.push_back(text.substr(from, open - from));
+    from = text.find('}', open) + 1;
+  }
+  pieces.push_back(text.substr(from));
+  return pieces;
+}
+
+// Every piece of `id`'s Spanish, in order, on one line of `output`.
+bool has_spanish_line(const std::string& output, const char* id) {
+  const std::vector<std::string> pieces = spanish_pieces(id);
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    size_t at = 0;
+    bool all = true;
+    for (const std::string& piece : pieces) {
+      at = line.find(piece, at);
+      if (at == std::string::npos) {
+        all = false;
+        break;
+      }
+      at += piece.size();
+    }
+    if (all) return true;
+  }
+  return false;
+}
+
+// The characters (not bytes) before each '|' of a table line: where its groups of columns end.
+std::vector<size_t> bar_columns(const std::string& line) {
+  std::vector<size_t> columns;
+  size_t shown = 0;
+  for (const char c : line) {
+    if (c == '|') columns.push_back(shown);
+    if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++shown;
+  }
+  return columns;
+}
+
+// `luz bench whitted`'s table in Spanish: its headers, the ray kinds under the scene and the
+// notes, with the figures still under their headers where a Spanish header is the longer.
+TEST(CliSpanish, TheWhittedBenchTableSpeaksSpanish) {
+  const auto result = run_luz({"--lang", "es", "bench", "whitted", "--size", "8x6", "--repeats", "1",
+                               "--depth", "1", "--scenes", "whitted"});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(has_spanish_line(result.output,
+                               "luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}"))
+      << result.output;
+  std::string header, row;
+  std::istringstream lines(result.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with(spanish("scene") + " ")) header = line;
+    if (line.starts_with("whitted ")) row = line;
+  }
+  ASSERT_FALSE(header.empty()) << result.output;
+  ASSERT_FALSE(row.empty()) << result.output;
+  for (const char* id : {"render s", "rays", "Mrays/s", "bare s", "ratio"})
+    EXPECT_TRUE(contains(header, spanish(id))) << id << "\n" << result.output;
+  EXPECT_FALSE(contains(header, "ratio")) << header;
+  EXPECT_EQ(bar_columns(header), bar_columns(row)) << header << "\n" << row;
+  EXPECT_EQ(bar_columns(header).size(), 2u) << header;
+  // At depth 1, 8 x 6 pixels, one sample each: 48 primary rays, named in Spanish.
+  EXPECT_TRUE(std::regex_search(result.output, std::regex("  " + spanish("primary") + " +48 "))) << result.output;
+  EXPECT_TRUE(has_spanish_line(result.output, "  {:<12} {:>10} rays, bare {:7.2f} Mrays/s")) << result.output;
+  EXPECT_TRUE(has_spanish_line(result.output, "  BVH build {:.3f} s")) << result.output;
+}
+
+// The tracer's counters printed after a Whitted render: rays of each kind, the ray-triangle
+// tests of the brute-force intersector, time and rays per second, in Spanish.
+TEST(CliSpanish, TheTracersCountersSpeakSpanish) {
+  test::ScratchDir dir;
+  const auto result = run_luz({"--lang", "es", "render", cornell(), "--model", "whitted", "--brute-force",
+                               "--size", "16x12", "--out", (dir / "x.png").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* id : {"rays: {} primary, {} shadow, {} reflected, {} transmitted ({} in all)",
+                         "ray-triangle tests: {} ({:.1f} per ray)", "time: {:.3f} s, {:.2f} Mrays/s"})
+    EXPECT_TRUE(has_spanish_line(result.output, id)) << id << "\n" << result.output;
+  EXPECT_FALSE(contains(result.output, "in all")) << result.output;
+  EXPECT_FALSE(contains(result.output, "per ray")) << result.output;
 }
 
 }  // namespace

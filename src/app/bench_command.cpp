@@ -19,6 +19,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
+#include "app/bench_table.h"
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/i18n.h"
@@ -42,7 +43,7 @@ std::string cpu_model() {
   std::string line;
   while (std::getline(cpuinfo, line))
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
+  return tr("unknown CPU");
 }
 
 std::filesystem::path scene_path(const std::string& name) {
@@ -50,6 +51,10 @@ std::filesystem::path scene_path(const std::string& name) {
     return scene_dir() / (name + ".gltf");
   return name;
 }
+
+// Slide 24's ray kinds as the rows under a scene name them, indexed by RayKind.
+constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
+                                                    N_("transmitted")};
 
 // The rays of one kind traced bare: no shading, no recursion, no counters.
 double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, rt::RayKind kind) {
@@ -99,11 +104,18 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
 
 int run_bench_whitted(const WhittedBenchSettings& settings) {
   try {
-    fmt::print("luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}\n",
-               settings.width, settings.height, settings.depth, settings.spp, settings.repeats,
-               tbb::info::default_concurrency(), cpu_model());
-    fmt::print("{:<14} {:>9} {:>10} {:>9} | {:>9} {:>9} | {:>6}\n", "scene", "render s", "rays",
-               "Mrays/s", "bare s", "Mrays/s", "ratio");
+    fmt::print("{}\n", trf("luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}",
+                            settings.width, settings.height, settings.depth, settings.spp,
+                            settings.repeats, tbb::info::default_concurrency(), cpu_model()));
+    // The tracer's figures, then the same rays bare, then render / bare.
+    const BenchTable table({{.header = tr("scene"), .width = 14, .left = true},
+                            {.header = tr("render s"), .width = 9},
+                            {.header = tr("rays"), .width = 10},
+                            {.header = tr("Mrays/s"), .width = 9, .bar_after = true},
+                            {.header = tr("bare s"), .width = 9},
+                            {.header = tr("Mrays/s"), .width = 9, .bar_after = true},
+                            {.header = tr("ratio"), .width = 6}});
+    fmt::print("{}", table.header());
     for (const std::string& name : settings.scenes) {
       const io::LoadedScene loaded = io::load_gltf(scene_path(name));
       const Scene& scene = loaded.scene;
@@ -142,15 +154,17 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       double bare_total = 0.0;
       for (double b : bare) bare_total += b;
       const double rays = double(counters.total_rays());
-      fmt::print("{:<14} {:>9.3f} {:>9.2f}M {:>9.2f} | {:>9.3f} {:>9.2f} | {:>6.2f}\n", name, render,
-                 rays * 1e-6, rays / render * 1e-6, bare_total, rays / bare_total * 1e-6,
-                 render / bare_total);
+      fmt::print("{}", table.row({name, fmt::format("{:.3f}", render), fmt::format("{:.2f}M", rays * 1e-6),
+                                  fmt::format("{:.2f}", rays / render * 1e-6), fmt::format("{:.3f}", bare_total),
+                                  fmt::format("{:.2f}", rays / bare_total * 1e-6),
+                                  fmt::format("{:.2f}", render / bare_total)}));
       for (int k = 0; k < rt::kRayKinds; ++k) {
         const double n = double(by_kind[size_t(k)].size());
-        fmt::print("  {:<12} {:>10} rays, bare {:7.2f} Mrays/s\n", rt::to_string(rt::RayKind(k)),
-                   by_kind[size_t(k)].size(), bare[size_t(k)] > 0 ? n / bare[size_t(k)] * 1e-6 : 0.0);
+        fmt::print("{}\n", trf("  {:<12} {:>10} rays, bare {:7.2f} Mrays/s", tr(kKindLabels[k]),
+                                by_kind[size_t(k)].size(),
+                                bare[size_t(k)] > 0 ? n / bare[size_t(k)] * 1e-6 : 0.0));
       }
-      fmt::print("  BVH build {:.3f} s\n", build);
+      fmt::print("{}\n", trf("  BVH build {:.3f} s", build));
     }
     return 0;
   } catch (const Error& error) {

@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/bench_table.h"
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/i18n.h"
@@ -45,6 +46,20 @@ std::optional<Shading> shading_named(const std::string& name) {
   for (Shading s : {Shading::flat, Shading::gouraud, Shading::phong})
     if (name == to_string(s)) return s;
   return std::nullopt;
+}
+
+// A row's shading and effect as the table names them: the values --shadings and --effects take,
+// in the current language (gouraud and phong are names, the same in both).
+const char* shading_label(const std::string& name) { return name == "flat" ? tr("flat") : name.c_str(); }
+
+const char* effect_label(const std::string& effect) {
+  if (effect == "none") return tr("none");
+  if (effect == "fog") return tr("fog");
+  if (effect == "shadows") return tr("shadows");
+  if (effect == "transparency") return tr("transparency");
+  if (effect == "reflection") return tr("reflection");
+  if (effect == "all") return tr("all");
+  return effect.c_str();
 }
 
 // The options of one row: the plain model, one of slide 19's effects, or all of them.
@@ -152,10 +167,22 @@ int run_bench_local(const LocalBenchSettings& settings) {
         throw Error(ErrorKind::usage, trf("--effects: unknown effect \"{}\"", effect));
 
     gl::OffscreenContext context;
-    fmt::print("luz bench local: {}x{}, {} frames a row (best / median ms), orbiting 1 degree a frame; {}\n",
-               settings.width, settings.height, settings.frames, gl_version_string());
-    fmt::print("{:<16} {:<8} {:<13} {:>9} {:>9} {:>7} | {:>8} {:>8} | {:>6}\n", "scene", "shading",
-               "effect", "best ms", "median", "fps", "bare ms", "median", "ratio");
+    fmt::print("{}\n", trf("luz bench local: {}x{}, {} frames a row (best / median ms), orbiting 1 degree "
+                            "a frame; {}", settings.width, settings.height, settings.frames,
+                            gl_version_string()));
+    // The lit frames, then the bare triangles, then frame / bare (medians).
+    BenchTable table({{.header = tr("scene"), .width = 16, .left = true},
+                      {.header = tr("shading"), .width = 8, .left = true},
+                      {.header = tr("effect"), .width = 13, .left = true},
+                      {.header = tr("best ms"), .width = 9},
+                      {.header = tr("median"), .width = 9},
+                      {.header = tr("fps"), .width = 7, .bar_after = true},
+                      {.header = tr("bare ms"), .width = 8},
+                      {.header = tr("median"), .width = 8, .bar_after = true},
+                      {.header = tr("ratio"), .width = 6}});
+    for (const std::string& shading : settings.shadings) table.fit(1, shading_label(shading));
+    for (const std::string& effect : settings.effects) table.fit(2, effect_label(effect));
+    fmt::print("{}", table.header());
     gl::Framebuffer target(settings.width, settings.height);
     for (const std::string& name : settings.scenes) {
       const io::LoadedScene loaded = io::load_gltf(scene_path(name));
@@ -171,9 +198,10 @@ int run_bench_local(const LocalBenchSettings& settings) {
             target.bind();
             renderer.draw(orbited(camera, centre, f), settings.width, settings.height, options);
           });
-          fmt::print("{:<16} {:<8} {:<13} {:>9.1f} {:>9.1f} {:>7.1f} | {:>8.1f} {:>8.1f} | {:>6.1f}\n",
-                     name, shading, effect, frame.best, frame.median, 1000.0 / frame.median, bare.best,
-                     bare.median, frame.median / bare.median);
+          const auto figure = [](double value) { return fmt::format("{:.1f}", value); };
+          fmt::print("{}", table.row({name, shading_label(shading), effect_label(effect), figure(frame.best),
+                                      figure(frame.median), figure(1000.0 / frame.median), figure(bare.best),
+                                      figure(bare.median), figure(frame.median / bare.median)}));
           std::fflush(stdout);
         }
     }

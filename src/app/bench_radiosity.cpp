@@ -9,6 +9,7 @@
 #include <chrono>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -33,7 +34,7 @@ std::string cpu_model() {
   std::string line;
   while (std::getline(cpuinfo, line))
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
+  return tr("unknown CPU");
 }
 
 // Mean over lit pixels (reference above 1% of its mean) of |L - R| / R, channels averaged.
@@ -58,9 +59,26 @@ double mean_relative_error(const Image& image, const Image& reference) {
 
 struct Way {
   const char* key;   // as --ways names it
-  const char* name;  // as the table prints it
+  const char* name;  // as the table prints it, translated there
   RadiosityOptions options;
 };
+
+// One row of a Markdown table: "| a | b | c |".
+std::string markdown_row(const std::vector<std::string>& cells) {
+  std::string line = "|";
+  for (const std::string& cell : cells) line += " " + cell + " |";
+  return line + "\n";
+}
+
+// The form-factor method of a row, in the current language.
+const char* method_label(FormFactorMethod method) {
+  switch (method) {
+    case FormFactorMethod::hemicube: return tr("hemicube");
+    case FormFactorMethod::rays: return tr("rays");
+    case FormFactorMethod::analytic: return tr("analytic");
+  }
+  return to_string(method);
+}
 
 int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScene& loaded) {
   const Image reference = io::read_image(settings.reference);
@@ -80,17 +98,19 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
   rays.form_factors = FormFactorMethod::rays;
   RadiosityOptions rays_ambient = rays;
   rays_ambient.ambient_estimate = true;
-  const Way ways[] = {{"uniform", "uniform (every element shoots), hemicube", uniform},
-                      {"hemicube", "substructured 4x4, hemicube", substructured},
-                      {"analytic", "substructured 4x4, analytic", analytic},
-                      {"overshoot", "substructured 4x4, analytic, overshoot 1.5", overshot},
-                      {"rays", "substructured 4x4, rays", rays},
-                      {"rays-ambient", "substructured 4x4, rays, shown with the ambient estimate", rays_ambient}};
+  const Way ways[] = {{"uniform", N_("uniform (every element shoots), hemicube"), uniform},
+                      {"hemicube", N_("substructured 4x4, hemicube"), substructured},
+                      {"analytic", N_("substructured 4x4, analytic"), analytic},
+                      {"overshoot", N_("substructured 4x4, analytic, overshoot 1.5"), overshot},
+                      {"rays", N_("substructured 4x4, rays"), rays},
+                      {"rays-ambient", N_("substructured 4x4, rays, shown with the ambient estimate"),
+                       rays_ambient}};
   const auto chosen = [&](const Way& way) {
     return settings.ways.empty() ||
            std::find(settings.ways.begin(), settings.ways.end(), way.key) != settings.ways.end();
   };
-  fmt::print("| way | patches | elements | seconds solving | shots | unshot | error over lit pixels |\n");
+  fmt::print("{}", markdown_row({tr("way"), tr("patches"), tr("elements"), tr("seconds solving"), tr("shots"),
+                                 tr("unshot"), tr("error over lit pixels")}));
   fmt::print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   for (const Way& way : ways) {
     if (!chosen(way)) continue;
@@ -109,7 +129,7 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
       solving += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       renderer.update(RadianceField::of(solver), options);
       const Image image = renderer.render(scene.cameras.front(), reference.width, reference.height, options);
-      fmt::print("| {} | {} | {} | {:.2f} | {} | {:.3f}% | {:.2f}% |\n", way.name, mesh.shooters.size(),
+      fmt::print("| {} | {} | {} | {:.2f} | {} | {:.3f}% | {:.2f}% |\n", tr(way.name), mesh.shooters.size(),
                  mesh.size(), solving, solver.shots(), 100.0 * solver.unshot_fraction(),
                  100.0 * mean_relative_error(image, reference));
       std::fflush(stdout);
@@ -128,15 +148,18 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
     const io::LoadedScene loaded = io::load_gltf(path);
     gl::OffscreenContext context;
     if (!settings.reference.empty()) {
-      fmt::print("luz bench radiosity: {} against {}, hemicube {}, up to {:g} s each\n{}; {}\n\n", path,
-                 settings.reference, settings.hemicube_res, settings.seconds, cpu_model(), gl_version_string());
+      fmt::print("{}\n{}; {}\n\n", trf("luz bench radiosity: {} against {}, hemicube {}, up to {:g} s each", path,
+                                       settings.reference, settings.hemicube_res, settings.seconds),
+                 cpu_model(), gl_version_string());
       return run_error_curve(settings, loaded);
     }
-    fmt::print("luz bench radiosity: {}, hemicube {}, until unshot < {:g} of the emitted power or "
-               "{:g} s\n{}; {}\n\n", path, settings.hemicube_res, settings.converge,
-               settings.seconds, cpu_model(), gl_version_string());
-    fmt::print("| form factors | patches | shots | shots/s | draw ms | read ms | accumulate ms | update ms | "
-               "time to {:g}% | unshot at the end |\n", 100.0 * settings.converge);
+    fmt::print("{}\n{}; {}\n\n", trf("luz bench radiosity: {}, hemicube {}, until unshot < {:g} of the emitted "
+                                       "power or {:g} s", path, settings.hemicube_res, settings.converge,
+                                       settings.seconds),
+               cpu_model(), gl_version_string());
+    fmt::print("{}", markdown_row({tr("form factors"), tr("patches"), tr("shots"), tr("shots/s"), tr("draw ms"),
+                                   tr("read ms"), tr("accumulate ms"), tr("update ms"),
+                                   trf("time to {:g}%", 100.0 * settings.converge), tr("unshot at the end")}));
     fmt::print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const FormFactorMethod method : {FormFactorMethod::rays, FormFactorMethod::hemicube}) {
       for (const int target : settings.patches) {
@@ -161,9 +184,10 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
         const double shots = std::max(1, solver.shots());
         const bool converged = solver.unshot_fraction() < double(settings.converge);
         fmt::print("| {} | {} | {} | {:.0f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.2f}% |\n",
-                   to_string(method), mesh.size(), solver.shots(), solver.shots() / elapsed, 1e3 * sum.draw / shots,
+                   method_label(method), mesh.size(), solver.shots(), solver.shots() / elapsed,
+                   1e3 * sum.draw / shots,
                    1e3 * sum.read / shots, 1e3 * sum.accumulate / shots, 1e3 * update / shots,
-                   converged ? fmt::format("{:.1f} s", elapsed) : std::string("not within the cap"),
+                   converged ? fmt::format("{:.1f} s", elapsed) : std::string(tr("not within the cap")),
                    100.0 * solver.unshot_fraction());
         std::fflush(stdout);
       }

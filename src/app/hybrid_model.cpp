@@ -42,7 +42,7 @@ void HybridModel::draw_untraced(const Camera& camera, const Viewport& viewport, 
 std::optional<rt::WhittedOptions> HybridModel::options_for_trace(std::string& why) {
   const RadiosityView* solution = radiosity_.solution();
   if (!solution) {
-    why = "hybrid: no radiosity solution yet to trace with";
+    why = tr("hybrid: no radiosity solution yet to trace with");
     return std::nullopt;
   }
   if (viewer_.state().radiosity.drive.running) return std::nullopt;  // the hint says it waits

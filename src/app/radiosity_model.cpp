@@ -127,7 +127,7 @@ bool RadiosityModel::act(Action action) {
     case Action::radiosity_step:
       r.drive.running = false;
       r.steps += 1;
-      state.note = "radiosity: one shot";
+      state.note = tr("radiosity: one shot");
       return true;
     default: return false;
   }

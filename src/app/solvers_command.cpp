@@ -49,8 +49,8 @@ Image plot_curves(const SolverComparison& race, size_t patches) {
         if (v > 0.0) smallest = std::min(smallest, v);
   for (int k = 0; k < 2; ++k) {
     PlotPanel& panel = panels[size_t(k)];
-    panel.title = k == 0 ? "residual |E - (I - rho F) B| / |E|" : "error |B - B*| / |B*|";
-    panel.x_label = fmt::format("form-factor rows used ({} patches)", patches);
+    panel.title = k == 0 ? tr("residual |E - (I - rho F) B| / |E|") : tr("error |B - B*| / |B*|");
+    panel.x_label = trf("form-factor rows used ({} patches)", patches);
     panel.y_label = "";
     panel.x_min = 1.0;
     panel.x_max = double(std::max<size_t>(race.max_rows(), 10));

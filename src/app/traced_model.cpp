@@ -44,7 +44,7 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
   const glm::ivec2 size = viewport.pixels;
   if (requests.cancel) {
     requests.cancel = false;
-    if (cancel_trace()) state.note = "trace cancelled: back to the untraced view";
+    if (cancel_trace()) state.note = tr("trace cancelled: back to the untraced view");
   }
   if (requests.clear_tree) {
     requests.clear_tree = false;
@@ -54,8 +54,8 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
   if (requests.trace) cancel_trace();  // a fresh untraced picture under the new trace
   if (must_cancel()) cancel_trace();
   if (tracer_ && tracer_->showing() && tracer_->fingerprint() != fingerprint(camera, size)) {
-    if (tracer_->cancel()) state.note = "the view changed: trace cancelled, back to the untraced view";
-    else state.note = "the view changed: back to the untraced view (Enter traces it)";
+    if (tracer_->cancel()) state.note = tr("the view changed: trace cancelled, back to the untraced view");
+    else state.note = tr("the view changed: back to the untraced view (Enter traces it)");
   }
 
   if (!tracer_ || !tracer_->showing()) draw_untraced(camera, viewport, picture);

@@ -7,8 +7,12 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz {
+
+using i18n::tr;
+using i18n::trf;
 
 #define LUZ_GL(type, name) type name = nullptr;
 #include "gl/function_list.h"
@@ -23,13 +27,12 @@ void load_gl_functions(GlResolver resolve) {
 #include "gl/function_list.h"
 #undef LUZ_GL
   if (!missing.empty())
-    throw Error(ErrorKind::gl, fmt::format("the OpenGL context lacks {} of the 3.3 core functions "
-                                           "Luz needs: {}", missing.size(),
-                                           fmt::join(missing, ", ")));
+    throw Error(ErrorKind::gl, trf("the OpenGL context lacks {} of the 3.3 core functions Luz needs: {}",
+                                   missing.size(), fmt::join(missing, ", ")));
 }
 
 const char* gl_version_string() {
-  if (!glGetString) return "(no OpenGL functions loaded)";
+  if (!glGetString) return tr("(no OpenGL functions loaded)");
   const GLubyte* version = glGetString(GL_VERSION);
   const GLubyte* renderer = glGetString(GL_RENDERER);
   static thread_local std::string text;

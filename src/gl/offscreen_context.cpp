@@ -17,8 +17,12 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::gl {
+
+using i18n::tr;
+using i18n::trf;
 
 namespace {
 
@@ -86,7 +90,7 @@ GlBackend default_backend() {
   const char* variable = std::getenv("LUZ_GL");
   if (!variable || !*variable) return GlBackend::automatic;
   if (std::optional<GlBackend> parsed = parse_backend(variable)) return *parsed;
-  throw Error(ErrorKind::usage, fmt::format("LUZ_GL={}: must be egl, osmesa or auto", variable));
+  throw Error(ErrorKind::usage, trf("LUZ_GL={}: must be egl, osmesa or auto", variable));
 }
 
 OffscreenContext::OffscreenContext() : OffscreenContext(default_backend()) {}
@@ -106,8 +110,8 @@ OffscreenContext::OffscreenContext(GlBackend backend) {
     try {
       create_osmesa();
     } catch (const Error& osmesa_failure) {
-      throw Error(ErrorKind::gl, fmt::format("no headless OpenGL 3.3 context: {}; {}", egl_failure.what(),
-                                             osmesa_failure.what()));
+      throw Error(ErrorKind::gl, trf("no headless OpenGL 3.3 context: {}; {}", egl_failure.what(),
+                                     osmesa_failure.what()));
     }
   }
 }
@@ -117,20 +121,20 @@ void OffscreenContext::check_version(const char* backend_name) {
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   if (major * 10 + minor < 33)
-    throw Error(ErrorKind::gl, fmt::format("{} gave OpenGL {}.{}; Luz needs 3.3 core ({})", backend_name,
-                                           major, minor, gl_version_string()));
+    throw Error(ErrorKind::gl, trf("{} gave OpenGL {}.{}; Luz needs 3.3 core ({})", backend_name, major,
+                                   minor, gl_version_string()));
 }
 
 void OffscreenContext::create_egl() {
   EGLDisplay display = headless_display();
-  if (display == EGL_NO_DISPLAY) throw Error(ErrorKind::gl, "EGL has no headless display");
+  if (display == EGL_NO_DISPLAY) throw Error(ErrorKind::gl, tr("EGL has no headless display"));
   egl_display_ = display;
-  auto fail = [&](const std::string& why) {
+  auto fail = [&](const char* what) {  // `what`: the sentence, translated, naming EGL
     const EGLint code = eglGetError();
     release();
-    return Error(ErrorKind::gl, fmt::format("EGL {} (error 0x{:04X})", why, code));
+    return Error(ErrorKind::gl, trf("{} (EGL error 0x{:04X})", what, code));
   };
-  if (!eglBindAPI(EGL_OPENGL_API)) throw fail("has no desktop OpenGL API");
+  if (!eglBindAPI(EGL_OPENGL_API)) throw fail(tr("EGL has no desktop OpenGL API"));
   const bool surfaceless = has_extension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context");
   const EGLint config_attributes[] = {
       EGL_SURFACE_TYPE, surfaceless ? 0 : EGL_PBUFFER_BIT,
@@ -141,7 +145,7 @@ void OffscreenContext::create_egl() {
   EGLConfig config = nullptr;
   EGLint count = 0;
   if (!eglChooseConfig(display, config_attributes, &config, 1, &count) || count < 1)
-    throw fail("has no OpenGL configuration");
+    throw fail(tr("EGL has no OpenGL configuration"));
   const EGLint context_attributes[] = {
       EGL_CONTEXT_MAJOR_VERSION, 3,
       EGL_CONTEXT_MINOR_VERSION, 3,
@@ -149,16 +153,17 @@ void OffscreenContext::create_egl() {
       EGL_NONE,
   };
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
-  if (context == EGL_NO_CONTEXT) throw fail("could not create an OpenGL 3.3 core context");
+  if (context == EGL_NO_CONTEXT) throw fail(tr("EGL could not create an OpenGL 3.3 core context"));
   egl_context_ = context;
   EGLSurface surface = EGL_NO_SURFACE;
   if (!surfaceless) {
     const EGLint pbuffer_attributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
     surface = eglCreatePbufferSurface(display, config, pbuffer_attributes);
-    if (surface == EGL_NO_SURFACE) throw fail("could not create a 1x1 pbuffer");
+    if (surface == EGL_NO_SURFACE) throw fail(tr("EGL could not create a 1x1 pbuffer"));
     egl_surface_ = surface;
   }
-  if (!eglMakeCurrent(display, surface, surface, context)) throw fail("could not make its context current");
+  if (!eglMakeCurrent(display, surface, surface, context))
+    throw fail(tr("EGL could not make its context current"));
   backend_ = GlBackend::egl;
   try {
     load_gl_functions(egl_resolve);
@@ -180,13 +185,13 @@ void OffscreenContext::create_osmesa() {
   };
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context)
-    throw Error(ErrorKind::gl, "OSMesa could not create an OpenGL 3.3 core context "
-                               "(is libosmesa6 Mesa's gallium build with llvmpipe?)");
+    throw Error(ErrorKind::gl, tr("OSMesa could not create an OpenGL 3.3 core context "
+                                  "(is libosmesa6 Mesa's gallium build with llvmpipe?)"));
   osmesa_context_ = context;
   // The context's own 1x1 buffer only makes it current: renderers draw into their own FBOs.
   if (!OSMesaMakeCurrent(context, buffer_, GL_UNSIGNED_BYTE, 1, 1)) {
     release();
-    throw Error(ErrorKind::gl, "OSMesa could not make its OpenGL context current");
+    throw Error(ErrorKind::gl, tr("OSMesa could not make its OpenGL context current"));
   }
   backend_ = GlBackend::osmesa;
   try {

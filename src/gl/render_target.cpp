@@ -3,12 +3,16 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::gl {
 
+using i18n::tr;
+using i18n::trf;
+
 RenderTarget::RenderTarget(int width, int height, const ColourFormat& format) {
   if (width <= 0 || height <= 0)
-    throw Error(ErrorKind::bad_value, fmt::format("{} target size {}x{} is empty", format.name, width, height));
+    throw Error(ErrorKind::bad_value, trf("{} target size {}x{} is empty", format.name, width, height));
 
   glGenTextures(1, &colour);
   glBindTexture(GL_TEXTURE_2D, colour);
@@ -31,8 +35,8 @@ RenderTarget::RenderTarget(int width, int height, const ColourFormat& format) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     release();
-    throw Error(ErrorKind::gl, fmt::format("a {}x{} {} framebuffer is incomplete (status 0x{:x}) on {}",
-                                           width, height, format.name, status, gl_version_string()));
+    throw Error(ErrorKind::gl, trf("a {}x{} {} framebuffer is incomplete (status 0x{:x}) on {}", width,
+                                   height, format.name, status, gl_version_string()));
   }
 }
 

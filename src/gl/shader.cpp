@@ -9,8 +9,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::gl {
+
+using i18n::tr;
+using i18n::trf;
 
 std::filesystem::path shader_dir() {
   std::error_code ec;
@@ -27,7 +31,7 @@ namespace {
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file)
-    throw Error(ErrorKind::gl, fmt::format("{}: cannot read the shader file", path.string()));
+    throw Error(ErrorKind::gl, trf("{}: cannot read the shader file", path.string()));
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
@@ -43,8 +47,7 @@ Stage stage_of(const std::string& file) {
   if (ext == ".vert") return {GL_VERTEX_SHADER, "LUZ_VERTEX_SHADER"};
   if (ext == ".geom") return {GL_GEOMETRY_SHADER, "LUZ_GEOMETRY_SHADER"};
   if (ext == ".frag") return {GL_FRAGMENT_SHADER, "LUZ_FRAGMENT_SHADER"};
-  throw Error(ErrorKind::gl, fmt::format("{}: unknown shader stage (expected .vert, .geom or "
-                                         ".frag)", file));
+  throw Error(ErrorKind::gl, trf("{}: unknown shader stage (expected .vert, .geom or .frag)", file));
 }
 
 // Compiles one stage as several source strings, numbered for the driver's log:
@@ -59,14 +62,14 @@ GLuint compile(const std::string& file, const std::vector<std::string>& shared,
 
   const size_t version_at = text.find("#version");
   if (version_at == std::string::npos)
-    throw Error(ErrorKind::gl, fmt::format("{}: no #version line", (dir / file).string()));
+    throw Error(ErrorKind::gl, trf("{}: no #version line", (dir / file).string()));
   const size_t body_at = text.find('\n', version_at);
   const std::string version = text.substr(0, body_at == std::string::npos ? text.size() : body_at);
   size_t version_line = 1;
   for (size_t i = 0; i < version_at; ++i) version_line += text[i] == '\n';
 
   std::vector<std::string> sources;
-  std::string legend = fmt::format("source 0 = {} header", file);
+  std::string legend = trf("source 0 = {} header", file);
   sources.push_back(fmt::format("{}\n#define {} 1\n{}", version, stage.define, defines));
   for (size_t i = 0; i < shared.size(); ++i) {
     const size_t number = i + 1;
@@ -91,8 +94,9 @@ GLuint compile(const std::string& file, const std::vector<std::string>& shared,
     std::string log(size_t(std::max(length, 1)), '\0');
     glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
     glDeleteShader(shader);
-    throw Error(ErrorKind::gl, fmt::format("{}: does not compile ({}):\n{}",
-                                           (dir / file).string(), legend, log.c_str()));
+    // The driver's log as it wrote it; the sentence around it in the user's language.
+    throw Error(ErrorKind::gl, trf("{}: does not compile ({}):", (dir / file).string(), legend) + "\n" +
+                                   log.c_str());
   }
   return shader;
 }
@@ -125,8 +129,8 @@ Program::Program(const std::vector<std::string>& stages, const std::vector<std::
     glGetProgramInfoLog(id_, GLsizei(log.size()), nullptr, log.data());
     glDeleteProgram(id_);
     id_ = 0;
-    throw Error(ErrorKind::gl, fmt::format("{} (in {}): does not link:\n{}", name_,
-                                           shader_dir().string(), log.c_str()));
+    throw Error(ErrorKind::gl, trf("{} (in {}): does not link:", name_, shader_dir().string()) + "\n" +
+                                   log.c_str());
   }
 }
 

@@ -10,8 +10,12 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::gl {
+
+using i18n::tr;
+using i18n::trf;
 
 namespace {
 
@@ -19,7 +23,7 @@ std::string last_glfw_error;  // GLFW reports through a callback; kept for our m
 int open_windows = 0;         // glfwTerminate only when no window needs GLFW any more
 
 void on_glfw_error(int code, const char* description) {
-  last_glfw_error = fmt::format("{} (GLFW error 0x{:x})", description, code);
+  last_glfw_error = trf("{} (GLFW error 0x{:x})", description, code);
 }
 
 bool init_glfw() {
@@ -37,8 +41,8 @@ bool WindowContext::display_available() {
 
 WindowContext::WindowContext(int width, int height, const std::string& title) {
   if (!init_glfw())
-    throw Error(ErrorKind::gl, fmt::format("no display to open a window on: {} (use `luz render` "
-                                           "for pictures without one)", last_glfw_error));
+    throw Error(ErrorKind::gl, trf("no display to open a window on: {} (use `luz render` for pictures "
+                                   "without one)", last_glfw_error));
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -47,8 +51,8 @@ WindowContext::WindowContext(int width, int height, const std::string& title) {
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     if (open_windows == 0) glfwTerminate();
-    throw Error(ErrorKind::gl, fmt::format("cannot open a window with an OpenGL 3.3 core "
-                                           "context: {}", last_glfw_error));
+    throw Error(ErrorKind::gl, trf("cannot open a window with an OpenGL 3.3 core context: {}",
+                                   last_glfw_error));
   }
   ++open_windows;
   glfwMakeContextCurrent(window_);

@@ -573,7 +573,7 @@ LoadedScene load_gltf(const fs::path& path) {
   if (!ok) {
     const ErrorKind kind = kind_of_tinygltf_error(err);
     source.fail(kind, trf("{} (tinygltf: {})",
-                          kind == ErrorKind::not_gltf ? "not valid glTF 2.0" : "cannot load",
+                          kind == ErrorKind::not_gltf ? tr("not valid glTF 2.0") : tr("cannot load"),
                           first_line(err)));
   }
   // tinygltf's warnings about images are replaced by ours (which name the URI and say what is

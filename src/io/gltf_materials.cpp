@@ -143,7 +143,7 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
       strength = read_number(ctx, *s, field("emissiveStrength"));
   if (!source.emissiveFactor.empty())  // absent: black
     m.emission = to_rgb(ctx, source.emissiveFactor, 3, field("emissiveFactor")) * strength;
-  if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field("emitted radiance is infinite"));
+  if (!is_finite(m.emission)) ctx.fail(ErrorKind::not_finite, field(tr("emitted radiance is infinite")));
   if (std::max({m.emission.r, m.emission.g, m.emission.b}) > kMaxEmitted)
     ctx.fail(ErrorKind::bad_value, trf("{} ({:.3g}) is above {:.0e}; sums of it would overflow",
                                        field("emitted radiance"),

@@ -26,6 +26,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "gl/framebuffer.h"
 #include "io/image_io.h"
 #include "gl/functions.h"
@@ -281,7 +282,7 @@ LocalRenderer::LocalRenderer(const Scene& scene)
 
   if (scene.area_lights.size() > size_t(max_area_lights)) {
     impl_->area_lights = merge_area_lights(scene.area_lights, max_area_lights);
-    impl_->warnings.push_back(fmt::format(
+    impl_->warnings.push_back(i18n::trf(
         "local models: {} emissive triangles light the scene as {} merged point lights "
         "(the shaders' limit)", scene.area_lights.size(), impl_->area_lights.size()));
   } else {
@@ -333,8 +334,8 @@ void LocalRenderer::Impl::set_lights(gl::Program& p, bool shadows) {
   }
   if (enabled > max_lights && !warned_lights) {
     warned_lights = true;
-    warnings.push_back(fmt::format("local models: {} lights are on; only the first {} light "
-                                   "the picture (the shaders' limit)", enabled, max_lights));
+    warnings.push_back(i18n::trf("local models: {} lights are on; only the first {} light "
+                                 "the picture (the shaders' limit)", enabled, max_lights));
   }
 
   for (size_t i = 0; i < area_lights.size(); ++i) {
@@ -543,8 +544,8 @@ void LocalRenderer::Impl::render_reflection_maps(const LocalOptions& options) {
     if (any(material_of(m).kr)) reflective.push_back(m);
   if (reflective.size() > max_reflection_maps) {
     if (!warned_reflections)
-      warnings.push_back(fmt::format("local models: {} objects have kr > 0; the first {} get a "
-                                     "reflection map", reflective.size(), max_reflection_maps));
+      warnings.push_back(i18n::trf("local models: {} objects have kr > 0; the first {} get a "
+                                   "reflection map", reflective.size(), max_reflection_maps));
     warned_reflections = true;
     reflective.resize(max_reflection_maps);
   }
@@ -587,8 +588,8 @@ void LocalRenderer::Impl::render_reflection_maps(const LocalOptions& options) {
                              cube.texture, 0);
       const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
       if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw Error(ErrorKind::gl, fmt::format("a {}x{} RGBA32F reflection-map face is incomplete (status "
-                                               "0x{:x}) on {}", size, size, status, gl_version_string()));
+        throw Error(ErrorKind::gl, i18n::trf("a {}x{} RGBA32F reflection-map face is incomplete (status "
+                                             "0x{:x}) on {}", size, size, status, gl_version_string()));
       const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
       const float far_depth = 1.0f;
       glClearBufferfv(GL_COLOR, 0, nothing);

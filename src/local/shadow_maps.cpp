@@ -254,8 +254,8 @@ void ShadowMaps::update(const Scene& scene, std::span<const AreaLight> area_ligh
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture_, 0, layer);
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-      throw Error(ErrorKind::gl, fmt::format("a {}x{} R32F shadow-map layer is incomplete (status 0x{:x}) on {}",
-                                             size, size, status, gl_version_string()));
+      throw Error(ErrorKind::gl, i18n::trf("a {}x{} R32F shadow-map layer is incomplete (status 0x{:x}) on {}",
+                                           size, size, status, gl_version_string()));
     glClearBufferfv(GL_COLOR, 0, nothing);
     glClearBufferfv(GL_DEPTH, 0, &far_depth);
     program_->set("u_view_projection", view_projection);

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "radiosity/radiosity_options.h"
 
 namespace luz {
@@ -39,9 +40,8 @@ namespace {
 
 int checked_resolution(int res) {
   if (res < kMinHemicubeRes || res > kMaxHemicubeRes || res % 2 != 0)
-    throw Error(ErrorKind::bad_value, fmt::format("hemicube resolution {} must be even and in "
-                                                  "{} .. {}", res, kMinHemicubeRes,
-                                                  kMaxHemicubeRes));
+    throw Error(ErrorKind::bad_value, i18n::trf("hemicube resolution {} must be even and in {} .. {}", res,
+                                                kMinHemicubeRes, kMaxHemicubeRes));
   return res;
 }
 

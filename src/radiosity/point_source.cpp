@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/i18n.h"
 #include "radiosity/radiosity_options.h"
 
 namespace luz {
@@ -25,9 +26,8 @@ constexpr CubeFace kCube[PointSource::kFaces] = {
 
 int checked(int res) {
   if (res < kMinHemicubeRes || res > kMaxHemicubeRes || res % 2 != 0)
-    throw Error(ErrorKind::bad_value, fmt::format("light cube resolution {} must be even and in "
-                                                  "{} .. {}", res, kMinHemicubeRes,
-                                                  kMaxHemicubeRes));
+    throw Error(ErrorKind::bad_value, i18n::trf("light cube resolution {} must be even and in {} .. {}", res,
+                                                kMinHemicubeRes, kMaxHemicubeRes));
   return res;
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz {
 
@@ -42,39 +43,35 @@ std::string RadiosityOptions::to_string() const {
 }
 
 void RadiosityOptions::validate() const {
+  using i18n::trf;
   const auto refuse = [](const std::string& what) {
-    throw Error(ErrorKind::bad_value, "radiosity: " + what);
+    throw Error(ErrorKind::bad_value, trf("radiosity: {}", what));
   };
   if (!std::isfinite(patch_size) || patch_size < 0.0f)
-    refuse(fmt::format("patch size {} must be a finite length in metres (0 = automatic)", patch_size));
-  if (target_patches < 1) refuse(fmt::format("target of {} patches must be at least 1", target_patches));
+    refuse(trf("patch size {} must be a finite length in metres (0 = automatic)", patch_size));
+  if (target_patches < 1) refuse(trf("target of {} patches must be at least 1", target_patches));
   if (elements_per_edge < 1 || elements_per_edge > kMaxElementsPerEdge)
-    refuse(fmt::format("{} elements per patch edge, expected 1 .. {}", elements_per_edge,
-                       kMaxElementsPerEdge));
+    refuse(trf("{} elements per patch edge, expected 1 .. {}", elements_per_edge, kMaxElementsPerEdge));
   if (!std::isfinite(refine_threshold) || !(refine_threshold > 0.0f))
-    refuse(fmt::format("refinement threshold {} must be a positive fraction of the mean "
-                       "irradiance (0 would cut every element down to the last level)",
-                       refine_threshold));
+    refuse(trf("refinement threshold {} must be a positive fraction of the mean irradiance (0 "
+               "would cut every element down to the last level)", refine_threshold));
   if (refine_levels < 1 || refine_levels > kMaxRefineLevels)
-    refuse(fmt::format("{} refinement levels, expected 1 .. {}", refine_levels, kMaxRefineLevels));
+    refuse(trf("{} refinement levels, expected 1 .. {}", refine_levels, kMaxRefineLevels));
   if (hemicube_res < kMinHemicubeRes || hemicube_res > kMaxHemicubeRes || hemicube_res % 2 != 0)
-    refuse(fmt::format("hemicube resolution {} must be even and in {} .. {}", hemicube_res,
-                       kMinHemicubeRes, kMaxHemicubeRes));
+    refuse(trf("hemicube resolution {} must be even and in {} .. {}", hemicube_res, kMinHemicubeRes,
+               kMaxHemicubeRes));
   if (visibility_rays < 1 || visibility_rays > kMaxVisibilityRays)
-    refuse(fmt::format("{} visibility rays per element, expected 1 .. {}", visibility_rays,
-                       kMaxVisibilityRays));
+    refuse(trf("{} visibility rays per element, expected 1 .. {}", visibility_rays, kMaxVisibilityRays));
   const int root = int(std::lround(std::sqrt(double(pixel_samples))));
   if (pixel_samples < 1 || pixel_samples > kMaxPixelSamples || root * root != pixel_samples)
-    refuse(fmt::format("{} samples per pixel, expected a square in 1 .. {}", pixel_samples,
-                       kMaxPixelSamples));
-  if (max_shots < 0) refuse(fmt::format("{} shots must not be negative", max_shots));
+    refuse(trf("{} samples per pixel, expected a square in 1 .. {}", pixel_samples, kMaxPixelSamples));
+  if (max_shots < 0) refuse(trf("{} shots must not be negative", max_shots));
   if (!std::isfinite(converge) || converge < 0.0f || converge >= 1.0f)
-    refuse(fmt::format("convergence threshold {} must be in [0, 1) (0 = run until --shots)", converge));
+    refuse(trf("convergence threshold {} must be in [0, 1) (0 = run until --shots)", converge));
   if (converge == 0.0f && max_shots == 0)
-    refuse("a convergence threshold of 0 with no shot limit would never stop");
+    refuse(i18n::tr("a convergence threshold of 0 with no shot limit would never stop"));
   if (!std::isfinite(overshoot) || overshoot < kMinOvershoot || overshoot > kMaxOvershoot)
-    refuse(fmt::format("overshoot factor {} must be in {} .. {}", overshoot, kMinOvershoot,
-                       kMaxOvershoot));
+    refuse(trf("overshoot factor {} must be in {} .. {}", overshoot, kMinOvershoot, kMaxOvershoot));
 }
 
 }  // namespace luz

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/i18n.h"
+
 namespace luz::rt {
 
 uint64_t Counters::total_rays() const {
@@ -19,14 +21,14 @@ Counters& Counters::operator+=(const Counters& other) {
 }
 
 std::string Counters::to_string() const {
-  std::string s = fmt::format("rays: {} primary, {} shadow, {} reflected, {} transmitted ({} in all)\n",
-                              (*this)[RayKind::primary], (*this)[RayKind::shadow],
-                              (*this)[RayKind::reflected], (*this)[RayKind::transmitted],
-                              total_rays());
+  using i18n::trf;
+  std::string s = trf("rays: {} primary, {} shadow, {} reflected, {} transmitted ({} in all)",
+                      (*this)[RayKind::primary], (*this)[RayKind::shadow], (*this)[RayKind::reflected],
+                      (*this)[RayKind::transmitted], total_rays()) + "\n";
   if (intersection_tests > 0)
-    s += fmt::format("ray-triangle tests: {} ({:.1f} per ray)\n", intersection_tests,
-                     double(intersection_tests) / double(std::max<uint64_t>(total_rays(), 1)));
-  s += fmt::format("time: {:.3f} s, {:.2f} Mrays/s\n", seconds, rays_per_second() * 1e-6);
+    s += trf("ray-triangle tests: {} ({:.1f} per ray)", intersection_tests,
+             double(intersection_tests) / double(std::max<uint64_t>(total_rays(), 1))) + "\n";
+  s += trf("time: {:.3f} s, {:.2f} Mrays/s", seconds, rays_per_second() * 1e-6) + "\n";
   return s;
 }
 

@@ -20,7 +20,7 @@ struct Counters {
   uint64_t total_rays() const;
   double rays_per_second() const { return seconds > 0.0 ? double(total_rays()) / seconds : 0.0; }
   Counters& operator+=(const Counters& other);
-  // One line per figure, for the command's summary and the viewer's panel.
+  // One line per figure, in the current language, for the command's summary.
   std::string to_string() const;
 };
 

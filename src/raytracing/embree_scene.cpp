@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/i18n.h"
 
 namespace luz::rt {
 
@@ -27,7 +28,7 @@ namespace {
 
 [[noreturn]] void fail(RTCDevice device, const char* what) {
   throw Error(ErrorKind::bad_value,
-              fmt::format("Embree: {} failed (error {})", what, int(rtcGetDeviceError(device))));
+              i18n::trf("Embree: {} failed (error {})", what, int(rtcGetDeviceError(device))));
 }
 
 // Fields written one by one straight into Embree's structures: building a temporary RTCRay and
@@ -69,7 +70,7 @@ Hit from_embree(const RTCRayHit& rh) {
 
 EmbreeIntersector::EmbreeIntersector(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   impl_->device = rtcNewDevice(nullptr);
-  if (!impl_->device) throw Error(ErrorKind::bad_value, "Embree: cannot create a device");
+  if (!impl_->device) throw Error(ErrorKind::bad_value, i18n::tr("Embree: cannot create a device"));
   impl_->scene = rtcNewScene(impl_->device);
   if (!impl_->scene) fail(impl_->device, "rtcNewScene");
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);  // built once, traced often
