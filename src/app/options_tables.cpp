@@ -126,8 +126,8 @@ const RadiosityRow radiosity_table[] = {
      N_("radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
      "(1: no substructuring)"), 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},
     {"meshing", "--meshing", "radiosity", OptionKind::choice,
-     N_("radiosity/hybrid: uniform (the elements as built) or adaptive (elements cut in two where the light "
-     "arriving changes fast, while the solution runs)"), 0, 1,
+     N_("radiosity/hybrid: uniform (the elements as built) or adaptive (elements cut in two, while the solution "
+     "runs, where the light arriving is not the linear ramp Gouraud shading draws)"), 0, 1,
      [](const RadiosityOptions& o) { return double(int(o.meshing)); },
      [](RadiosityOptions& o, double v) { o.meshing = Meshing(int(v)); }, meshings},
     {"refine-threshold", "--refine-threshold", "radiosity", OptionKind::real,
