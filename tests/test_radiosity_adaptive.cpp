@@ -195,6 +195,31 @@ TEST(AdaptiveSubdivision, EnergyBalancesAtEveryStepRefinementsIncluded) {
   EXPECT_GE(passes, 1);
 }
 
+// In a closed box nothing escapes: what the new elements gather from every shot so far must be
+// all that reached their parents (with rays, whose rows sum to 1 there), or "escaped" would grow.
+TEST(AdaptiveSubdivision, InAClosedBoxTheGatheredLightIsAllThereIs) {
+  Scene scene;
+  const int lamp = add_material(scene, 0.3f, 2.0f), grey = add_material(scene, 0.6f);
+  const int materials[6] = {grey, lamp, grey, grey, grey, grey};
+  test::add_closed_box(scene, materials);
+  // A plate over the floor casts a shadow to refine along.
+  add_quad(scene, {0.3f, 0.3f, 0.3f}, {0.7f, 0.3f, 0.3f}, {0.7f, 0.3f, 0.7f}, {0.3f, 0.3f, 0.7f}, grey, "plate");
+  add_quad(scene, {0.3f, 0.3f, 0.3f}, {0.3f, 0.3f, 0.7f}, {0.7f, 0.3f, 0.7f}, {0.7f, 0.3f, 0.3f}, grey, "top");
+  RadiosityOptions options;
+  options.patch_size = 0.25f;
+  options.elements_per_edge = 2;
+  options.visibility_rays = 16;
+  options.converge = 0.02f;
+  PatchMesh mesh = PatchMesh::build(scene, options);
+  const size_t built = mesh.size();
+  ProgressiveSolver solver(scene, mesh, options);
+  while (solver.step()) {
+    const EnergyTally t = solver.energy();
+    ASSERT_LT(std::abs(t.escaped), 3e-3 * t.emitted) << "shot " << solver.shots();
+  }
+  EXPECT_GT(mesh.size(), built + 50);
+}
+
 // For every source mesh: no element edge has a vertex of that mesh at its midpoint (where a cut
 // of the neighbour would have put a T-junction).
 void expect_conforming(const PatchMesh& mesh) {
@@ -295,6 +320,15 @@ TEST(AdaptiveSubdivision, UniformMeshingLeavesTheMeshAlone) {
   while (solver.step()) {}
   EXPECT_EQ(mesh.size(), built);
   EXPECT_EQ(solver.refinement_passes(), 0);
+}
+
+TEST(AdaptiveSubdivision, ASolverRefusesAMeshAnotherHasRefined) {
+  const Scene scene = shadowed_floor(0.8f);
+  PatchMesh mesh = PatchMesh::build(scene, adaptive_options());
+  ProgressiveSolver first(scene, mesh, adaptive_options()), second(scene, mesh, adaptive_options());
+  while (first.step()) {}
+  ASSERT_GT(first.refined_elements(), 0u);
+  EXPECT_THROW(second.step(), Error);
 }
 
 TEST(AdaptiveSubdivision, BadSettingsAreRefused) {

@@ -91,6 +91,7 @@ TEST(RayFormFactors, AgreeWithTheHemicubesVisibilityOnTheCornellBox) {
   RadiosityOptions options;
   options.patch_size = 0.2f;
   options.converge = 0.005f;
+  options.meshing = Meshing::uniform;  // both solve the one mesh
   PatchMesh mesh = PatchMesh::build(loaded.scene, options);
   options.form_factors = FormFactorMethod::rays;
   ProgressiveSolver by_rays(loaded.scene, mesh, options);

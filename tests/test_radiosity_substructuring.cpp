@@ -114,6 +114,7 @@ TEST(Substructuring, SameElementsAsEveryElementShooting) {
   RadiosityOptions options;
   options.hemicube_res = 128;
   options.converge = 1e-3f;
+  options.meshing = Meshing::uniform;  // the two meshes as built are what is compared
   // The longest edge of a face is its diagonal: n = ceil(diagonal / size).
   const float diagonal = std::sqrt(2.0f);
   PatchMesh two_level = PatchMesh::build(scene, diagonal / 2.0f, 4);
@@ -169,6 +170,7 @@ TEST(Overshooting, ConvergesToTheSameRadiosityAndBalancesEnergy) {
   plain.hemicube_res = 64;
   plain.random_rotation = false;  // the same rows for both: only the order of shots differs
   plain.converge = 1e-3f;
+  plain.meshing = Meshing::uniform;  // both solve the one mesh
   RadiosityOptions over = plain;
   over.overshoot = 1.5f;
   ProgressiveSolver a(scene, mesh, plain), b(scene, mesh, over);

@@ -40,7 +40,7 @@ struct RadiosityBenchSettings {
 
 // The ways of solving `luz bench radiosity --reference` compares, by the names --ways takes.
 inline constexpr const char* kRadiosityWays[] = {"uniform", "hemicube", "analytic", "overshoot",
-                                                 "rays", "rays-ambient"};
+                                                 "rays", "rays-ambient", "adaptive"};
 
 // Prints a Markdown table to stdout; returns the exit code.
 int run_radiosity_bench(const RadiosityBenchSettings& settings);

@@ -84,27 +84,32 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
   const Image reference = io::read_image(settings.reference);
   const Scene& scene = loaded.scene;
   if (scene.cameras.empty()) throw Error(ErrorKind::bad_value, tr("the scene has no camera to compare from"));
-  RadiosityOptions uniform;
+  RadiosityOptions fixed;  // the ways but the last keep their mesh as built
+  fixed.meshing = Meshing::uniform;
+  RadiosityOptions uniform = fixed;
   uniform.elements_per_edge = 1;
   uniform.form_factors = FormFactorMethod::hemicube;
   uniform.target_patches = 4000;
-  RadiosityOptions substructured = RadiosityOptions{};
+  RadiosityOptions substructured = fixed;
   substructured.form_factors = FormFactorMethod::hemicube;
-  RadiosityOptions analytic = RadiosityOptions{};
+  RadiosityOptions analytic = fixed;
   analytic.form_factors = FormFactorMethod::analytic;
   RadiosityOptions overshot = analytic;
   overshot.overshoot = 1.5f;
-  RadiosityOptions rays = RadiosityOptions{};
+  RadiosityOptions rays = fixed;
   rays.form_factors = FormFactorMethod::rays;
   RadiosityOptions rays_ambient = rays;
   rays_ambient.ambient_estimate = true;
+  RadiosityOptions adaptive = rays;
+  adaptive.meshing = Meshing::adaptive;
   const Way ways[] = {{"uniform", N_("uniform (every element shoots), hemicube"), uniform},
                       {"hemicube", N_("substructured 4x4, hemicube"), substructured},
                       {"analytic", N_("substructured 4x4, analytic"), analytic},
                       {"overshoot", N_("substructured 4x4, analytic, overshoot 1.5"), overshot},
                       {"rays", N_("substructured 4x4, rays"), rays},
                       {"rays-ambient", N_("substructured 4x4, rays, shown with the ambient estimate"),
-                       rays_ambient}};
+                       rays_ambient},
+                      {"adaptive", N_("substructured 4x4, rays, adaptive subdivision"), adaptive}};
   const auto chosen = [&](const Way& way) {
     return settings.ways.empty() ||
            std::find(settings.ways.begin(), settings.ways.end(), way.key) != settings.ways.end();
@@ -169,6 +174,7 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
         options.hemicube_res = settings.hemicube_res;
         options.converge = settings.converge;
         options.form_factors = method;
+        options.meshing = Meshing::uniform;  // shots per second at the patch count asked for
         ProgressiveSolver solver(loaded.scene, mesh, options);
         RowTimes sum;
         double update = 0.0;

@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
                                  "time for uniform, substructured, analytic, overshot and ray-cast shooting instead"));
   bench_radiosity->add_option("--ways", radiosity_bench.ways,
                               tr("With --reference: the ways to compare (uniform, hemicube, analytic, overshoot, "
-                                 "rays, rays-ambient; default all)"))
+                                 "rays, rays-ambient, adaptive; default all)"))
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(luz::app::kRadiosityWays),
                                                      std::end(luz::app::kRadiosityWays))));
   bench_radiosity->add_option("--seconds", radiosity_bench.seconds, tr("Time cap per patch count"))

@@ -163,14 +163,14 @@ void mesh_settings(RadiosityState& r) {
   o.meshing = adaptive ? Meshing::adaptive : Meshing::uniform;
   if (adaptive) {
     const SliderRange threshold = radiosity_range("refine-threshold");
-    ImGui::SliderFloat(tr("cut where the light is off linear by"), &o.refine_threshold, threshold.low, 1.0f,
-                       tr("%.3f x mean"), ImGuiSliderFlags_Logarithmic);
-    name_widget("cut where the light is off linear by");
+    ImGui::SliderFloat(tr("cut threshold"), &o.refine_threshold, threshold.low, 1.0f, tr("%.3f x mean"),
+                       ImGuiSliderFlags_Logarithmic);
+    name_widget("cut threshold");
     const SliderRange levels = radiosity_range("refine-levels");
-    ImGui::SliderInt(tr("cuts per element at most"), &o.refine_levels, int(levels.low), 8);
-    name_widget("cuts per element at most");
-    dim_text("%s", trf("{} elements added in {} passes (outlines show them)", r.status.refined_elements,
-                       r.status.refinement_passes).c_str());
+    ImGui::SliderInt(tr("cuts at most"), &o.refine_levels, int(levels.low), 8);
+    name_widget("cuts at most");
+    dim_text("%s", tr("cut where the light is off linear"));
+    dim_text("%s", trf("+{} elements, {} passes", r.status.refined_elements, r.status.refinement_passes).c_str());
   }
   // The powers of two in the table's range.
   const SliderRange res = radiosity_range("hemicube");

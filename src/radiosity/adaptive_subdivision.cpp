@@ -161,7 +161,7 @@ size_t ProgressiveSolver::refine() {
   patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   for (size_t e = 0; e < mesh_.size(); ++e)
     patch_unshot_[mesh_.shooter_of[e]] += glm::dvec3(unshot_[e]) * double(mesh_.patches[e].area);
-  ++mesh_.revision;
+  revision_ = ++mesh_.revision;
   items_.upload(mesh_);
   ++refinement_passes_;
   while (next_refinement_ < std::size(kRefineAt) && unshot_fraction() < kRefineAt[next_refinement_])

@@ -4,6 +4,7 @@
 //           [the loop] [state]
 #include "radiosity/shooting.h"
 
+#include "core/error.h"
 #include "core/i18n.h"
 #include "radiosity/element_form_factor.h"
 #include "radiosity/polygon_form_factor.h"
@@ -56,7 +57,7 @@ double ProgressiveSolver::power(const Rgb& exitance, float area) {
 // ---- [construction and reset] ------------------------------------------------------------------
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, PatchMesh& mesh,
                                      const RadiosityOptions& options)
-    : scene_(scene), mesh_(mesh), options_(options), items_(mesh),
+    : scene_(scene), mesh_(mesh), revision_(mesh.revision), options_(options), items_(mesh),
       hemicube_(mesh, items_, options.hemicube_res) {
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     const Light& light = scene.lights[k];
@@ -86,6 +87,7 @@ void ProgressiveSolver::reset() {
     const int revision = mesh_.revision;
     mesh_ = original_;
     mesh_.revision = revision + 1;
+    revision_ = mesh_.revision;
     items_.upload(mesh_);
     refinement_passes_ = 0;
   }
@@ -302,6 +304,9 @@ bool ProgressiveSolver::done() const {
 // Step 4: repeat until no difference shows. One call is one shot, so the viewer can spend a time
 // budget per frame and redraw (step 3) between shots.
 bool ProgressiveSolver::step() {
+  if (mesh_.revision != revision_)
+    throw Error(ErrorKind::bad_value, i18n::tr("radiosity: the mesh was changed by another solver's "
+                                               "adaptive subdivision; give each solver its own mesh"));
   if (done()) return false;
   if (next_light_ < lights_.size()) {
     shoot_light(next_light_++);  // punctual lights first, each once

@@ -34,7 +34,8 @@
 // exactly that sum), so it holds what it would have received had it existed from the start.
 // Its unshot radiosity is then that minus what its parent had already sent; the light the
 // coarser element had counted wrongly is moved between "escaped", "absorbed" and "unshot", so
-// the energy balance holds at every step. The solver refines the mesh it was given.
+// the energy balance holds at every step. The solver refines the mesh it was given: two solvers
+// must not share one then (step() refuses a mesh another has changed).
 //
 // The solver steps on the thread that owns the GL context: step() is one shot, so the viewer
 // can spend a time budget per frame and show each step. All quantities are RGB exitances
@@ -173,6 +174,7 @@ private:
   const Scene& scene_;
   PatchMesh& mesh_;
   PatchMesh original_;  // the mesh as given, kept at the first refinement for reset()
+  int revision_ = 0;    // of the mesh as this solver last left it
   RadiosityOptions options_;
   PatchItems items_;
   Hemicube hemicube_;
