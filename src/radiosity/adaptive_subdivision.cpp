@@ -157,7 +157,6 @@ size_t ProgressiveSolver::refine() {
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   }
-  bisection.finish();
   patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   for (size_t e = 0; e < mesh_.size(); ++e)
     patch_unshot_[mesh_.shooter_of[e]] += glm::dvec3(unshot_[e]) * double(mesh_.patches[e].area);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cassert>
 
 #include <glm/geometric.hpp>
 
@@ -147,11 +146,6 @@ void MeshBisection::neighbours(uint32_t e, std::vector<uint32_t>& out) const {
     for (const uint32_t f : found->second)
       if (f != e && glm::dot(mesh_.patches[f].normal, p.normal) > kSameSurface) out.push_back(f);
   }
-}
-
-void MeshBisection::finish() {
-  mesh_.group_by_shooter();
-  assert(mesh_.refinements.size() == mesh_.size());
 }
 
 }  // namespace luz

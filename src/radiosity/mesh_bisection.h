@@ -32,12 +32,11 @@ public:
 
   // Cuts element e in two, and whatever else conformity needs. The elements made or changed are
   // appended to `changed` (the first half of a cut element keeps its index, the second is new).
+  // PatchMesh::members is stale until PatchMesh::group_by_shooter() is called after the splits.
   void split(uint32_t e, std::vector<uint32_t>& changed);
   // The elements sharing an edge with e on the same flat surface (normals within 2.5 degrees):
   // those its irradiance is compared with.
   void neighbours(uint32_t e, std::vector<uint32_t>& out) const;
-  // Regroups PatchMesh::members by shooting patch after splits (call once after a pass).
-  void finish();
 
 private:
   using Edge = uint64_t;  // the welded ids of its two ends, the smaller in the high half
