@@ -63,6 +63,31 @@ float scene_size(const PatchMesh& mesh) {
 
 }  // namespace
 
+ShooterEmission::ShooterEmission(const PatchMesh& mesh, size_t shooter, std::span<const Rgb> sent)
+    : members_(mesh.members.data() + mesh.shooters[shooter].first, mesh.shooters[shooter].count) {
+  double area = 0.0;
+  cumulative_.reserve(members_.size());
+  weight_.reserve(members_.size());
+  for (size_t k = 0; k < members_.size(); ++k) {
+    area += double(mesh.patches[members_[k]].area);
+    cumulative_.push_back(float(area));
+    // Overshooting may send a negative amount from an element; it weighs as nothing.
+    weight_.push_back(sent.empty() ? 1.0f : std::max(0.0f, (sent[k].r + sent[k].g + sent[k].b) / 3.0f));
+  }
+  for (float& c : cumulative_) c = area > 0.0 ? float(double(c) / area) : 1.0f;
+}
+
+ShooterEmission::Point ShooterEmission::at(const PatchMesh& mesh, float s, float t) const {
+  const size_t k = size_t(std::upper_bound(cumulative_.begin(), cumulative_.end() - 1, s) - cumulative_.begin());
+  const float below = k > 0 ? cumulative_[k - 1] : 0.0f;
+  const float share = cumulative_[k] - below;
+  const float u = share > 0.0f ? std::clamp((s - below) / share, 0.0f, 1.0f) : 0.5f;
+  const Patch& element = mesh.patches[members_[k]];
+  const glm::vec3 position = point_in(mesh.vertices[element.vertices[0]], mesh.vertices[element.vertices[1]],
+                                      mesh.vertices[element.vertices[2]], u, t);
+  return {position, weight_[k]};
+}
+
 RayFormFactors::RayFormFactors(const Scene& scene, const PatchMesh& mesh)
     : mesh_(mesh), offset_(1e-5f * scene_size(mesh)),
       bvh_(std::make_unique<rt::EmbreeIntersector>(scene)), values_(mesh.size(), 0.0f) {}
@@ -88,8 +113,8 @@ const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& val
 }
 
 // F_ij for one element: 0 unless the two face each other; else V * F(j -> i) * A_j / A_i.
-double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t seed, uint32_t shot,
-                                      uint64_t& traced) const {
+double RayFormFactors::element_factor(size_t i, const ShooterEmission& emission, size_t j, size_t m,
+                                      uint32_t seed, uint32_t shot, uint64_t& traced) const {
   const ShootingPatch& shooter = mesh_.shooters[i];
   const Patch& element = mesh_.patches[j];
   if (mesh_.shooter_of[j] == i) return 0.0;  // its own elements lie in its plane
@@ -102,39 +127,50 @@ double RayFormFactors::element_factor(size_t i, size_t j, size_t m, uint32_t see
   const double unoccluded = element_to_patch_form_factor(mesh_, element, shooter);
   if (!(unoccluded > 0.0)) return 0.0;
 
-  // V: m rays, from a random point of the element to a point of the patch in its k-th stratum.
-  // A ray between a point and one behind its own surface carries no light in the integral (the
-  // contour integral clips that part off): it counts neither as open nor as blocked.
+  // V: m rays, from a random point of the element to a point of the patch in its k-th stratum of
+  // area, each weighted by what is sent from where it ends. A ray between a point and one behind
+  // its own surface carries no light in the integral (the contour integral clips that part off):
+  // it counts neither as open nor as blocked.
   Random random{(uint64_t(seed) << 48) ^ (uint64_t(shot) << 24) ^ uint64_t(j)};
   std::array<rt::Ray, kMaxVisibilityRays> rays;
+  std::array<float, kMaxVisibilityRays> weight;
   std::array<bool, kMaxVisibilityRays> blocked{};
   size_t valid = 0;
   for (size_t k = 0; k < m; ++k) {
     const float u = random.next(), v = random.next();
     const glm::vec3 from = point_in(corners[0], corners[1], corners[2], u, v);
     const float su = (float(k) + random.next()) / float(m), sv = random.next();
-    const glm::vec3 to = point_in(shooter.corners[0], shooter.corners[1], shooter.corners[2], su, sv);
-    const glm::vec3 d = to - from;
+    const ShooterEmission::Point to = emission.at(mesh_, su, sv);
+    const glm::vec3 d = to.position - from;
     if (!(glm::dot(d, element.normal) > 0.0f && glm::dot(d, shooter.normal) < 0.0f)) continue;
-    const glm::vec3 start = from + offset_ * element.normal, end = to + offset_ * shooter.normal;
+    const glm::vec3 start = from + offset_ * element.normal, end = to.position + offset_ * shooter.normal;
     const float length = glm::length(end - start);
+    weight[valid] = to.weight;
     rays[valid++] = {start, (end - start) / length, length * (1.0f - 1e-4f)};
   }
   if (valid == 0) return 0.0;
   uint64_t tests = 0;
   bvh_->occluded(std::span(rays.data(), valid), std::span(blocked.data(), valid), tests);
   traced += valid;
-  const auto open = std::count(blocked.begin(), blocked.begin() + long(valid), false);
-  if (open == 0) return 0.0;
-  const double visible = double(open) / double(valid);
-  return visible * unoccluded * double(element.area) / double(shooter.area);
+  double open = 0.0, all = 0.0;
+  for (size_t k = 0; k < valid; ++k) {
+    all += double(weight[k]);
+    if (!blocked[k]) open += double(weight[k]);
+  }
+  if (!(all > 0.0)) {  // every ray ends where nothing is sent: the rays alone say what is seen
+    all = double(valid);
+    open = double(std::count(blocked.begin(), blocked.begin() + long(valid), false));
+  }
+  if (!(open > 0.0)) return 0.0;
+  return open / all * unoccluded * double(element.area) / double(shooter.area);
 }
 
 const std::vector<FormFactor>& RayFormFactors::row(size_t shooter, int rays, uint32_t seed,
-                                                   uint32_t shot) {
+                                                   uint32_t shot, std::span<const Rgb> sent) {
   const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
+  const ShooterEmission emission(mesh_, shooter, sent);
   return for_each_element([&](size_t j, uint64_t& traced) {
-    return element_factor(shooter, j, m, seed, shot, traced);
+    return element_factor(shooter, emission, j, m, seed, shot, traced);
   });
 }
 

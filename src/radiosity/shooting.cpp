@@ -203,7 +203,7 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
   }
   const auto start = std::chrono::steady_clock::now();
   const std::vector<FormFactor>& row =
-      rays().row(i, options_.visibility_rays, options_.seed, uint32_t(shots_));
+      rays().row(i, options_.visibility_rays, options_.seed, uint32_t(shots_), sent_);
   row_times_ = RowTimes{};
   row_times_.draw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return row;

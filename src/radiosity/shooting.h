@@ -166,7 +166,8 @@ private:
   // Adaptive subdivision's pieces (adaptive_subdivision.cpp).
   std::vector<uint32_t> too_coarse(const MeshBisection& bisection,
                                    const std::vector<uint32_t>& candidates) const;
-  Rgb gather(uint32_t element, const std::vector<Rgb>& sent, std::vector<Rgb>& parts) const;
+  Rgb gather(uint32_t element, const std::vector<Rgb>& sent,
+             const std::vector<ShooterEmission>& emissions, std::vector<Rgb>& parts) const;
   // What a shooting patch has sent in all its shots, per square metre.
   Rgb patch_sent(size_t shooter) const;
   RayFormFactors& rays();
