@@ -141,6 +141,7 @@ void ProgressiveSolver::shoot(size_t i) {
   }
   patch_unshot_[i] *= double(1.0f - w);
   const Rgb shot = Rgb(shot_power_rgb / double(shooter.area));
+  eye_ = emission_centre(shooter);
 
   // para cada j: calcular F_ji;  carga[j] = carga[j] + rho_j F_ji carga[i]
   const std::vector<FormFactor>& row = this->row(i, rotation);
@@ -183,12 +184,28 @@ double ProgressiveSolver::form_factor_to(const ShootingPatch& shooter, const For
   const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
                                 mesh_.vertices[element.vertices[1]],
                                 mesh_.vertices[element.vertices[2]]};
-  const glm::vec3 eye = shooter.centre + Hemicube::eye_height(shooter.clearance) * shooter.normal;
+  const glm::vec3 eye = eye_ + Hemicube::eye_height(shooter.clearance) * shooter.normal;
   const double unoccluded = point_to_polygon_form_factor(eye, shooter.normal, corners);
   if (!(unoccluded > 0.0)) return double(hemicube.value);
   const double visible = double(hemicube.value) / unoccluded;
   return visible * element_to_patch_form_factor(mesh_, element, shooter) * double(element.area) /
          double(shooter.area);
+}
+
+// The hemicube's point of a shot: the centroid of the patch's elements weighted by what each
+// sends (the patch's centre when they all send alike). A floor patch half under a block then
+// looks at the room from its open half, where its light leaves from, not from under the block,
+// which would hide all of it. (The rays weigh each point by its element instead.)
+glm::vec3 ProgressiveSolver::emission_centre(const ShootingPatch& shooter) const {
+  glm::dvec3 sum(0.0);
+  double weight = 0.0;
+  for (uint32_t k = 0; k < shooter.count; ++k) {
+    const Patch& element = mesh_.patches[mesh_.members[shooter.first + k]];
+    const double w = std::max(0.0, mean(sent_[k])) * double(element.area);
+    sum += w * glm::dvec3(element.centre);
+    weight += w;
+  }
+  return weight > 0.0 ? glm::vec3(sum / weight) : shooter.centre;
 }
 
 // The shooter's row F_ij: from its hemicube, or cast with rays (which need no GL and are
@@ -197,7 +214,7 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
   const ShootingPatch& shooter = mesh_.shooters[i];
   if (options_.form_factors != FormFactorMethod::rays) {
     const std::vector<FormFactor>& row =
-        hemicube_.row(shooter.centre, shooter.normal, shooter.clearance, rotation);
+        hemicube_.row(eye_, shooter.normal, shooter.clearance, rotation);
     row_times_ = hemicube_.last_times();
     return row;
   }

@@ -153,6 +153,7 @@ private:
   size_t most_unshot_patch() const;
   static double power(const Rgb& exitance, float area);
   double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
+  glm::vec3 emission_centre(const ShootingPatch& shooter) const;
   const std::vector<FormFactor>& row(size_t shooter, float rotation);
   Rgb seen_from(const ShootingPatch& shooter, const Patch& receiver, const Rgb& shot,
                 const std::vector<Rgb>& parts) const;
@@ -179,6 +180,7 @@ private:
   RadiosityOptions options_;
   PatchItems items_;
   Hemicube hemicube_;
+  glm::vec3 eye_{0.0f};  // where the shooting patch's hemicube stands (emission_centre)
   std::unique_ptr<RayFormFactors> rays_;  // made at the first shot with FormFactorMethod::rays
   std::unique_ptr<PointSource> cube_;  // made when the scene has punctual lights
   std::vector<size_t> lights_;         // the scene's lights that shoot (enabled point and spot)
