@@ -27,6 +27,26 @@ void clip_above(const glm::vec<3, T>& x, const glm::vec<3, T>& n, std::span<cons
   }
 }
 
+// The angle atan2(y, x) for y >= 0, in [0, pi]. In double, the library's; in float, which the
+// solver calls millions of times a second, an odd polynomial for atan on [0, 1] (degree 15,
+// fitted here to the minimax error: 4e-8 rad, 1.3e-7 evaluated in float, the rounding of a float
+// angle) after folding the argument into [0, 1]: about three times faster than atan2f.
+inline double angle(double y, double x) { return std::atan2(y, x); }
+inline float angle(float y, float x) {
+  const float ax = std::abs(x);
+  const bool steep = y > ax;
+  const float t = steep ? ax / y : (ax > 0.0f ? y / ax : 0.0f);
+  const float t2 = t * t;
+  float a = -0.00405455987f;
+  for (const float c : {0.0218629347f, -0.0559122998f, 0.0964219601f, -0.139086294f, 0.199465657f,
+                        -0.333298608f, 0.999999336f})
+    a = a * t2 + c;
+  a *= t;
+  constexpr float half_pi = std::numbers::pi_v<float> / 2.0f;
+  if (steep) a = half_pi - a;
+  return x < 0.0f ? std::numbers::pi_v<float> - a : a;
+}
+
 template <typename T>
 double contour_integral(const glm::vec3& x, const glm::vec3& n, std::span<const glm::vec3> polygon) {
   using V = glm::vec<3, T>;
@@ -44,7 +64,7 @@ double contour_integral(const glm::vec3& x, const glm::vec3& n, std::span<const 
     const V cross = glm::cross(r0, r1);
     const T length = glm::length(cross);
     if (length <= T(0)) continue;  // an edge through x's line of sight adds nothing
-    const T gamma = std::atan2(length, glm::dot(r0, r1));
+    const T gamma = angle(length, glm::dot(r0, r1));
     sum += gamma * glm::dot(nd, cross / length);
   }
   // Counter-clockwise seen from x makes every cross product point away from x's side: minus.

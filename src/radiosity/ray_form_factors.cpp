@@ -150,7 +150,7 @@ double RayFormFactors::element_factor(size_t i, const ShooterEmission& emission,
   }
   if (valid == 0) return 0.0;
   uint64_t tests = 0;
-  bvh_->occluded(std::span(rays.data(), valid), std::span(blocked.data(), valid), tests);
+  for (size_t k = 0; k < valid; ++k) blocked[k] = bvh_->occluded(rays[k], tests);
   traced += valid;
   double open = 0.0, all = 0.0;
   for (size_t k = 0; k < valid; ++k) {
