@@ -22,11 +22,14 @@ double element_to_patch_form_factor(const PatchMesh& mesh, const Patch& element,
   float element_radius = 0.0f;
   for (const glm::vec3& corner : corners)
     element_radius = std::max(element_radius, glm::length(corner - element.centre));
-  const float distance = glm::length(element.centre - shooter.centre);
-  // near: 12 points, 48 next to the patch (a row then sums to 1 within 0.1% in a box)
+  // How far the element is from the patch, at least: the integrand changes on that scale (as
+  // log(distance) at an edge the two share), the element's size sets how much of it one point
+  // misses. Three points (exact for a quadratic) where the gap is over three element radii,
+  // 12 within that, 48 within one (next to the patch: a row then sums to 1 within 0.1% in a box).
+  const float gap = glm::length(element.centre - shooter.centre) - shooter.radius;
+  const int splits = gap < element_radius ? 2 : gap < 3.0f * element_radius ? 1 : 0;
   return triangle_to_polygon_form_factor(corners[0], corners[1], corners[2], element.normal,
-                                         shooter.corners,
-                                         distance < 2.0f * (shooter.radius + element_radius) ? 2 : 1);
+                                         shooter.corners, splits);
 }
 
 }  // namespace luz
