@@ -5,7 +5,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -38,7 +40,8 @@ Whitted::Whitted(const Scene& scene, const Intersector& intersector, const Whitt
     : scene_(scene), intersector_(intersector), options_(options), counters_(counters), diffuse_(diffuse) {}
 
 // ---- [Trazar] -----------------------------------------------------------------------------------
-Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const StreamedAnswers* streamed) {
+Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb weight,
+                   const StreamedAnswers* streamed) {
   count(ray, kind);
   tree_.ray(ray, kind, depth, weight);
   // "Determinar intersección con objeto más cercano".
@@ -49,7 +52,7 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const St
     const SurfacePoint p = streamed ? streamed->point : surface_at(ray, hit);
     tree_.hit(hit.t, p.position, p.N, scene_.meshes[size_t(p.mesh)].name, p.material->name);
     streamed_ = streamed;  // lights_at() takes its answers for this hit, and only this one
-    radiance = color(p, ray, depth);
+    radiance = color(p, ray, depth, seed);
   }
   tree_.returned(radiance);
   return radiance;
@@ -59,13 +62,26 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const St
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
 // Hybrid (a diffuse source given):
 // I = B/pi (radiosity, interpolated)  + sum_i S_i * IL_i * ks*cos^n(alpha)  + kr*Ir + kt*It
-Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
-  const Material& o = *p.material;
-  const glm::vec3 V = -ray.direction;
+Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, uint64_t seed) {
+  // "color := color ambiental"; "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no
+  // hay obstrucción, the light's term.
+  const LightsAt lights = lights_at(p, -ray.direction, seed);
+  Rgb color = local_color(p, lights.samples, shadow_rays(lights));
+  tree_.local(color);
 
+  // "si d < máxima": "si o es reflexivo", color := color + Trazar(R, d+1) * kr; "si o es
+  // transmisivo y no hay reflexión interna total", color := color + Trazar(T, d+1) * kt.
+  if (depth >= max_depth_of(options_)) return color;
+  for (const SecondaryRay& s : secondary_rays(p, ray))
+    color += s.weight * trace(s.ray, depth + 1, s.kind, branch_seed(seed, s.kind), s.weight);
+  return color;
+}
+
+Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lights,
+                         const bool* blocked) const {
+  const Material& o = *p.material;
   Rgb color(0.0f);
   if (!diffuse_) {
-    // "color := color ambiental"
     if (options_.terms.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
     if (options_.terms.emission && p.front) color += o.emission;
@@ -75,20 +91,19 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
     // Le (B = E + rho H with E = pi Le), the direct light of every source with its shadows, and
     // the interreflections Whitted's model lacks (so no ambient term). Only a surface's front
     // receives and emits in radiosity; a back face adds nothing here, as the radiosity picture
-    // draws it black. The rest below is view-dependent and comes from rays: the lights add only
+    // draws it black. The rest is view-dependent and comes from rays: the lights add only
     // their highlights IL ks cos^n(alpha) (add_light leaves kd out), then kr*Ir and kt*It, whose
     // hits are shaded by this same rule.
     color = diffuse_->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
   }
-  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's term.
-  const LightsAt lights = lights_at(p, V);
-  for (size_t i = 0; i < lights.samples.size(); ++i)
-    if (!blocked(lights, i)) color += lights.samples[i].term;
-  tree_.local(color);
+  for (size_t i = 0; i < lights.size(); ++i)
+    if (!blocked || !blocked[i]) color += lights[i].term;  // S_i = 1: unblocked
+  return color;
+}
 
-  // "si d < máxima": the reflected and the transmitted rays.
-  if (depth >= max_depth_of(options_)) return color;
-
+SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) const {
+  const Material& o = *p.material;
+  const glm::vec3 V = -ray.direction;
   // The transmitted direction by Snell's law. The ray enters the object when it hits the front
   // (counter-clockwise) face, glTF's outside: eta = n1/n2 = 1/ior; leaving, eta = ior.
   std::optional<glm::vec3> T;
@@ -103,23 +118,25 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   const Rgb kr = o.kr + o.kt * F;       // SCENES.md: kr, or kr + kt*F with Fresnel
   const Rgb kt = o.kt * (1.0f - F);     //            kt, or kt*(1 - F) with Fresnel
 
-  // "si o es reflexivo": R := rayo de reflexión; color := color + Trazar(R, d+1) * kr.
+  SecondaryRays out;
+  // "si o es reflexivo": R := rayo de reflexión.
   if (positive(kr)) {
     const glm::vec3 R = keep_on_side(reflect(ray.direction, p.N), p.geometric);
-    const Ray reflected{offset_origin(p.position, p.geometric), R};
-    color += kr * trace(reflected, depth + 1, RayKind::reflected, kr);
+    out.rays[out.count++] = {Ray{offset_origin(p.position, p.geometric), R}, RayKind::reflected, kr};
   }
   // "si o es transmisivo y no hay reflexión interna total": T := rayo de refracción.
   if (positive(kt) && T) {
     const glm::vec3 inward = -p.geometric;
-    const Ray transmitted{offset_origin(p.position, inward), keep_on_side(*T, inward)};
-    color += kt * trace(transmitted, depth + 1, RayKind::transmitted, kt);
+    out.rays[out.count++] = {Ray{offset_origin(p.position, inward), keep_on_side(*T, inward)},
+                             RayKind::transmitted, kt};
   }
-  return color;
+  return out;
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------
-void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out) {
+void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t seed,
+                            std::vector<LightSample>& out) {
+  Random random(seed);
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
@@ -148,7 +165,7 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vect
       const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
       const size_t t = size_t(area.triangle);
       triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                       mesh.positions[mesh.indices[3 * t + 2]], n, random_, light_points_);
+                       mesh.positions[mesh.indices[3 * t + 2]], n, random, light_points_);
     }
     for (const glm::vec3& y : light_points_) {
       const glm::vec3 to_light = y - p.position;
@@ -192,23 +209,30 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   out.push_back(sample);
 }
 
-LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V) {
+LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed) {
   if (const StreamedAnswers* streamed = std::exchange(streamed_, nullptr))
     return {streamed->lights, streamed->blocked};
   lights_.clear();
-  light_samples(p, V, lights_);
+  light_samples(p, V, seed, lights_);
   return {lights_, nullptr};
 }
 
-bool Whitted::blocked(const LightsAt& lights, size_t i) {
-  if (!options_.shadows) return false;  // every light counts as unoccluded
-  const LightSample& sample = lights.samples[i];
-  count(sample.shadow, RayKind::shadow);
-  // S_i = 0 when the shadow ray meets anything before the light.
-  const bool occluded = lights.blocked ? lights.blocked[i]
-                                       : intersector_.occluded(sample.shadow, counters_.intersection_tests);
-  tree_.shadow(sample.shadow, occluded, sample.distance, sample.light, sample.term);
-  return occluded;
+const bool* Whitted::shadow_rays(const LightsAt& lights) {
+  if (!options_.shadows) return nullptr;  // every light counts as unoccluded
+  const size_t n = lights.samples.size();
+  if (n > blocked_size_) {
+    blocked_size_ = std::max(n, 2 * blocked_size_);
+    blocked_ = std::make_unique<bool[]>(blocked_size_);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const LightSample& sample = lights.samples[i];
+    count(sample.shadow, RayKind::shadow);
+    // S_i = 0 when the shadow ray meets anything before the light.
+    blocked_[i] = lights.blocked ? lights.blocked[i]
+                                 : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+    tree_.shadow(sample.shadow, blocked_[i], sample.distance, sample.light, sample.term);
+  }
+  return blocked_.get();
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {
