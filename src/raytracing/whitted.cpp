@@ -137,12 +137,14 @@ SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) con
 void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t seed,
                             std::vector<LightSample>& out) {
   Random random(seed);
+  // I_D's kd, once for all the lights; in the hybrid radiosity has I_D already (see color()).
+  const Rgb kd = options_.terms.diffuse && !diffuse_ ? kd_at(p) : Rgb(0.0f);
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
     if (!light.enabled) continue;
     if (light.type == LightType::directional) {
-      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), out);
+      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), kd, out);
       continue;
     }
     const glm::vec3 to_light = light.position - p.position;
@@ -150,7 +152,7 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t 
     if (d <= 0.0f) continue;
     const glm::vec3 L = to_light / d;
     const Rgb IL = light.intensity * light.attenuation.factor(d) * light.spot_factor(-L) / kPi;
-    add_light(p, V, L, IL, d, int(i), out);
+    add_light(p, V, L, IL, d, int(i), kd, out);
   }
   // Emissive triangles, sampled over their area: each of N samples y stands for area A/N and
   // lights like a point of intensity Le * (A/N) * cos(theta_e) (SCENES.md; N = 1 is the
@@ -159,35 +161,35 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t 
   for (size_t a = 0; a < scene_.area_lights.size(); ++a) {
     const AreaLight& area = scene_.area_lights[a];
     if (area.mesh == p.mesh && area.triangle == p.triangle) continue;  // it cannot light itself
-    if (n == 1) {
-      light_points_.assign(1, area.centroid);
-    } else {
+    std::span<const glm::vec3> points(&area.centroid, 1);
+    if (n > 1) {
       const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
       const size_t t = size_t(area.triangle);
       triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
                        mesh.positions[mesh.indices[3 * t + 2]], n, random, light_points_);
+      points = light_points_;
     }
-    for (const glm::vec3& y : light_points_) {
+    for (const glm::vec3& y : points) {
       const glm::vec3 to_light = y - p.position;
       const float d = glm::length(to_light);
       if (d < 1e-6f) continue;
       const glm::vec3 L = to_light / d;
       const float cos_theta_e = std::max(glm::dot(area.normal, -L), 0.0f);  // dark behind it
       const Rgb IL = area.radiance * (area.area / float(n)) * cos_theta_e / (d * d) / kPi;
-      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), out);
+      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), kd, out);
     }
   }
 }
 
 void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L,
-                        const Rgb& IL, float distance, int light,
+                        const Rgb& IL, float distance, int light, const Rgb& kd,
                         std::vector<LightSample>& out) const {
   const float cos_theta = glm::dot(p.N, L);
   if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
   const Material& o = *p.material;
   Rgb term(0.0f);
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
-  if (options_.terms.diffuse && !diffuse_) term += IL * kd_at(p) * cos_theta;
+  if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
   if (options_.terms.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
     const float cos_alpha = options_.terms.blinn

@@ -139,8 +139,9 @@ private:
   // "y no hay obstrucción": per light sample, whether its shadow ray meets anything before its
   // light (traced here, or the streamed answer); nullptr when shadows are off (none blocks).
   const bool* shadow_rays(const LightsAt& lights);
+  // Light `light`'s term at p (kd: kd_at(p)) and its shadow ray, if it lights p at all.
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
-                 float distance, int light, std::vector<LightSample>& out) const;
+                 float distance, int light, const Rgb& kd, std::vector<LightSample>& out) const;
   // Counts and logs a ray of `kind` as traced (inline: it runs for every ray).
   void count(const Ray& ray, RayKind kind) {
     ++counters_[kind];
