@@ -137,7 +137,7 @@ SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) con
 void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t seed,
                             std::vector<LightSample>& out) {
   Random random(seed);
-  // I_D's kd, once for all the lights; in the hybrid radiosity has I_D already (see color()).
+  // I_D's kd, once for all the lights; in the hybrid radiosity has I_D already (see local_color()).
   const Rgb kd = options_.terms.diffuse && !diffuse_ ? kd_at(p) : Rgb(0.0f);
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
@@ -188,7 +188,7 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
   const Material& o = *p.material;
   Rgb term(0.0f);
-  // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
+  // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see local_color()).
   if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
   if (options_.terms.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
