@@ -92,15 +92,18 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     scratch.hits.resize(n);
     intersector_.intersect(rays, scratch.hits, counters_.intersection_tests);
 
-    // 2. "calcular la normal", and the light samples of each hit from its ray's seed.
+    // 2. "calcular la normal", then the light samples of each hit from its ray's seed. Two loops:
+    // each body is short enough for the processor to overlap the square roots and divisions of
+    // several hits.
     scratch.points.resize(n);
+    for (size_t k = 0; k < n; ++k)
+      if (scratch.hits[k].found()) scratch.points[k] = shading_.surface_at(rays[k], scratch.hits[k]);
     scratch.first.resize(n + 1);
     scratch.lights.clear();
     for (size_t k = 0; k < n; ++k) {
       scratch.first[k] = scratch.lights.size();
-      if (!scratch.hits[k].found()) continue;
-      scratch.points[k] = shading_.surface_at(rays[k], scratch.hits[k]);
-      shading_.light_samples(scratch.points[k], -rays[k].direction, queue.seeds[k], scratch.lights);
+      if (scratch.hits[k].found())
+        shading_.light_samples(scratch.points[k], -rays[k].direction, queue.seeds[k], scratch.lights);
     }
     scratch.first[n] = scratch.lights.size();
 
@@ -120,24 +123,27 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
 
     // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; its
     // reflected and transmitted rays, weighted once more, into the next generation.
-    const bool deeper = depth < max_depth_of(options_);
-    scratch.reflected.clear();
-    scratch.transmitted.clear();
     for (size_t k = 0; k < n; ++k) {
-      const uint32_t sample = queue.samples[k];
       const Rgb& throughput = queue.throughputs[k];
       if (!scratch.hits[k].found()) {
-        radiance[sample] += throughput * scene_.background;
+        radiance[queue.samples[k]] += throughput * scene_.background;
         continue;
       }
-      const SurfacePoint& p = scratch.points[k];
       const size_t first = scratch.first[k];
       const std::span<const LightSample> lights(scratch.lights.data() + first, scratch.first[k + 1] - first);
-      radiance[sample] += throughput * shading_.local_color(p, lights, blocked ? blocked + first : nullptr);
-      if (!deeper) continue;
-      for (const SecondaryRay& s : shading_.secondary_rays(p, rays[k])) {
-        RayQueue& next = s.kind == RayKind::reflected ? scratch.reflected : scratch.transmitted;
-        next.push(s.ray, s.kind, sample, throughput * s.weight, branch_seed(queue.seeds[k], s.kind));
+      radiance[queue.samples[k]] +=
+          throughput * shading_.local_color(scratch.points[k], lights, blocked ? blocked + first : nullptr);
+    }
+    scratch.reflected.clear();
+    scratch.transmitted.clear();
+    if (depth < max_depth_of(options_)) {
+      for (size_t k = 0; k < n; ++k) {
+        if (!scratch.hits[k].found()) continue;
+        for (const SecondaryRay& s : shading_.secondary_rays(scratch.points[k], rays[k])) {
+          RayQueue& next = s.kind == RayKind::reflected ? scratch.reflected : scratch.transmitted;
+          next.push(s.ray, s.kind, queue.samples[k], queue.throughputs[k] * s.weight,
+                    branch_seed(queue.seeds[k], s.kind));
+        }
       }
     }
 
