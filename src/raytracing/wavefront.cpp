@@ -121,8 +121,9 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
       blocked = flags;
     }
 
-    // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; its
-    // reflected and transmitted rays, weighted once more, into the next generation.
+    // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; then
+    // (a second loop, as in step 2) its reflected and transmitted rays, weighted once more, into
+    // the next generation.
     for (size_t k = 0; k < n; ++k) {
       const Rgb& throughput = queue.throughputs[k];
       if (!scratch.hits[k].found()) {
