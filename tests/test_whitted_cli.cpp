@@ -1,5 +1,7 @@
 // `luz render --model whitted` and `luz bench whitted` as a user runs them: flags, usage errors
 // (exit 2), the counters, the ray tree JSON beside the image.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -52,6 +54,39 @@ TEST(WhittedCli, TracerFlagsWithAnotherModelAreUsageErrors) {
   EXPECT_EQ(bad({"--ray-tree", "16,0"}), 2);  // outside the 16x12 image
   EXPECT_EQ(bad({"--ray-tree", "a,b"}), 2);
   EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+// --renderer chooses how the rays are traced, not what they make: both pictures are the same
+// (test_whitted_streams holds them to 1e-6; an EXR keeps the floats), and the bench names its renderer.
+TEST(WhittedCli, BothRenderersMakeThePictureAndTheBenchSaysWhichRan) {
+  test::ScratchDir dir;
+  std::vector<Image> pictures;
+  for (const char* renderer : {"wavefront", "recursive"}) {
+    const fs::path out = dir / (std::string(renderer) + ".exr");
+    const auto result = run_luz({"render", whitted(), "--model", "whitted", "--size", "40x30", "--fresnel",
+                                 "--renderer", renderer, "--out", out.string(), "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    pictures.push_back(io::read_image(out));
+  }
+  float worst = 0.0f;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x)
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(pictures[0].at(x, y)[c] - pictures[1].at(x, y)[c]) /
+                                    std::max(1.0f, std::abs(pictures[1].at(x, y)[c])));
+  EXPECT_LE(worst, 1e-6f);
+  const auto wrong = run_luz({"render", whitted(), "--model", "whitted", "--renderer", "breadth",
+                              "--out", (dir / "x.png").string()});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_TRUE(contains(wrong.output, "--renderer")) << wrong.output;
+  EXPECT_EQ(run_luz({"render", whitted(), "--model", "phong", "--renderer", "recursive", "--out",
+                     (dir / "x.png").string()}).exit_code, 2);  // a tracer's flag with another model
+
+  const auto bench = run_luz({"bench", "whitted", "--size", "8x6", "--repeats", "1", "--depth", "1",
+                              "--scenes", "whitted", "--renderer", "recursive"});
+  ASSERT_EQ(bench.exit_code, 0) << bench.output;
+  EXPECT_TRUE(contains(bench.output, "renderer: recursive")) << bench.output;
+  EXPECT_EQ(run_luz({"bench", "whitted", "--renderer", "breadth"}).exit_code, 2);
 }
 
 TEST(WhittedCli, RendersPrintsTheCountersAndWritesTheRayTree) {

@@ -1,16 +1,21 @@
-// The renderer's fast path (a tile's primary and shadow rays traced ahead as Embree streams, see
-// renderer.cpp render_tile) against the plain recursion of slide 26: trace() of each primary ray
-// with nothing traced ahead, the same samples and the same random numbers. Two ways to the same
-// picture, on every shipped scene, with area-light sampling and supersampling on.
+// Three ways to the same picture, on every shipped scene, with area-light sampling and
+// supersampling on:
+//   - the plain recursion of slide 26: trace() of each primary ray with nothing traced ahead;
+//   - the recursive renderer (a tile's primary and shadow rays traced ahead as Embree streams,
+//     see renderer.cpp render_tile, then the recursion);
+//   - the wavefront renderer (wavefront.h: every generation of rays as streams).
+// The same samples and, from each ray's place in its ray tree, the same random numbers.
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/image.h"
 #include "io/gltf_loader.h"
+#include "raytracing/diffuse_source.h"
 #include "raytracing/renderer.h"
 #include "raytracing/sampling.h"
 #include "raytracing/whitted.h"
@@ -35,14 +40,38 @@ Image recursive_reference(const Scene& scene, const Intersector& intersector, co
       stratified_pixel_samples(samples, jitter, offsets);
       Rgb sum(0.0f);
       for (int s = 0; s < samples; ++s) {
-        whitted.reseed(Random(x, y, s));
         const Ray ray = camera_rays.through(glm::vec2(float(x), float(y)) + offsets[size_t(s)]);
-        sum += whitted.trace(ray, 1, RayKind::primary, weight);
+        sum += whitted.trace(ray, 1, RayKind::primary, sample_seed(x, y, s), weight);
       }
       image.at(x, y) = sum * weight;
     }
   return image;
 }
+
+// The largest difference between two pictures, relative where a value exceeds 1.
+float worst_difference(const Image& a, const Image& b) {
+  float worst = 0.0f;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float u = a.at(x, y)[c], v = b.at(x, y)[c];
+        worst = std::max(worst, std::abs(u - v) / std::max(1.0f, std::abs(v)));
+      }
+  return worst;
+}
+
+// A stand-in for the radiosity solution of the hybrid: some radiance that varies with the
+// mesh, the triangle and the point on it, so that a hit shaded with another hit's would show.
+class FakeDiffuse : public DiffuseSource {
+public:
+  Rgb diffuse_radiance(int mesh, int triangle, glm::vec2 b) const override {
+    return Rgb(0.1f * float(mesh % 5) + 0.3f * b.x, 0.05f * float(triangle % 7), 0.2f + 0.4f * b.y);
+  }
+};
+
+const std::string kShippedScenes[] = {"cornell_box", "cornell_spheres", "local_effects",
+                                      "phong_spheres", "whitted"};
+constexpr int kWidth = 64, kHeight = 48;
 
 class StreamsEqualRecursion : public ::testing::TestWithParam<std::string> {};
 
@@ -50,27 +79,110 @@ TEST_P(StreamsEqualRecursion, OnEveryShippedScene) {
   const Scene scene = io::load_gltf(test::scene_dir() / (GetParam() + ".gltf")).scene;
   WhittedRenderer tracer(scene);
   WhittedOptions options;
+  options.renderer = RendererKind::recursive;
   options.spp = 4;
   options.light_samples = 2;
   options.max_depth = 5;
-  const int width = 64, height = 48;
-  const Image streamed = tracer.render(scene.cameras[0], width, height, options);
+  const Image streamed = tracer.render(scene.cameras[0], kWidth, kHeight, options);
   const Image reference = recursive_reference(scene, tracer.intersector(options), scene.cameras[0],
-                                              width, height, options);
+                                              kWidth, kHeight, options);
   // Embree's stream and single-ray traversals find the same hit; allow for the last bit of t.
-  float worst = 0.0f;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const float a = streamed.at(x, y)[c], b = reference.at(x, y)[c];
-        worst = std::max(worst, std::abs(a - b) / std::max(1.0f, std::abs(b)));
-      }
-  EXPECT_LE(worst, 1e-6f) << GetParam();
+  EXPECT_LE(worst_difference(streamed, reference), 1e-6f) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Shipped, StreamsEqualRecursion,
-                         ::testing::Values("cornell_box", "cornell_spheres", "local_effects",
-                                           "phong_spheres", "whitted"));
+INSTANTIATE_TEST_SUITE_P(Shipped, StreamsEqualRecursion, ::testing::ValuesIn(kShippedScenes));
+
+// The wavefront renderer against the recursive one: the same picture (within float rounding:
+// the wavefront adds throughput x local colour where the recursion nests local + kr (...)), the
+// same rays of every kind, and the same rays logged for the benchmark.
+struct Setting {
+  const char* name;
+  int spp;
+  int light_samples;
+  bool fresnel;
+  bool shadows;
+  bool hybrid;  // with a (fake) diffuse source
+};
+
+const Setting kSettings[] = {
+    {"plain", 1, 1, false, true, false},
+    {"soft_fresnel", 4, 2, true, true, false},
+    {"no_shadows", 9, 3, true, false, false},
+    {"hybrid", 4, 2, true, true, true},
+};
+
+class WavefrontEqualsRecursion
+    : public ::testing::TestWithParam<std::tuple<std::string, Setting>> {};
+
+TEST_P(WavefrontEqualsRecursion, PictureAndRays) {
+  const auto& [name, setting] = GetParam();
+  const Scene scene = io::load_gltf(test::scene_dir() / (name + ".gltf")).scene;
+  WhittedRenderer tracer(scene);
+  const FakeDiffuse diffuse;
+  if (setting.hybrid) tracer.set_diffuse_source(&diffuse);
+  WhittedOptions options;
+  options.max_depth = 5;
+  options.spp = setting.spp;
+  options.light_samples = setting.light_samples;
+  options.fresnel = setting.fresnel;
+  options.shadows = setting.shadows;
+
+  tracer.keep_rays(true);
+  options.renderer = RendererKind::recursive;
+  const Image recursive = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+  const Counters recursive_counters = tracer.counters();
+  const std::vector<RecordedRay> recursive_rays = tracer.take_rays();
+  options.renderer = RendererKind::wavefront;
+  const Image wavefront = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+  const Counters wavefront_counters = tracer.counters();
+  const std::vector<RecordedRay> wavefront_rays = tracer.take_rays();
+
+  EXPECT_LE(worst_difference(wavefront, recursive), 1e-6f);
+  for (int k = 0; k < kRayKinds; ++k)
+    EXPECT_EQ(wavefront_counters[RayKind(k)], recursive_counters[RayKind(k)]) << to_string(RayKind(k));
+  EXPECT_EQ(wavefront_counters.samples, recursive_counters.samples);
+  EXPECT_GT(recursive_counters[RayKind::primary], 0u);
+  if (setting.shadows && !setting.hybrid) {  // the hybrid's lights add highlights only: maybe none
+    EXPECT_GT(recursive_counters[RayKind::shadow], 0u);
+  }
+  // The benchmark's log holds the same rays, in another order.
+  ASSERT_EQ(wavefront_rays.size(), recursive_rays.size());
+  ASSERT_EQ(wavefront_rays.size(), recursive_counters.total_rays());
+  const auto key = [](const RecordedRay& r) {
+    return std::tuple(int(r.kind), r.ray.origin.x, r.ray.origin.y, r.ray.origin.z, r.ray.direction.x,
+                      r.ray.direction.y, r.ray.direction.z, r.ray.tfar);
+  };
+  const auto sorted = [&](const std::vector<RecordedRay>& rays) {
+    std::vector<decltype(key(rays[0]))> keys;
+    for (const RecordedRay& r : rays) keys.push_back(key(r));
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  EXPECT_TRUE(sorted(wavefront_rays) == sorted(recursive_rays));
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, WavefrontEqualsRecursion,
+                         ::testing::Combine(::testing::ValuesIn(kShippedScenes), ::testing::ValuesIn(kSettings)),
+                         [](const auto& test) {
+                           return std::get<0>(test.param) + "_" + std::get<1>(test.param).name;
+                         });
+
+// Through the brute-force intersector, which counts its tests: both renderers make the same ones.
+TEST(WavefrontEqualsRecursion, SameIntersectionTests) {
+  const Scene scene = io::load_gltf(test::scene_dir() / "cornell_spheres.gltf").scene;
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.brute_force = true;
+  options.fresnel = true;
+  options.renderer = RendererKind::recursive;
+  const Image recursive = tracer.render(scene.cameras[0], 32, 24, options);
+  const uint64_t recursive_tests = tracer.counters().intersection_tests;
+  options.renderer = RendererKind::wavefront;
+  const Image wavefront = tracer.render(scene.cameras[0], 32, 24, options);
+  EXPECT_GT(recursive_tests, 0u);
+  EXPECT_EQ(tracer.counters().intersection_tests, recursive_tests);
+  EXPECT_LE(worst_difference(wavefront, recursive), 1e-6f);
+}
 
 }  // namespace
 }  // namespace luz::rt

@@ -1,10 +1,12 @@
-// `luz bench whitted`. For each scene: the full render (best of N), then the same render once more
-// keeping every ray it traced, then those rays traced bare through the same Embree scene on the
-// same TBB threads: primary and shadow rays as streams of 256 in the order the tracer made them
-// (a tile's worth, as the tracer streams them; the bare run streams the deeper hits' shadow rays
-// too, so it is if anything faster than the tracer could be), reflected and transmitted rays one
-// by one, as the tracer's recursion traces them. bare / render is how close the tracer comes to
-// Embree's limit on this machine; what it spends beyond is shading, sampling and bookkeeping.
+// `luz bench whitted`. For each scene: the full render (best and median of N), then the same
+// render once more keeping every ray it traced, then those rays traced bare through the same
+// Embree scene on the same TBB threads, as the renderer (--renderer) traces them: primary and
+// shadow rays as streams of 256 in the order the tracer made them (a tile's worth; with the
+// recursive renderer the bare run streams the deeper hits' shadow rays too, so it is if anything
+// faster than the tracer could be); reflected and transmitted rays as streams of 256 too for the
+// wavefront renderer, one by one for the recursive one, as its recursion traces them.
+// render / bare is how close the tracer comes to Embree's limit on this machine; what it spends
+// beyond is shading, sampling and bookkeeping.
 #include "app/bench_command.h"
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <span>
 
 #include <CLI/CLI.hpp>
@@ -23,6 +26,7 @@
 #include "app/render_command.h"
 #include "app/resources.h"
 #include "app/i18n.h"
+#include "app/options_tables.h"
 #include "core/error.h"
 #include "io/gltf_loader.h"
 #include "raytracing/renderer.h"
@@ -56,15 +60,17 @@ std::filesystem::path scene_path(const std::string& name) {
 constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
                                                     N_("transmitted")};
 
-// The rays of one kind traced bare: no shading, no recursion, no counters.
-double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, rt::RayKind kind) {
+// The rays of one kind traced bare: no shading, no recursion, no counters. `streamed`: reflected
+// and transmitted rays as streams (the wavefront renderer's way), else one by one.
+double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, rt::RayKind kind,
+                  bool streamed) {
   constexpr size_t chunk = 256;  // one 16x16 tile of primary rays
   const size_t chunks = (rays.size() + chunk - 1) / chunk;
   const auto start = Clock::now();
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     const std::span<const rt::Ray> part = rays.subspan(c * chunk, std::min(chunk, rays.size() - c * chunk));
     uint64_t tests = 0;
-    if (kind == rt::RayKind::primary) {
+    if (kind == rt::RayKind::primary || (streamed && kind != rt::RayKind::shadow)) {
       std::array<rt::Hit, chunk> hits;
       embree.intersect(part, std::span(hits.data(), part.size()), tests);
     } else if (kind == rt::RayKind::shadow) {
@@ -98,6 +104,19 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
       }, "SQUARE"))->capture_default_str();
   bench.add_option("--repeats", settings.repeats, tr("Best of this many runs"))
       ->check(CLI::Range(1, 100))->capture_default_str();
+  // The render's own --renderer row (options_tables.cpp): the same names, help and check.
+  const WhittedRow& renderer = *find_row(whitted_rows(), "renderer");
+  bench.add_option_function<std::string>(
+           "--renderer",
+           [&settings, &renderer](const std::string& text) {
+             const std::optional<double> value = parse_value(renderer, text);
+             if (!value)
+               throw CLI::ValidationError("--renderer", trf("{}: expected {}", text, accepted_text(renderer, Wording::translated)));
+             settings.renderer = rt::RendererKind(int(*value));
+           },
+           trf("{} ({}; default {})", tr(renderer.help), accepted_text(renderer, Wording::translated),
+               default_text(renderer)))
+      ->type_name("wavefront|recursive");
   bench.add_option("--scenes", settings.scenes, tr("Shipped scene names or glTF paths"))
       ->delimiter(',')->capture_default_str();
 }
@@ -110,11 +129,13 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
     // The tracer's figures, then the same rays bare, then render / bare.
     const BenchTable table({{.header = tr("scene"), .width = 14, .left = true},
                             {.header = tr("render s"), .width = 9},
+                            {.header = tr("median s"), .width = 9},
                             {.header = tr("rays"), .width = 10},
                             {.header = tr("Mrays/s"), .width = 9, .bar_after = true},
                             {.header = tr("bare s"), .width = 9},
                             {.header = tr("Mrays/s"), .width = 9, .bar_after = true},
                             {.header = tr("ratio"), .width = 6}});
+    fmt::print("{}\n", trf("renderer: {}", find_row(whitted_rows(), "renderer")->choices[size_t(settings.renderer)]));
     fmt::print("{}", table.header());
     for (const std::string& name : settings.scenes) {
       const io::LoadedScene loaded = io::load_gltf(scene_path(name));
@@ -123,6 +144,7 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       rt::WhittedOptions options;
       options.max_depth = settings.depth;
       options.spp = settings.spp;
+      options.renderer = settings.renderer;
 
       auto start = Clock::now();
       rt::WhittedRenderer tracer(scene);
@@ -130,13 +152,18 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
 
       double render = 1e30;
       rt::Counters counters;
+      std::vector<double> times;
       for (int r = 0; r < settings.repeats; ++r) {
         tracer.render(camera, settings.width, settings.height, options);
+        times.push_back(tracer.counters().seconds);
         if (tracer.counters().seconds < render) {
           render = tracer.counters().seconds;
           counters = tracer.counters();
         }
       }
+      std::sort(times.begin(), times.end());
+      const size_t half = times.size() / 2;
+      const double median = times.size() % 2 ? times[half] : 0.5 * (times[half - 1] + times[half]);
 
       tracer.keep_rays(true);
       tracer.render(camera, settings.width, settings.height, options);
@@ -150,11 +177,13 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       for (int r = 0; r < settings.repeats; ++r)
         for (int k = 0; k < rt::kRayKinds; ++k)
           bare[size_t(k)] = std::min(bare[size_t(k)], trace_bare(tracer.intersector(options),
-                                                                 by_kind[size_t(k)], rt::RayKind(k)));
+                                                                 by_kind[size_t(k)], rt::RayKind(k),
+                                                                 settings.renderer == rt::RendererKind::wavefront));
       double bare_total = 0.0;
       for (double b : bare) bare_total += b;
       const double rays = double(counters.total_rays());
-      fmt::print("{}", table.row({name, fmt::format("{:.3f}", render), fmt::format("{:.2f}M", rays * 1e-6),
+      fmt::print("{}", table.row({name, fmt::format("{:.3f}", render), fmt::format("{:.3f}", median),
+                                  fmt::format("{:.2f}M", rays * 1e-6),
                                   fmt::format("{:.2f}", rays / render * 1e-6), fmt::format("{:.3f}", bare_total),
                                   fmt::format("{:.2f}", rays / bare_total * 1e-6),
                                   fmt::format("{:.2f}", render / bare_total)}));

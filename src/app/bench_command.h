@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "radiosity/radiosity_options.h"
+#include "raytracing/whitted_options.h"
 
 namespace CLI { class App; }
 
@@ -17,7 +18,8 @@ struct WhittedBenchSettings {
   int height = 1080;
   int depth = 5;
   int spp = 1;
-  int repeats = 3;  // each figure is the best of this many runs
+  int repeats = 3;  // each figure is the best of this many runs (and their median)
+  rt::RendererKind renderer = rt::WhittedOptions{}.renderer;  // wavefront or recursive
   std::vector<std::string> scenes{"whitted", "cornell_box"};  // shipped names or paths
 };
 

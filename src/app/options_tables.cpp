@@ -22,6 +22,7 @@ namespace {
 constexpr const char* fog_modes[] = {"off", "linear", "exponential"};  // FogMode's order
 constexpr const char* form_factor_methods[] = {"hemicube", "analytic", "rays"};  // FormFactorMethod's order
 constexpr const char* meshings[] = {"uniform", "adaptive"};                        // Meshing's order
+constexpr const char* renderers[] = {"wavefront", "recursive"};                    // RendererKind's order
 
 bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
 bool square(double v) { return rt::is_square(int(v)); }
@@ -98,6 +99,12 @@ const WhittedRow whitted_table[] = {
      LUZ_FIELD(rt::WhittedOptions, brute_force)},
     {"shadow-rays", "--no-shadows", "whitted", OptionKind::on_off,
      N_("whitted/hybrid: no shadow rays (every light unoccluded)"), 0, 1, LUZ_FIELD(rt::WhittedOptions, shadows)},
+    {"renderer", "--renderer", "whitted", OptionKind::choice,
+     N_("whitted/hybrid: wavefront (each generation of a tile's rays traced as one stream: the primary rays, then "
+     "the reflected and transmitted ones) or recursive (slide 26's recursion, ray by ray); the same picture, in "
+     "another time (adaptive sampling and the ray tree always take the recursion)"), 0, 1,
+     [](const rt::WhittedOptions& o) { return double(int(o.renderer)); },
+     [](rt::WhittedOptions& o, double v) { o.renderer = rt::RendererKind(int(v)); }, renderers},
 };
 
 const RadiosityRow radiosity_table[] = {

@@ -110,6 +110,11 @@ void options(ViewerState& state, bool hybrid) {
   dim_text(tr("1: its centroid; N: N-rooks over its area (soft shadows)"));
   ImGui::Checkbox(tr("brute force (every triangle, counted)"), &o.brute_force);
   name_widget("brute force (every triangle, counted)");
+  // The same picture either way (wavefront.h); the trace time tells them apart.
+  bool wavefront = o.renderer == rt::RendererKind::wavefront;
+  if (ImGui::Checkbox(tr("wavefront (rays by generation, as streams)"), &wavefront))
+    o.renderer = wavefront ? rt::RendererKind::wavefront : rt::RendererKind::recursive;
+  name_widget("wavefront (rays by generation, as streams)");
   // The local part's terms: the same switches (and keys) as the local models'. In the hybrid,
   // radiosity's B/pi holds the ambient light and Le, and [D] switches it off.
   TermSwitches& l = state.local.terms;

@@ -13,6 +13,7 @@
 #include "raytracing/brute_force.h"
 #include "raytracing/embree_scene.h"
 #include "raytracing/sampling.h"
+#include "raytracing/wavefront.h"
 
 namespace luz::rt {
 
@@ -25,7 +26,8 @@ struct TileScratch {
   std::vector<glm::vec2> offsets;
   std::vector<StreamedAnswers> answers;
   std::vector<size_t> first;
-  std::vector<Random> randoms{};
+  std::vector<uint64_t> seeds;
+  std::vector<Rgb> radiance;
   std::vector<LightSample> lights;
   std::vector<Ray> shadow_rays;
   std::unique_ptr<bool[]> blocked;
@@ -35,7 +37,8 @@ struct TileScratch {
     hits.resize(n);
     answers.resize(n);
     first.resize(n + 1);
-    randoms.resize(n, Random(0));
+    seeds.resize(n);
+    radiance.resize(n);
   }
 };
 
@@ -105,9 +108,9 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     // pixel subdivided where its corners differ. Every point's random numbers are seeded by the
     // point itself, so a corner gives the same radiance from either pixel.
     const auto radiance = [&](float x, float y) {
-      whitted.reseed(Random(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
       ++counters.samples;
-      return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary);
+      return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary,
+                           sample_seed(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
     };
     const int cw = tile.width() + 1;
     std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
@@ -126,11 +129,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     return;
   }
 
-  // Stratified sampling, with the first generation traced as streams (see StreamedAnswers):
-  //   1. the tile's primary rays, intersected as one stream;
-  //   2. each hit's surface point and light samples (the sample's random numbers drawn here);
-  //   3. all their shadow rays, as one stream;
-  //   4. trace() of each primary ray with those answers: Color() and its recursion.
+  // Stratified sampling: the tile's primary rays, sample by sample in pixel order.
   const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
   const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
   const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
@@ -138,37 +137,56 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   thread_local TileScratch scratch;
   scratch.resize(n);
   std::span<Ray> rays(scratch.rays.data(), n);
-  std::span<Hit> hits(scratch.hits.data(), n);
+  std::span<uint64_t> seeds(scratch.seeds.data(), n);
   size_t i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Random jitter(x, y, -1);
       stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
-      for (const glm::vec2& s : scratch.offsets)
-        camera_rays.through(glm::vec2(float(x), float(y)) + s, rays[i++]);
+      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+        camera_rays.through(glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)], rays[i]);
+        seeds[i] = sample_seed(x, y, s);
+      }
     }
-  hits_of.intersect(rays, hits, counters.intersection_tests);  // 1.
   counters.samples += n;
+  const Rgb weight(1.0f / float(samples_per_pixel));
+
+  if (options.renderer == RendererKind::wavefront && !tree) {
+    // Every generation as streams (wavefront.h); each sample's radiance comes back x 1/spp.
+    std::span<Rgb> radiance(scratch.radiance.data(), n);
+    std::fill(radiance.begin(), radiance.end(), Rgb(0.0f));
+    Wavefront(scene_, whitted, hits_of, options, counters, log).trace(rays, seeds, weight, radiance);
+    i = 0;
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        Rgb sum(0.0f);
+        for (int s = 0; s < samples_per_pixel; ++s, ++i) sum += radiance[i];
+        image.at(x, y) = sum;
+      }
+    return;
+  }
+
+  // The recursion, with the first generation traced as streams (see StreamedAnswers):
+  //   1. the tile's primary rays, intersected as one stream;
+  //   2. each hit's surface point and light samples;
+  //   3. all their shadow rays, as one stream;
+  //   4. trace() of each primary ray with those answers: Color() and its recursion.
+  std::span<Hit> hits(scratch.hits.data(), n);
+  hits_of.intersect(rays, hits, counters.intersection_tests);  // 1.
 
   std::vector<StreamedAnswers>& answers = scratch.answers;
   std::vector<size_t>& first = scratch.first;      // sample i's lights: first[i] .. first[i + 1]
-  std::vector<Random>& randoms = scratch.randoms;  // each sample's generator after step 2
   std::vector<LightSample>& lights = scratch.lights;
   lights.clear();
-  i = 0;
-  for (int y = tile.y0; y < tile.y1; ++y)
-    for (int x = tile.x0; x < tile.x1; ++x)
-      for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 2.
-        first[i] = lights.size();
-        whitted.reseed(Random(x, y, s));
-        answers[i].hit = hits[i];
-        if (hits[i].found()) {
-          answers[i].point = whitted.surface_at(rays[i], hits[i]);
-          whitted.light_samples(answers[i].point, -rays[i].direction, lights);
-        }
-        randoms[i] = whitted.random();
-      }
-  first[i] = lights.size();
+  for (i = 0; i < n; ++i) {  // 2.
+    first[i] = lights.size();
+    answers[i].hit = hits[i];
+    if (hits[i].found()) {
+      answers[i].point = whitted.surface_at(rays[i], hits[i]);
+      whitted.light_samples(answers[i].point, -rays[i].direction, seeds[i], lights);
+    }
+  }
+  first[n] = lights.size();
   if (options.shadows) {  // 3.
     scratch.shadow_rays.resize(lights.size());
     scratch.blocked.reset(new bool[lights.size() + 1]);
@@ -177,16 +195,14 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
                      counters.intersection_tests);
   }
 
-  const Rgb weight(1.0f / float(samples_per_pixel));
   i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Rgb sum(0.0f);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 4.
-        whitted.reseed(randoms[i]);
         answers[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
         answers[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
-        sum += whitted.trace(rays[i], 1, RayKind::primary, weight, &answers[i]);
+        sum += whitted.trace(rays[i], 1, RayKind::primary, seeds[i], weight, &answers[i]);
       }
       image.at(x, y) = sum * weight;
     }

@@ -2,6 +2,9 @@
 // The Whitted tracer as the command, the viewer and the tests use it: built once from a scene,
 // it renders a camera's view tile by tile on TBB's worker threads into a float image, reports
 // each finished tile, can be cancelled, and traces one pixel's ray tree on demand.
+// A tile of stratified samples is traced by the wavefront renderer (wavefront.h) or by slide 26's
+// recursion (WhittedOptions::renderer), to the same picture; adaptive sampling and the ray tree
+// always take the recursion.
 //
 //   WhittedRenderer tracer(scene);                       // Embree's BVH built here, once
 //   Image image = tracer.render(camera, w, h, options, on_tile, &cancel);

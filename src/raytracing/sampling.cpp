@@ -17,11 +17,20 @@ uint64_t splitmix(uint64_t& state) {
 }
 }  // namespace
 
-Random::Random(int x, int y, int sample) {
+uint64_t sample_seed(int x, int y, int sample) {
   uint64_t seed = (uint64_t(uint32_t(x)) << 32) ^ uint64_t(uint32_t(y));
   seed = splitmix(seed) ^ uint64_t(uint32_t(sample));
-  state_ = splitmix(seed);
+  return splitmix(seed);
 }
+
+uint64_t branch_seed(uint64_t parent, RayKind branch) {
+  // One more SplitMix64 step of the parent's seed, told apart by the branch: the reflected and
+  // the transmitted child of one hit get unrelated streams, and so do a child and its parent.
+  uint64_t seed = parent ^ (uint64_t(branch) << 56);
+  return splitmix(seed);
+}
+
+Random::Random(int x, int y, int sample) : state_(sample_seed(x, y, sample)) {}
 
 float Random::next() {
   return float(splitmix(state_) >> 40) * 0x1.0p-24f;  // 24 random bits: exact in a float, < 1

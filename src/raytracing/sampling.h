@@ -2,6 +2,14 @@
 // Where the samples go (slide 27, aliasing and supersampling; soft shadows of area lights).
 // Every random number comes from a generator seeded by the pixel and the sample, never from
 // shared state, so a picture is bitwise the same however the threads are scheduled.
+//
+// The ray tree's random numbers. The light samples of a hit (points on the area lights) are
+// drawn from a generator of the ray's own, seeded by where the ray sits in its sample's ray tree:
+// the primary ray by the pixel and the sample (sample_seed), a reflected or transmitted ray by
+// its parent's seed and the branch it takes (branch_seed). No ray's numbers depend on how many
+// its parent or its siblings drew, so the order in which the rays are traced does not matter:
+// slide 26's recursion (depth first) and the wavefront renderer (generation by generation) draw
+// the same numbers for the same ray, and render the same picture.
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -10,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/color.h"
+#include "raytracing/ray.h"
 
 namespace luz::rt {
 
@@ -18,12 +27,18 @@ namespace luz::rt {
 class Random {
 public:
   explicit Random(uint64_t seed) : state_(seed) {}
-  Random(int x, int y, int sample);
+  Random(int x, int y, int sample);  // Random(sample_seed(x, y, sample))
   float next();  // uniform in [0, 1)
 
 private:
   uint64_t state_;
 };
+
+// The seed of the ray tree of sample `sample` of pixel (x, y): its primary ray's.
+uint64_t sample_seed(int x, int y, int sample);
+// The seed of the reflected or transmitted ray (`branch`) spawned at the hit of the ray whose
+// seed is `parent`.
+uint64_t branch_seed(uint64_t parent, RayKind branch);
 
 // Stratified pixel sampling: n x n jittered positions in the unit square, n = sqrt(spp); a single
 // sample sits at the centre (0.5, 0.5), where the rasteriser samples too.

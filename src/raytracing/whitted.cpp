@@ -5,7 +5,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -38,7 +40,8 @@ Whitted::Whitted(const Scene& scene, const Intersector& intersector, const Whitt
     : scene_(scene), intersector_(intersector), options_(options), counters_(counters), diffuse_(diffuse) {}
 
 // ---- [Trazar] -----------------------------------------------------------------------------------
-Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const StreamedAnswers* streamed) {
+Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb weight,
+                   const StreamedAnswers* streamed) {
   count(ray, kind);
   tree_.ray(ray, kind, depth, weight);
   // "Determinar intersección con objeto más cercano".
@@ -49,7 +52,7 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const St
     const SurfacePoint p = streamed ? streamed->point : surface_at(ray, hit);
     tree_.hit(hit.t, p.position, p.N, scene_.meshes[size_t(p.mesh)].name, p.material->name);
     streamed_ = streamed;  // lights_at() takes its answers for this hit, and only this one
-    radiance = color(p, ray, depth);
+    radiance = color(p, ray, depth, seed);
   }
   tree_.returned(radiance);
   return radiance;
@@ -59,13 +62,26 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, Rgb weight, const St
 // I = Ia*ka + sum_i S_i * IL_i * [kd*cos(theta) + ks*cos^n(alpha)] + kr*Ir + kt*It   (+ Le)
 // Hybrid (a diffuse source given):
 // I = B/pi (radiosity, interpolated)  + sum_i S_i * IL_i * ks*cos^n(alpha)  + kr*Ir + kt*It
-Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
-  const Material& o = *p.material;
-  const glm::vec3 V = -ray.direction;
+Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth, uint64_t seed) {
+  // "color := color ambiental"; "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no
+  // hay obstrucción, the light's term.
+  const LightsAt lights = lights_at(p, -ray.direction, seed);
+  Rgb color = local_color(p, lights.samples, shadow_rays(lights));
+  tree_.local(color);
 
+  // "si d < máxima": "si o es reflexivo", color := color + Trazar(R, d+1) * kr; "si o es
+  // transmisivo y no hay reflexión interna total", color := color + Trazar(T, d+1) * kt.
+  if (depth >= max_depth_of(options_)) return color;
+  for (const SecondaryRay& s : secondary_rays(p, ray))
+    color += s.weight * trace(s.ray, depth + 1, s.kind, branch_seed(seed, s.kind), s.weight);
+  return color;
+}
+
+Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lights,
+                         const bool* blocked) const {
+  const Material& o = *p.material;
   Rgb color(0.0f);
   if (!diffuse_) {
-    // "color := color ambiental"
     if (options_.terms.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
     if (options_.terms.emission && p.front) color += o.emission;
@@ -75,20 +91,19 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
     // Le (B = E + rho H with E = pi Le), the direct light of every source with its shadows, and
     // the interreflections Whitted's model lacks (so no ambient term). Only a surface's front
     // receives and emits in radiosity; a back face adds nothing here, as the radiosity picture
-    // draws it black. The rest below is view-dependent and comes from rays: the lights add only
+    // draws it black. The rest is view-dependent and comes from rays: the lights add only
     // their highlights IL ks cos^n(alpha) (add_light leaves kd out), then kr*Ir and kt*It, whose
     // hits are shaded by this same rule.
     color = diffuse_->diffuse_radiance(p.mesh, p.triangle, p.barycentrics);
   }
-  // "para cada luz": L := rayo desde p a la luz; si (L.N) > 0 y no hay obstrucción, the light's term.
-  const LightsAt lights = lights_at(p, V);
-  for (size_t i = 0; i < lights.samples.size(); ++i)
-    if (!blocked(lights, i)) color += lights.samples[i].term;
-  tree_.local(color);
+  for (size_t i = 0; i < lights.size(); ++i)
+    if (!blocked || !blocked[i]) color += lights[i].term;  // S_i = 1: unblocked
+  return color;
+}
 
-  // "si d < máxima": the reflected and the transmitted rays.
-  if (depth >= max_depth_of(options_)) return color;
-
+SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) const {
+  const Material& o = *p.material;
+  const glm::vec3 V = -ray.direction;
   // The transmitted direction by Snell's law. The ray enters the object when it hits the front
   // (counter-clockwise) face, glTF's outside: eta = n1/n2 = 1/ior; leaving, eta = ior.
   std::optional<glm::vec3> T;
@@ -103,29 +118,33 @@ Rgb Whitted::color(const SurfacePoint& p, const Ray& ray, int depth) {
   const Rgb kr = o.kr + o.kt * F;       // SCENES.md: kr, or kr + kt*F with Fresnel
   const Rgb kt = o.kt * (1.0f - F);     //            kt, or kt*(1 - F) with Fresnel
 
-  // "si o es reflexivo": R := rayo de reflexión; color := color + Trazar(R, d+1) * kr.
+  SecondaryRays out;
+  // "si o es reflexivo": R := rayo de reflexión.
   if (positive(kr)) {
     const glm::vec3 R = keep_on_side(reflect(ray.direction, p.N), p.geometric);
-    const Ray reflected{offset_origin(p.position, p.geometric), R};
-    color += kr * trace(reflected, depth + 1, RayKind::reflected, kr);
+    out.rays[out.count++] = {Ray{offset_origin(p.position, p.geometric), R}, RayKind::reflected, kr};
   }
   // "si o es transmisivo y no hay reflexión interna total": T := rayo de refracción.
   if (positive(kt) && T) {
     const glm::vec3 inward = -p.geometric;
-    const Ray transmitted{offset_origin(p.position, inward), keep_on_side(*T, inward)};
-    color += kt * trace(transmitted, depth + 1, RayKind::transmitted, kt);
+    out.rays[out.count++] = {Ray{offset_origin(p.position, inward), keep_on_side(*T, inward)},
+                             RayKind::transmitted, kt};
   }
-  return color;
+  return out;
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------
-void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out) {
+void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t seed,
+                            std::vector<LightSample>& out) {
+  Random random(seed);
+  // I_D's kd, once for all the lights; in the hybrid radiosity has I_D already (see local_color()).
+  const Rgb kd = options_.terms.diffuse && !diffuse_ ? kd_at(p) : Rgb(0.0f);
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
     if (!light.enabled) continue;
     if (light.type == LightType::directional) {
-      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), out);
+      add_light(p, V, -glm::normalize(light.direction), light.intensity / kPi, kInfinity, int(i), kd, out);
       continue;
     }
     const glm::vec3 to_light = light.position - p.position;
@@ -133,7 +152,7 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vect
     if (d <= 0.0f) continue;
     const glm::vec3 L = to_light / d;
     const Rgb IL = light.intensity * light.attenuation.factor(d) * light.spot_factor(-L) / kPi;
-    add_light(p, V, L, IL, d, int(i), out);
+    add_light(p, V, L, IL, d, int(i), kd, out);
   }
   // Emissive triangles, sampled over their area: each of N samples y stands for area A/N and
   // lights like a point of intensity Le * (A/N) * cos(theta_e) (SCENES.md; N = 1 is the
@@ -142,35 +161,35 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, std::vect
   for (size_t a = 0; a < scene_.area_lights.size(); ++a) {
     const AreaLight& area = scene_.area_lights[a];
     if (area.mesh == p.mesh && area.triangle == p.triangle) continue;  // it cannot light itself
-    if (n == 1) {
-      light_points_.assign(1, area.centroid);
-    } else {
+    std::span<const glm::vec3> points(&area.centroid, 1);
+    if (n > 1) {
       const Mesh& mesh = scene_.meshes[size_t(area.mesh)];
       const size_t t = size_t(area.triangle);
       triangle_samples(mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                       mesh.positions[mesh.indices[3 * t + 2]], n, random_, light_points_);
+                       mesh.positions[mesh.indices[3 * t + 2]], n, random, light_points_);
+      points = light_points_;
     }
-    for (const glm::vec3& y : light_points_) {
+    for (const glm::vec3& y : points) {
       const glm::vec3 to_light = y - p.position;
       const float d = glm::length(to_light);
       if (d < 1e-6f) continue;
       const glm::vec3 L = to_light / d;
       const float cos_theta_e = std::max(glm::dot(area.normal, -L), 0.0f);  // dark behind it
       const Rgb IL = area.radiance * (area.area / float(n)) * cos_theta_e / (d * d) / kPi;
-      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), out);
+      add_light(p, V, L, IL, d, int(scene_.lights.size() + a), kd, out);
     }
   }
 }
 
 void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L,
-                        const Rgb& IL, float distance, int light,
+                        const Rgb& IL, float distance, int light, const Rgb& kd,
                         std::vector<LightSample>& out) const {
   const float cos_theta = glm::dot(p.N, L);
   if (cos_theta <= 0.0f || !positive(IL)) return;  // "si (L·N) > 0"
   const Material& o = *p.material;
   Rgb term(0.0f);
-  // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see color()).
-  if (options_.terms.diffuse && !diffuse_) term += IL * kd_at(p) * cos_theta;
+  // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see local_color()).
+  if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
   if (options_.terms.specular && positive(o.ks)) {
     // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
     const float cos_alpha = options_.terms.blinn
@@ -192,23 +211,30 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   out.push_back(sample);
 }
 
-LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V) {
+LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed) {
   if (const StreamedAnswers* streamed = std::exchange(streamed_, nullptr))
     return {streamed->lights, streamed->blocked};
   lights_.clear();
-  light_samples(p, V, lights_);
+  light_samples(p, V, seed, lights_);
   return {lights_, nullptr};
 }
 
-bool Whitted::blocked(const LightsAt& lights, size_t i) {
-  if (!options_.shadows) return false;  // every light counts as unoccluded
-  const LightSample& sample = lights.samples[i];
-  count(sample.shadow, RayKind::shadow);
-  // S_i = 0 when the shadow ray meets anything before the light.
-  const bool occluded = lights.blocked ? lights.blocked[i]
-                                       : intersector_.occluded(sample.shadow, counters_.intersection_tests);
-  tree_.shadow(sample.shadow, occluded, sample.distance, sample.light, sample.term);
-  return occluded;
+const bool* Whitted::shadow_rays(const LightsAt& lights) {
+  if (!options_.shadows) return nullptr;  // every light counts as unoccluded
+  const size_t n = lights.samples.size();
+  if (n > blocked_size_) {
+    blocked_size_ = std::max(n, 2 * blocked_size_);
+    blocked_ = std::make_unique<bool[]>(blocked_size_);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const LightSample& sample = lights.samples[i];
+    count(sample.shadow, RayKind::shadow);
+    // S_i = 0 when the shadow ray meets anything before the light.
+    blocked_[i] = lights.blocked ? lights.blocked[i]
+                                 : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+    tree_.shadow(sample.shadow, blocked_[i], sample.distance, sample.light, sample.term);
+  }
+  return blocked_.get();
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {

@@ -10,6 +10,16 @@
 //
 // One Whitted object traces one sample at a time on one thread (the renderer makes one per tile);
 // the scene and the intersector are shared read-only.
+//
+// Random numbers: each ray carries a seed, its place in its sample's ray tree (sampling.h:
+// sample_seed for the primary ray, branch_seed for a reflected or transmitted one), and only the
+// light samples at its own hit draw from it. The wavefront renderer (wavefront.h), which traces
+// the same rays in another order, gives each ray the same seed and so the same picture.
+//
+// The pieces of Color() that the wavefront renderer shares, so that it cannot drift from the
+// slide's code: surface_at(), light_samples(), local_color() and secondary_rays().
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -48,6 +58,22 @@ struct RecordedRay {
   RayKind kind;
 };
 
+// A ray spawned at a hit ("Trazar(R, d+1) * kr", "Trazar(T, d+1) * kt") and the weight its
+// radiance is multiplied by.
+struct SecondaryRay {
+  Ray ray;
+  RayKind kind = RayKind::reflected;  // reflected or transmitted
+  Rgb weight{0.0f};                   // kr, or kt (with Fresnel: kr + kt F, kt (1 - F))
+};
+
+// The secondary rays of one hit: none, one or both, the reflected ray first.
+struct SecondaryRays {
+  SecondaryRay rays[2];
+  int count = 0;
+  const SecondaryRay* begin() const { return rays; }
+  const SecondaryRay* end() const { return rays + count; }
+};
+
 // One light's term at a point and the shadow ray that decides whether it counts (S_i).
 struct LightSample {
   Rgb term{0.0f};        // IL * [kd cos(theta) + ks cos^n(alpha)]: the light's share if unblocked
@@ -80,23 +106,28 @@ public:
   Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
           Counters& counters, const DiffuseSource* diffuse = nullptr);
 
-  // Trazar(r, d): the radiance arriving along `ray`. `weight` is what the caller will multiply
-  // the result by (kr, kt, 1/spp); it is only written into the ray tree. `streamed`: the
-  // answers for this ray traced ahead (see StreamedAnswers), primary rays only.
-  Rgb trace(const Ray& ray, int depth, RayKind kind, Rgb weight = Rgb(1.0f),
+  // Trazar(r, d): the radiance arriving along `ray`. `seed`: the ray's place in its sample's
+  // ray tree (see above; a primary ray's is sample_seed()). `weight` is what the caller will
+  // multiply the result by (kr, kt, 1/spp); it is only written into the ray tree. `streamed`:
+  // the answers for this ray traced ahead (see StreamedAnswers), primary rays only.
+  Rgb trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb weight = Rgb(1.0f),
             const StreamedAnswers* streamed = nullptr);
-  // Color(o, r, p, N, d).
-  Rgb color(const SurfacePoint& p, const Ray& ray, int depth);
+  // Color(o, r, p, N, d), for the hit of the ray of that seed.
+  Rgb color(const SurfacePoint& p, const Ray& ray, int depth, uint64_t seed);
 
   SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
-  // (not traced): punctual lights and the samples of the emissive triangles.
-  void light_samples(const SurfacePoint& p, const glm::vec3& V, std::vector<LightSample>& out);
-
-  // The random numbers of the current sample (area-light positions): seeded per sample.
-  void reseed(const Random& random) { random_ = random; }
-  const Random& random() const { return random_; }
+  // (not traced): punctual lights and the samples of the emissive triangles, these drawn from
+  // the generator of `seed`, the seed of the ray that hit p.
+  void light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t seed,
+                     std::vector<LightSample>& out);
+  // The local part of Color() at p: Ia*ka + Le (the hybrid: B/pi), plus the term of every light
+  // sample whose shadow ray is not blocked. `blocked`: one flag per sample; nullptr: none is.
+  Rgb local_color(const SurfacePoint& p, std::span<const LightSample> lights, const bool* blocked) const;
+  // The reflected and transmitted rays of the hit p of `ray`, with their weights: Fresnel's
+  // split of kt (when on), Snell's law, total internal reflection (no transmitted ray).
+  SecondaryRays secondary_rays(const SurfacePoint& p, const Ray& ray) const;
   // Record every ray and its result in `tree` (trace_pixel), or log the rays (benchmark).
   void record_tree(RayTree* tree) { tree_ = RayTreeRecorder(tree); }
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
@@ -104,11 +135,13 @@ public:
 private:
   // The hit's light samples: the streamed ones when trace() was given them for this hit, else
   // sampled here. The one lookup of the streamed answers, so that color() has a single path.
-  LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V);
-  // "y no hay obstrucción": whether sample i's shadow ray meets anything before its light.
-  bool blocked(const LightsAt& lights, size_t i);
+  LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed);
+  // "y no hay obstrucción": per light sample, whether its shadow ray meets anything before its
+  // light (traced here, or the streamed answer); nullptr when shadows are off (none blocks).
+  const bool* shadow_rays(const LightsAt& lights);
+  // Light `light`'s term at p (kd: kd_at(p)) and its shadow ray, if it lights p at all.
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
-                 float distance, int light, std::vector<LightSample>& out) const;
+                 float distance, int light, const Rgb& kd, std::vector<LightSample>& out) const;
   // Counts and logs a ray of `kind` as traced (inline: it runs for every ray).
   void count(const Ray& ray, RayKind kind) {
     ++counters_[kind];
@@ -120,9 +153,10 @@ private:
   const WhittedOptions& options_;
   Counters& counters_;
   const DiffuseSource* diffuse_;
-  Random random_{0};
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples
   std::vector<LightSample> lights_;      // scratch for Color()'s light samples
+  std::unique_ptr<bool[]> blocked_;      // scratch for their shadow rays' answers
+  size_t blocked_size_ = 0;
   const StreamedAnswers* streamed_ = nullptr;  // the answers for the hit about to be shaded
   RayTreeRecorder tree_;
   std::vector<RecordedRay>* log_ = nullptr;

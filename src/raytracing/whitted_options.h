@@ -10,6 +10,14 @@ enum class Sampling {
   adaptive,    // Whitted 1980: rays at the pixel's corners, squares subdivided where they differ
 };
 
+// In which order stratified sampling traces a tile's rays (the picture is the same, see
+// wavefront.h); adaptive sampling and the ray tree always take the recursion.
+enum class RendererKind {
+  wavefront,  // generation by generation, each generation's rays and shadow rays as Embree streams
+  recursive,  // slide 26's recursion, depth first: the primary and their shadow rays streamed, the
+              // deeper rays one by one
+};
+
 struct WhittedOptions {
   // Slide 26: the primary ray has depth 1 and a hit at depth d spawns reflected and transmitted
   // rays only while d < max_depth. So 1 is the local model with shadows and no secondary rays;
@@ -28,6 +36,7 @@ struct WhittedOptions {
   int adaptive_levels = 2;  // adaptive: subdivide a pixel at most this often (2: 4x4 squares)
   float adaptive_threshold = 0.05f;  // adaptive: corners differing by more (sRGB-encoded) split
 
+  RendererKind renderer = RendererKind::wavefront;
   int tile_size = 16;       // pixels per side of a tile, the unit of parallel work and progress
 
   // The viewer tells a stale picture by it (options edited since the trace started).

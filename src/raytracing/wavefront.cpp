@@ -1,0 +1,158 @@
+// The wavefront renderer (wavefront.h). Sections: [queues] [one tile's samples]
+#include "raytracing/wavefront.h"
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+
+#include "raytracing/sampling.h"
+
+namespace luz::rt {
+
+namespace {
+
+// ---- [queues] -----------------------------------------------------------------------------------
+// One generation of rays, as a structure of arrays: the rays contiguous for Embree's stream, the
+// rest read once per ray by the shading loop. Cleared, never shrunk: after the first tiles a
+// thread's queues have the capacity they need and a tile allocates nothing.
+struct RayQueue {
+  std::vector<Ray> rays;
+  std::vector<RayKind> kinds;
+  std::vector<uint32_t> samples;   // the primary ray whose tree the ray belongs to
+  std::vector<Rgb> throughputs;    // the product of the weights from that primary ray down
+  std::vector<uint64_t> seeds;     // its place in the ray tree (sampling.h)
+
+  size_t size() const { return rays.size(); }
+  void clear() {
+    rays.clear();
+    kinds.clear();
+    samples.clear();
+    throughputs.clear();
+    seeds.clear();
+  }
+  void push(const Ray& ray, RayKind kind, uint32_t sample, const Rgb& throughput, uint64_t seed) {
+    rays.push_back(ray);
+    kinds.push_back(kind);
+    samples.push_back(sample);
+    throughputs.push_back(throughput);
+    seeds.push_back(seed);
+  }
+  void append(const RayQueue& other) {
+    rays.insert(rays.end(), other.rays.begin(), other.rays.end());
+    kinds.insert(kinds.end(), other.kinds.begin(), other.kinds.end());
+    samples.insert(samples.end(), other.samples.begin(), other.samples.end());
+    throughputs.insert(throughputs.end(), other.throughputs.begin(), other.throughputs.end());
+    seeds.insert(seeds.end(), other.seeds.begin(), other.seeds.end());
+  }
+};
+
+// Everything one generation needs, kept per thread and reused from tile to tile.
+struct Scratch {
+  RayQueue queue, reflected, transmitted;  // this generation; the next one's two kinds
+  std::vector<Hit> hits;
+  std::vector<SurfacePoint> points;
+  std::vector<LightSample> lights;  // every hit's light samples, hit k's from first[k]
+  std::vector<size_t> first;
+  std::vector<Ray> shadow_rays;
+  std::unique_ptr<bool[]> blocked;  // per light sample (std::vector<bool> has no bool*)
+  size_t blocked_size = 0;
+
+  bool* blocked_flags(size_t n) {
+    if (n > blocked_size) {
+      blocked_size = std::max(n, 2 * blocked_size);
+      blocked = std::make_unique<bool[]>(blocked_size);
+    }
+    return blocked.get();
+  }
+};
+
+}  // namespace
+
+Wavefront::Wavefront(const Scene& scene, Whitted& shading, const Intersector& intersector,
+                     const WhittedOptions& options, Counters& counters, std::vector<RecordedRay>* log)
+    : scene_(scene), shading_(shading), intersector_(intersector), options_(options),
+      counters_(counters), log_(log) {}
+
+// ---- [one tile's samples] -----------------------------------------------------------------------
+void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> seeds,
+                      const Rgb& weight, std::span<Rgb> radiance) {
+  thread_local Scratch scratch;
+  RayQueue& queue = scratch.queue;
+  queue.clear();
+  for (size_t i = 0; i < primary.size(); ++i)
+    queue.push(primary[i], RayKind::primary, uint32_t(i), weight, seeds[i]);
+
+  // Slide 26's depth: primary rays have depth 1, and a hit at depth d spawns rays while d < max.
+  for (int depth = 1; queue.size() > 0; ++depth) {
+    const size_t n = queue.size();
+    const std::span<const Ray> rays = queue.rays;
+    for (size_t k = 0; k < n; ++k) count(rays[k], queue.kinds[k]);
+
+    // 1. "Determinar intersección con objeto más cercano", for the whole queue at once.
+    scratch.hits.resize(n);
+    intersector_.intersect(rays, scratch.hits, counters_.intersection_tests);
+
+    // 2. "calcular la normal", then the light samples of each hit from its ray's seed. Two loops:
+    // each body is short enough for the processor to overlap the square roots and divisions of
+    // several hits.
+    scratch.points.resize(n);
+    for (size_t k = 0; k < n; ++k)
+      if (scratch.hits[k].found()) scratch.points[k] = shading_.surface_at(rays[k], scratch.hits[k]);
+    scratch.first.resize(n + 1);
+    scratch.lights.clear();
+    for (size_t k = 0; k < n; ++k) {
+      scratch.first[k] = scratch.lights.size();
+      if (scratch.hits[k].found())
+        shading_.light_samples(scratch.points[k], -rays[k].direction, queue.seeds[k], scratch.lights);
+    }
+    scratch.first[n] = scratch.lights.size();
+
+    // 3. Every shadow ray of the generation, as one stream.
+    const bool* blocked = nullptr;  // shadows off: no light is blocked
+    if (options_.shadows) {
+      const size_t m = scratch.lights.size();
+      scratch.shadow_rays.resize(m);
+      for (size_t j = 0; j < m; ++j) {
+        scratch.shadow_rays[j] = scratch.lights[j].shadow;
+        count(scratch.shadow_rays[j], RayKind::shadow);
+      }
+      bool* flags = scratch.blocked_flags(m);
+      intersector_.occluded(scratch.shadow_rays, std::span(flags, m), counters_.intersection_tests);
+      blocked = flags;
+    }
+
+    // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; then
+    // (a second loop, as in step 2) its reflected and transmitted rays, weighted once more, into
+    // the next generation.
+    for (size_t k = 0; k < n; ++k) {
+      const Rgb& throughput = queue.throughputs[k];
+      if (!scratch.hits[k].found()) {
+        radiance[queue.samples[k]] += throughput * scene_.background;
+        continue;
+      }
+      const size_t first = scratch.first[k];
+      const std::span<const LightSample> lights(scratch.lights.data() + first, scratch.first[k + 1] - first);
+      radiance[queue.samples[k]] +=
+          throughput * shading_.local_color(scratch.points[k], lights, blocked ? blocked + first : nullptr);
+    }
+    scratch.reflected.clear();
+    scratch.transmitted.clear();
+    if (depth < max_depth_of(options_)) {
+      for (size_t k = 0; k < n; ++k) {
+        if (!scratch.hits[k].found()) continue;
+        for (const SecondaryRay& s : shading_.secondary_rays(scratch.points[k], rays[k])) {
+          RayQueue& next = s.kind == RayKind::reflected ? scratch.reflected : scratch.transmitted;
+          next.push(s.ray, s.kind, queue.samples[k], queue.throughputs[k] * s.weight,
+                    branch_seed(queue.seeds[k], s.kind));
+        }
+      }
+    }
+
+    // The next generation: the reflected rays, then the transmitted ones, each in the order of
+    // their parents, so that neighbours in a stream mostly leave neighbouring hits in one way.
+    std::swap(scratch.queue, scratch.reflected);
+    queue.append(scratch.transmitted);
+  }
+}
+
+}  // namespace luz::rt
