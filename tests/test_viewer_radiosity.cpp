@@ -148,13 +148,13 @@ TEST_F(ViewerRadiosity, TheLightSpreadsAsTheShotsGoOn) {
 TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   const nlohmann::json converged = json_of(file("converged.json"));
   EXPECT_TRUE(converged["done"].get<bool>());
-  EXPECT_LT(converged["unshot_fraction"].get<double>(), 0.01);
+  EXPECT_LT(converged["unshot_fraction"].get<double>(), 0.005);
 
   const Codes viewer = codes(file("converged.png"));
   test::ScratchDir dir;
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", scene().string(), "--model", "radiosity", "--patch-size", "0.1",
-                                     "--hemicube-res", "128", "--converge", "0.01", "--size",
+                                     "--hemicube-res", "128", "--size",
                                      viewer.size(), "--pixel-samples", "1", "--out",
                                      out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;

@@ -30,7 +30,7 @@ struct RadiosityOptions {
   // arriving is compared, not the radiosity, so that a checkerboard's own pattern is not taken
   // for a shadow. uniform: the mesh stays as built.
   Meshing meshing = Meshing::adaptive;
-  float refine_threshold = 0.1f;
+  float refine_threshold = 0.15f;
   int refine_levels = 4;
 
   // ---- Form factors: the hemicube (slide 37) ----
@@ -50,7 +50,7 @@ struct RadiosityOptions {
 
   // ---- The shooting loop (slide 39) ----
   int max_shots = 0;        // stop after this many shots (lights included); 0 = no limit
-  float converge = 0.01f;   // stop when unshot power < converge x emitted power; 0 = never
+  float converge = 0.005f;  // stop when unshot power < converge x emitted power; 0 = never
   // Overshooting (Feda & Purgathofer 1992, read as over-relaxation by Gortler, Cohen &
   // Slusallek 1993): a patch shoots `overshoot` times its unshot radiosity and keeps the
   // negative remainder (1 - overshoot) x unshot to shoot back later. 1 = plain shooting;
