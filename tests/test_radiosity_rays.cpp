@@ -181,7 +181,9 @@ TEST(RayFormFactors, AgreeWithTheHemicubesVisibilityOnTheCornellBox) {
   }
   printf("total light: rays %+.3f%% of the hemicube's; patches apart by %.2f%% on average\n",
          100.0 * (sum_a - sum_b) / sum_b, 100.0 * off / sum_b);
-  EXPECT_NEAR(sum_a, sum_b, 0.01 * sum_b);
+  // Measured +0.55%: what the hemicube's one eye still misses of a floor patch half under a
+  // block; standing at the patch's centre instead of where its light leaves from, +0.95%.
+  EXPECT_NEAR(sum_a, sum_b, 0.0075 * sum_b);
   EXPECT_LT(off / sum_b, 0.03);
 }
 
