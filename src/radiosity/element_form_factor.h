@@ -2,8 +2,9 @@
 // The unoccluded form factor from a receiving element to a shooting patch, F(element -> patch),
 // by Lambert's contour integral (polygon_form_factor.h), integrated over the element where the
 // integrand varies fastest: from the element's centroid far from the patch, from 3, 12 or 48
-// points of the element near it, more the closer it is. Both analytic ways of slide 40's "multitud de métodos"
-// use it; they differ only in where the visibility comes from (the hemicube, or rays).
+// points of the element near it, more the closer it is. Both analytic ways of slide 40's
+// "multitud de métodos" use it; they differ only in where the visibility comes from (the
+// hemicube, or rays).
 #include "radiosity/patch_mesh.h"
 
 namespace luz {

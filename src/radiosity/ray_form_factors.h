@@ -11,8 +11,9 @@
 // BVH. The patch's points are stratified over its area, so a shooting lamp casts penumbrae, not m
 // hard shadows; every point moves at every shot (seeded), so what one shot gets wrong at a shadow's
 // edge the next shots average out. Each ray counts with what the element it ends on sends
-// (ShooterEmission), so V_ij is the visible share of the light the patch sends, not of its area. Unlike the hemicube there is no aliasing of small or distant
-// elements (each is asked about directly), and no GL: a row is computed on TBB's threads.
+// (ShooterEmission), so V_ij is the visible share of the light the patch sends, not of its area.
+// Unlike the hemicube there is no aliasing of small or distant elements (each is asked about
+// directly), and no GL: a row is computed on TBB's threads.
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -36,7 +37,7 @@ namespace rt { class EmbreeIntersector; }
 class ShooterEmission {
 public:
   // `sent[k]`: what the patch's k-th element (in PatchMesh::members order) sends per square metre;
-  // empty: every element the same.
+  // empty: every element the same. A patch has at least one element.
   ShooterEmission(const PatchMesh& mesh, size_t shooter, std::span<const Rgb> sent = {});
 
   struct Point {
