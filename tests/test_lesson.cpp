@@ -112,6 +112,9 @@ TEST(ShippedLesson, RunsTheActionsOfTheirSlides) {
   EXPECT_TRUE(any(37, [](const ScriptCommand& c) { return line_of(c) == "radiosity item-buffer on"; }));
   EXPECT_TRUE(any(39, [](const ScriptCommand& c) { return line_of(c) == "radiosity step 1"; }));
   EXPECT_TRUE(any(40, verb("radiosity", "patch-size")));
+  EXPECT_TRUE(any(37, [](const ScriptCommand& c) { return line_of(c) == "radiosity form-factors hemicube"; }));
+  EXPECT_TRUE(any(40, [](const ScriptCommand& c) { return line_of(c) == "radiosity meshing uniform"; }));
+  EXPECT_TRUE(any(40, [](const ScriptCommand& c) { return line_of(c) == "radiosity meshing adaptive"; }));
   for (int slide : {41, 42, 43}) EXPECT_TRUE(any(slide, [](const ScriptCommand& c) { return line_of(c) == "model hybrid"; }));
   EXPECT_TRUE(any(44, [](const ScriptCommand& c) { return line_of(c) == "panes flat,gouraud,phong,whitted"; }));
   EXPECT_TRUE(any(44, [](const ScriptCommand& c) { return line_of(c) == "panes radiosity,hybrid"; }));
@@ -154,6 +157,8 @@ TEST(Lesson, UnnamedSwitchesGoBackToTheOptionsDefaults) {
   EXPECT_TRUE(has(c, "radiosity hemicube " + std::to_string(radiosity.hemicube_res)));
   EXPECT_TRUE(has(c, "radiosity outlines " + on(radiosity.outlines)));
   EXPECT_TRUE(has(c, "radiosity rotation " + on(radiosity.random_rotation)));
+  EXPECT_TRUE(has(c, std::string("radiosity meshing ") + to_string(radiosity.meshing)));
+  EXPECT_TRUE(has(c, std::string("radiosity form-factors ") + to_string(radiosity.form_factors)));
 }
 
 // A scene is loaded and a mesh rebuilt only when the step needs another one; panes end when a
@@ -193,7 +198,8 @@ TEST(LessonPlayer, RebuildsOnlyWhatChanges) {
   auto fifth = player.next();
   EXPECT_TRUE(has(fifth, "panes radiosity"));  // one picture again
   EXPECT_TRUE(has(fifth, "radiosity patch-size 0"));
-  EXPECT_EQ(player.next().size(), player.step().commands.size() - 4);  // the end: stays; no load, mesh or panes
+  // The end: stays; no load, mesh (patch size, hemicube, meshing, form factors) or panes.
+  EXPECT_EQ(player.next().size(), player.step().commands.size() - 6);
   auto back = player.go_to(0);
   EXPECT_TRUE(has(back, "load " + spheres));
 }
@@ -256,6 +262,8 @@ TEST(Lesson, MalformedFilesNameTheLine) {
       {head + text + "\"scene\": \"" + scene + "\",\n\"model\": \"gooraud\",\n\"slide\": 3\n}]}", 7, "model must be one of"},
       {head + text + where + "\"slide\": 3,\n\"radiosity\": {\n\"hemicube\": 2048\n}\n}]}", 9, "hemicube must be a whole number in 64 .. 1024"},
       {head + text + where + "\"slide\": 3,\n\"whitted\": {\"spp\": 5}\n}]}", 8, "spp must be a square"},
+      {head + text + where + "\"slide\": 3,\n\"radiosity\": {\n\"meshing\": \"fine\"\n}\n}]}", 9,
+       "radiosity: meshing must be one of uniform, adaptive"},
       {head + text + where + "\"slide\": 45\n}]}", 7, "slide must be a whole number in 1 .. 44"},
       {head + text + "\"model\": \"phong\", \"slide\": 3\n}]}", 4, "the first step must name a \"scene\""},
       {head + text + where + "\"slide\": 3,\n\"actions\": [\"trace\"]\n}]}", 8, "action \"trace\" needs the model whitted or hybrid"},

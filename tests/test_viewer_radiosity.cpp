@@ -144,6 +144,20 @@ TEST_F(ViewerRadiosity, TheLightSpreadsAsTheShotsGoOn) {
   EXPECT_GT(share_moved(later, codes(file("heat.png")), 8), 0.5);
 }
 
+// `radiosity meshing uniform` and `radiosity form-factors hemicube` (a lesson's slide-40 and
+// slide-37 steps) start a solution on the mesh as built, by the hemicube.
+TEST_F(ViewerRadiosity, MeshingAndFormFactorsCanBeChosenFromAScript) {
+  const nlohmann::json uniform = json_of(file("uniform.json"));
+  const nlohmann::json start = json_of(file("start.json"));
+  EXPECT_GE(uniform["shots"].get<int>(), 100);
+  EXPECT_EQ(uniform["refined_elements"].get<size_t>(), 0u);
+  EXPECT_EQ(uniform["elements"], start["elements"]);
+  const std::string options = uniform["options"].get<std::string>();
+  EXPECT_EQ(options.find("adaptive"), std::string::npos) << options;
+  EXPECT_NE(options.find("hemicube form factors"), std::string::npos) << options;
+  EXPECT_NE(json_of(file("converged.json"))["options"].get<std::string>().find("rays ("), std::string::npos);
+}
+
 // The viewer draws each frame once; `luz render` then draws one sample per pixel too.
 TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   const nlohmann::json converged = json_of(file("converged.json"));

@@ -125,6 +125,10 @@ TEST(ViewerScript, RadiosityCommandsAreCheckedBeforeAnyWindow) {
   EXPECT_NE(error_of("radiosity run now\n").find("takes no value"), std::string::npos);
   EXPECT_NE(error_of("radiosity heat-map maybe\n").find("on or off"), std::string::npos);
   EXPECT_NE(error_of("radiosity sparkle on\n").find("unknown radiosity setting"), std::string::npos);
+  EXPECT_EQ(error_of("radiosity meshing uniform\nradiosity form-factors hemicube\n"), "");
+  EXPECT_NE(error_of("radiosity meshing fine\n").find("`radiosity meshing` takes one of uniform, adaptive"),
+            std::string::npos);
+  EXPECT_NE(error_of("radiosity form-factors guess\n").find("hemicube, analytic, rays"), std::string::npos);
   EXPECT_NE(error_of("wait-shots\n").find("takes 1 argument"), std::string::npos);
   EXPECT_NE(error_of("dump-patch p.txt\n").find(".json"), std::string::npos);
 }

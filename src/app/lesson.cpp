@@ -286,8 +286,9 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
   const RadiosityDrive drive;
   const json given = step.value("radiosity", json::object());
   const std::string p = at + "/radiosity";
-  r.only_keys(given, p, "radiosity", {"patch-size", "hemicube", "budget", "heat-map", "outlines", "flat-patches",
-                                      "ambient-estimate", "shooter", "item-buffer", "rotation"});
+  r.only_keys(given, p, "radiosity", {"patch-size", "hemicube", "meshing", "form-factors", "budget", "heat-map",
+                                      "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer",
+                                      "rotation"});
   const std::vector<std::pair<std::string, bool>> switches = {
       {"heat-map", drive.heat_map}, {"outlines", o.outlines}, {"flat-patches", o.flat_patches},
       {"ambient-estimate", o.ambient_estimate}, {"shooter", drive.show_shooter},
@@ -306,6 +307,16 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
   }
   out.push_back(command(line, "radiosity", {"patch-size", fmt::format("{}", float(size))}));
   out.push_back(command(line, "radiosity", {"hemicube", std::to_string(hemicube)}));
+  // Slide 40: uniform or adaptive meshing, and which of the form-factor methods.
+  const std::pair<const char*, std::vector<std::string>> choices[] = {
+      {"meshing", {"uniform", "adaptive"}}, {"form-factors", {"rays", "analytic", "hemicube"}}};
+  for (const auto& [name, names] : choices) {
+    const std::string value = given.contains(name)
+                                  ? r.one_of(given[name], p + "/" + name, std::string("radiosity: ") + name, names)
+                                  : std::string(name == std::string("meshing") ? to_string(o.meshing)
+                                                                               : to_string(o.form_factors));
+    out.push_back(command(line, "radiosity", {name, value}));
+  }
   if (given.contains("budget"))
     out.push_back(command(line, "radiosity", {"budget", fmt::format("{}", float(r.number(given["budget"], p + "/budget",
                                                                                          "radiosity: budget (ms)", 0.0, 1000.0, true)))}));
@@ -493,23 +504,30 @@ std::optional<std::string> lesson_verb_problem(const ScriptCommand& c) {
 LessonPlayer::LessonPlayer(Lesson lesson) : lesson_(std::move(lesson)) {
   // The viewer starts on the options' defaults: its mesh needs no rebuild for a step that keeps them.
   const RadiosityOptions defaults;
-  mesh_settings_ = fmt::format("{} {}", defaults.patch_size, defaults.hemicube_res);
+  mesh_settings_ = fmt::format("{} {} {} {}", defaults.patch_size, defaults.hemicube_res,
+                               to_string(defaults.meshing), to_string(defaults.form_factors));
 }
+
+namespace {
+
+// The settings whose change rebuilds the radiosity mesh (and restarts the solution).
+bool is_mesh_setting(const ScriptCommand& c) {
+  return c.verb == "radiosity" && (c.args[0] == "patch-size" || c.args[0] == "hemicube" ||
+                                   c.args[0] == "meshing" || c.args[0] == "form-factors");
+}
+
+}  // namespace
 
 std::vector<ScriptCommand> LessonPlayer::go_to(size_t index) {
   index_ = std::min(index, size() - 1);
   const LessonStep& s = step();
-  std::string patch_size, hemicube;
-  for (const ScriptCommand& c : s.commands) {
-    if (c.verb == "radiosity" && c.args[0] == "patch-size") patch_size = c.args[1];
-    if (c.verb == "radiosity" && c.args[0] == "hemicube") hemicube = c.args[1];
-  }
-  const std::string mesh = patch_size + " " + hemicube;
+  std::string mesh;  // the step's mesh settings, in the order it gives them
+  for (const ScriptCommand& c : s.commands)
+    if (is_mesh_setting(c)) mesh += (mesh.empty() ? "" : " ") + c.args[1];
   std::vector<ScriptCommand> out;
   for (const ScriptCommand& c : s.commands) {
     if (c.verb == "load" && c.args[0] == loaded_scene_) continue;
-    const bool mesh_command = c.verb == "radiosity" && (c.args[0] == "patch-size" || c.args[0] == "hemicube");
-    if (mesh_command && mesh == mesh_settings_) continue;
+    if (is_mesh_setting(c) && mesh == mesh_settings_) continue;
     if (c.verb == "panes" && s.panes.empty() && !showing_panes_) continue;
     out.push_back(c);
   }

@@ -10,6 +10,7 @@
 #include "app/inspector.h"
 #include "app/viewer_window.h"
 #include "app/local_model.h"
+#include "app/options_tables.h"
 #include "app/overlays.h"
 #include "app/panel.h"
 #include "core/error.h"
@@ -154,7 +155,9 @@ RadiosityModel& radiosity_of(Viewer& viewer) { return static_cast<RadiosityModel
 // `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
 std::string check_radiosity(const ScriptCommand& c) {
   const auto& a = c.args;
-  if (a.empty()) return "`radiosity` takes run, pause, reset, step N, patch-size M, hemicube N, budget MS or a switch";
+  if (a.empty())
+    return "`radiosity` takes run, pause, reset, step N, patch-size M, hemicube N, meshing M, form-factors F, "
+           "budget MS or a switch";
   const std::string& what = a[0];
   if (what == "run" || what == "pause" || what == "reset")
     return a.size() == 1 ? "" : fmt::format("`radiosity {}` takes no value", what);
@@ -169,10 +172,15 @@ std::string check_radiosity(const ScriptCommand& c) {
     return fits ? "" : fmt::format("`radiosity hemicube N` takes an even N in {} .. {}", kMinHemicubeRes, kMaxHemicubeRes);
   }
   if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
+  if (what == "meshing" || what == "form-factors")  // slide 40's choices, as --meshing and --form-factors
+    return parse_value(*find_row(radiosity_rows(), what), value, true)
+               ? ""
+               : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_rows(), what)));
   for (const char* name : {"heat-map", "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer", "rotation"})
     if (what == name) return value == "on" || value == "off" ? "" : fmt::format("`radiosity {}` takes on or off", name);
-  return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, budget, "
-                     "heat-map, outlines, flat-patches, ambient-estimate, shooter, item-buffer, rotation)", what);
+  return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, meshing, "
+                     "form-factors, budget, heat-map, outlines, flat-patches, ambient-estimate, shooter, "
+                     "item-buffer, rotation)", what);
 }
 
 bool run_radiosity(Viewer& viewer, const ScriptCommand& c, std::string&) {
@@ -193,6 +201,10 @@ bool run_radiosity(Viewer& viewer, const ScriptCommand& c, std::string&) {
   } else if (a[0] == "hemicube") {
     r.options.hemicube_res = std::stoi(a[1]);
     r.remesh = true;
+  } else if (a[0] == "meshing" || a[0] == "form-factors") {
+    const RadiosityRow& row = *find_row(radiosity_rows(), a[0]);
+    row.set(r.options, *parse_value(row, a[1], true));
+    r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
   } else if (a[0] == "budget") {
     r.drive.by_time = true;
     r.drive.budget_ms = std::stof(a[1]);
