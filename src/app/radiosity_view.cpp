@@ -81,6 +81,9 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
     state.stop_at = 0;
     drive.running = false;
   }
+  // This frame's last shot may have met the stopping rule: the solver stops now, not a frame
+  // later, so that "done" and "not running" are seen together.
+  if (drive.running && solver_.done()) drive.running = false;
 
   const auto now = clock::now();
   const double seconds = std::chrono::duration<double>(now - last_advance_).count();
