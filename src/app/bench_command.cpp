@@ -161,9 +161,7 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
           counters = tracer.counters();
         }
       }
-      std::sort(times.begin(), times.end());
-      const size_t half = times.size() / 2;
-      const double median = times.size() % 2 ? times[half] : 0.5 * (times[half - 1] + times[half]);
+      const double median = best_and_median(times).median;
 
       tracer.keep_rays(true);
       tracer.render(camera, settings.width, settings.height, options);

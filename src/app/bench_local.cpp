@@ -88,10 +88,6 @@ Camera orbited(const Camera& camera, const glm::vec3& centre, int frame) {
   return c;
 }
 
-struct Timing {
-  double best = 0.0, median = 0.0;  // ms per frame
-};
-
 // Times `frames` calls of draw(frame) after two untimed ones, each finished before the next.
 template <typename Draw>
 Timing time_frames(int frames, const Draw& draw) {
@@ -104,8 +100,7 @@ Timing time_frames(int frames, const Draw& draw) {
     glFinish();
     ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
   }
-  std::sort(ms.begin(), ms.end());
-  return {ms.front(), ms[ms.size() / 2]};
+  return best_and_median(std::move(ms));  // ms per frame
 }
 
 // The bare limit: the scene's triangles, trivially shaded, into `target`.

@@ -5,6 +5,14 @@
 
 namespace luz::app {
 
+Timing best_and_median(std::vector<double> times) {
+  if (times.empty()) return {};
+  std::sort(times.begin(), times.end());
+  const size_t half = times.size() / 2;
+  const double median = times.size() % 2 ? times[half] : 0.5 * (times[half - 1] + times[half]);
+  return {times.front(), median};
+}
+
 size_t shown_width(std::string_view utf8) {
   return size_t(std::count_if(utf8.begin(), utf8.end(),
                               [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));

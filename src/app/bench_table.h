@@ -1,5 +1,5 @@
 #pragma once
-// The fixed-width tables of `luz bench whitted` and `luz bench local`. Each column is as wide as
+// The fixed-width tables of `luz bench whitted` and `luz bench local`, and their figures' summary. Each column is as wide as
 // its default or as its header in the current language, whichever is wider, so that a Spanish
 // header longer than the English one keeps the figures under it. Widths count the characters
 // shown, not the bytes: "proporción" is 10 wide in UTF-8's 11 bytes.
@@ -8,6 +8,12 @@
 #include <vector>
 
 namespace luz::app {
+
+// The best (least) and the median of some timings: what every bench prints.
+struct Timing {
+  double best = 0.0, median = 0.0;
+};
+Timing best_and_median(std::vector<double> times);
 
 // The characters a UTF-8 text shows: every byte starts one but the continuation bytes 10xxxxxx.
 size_t shown_width(std::string_view utf8);

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/model_registry.h"
+#include "app/options_tables.h"
 #include "app/radiosity_state.h"
 #include "app/render_command.h"
 #include "core/error.h"
@@ -307,14 +308,14 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
   }
   out.push_back(command(line, "radiosity", {"patch-size", fmt::format("{}", float(size))}));
   out.push_back(command(line, "radiosity", {"hemicube", std::to_string(hemicube)}));
-  // Slide 40: uniform or adaptive meshing, and which of the form-factor methods.
-  const std::pair<const char*, std::vector<std::string>> choices[] = {
-      {"meshing", {"uniform", "adaptive"}}, {"form-factors", {"rays", "analytic", "hemicube"}}};
-  for (const auto& [name, names] : choices) {
+  // Slide 40: uniform or adaptive meshing, and which of the form-factor methods; their names and
+  // defaults are those of --meshing and --form-factors (the options table).
+  for (const char* name : {"meshing", "form-factors"}) {
+    const RadiosityRow& row = *find_row(radiosity_rows(), name);
+    const std::vector<std::string> names(row.choices.begin(), row.choices.end());
     const std::string value = given.contains(name)
                                   ? r.one_of(given[name], p + "/" + name, std::string("radiosity: ") + name, names)
-                                  : std::string(name == std::string("meshing") ? to_string(o.meshing)
-                                                                               : to_string(o.form_factors));
+                                  : default_text(row);
     out.push_back(command(line, "radiosity", {name, value}));
   }
   if (given.contains("budget"))

@@ -67,7 +67,8 @@ std::vector<uint32_t> ProgressiveSolver::too_coarse(const MeshBisection& bisecti
 // F(j -> i) V_ij times all it sent (its elements' radiosity, seen from j as a shot is), and from
 // every light already shot, its flux through the element.
 Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<Rgb>& sent,
-                              const std::vector<ShooterEmission>& emissions, std::vector<Rgb>& parts) const {
+                              const std::vector<ShooterEmission>& emissions,
+                              const std::vector<std::vector<Rgb>>& parts) const {
   const Patch& element = mesh_.patches[j];
   const size_t m = size_t(options_.visibility_rays);
   uint64_t traced = 0;
@@ -77,11 +78,8 @@ Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<Rgb>& sent,
     const ShootingPatch& shooter = mesh_.shooters[i];
     const double F_ij = rays_->element_factor(i, emissions[i], j, m, options_.seed, kGatherShot, traced);
     if (!(F_ij > 0.0)) continue;
-    parts.clear();
-    for (uint32_t k = shooter.first; k < shooter.first + shooter.count; ++k)
-      parts.push_back(radiosity_[mesh_.members[k]]);
     const double F_ji = F_ij * double(shooter.area) / double(element.area);
-    arrived += F_ji * glm::dvec3(seen_from(shooter, element, sent[i], parts));
+    arrived += F_ji * glm::dvec3(seen_from(shooter, element, sent[i], parts[i]));
   }
   // A light's shadow edge is where the cuts are: its rays are the most a ray estimate takes.
   for (size_t k = 0; k < next_light_; ++k) {
@@ -134,19 +132,19 @@ size_t ProgressiveSolver::refine() {
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     mesh_.group_by_shooter();
+    // What each patch's elements have sent (their radiosity), in members order, once per pass.
+    std::vector<std::vector<Rgb>> parts(mesh_.shooters.size());
     std::vector<ShooterEmission> emissions;
     emissions.reserve(mesh_.shooters.size());
     for (size_t i = 0; i < mesh_.shooters.size(); ++i) {
-      std::vector<Rgb> members;
       for (uint32_t k = mesh_.shooters[i].first; k < mesh_.shooters[i].first + mesh_.shooters[i].count; ++k)
-        members.push_back(radiosity_[mesh_.members[k]]);
-      emissions.emplace_back(mesh_, i, members);
+        parts[i].push_back(radiosity_[mesh_.members[k]]);
+      emissions.emplace_back(mesh_, i, parts[i]);
     }
 
     std::vector<Rgb> gathered(changed.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16),
                       [&](const tbb::blocked_range<size_t>& range) {
-                        std::vector<Rgb> parts;
                         for (size_t k = range.begin(); k != range.end(); ++k)
                           gathered[k] = gather(changed[k], sent, emissions, parts);
                       });

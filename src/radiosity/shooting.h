@@ -168,7 +168,8 @@ private:
   std::vector<uint32_t> too_coarse(const MeshBisection& bisection,
                                    const std::vector<uint32_t>& candidates) const;
   Rgb gather(uint32_t element, const std::vector<Rgb>& sent,
-             const std::vector<ShooterEmission>& emissions, std::vector<Rgb>& parts) const;
+             const std::vector<ShooterEmission>& emissions,
+             const std::vector<std::vector<Rgb>>& parts) const;
   // What a shooting patch has sent in all its shots, per square metre.
   Rgb patch_sent(size_t shooter) const;
   RayFormFactors& rays();

@@ -30,7 +30,7 @@ struct TileScratch {
   std::vector<Rgb> radiance;
   std::vector<LightSample> lights;
   std::vector<Ray> shadow_rays;
-  std::unique_ptr<bool[]> blocked;
+  BlockedFlags blocked;
   void resize(size_t n) {
     if (rays.size() >= n) return;
     rays.resize(n);
@@ -189,19 +189,19 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   first[n] = lights.size();
   if (options.shadows) {  // 3.
     scratch.shadow_rays.resize(lights.size());
-    scratch.blocked.reset(new bool[lights.size() + 1]);
     for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
-    hits_of.occluded(scratch.shadow_rays, std::span(scratch.blocked.get(), lights.size()),
+    hits_of.occluded(scratch.shadow_rays, scratch.blocked.first(lights.size()),
                      counters.intersection_tests);
   }
 
+  const bool* blocked = options.shadows ? scratch.blocked.first(lights.size()).data() : nullptr;
   i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       Rgb sum(0.0f);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 4.
         answers[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
-        answers[i].blocked = options.shadows ? scratch.blocked.get() + first[i] : nullptr;
+        answers[i].blocked = blocked ? blocked + first[i] : nullptr;
         sum += whitted.trace(rays[i], 1, RayKind::primary, seeds[i], weight, &answers[i]);
       }
       image.at(x, y) = sum * weight;

@@ -2,7 +2,6 @@
 #include "raytracing/wavefront.h"
 
 #include <algorithm>
-#include <memory>
 #include <utility>
 
 #include "raytracing/sampling.h"
@@ -54,16 +53,7 @@ struct Scratch {
   std::vector<LightSample> lights;  // every hit's light samples, hit k's from first[k]
   std::vector<size_t> first;
   std::vector<Ray> shadow_rays;
-  std::unique_ptr<bool[]> blocked;  // per light sample (std::vector<bool> has no bool*)
-  size_t blocked_size = 0;
-
-  bool* blocked_flags(size_t n) {
-    if (n > blocked_size) {
-      blocked_size = std::max(n, 2 * blocked_size);
-      blocked = std::make_unique<bool[]>(blocked_size);
-    }
-    return blocked.get();
-  }
+  BlockedFlags blocked;
 };
 
 }  // namespace
@@ -116,9 +106,9 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
         scratch.shadow_rays[j] = scratch.lights[j].shadow;
         count(scratch.shadow_rays[j], RayKind::shadow);
       }
-      bool* flags = scratch.blocked_flags(m);
-      intersector_.occluded(scratch.shadow_rays, std::span(flags, m), counters_.intersection_tests);
-      blocked = flags;
+      const std::span<bool> flags = scratch.blocked.first(m);
+      intersector_.occluded(scratch.shadow_rays, flags, counters_.intersection_tests);
+      blocked = flags.data();
     }
 
     // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; then

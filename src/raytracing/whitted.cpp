@@ -5,7 +5,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -221,20 +220,16 @@ LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t 
 
 const bool* Whitted::shadow_rays(const LightsAt& lights) {
   if (!options_.shadows) return nullptr;  // every light counts as unoccluded
-  const size_t n = lights.samples.size();
-  if (n > blocked_size_) {
-    blocked_size_ = std::max(n, 2 * blocked_size_);
-    blocked_ = std::make_unique<bool[]>(blocked_size_);
-  }
-  for (size_t i = 0; i < n; ++i) {
+  const std::span<bool> blocked = blocked_.first(lights.samples.size());
+  for (size_t i = 0; i < blocked.size(); ++i) {
     const LightSample& sample = lights.samples[i];
     count(sample.shadow, RayKind::shadow);
     // S_i = 0 when the shadow ray meets anything before the light.
-    blocked_[i] = lights.blocked ? lights.blocked[i]
-                                 : intersector_.occluded(sample.shadow, counters_.intersection_tests);
-    tree_.shadow(sample.shadow, blocked_[i], sample.distance, sample.light, sample.term);
+    blocked[i] = lights.blocked ? lights.blocked[i]
+                                : intersector_.occluded(sample.shadow, counters_.intersection_tests);
+    tree_.shadow(sample.shadow, blocked[i], sample.distance, sample.light, sample.term);
   }
-  return blocked_.get();
+  return blocked.data();
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {

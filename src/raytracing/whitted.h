@@ -19,7 +19,6 @@
 // The pieces of Color() that the wavefront renderer shares, so that it cannot drift from the
 // slide's code: surface_at(), light_samples(), local_color() and secondary_rays().
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -155,8 +154,7 @@ private:
   const DiffuseSource* diffuse_;
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples
   std::vector<LightSample> lights_;      // scratch for Color()'s light samples
-  std::unique_ptr<bool[]> blocked_;      // scratch for their shadow rays' answers
-  size_t blocked_size_ = 0;
+  BlockedFlags blocked_;                 // scratch for their shadow rays' answers
   const StreamedAnswers* streamed_ = nullptr;  // the answers for the hit about to be shaded
   RayTreeRecorder tree_;
   std::vector<RecordedRay>* log_ = nullptr;
