@@ -1,6 +1,6 @@
 #version 330 core
 // Radiosity item buffer: the patches seen from a hemicube face (or a light's cube face).
-// Patches are drawn as one non-indexed triangle list, patch i = triangle i, so the fragment
+// Patches are drawn as one triangle list, patch i = triangle i, so the fragment
 // shader names the patch by gl_PrimitiveID and no ID attribute is needed.
 layout(location = 0) in vec3 a_position;
 

@@ -194,6 +194,53 @@ TEST(Hemicube, ReciprocityBetweenUnequalSquares) {
   EXPECT_NEAR(forward, backward, 0.02 * forward);
 }
 
+// The hemicube drawn in one instanced pass, and summed on the GPU, against the five passes summed
+// on the CPU, on the Cornell box for patches on every wall and the blocks, turned at random. One
+// pass draws the same pixels up to float rounding, which may hand a pixel on the edge between two
+// patches to the other one: per row the rows differ by at most two pixels' worth (the largest
+// delta form factor, at the top face's centre, each way). The GPU adds the same pixels' deltas in
+// float instead of double.
+TEST(Hemicube, OnePassAndGpuSumsGiveTheFivePassRows) {
+  const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
+  const PatchMesh mesh = PatchMesh::build(loaded.scene, 0.1f);
+  const PatchItems items(mesh);
+  const int res = 128;
+  Hemicube five(mesh, items, res, HemicubePasses::five, HemicubeSums::cpu);
+  Hemicube one(mesh, items, res, HemicubePasses::one, HemicubeSums::cpu);
+  Hemicube gpu(mesh, items, res, HemicubePasses::one, HemicubeSums::gpu);
+  const double pixel = top_delta_form_factor(0.0, 0.0, 4.0 / (res * res));
+  const auto as_map = [](const std::vector<FormFactor>& row) {
+    std::map<uint32_t, double> m;
+    for (const FormFactor& f : row) m[f.patch] = f.value;
+    return m;
+  };
+  const auto l1_difference = [](const std::map<uint32_t, double>& a, std::map<uint32_t, double> b) {
+    double sum = 0.0;
+    for (const auto& [j, value] : a) sum += std::abs(value - b[j]);
+    for (const auto& [j, value] : b)
+      if (!a.count(j)) sum += value;
+    return sum;
+  };
+  double worst_pixels = 0.0, worst_gpu = 0.0;
+  size_t rows = 0;
+  for (size_t i = 0; i < mesh.size(); i += 7, ++rows) {
+    const float rotation = 0.37f * float(i);
+    const std::map<uint32_t, double> by_five = as_map(five.row(i, rotation));
+    const std::map<uint32_t, double> by_one = as_map(one.row(i, rotation));
+    const std::map<uint32_t, double> by_gpu = as_map(gpu.row(i, rotation));
+    worst_pixels = std::max(worst_pixels, l1_difference(by_five, by_one) / pixel);
+    ASSERT_EQ(by_gpu.size(), by_one.size()) << "patch " << i;
+    for (const auto& [j, value] : by_one) {
+      ASSERT_TRUE(by_gpu.count(j)) << "patch " << i << " misses " << j;
+      worst_gpu = std::max(worst_gpu, std::abs(by_gpu.at(j) - value) / value);
+    }
+  }
+  printf("%zu rows: one pass moves at most %.2f pixels' worth of a row; GPU sums within %.1e\n", rows,
+         worst_pixels, worst_gpu);
+  EXPECT_LE(worst_pixels, 2.0);
+  EXPECT_LT(worst_gpu, 1e-5);
+}
+
 // ---- The solver --------------------------------------------------------------------------------
 TEST(Shooting, FurnaceConvergesToEOverOneMinusRho) {
   Scene scene;

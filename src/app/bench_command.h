@@ -31,6 +31,8 @@ struct RadiosityBenchSettings {
   std::string scene;                                     // empty: the Cornell box that ships
   std::vector<int> patches = {1000, 4000, 16000, 64000}; // target patch counts
   int hemicube_res = RadiosityOptions{}.hemicube_res;
+  HemicubePasses hemicube_passes = RadiosityOptions{}.hemicube_passes;
+  HemicubeSums hemicube_sums = RadiosityOptions{}.hemicube_sums;
   double seconds = 30.0;                                 // time cap per patch count
   float converge = RadiosityOptions{}.converge;          // "converged": unshot below this
   // With a reference picture (linear EXR of the scene's first camera, e.g. a converged Mitsuba

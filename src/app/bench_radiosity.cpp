@@ -71,9 +71,14 @@ std::string markdown_row(const std::vector<std::string>& cells) {
 }
 
 // The form-factor method of a row, in the current language.
-const char* method_label(FormFactorMethod method) {
+std::string method_label(FormFactorMethod method, const RadiosityBenchSettings& settings) {
   switch (method) {
-    case FormFactorMethod::hemicube: return tr("hemicube");
+    case FormFactorMethod::hemicube: {
+      std::string label = tr("hemicube");
+      if (settings.hemicube_passes == HemicubePasses::one) label += tr(", one pass");
+      if (settings.hemicube_sums == HemicubeSums::gpu) label += tr(", GPU sums");
+      return label;
+    }
     case FormFactorMethod::rays: return tr("rays");
     case FormFactorMethod::analytic: return tr("analytic");
   }
@@ -121,6 +126,8 @@ int run_error_curve(const RadiosityBenchSettings& settings, const io::LoadedScen
     if (!chosen(way)) continue;
     RadiosityOptions options = way.options;
     options.hemicube_res = settings.hemicube_res;
+    options.hemicube_passes = settings.hemicube_passes;
+    options.hemicube_sums = settings.hemicube_sums;
     options.converge = 1e-4f;
     PatchMesh mesh = PatchMesh::build(scene, options);
     ProgressiveSolver solver(scene, mesh, options);
@@ -172,6 +179,8 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
         PatchMesh mesh = PatchMesh::build(loaded.scene, size);  // every element shoots
         RadiosityOptions options;
         options.hemicube_res = settings.hemicube_res;
+        options.hemicube_passes = settings.hemicube_passes;
+        options.hemicube_sums = settings.hemicube_sums;
         options.converge = settings.converge;
         options.form_factors = method;
         options.meshing = Meshing::uniform;  // shots per second at the patch count asked for
@@ -190,7 +199,7 @@ int run_radiosity_bench(const RadiosityBenchSettings& settings) {
         const double shots = std::max(1, solver.shots());
         const bool converged = solver.unshot_fraction() < double(settings.converge);
         fmt::print("| {} | {} | {} | {:.0f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.2f}% |\n",
-                   method_label(method), mesh.size(), solver.shots(), solver.shots() / elapsed,
+                   method_label(method, settings), mesh.size(), solver.shots(), solver.shots() / elapsed,
                    1e3 * sum.draw / shots,
                    1e3 * sum.read / shots, 1e3 * sum.accumulate / shots, 1e3 * update / shots,
                    converged ? fmt::format("{:.1f} s", elapsed) : std::string(tr("not within the cap")),

@@ -2,6 +2,7 @@
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -165,6 +166,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_radiosity->add_option("--hemicube-res", radiosity_bench.hemicube_res, tr("Hemicube resolution"))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes))->capture_default_str();
+  bench_radiosity->add_option("--hemicube-passes", radiosity_bench.hemicube_passes,
+                              tr("Draw the hemicube in five passes or one instanced pass"))
+      ->transform(CLI::CheckedTransformer(std::map<std::string, luz::HemicubePasses>{
+          {"five", luz::HemicubePasses::five}, {"one", luz::HemicubePasses::one}}))
+      ->capture_default_str();
+  bench_radiosity->add_option("--hemicube-sums", radiosity_bench.hemicube_sums,
+                              tr("Sum the hemicube's delta form factors on the cpu or the gpu"))
+      ->transform(CLI::CheckedTransformer(std::map<std::string, luz::HemicubeSums>{
+          {"cpu", luz::HemicubeSums::cpu}, {"gpu", luz::HemicubeSums::gpu}}))
+      ->capture_default_str();
   bench_radiosity->add_option("--reference", radiosity_bench.reference,
                               tr("Converged picture (linear EXR, first camera): print the error against it over "
                                  "time for uniform, substructured, analytic, overshot and ray-cast shooting instead"));

@@ -22,6 +22,8 @@ namespace {
 constexpr const char* fog_modes[] = {"off", "linear", "exponential"};  // FogMode's order
 constexpr const char* form_factor_methods[] = {"hemicube", "analytic", "rays"};  // FormFactorMethod's order
 constexpr const char* meshings[] = {"uniform", "adaptive"};                        // Meshing's order
+constexpr const char* hemicube_passes[] = {"five", "one"};                         // HemicubePasses' order
+constexpr const char* hemicube_sums[] = {"cpu", "gpu"};                            // HemicubeSums' order
 constexpr const char* renderers[] = {"wavefront", "recursive"};                    // RendererKind's order
 
 bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
@@ -129,6 +131,15 @@ const RadiosityRow radiosity_table[] = {
     {"hemicube", "--hemicube-res", "radiosity", OptionKind::integer,
      N_("radiosity/hybrid: hemicube resolution, pixels across its top face"), double(kMinHemicubeRes),
      double(kMaxHemicubeRes), LUZ_FIELD(RadiosityOptions, hemicube_res), {}, even, N_("even")},
+    {"hemicube-passes", "--hemicube-passes", "radiosity", OptionKind::choice,
+     N_("radiosity/hybrid: draw the hemicube's faces in five passes (one viewport each) or in one instanced pass"),
+     0, 1, [](const RadiosityOptions& o) { return double(int(o.hemicube_passes)); },
+     [](RadiosityOptions& o, double v) { o.hemicube_passes = HemicubePasses(int(v)); }, hemicube_passes},
+    {"hemicube-sums", "--hemicube-sums", "radiosity", OptionKind::choice,
+     N_("radiosity/hybrid: sum the hemicube's delta form factors on the cpu (the item buffer read back) or on "
+     "the gpu (one sum per element read back)"), 0, 1,
+     [](const RadiosityOptions& o) { return double(int(o.hemicube_sums)); },
+     [](RadiosityOptions& o, double v) { o.hemicube_sums = HemicubeSums(int(v)); }, hemicube_sums},
     {"elements", "--elements", "radiosity", OptionKind::integer,
      N_("radiosity/hybrid: cut each patch into N x N elements that receive and are drawn while the patch shoots "
      "(1: no substructuring)"), 1, double(kMaxElementsPerEdge), LUZ_FIELD(RadiosityOptions, elements_per_edge)},

@@ -22,7 +22,8 @@ RadiosityView::RadiosityView(const Scene& scene, const RadiosityOptions& options
 
 bool RadiosityView::built_for(const RadiosityOptions& o) const {
   return o.patch_size == built_with_.patch_size && o.target_patches == built_with_.target_patches &&
-         o.hemicube_res == built_with_.hemicube_res && o.elements_per_edge == built_with_.elements_per_edge;
+         o.hemicube_res == built_with_.hemicube_res && o.hemicube_passes == built_with_.hemicube_passes &&
+         o.hemicube_sums == built_with_.hemicube_sums && o.elements_per_edge == built_with_.elements_per_edge;
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------

@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "radiosity/gpu_row_sums.h"
 #include "radiosity/radiosity_options.h"
 
 namespace luz {
@@ -59,8 +60,10 @@ Hemicube::Rect Hemicube::face_rect(int face) const {
   return {res_ * (1 + side / 2), (side % 2) * (res_ / 2), res_, res_ / 2};
 }
 
-Hemicube::Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution)
-    : mesh_(mesh), items_(items), res_(checked_resolution(resolution)), far_(far_plane(mesh)),
+Hemicube::Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution,
+                   HemicubePasses passes, HemicubeSums sums)
+    : mesh_(mesh), items_(items), res_(checked_resolution(resolution)), passes_(passes),
+      far_(far_plane(mesh)),
       target_(3 * res_, res_), sums_(mesh.size(), 0.0) {
   // The table of delta form factors, in the atlas's layout. Pixel centres at
   // -1 + (k + 1/2) * 2/res across a face; side faces keep the upper half, z in (0, 1).
@@ -76,7 +79,10 @@ Hemicube::Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolutio
         weights_[size_t(r.y + py) * size_t(atlas_width()) + size_t(r.x + px)] = float(dF);
       }
   }
+  if (sums == HemicubeSums::gpu) gpu_sums_ = std::make_unique<GpuRowSums>(weights_, atlas_width(), atlas_height());
 }
+
+Hemicube::~Hemicube() = default;
 
 // ---- [one row] ---------------------------------------------------------------------------------
 const std::vector<FormFactor>& Hemicube::row(size_t element, float rotation) {
@@ -86,8 +92,7 @@ const std::vector<FormFactor>& Hemicube::row(size_t element, float rotation) {
 
 const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm::vec3& normal,
                                              float clearance, float rotation) {
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
+  const auto t0 = Clock::now();
 
   // The hemicube's frame: n the patch normal, (t, b) turned by `rotation` about it.
   const glm::vec3 n = normal;
@@ -105,25 +110,44 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
   const glm::mat4 side_projection = glm::frustum(-near, near, 0.0f, near, near, far_);
   struct Face { glm::vec3 forward, up; };
   const Face faces[kFaces] = {{n, b}, {t, n}, {-t, n}, {b, n}, {-b, n}};
+  AtlasFace atlas[kFaces];
+  for (int face = 0; face < kFaces; ++face) {
+    const Rect r = face_rect(face);
+    const glm::mat4 view = glm::lookAt(eye, eye + faces[face].forward, faces[face].up);
+    atlas[face] = {(face == 0 ? top_projection : side_projection) * view, r.x, r.y, r.width, r.height};
+  }
 
   GLint previous_fbo = 0, previous_viewport[4] = {};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
   target_.bind_and_clear();
   items_.begin();
-  for (int face = 0; face < kFaces; ++face) {
-    const Rect r = face_rect(face);
-    glViewport(r.x, r.y, r.width, r.height);
-    const glm::mat4 view = glm::lookAt(eye, eye + faces[face].forward, faces[face].up);
-    items_.draw((face == 0 ? top_projection : side_projection) * view);
+  if (passes_ == HemicubePasses::one) {
+    items_.draw_atlas(atlas, atlas_width(), atlas_height());
+  } else {
+    for (const AtlasFace& face : atlas) {
+      glViewport(face.x, face.y, face.width, face.height);
+      items_.draw(face.view_projection);
+    }
   }
   items_.end();
   glFinish();
-  const auto t1 = clock::now();
+  const auto t1 = Clock::now();
+  if (gpu_sums_) {
+    const std::vector<float>& sums = gpu_sums_->sum(target_.id_texture(), mesh_.size());
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    const auto t2 = Clock::now();
+    row_.clear();
+    for (size_t j = 0; j < sums.size(); ++j)
+      if (sums[j] != 0.0f) row_.push_back({uint32_t(j), sums[j]});
+    record_times(t0, t1, t2);
+    return row_;
+  }
   target_.read(ids_);
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
   glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
-  const auto t2 = clock::now();
+  const auto t2 = Clock::now();
 
   // F_ij = sum of the delta form factors of the pixels showing patch j.
   sums_.resize(mesh_.size(), 0.0);  // adaptive subdivision adds elements between rows
@@ -140,11 +164,18 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
     row_.push_back({j, float(sums_[j])});
     sums_[j] = 0.0;
   }
-  const auto t3 = clock::now();
-  times_.draw = std::chrono::duration<double>(t1 - t0).count();
-  times_.read = std::chrono::duration<double>(t2 - t1).count();
-  times_.accumulate = std::chrono::duration<double>(t3 - t2).count();
+  record_times(t0, t1, t2);
   return row_;
+}
+
+void Hemicube::record_times(Clock::time_point drawn_from, Clock::time_point read_from,
+                            Clock::time_point summed_from) {
+  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  times_.draw = seconds(drawn_from, read_from);
+  times_.read = seconds(read_from, summed_from);
+  times_.accumulate = seconds(summed_from, Clock::now());
 }
 
 }  // namespace luz

@@ -13,8 +13,10 @@
 // up to the discretisation, and rescaling a row to sum to 1 would hide a wrong weighting.
 //
 // All five faces go into one atlas texture (3 res x res pixels, layout in face_rect()), read
-// back with a single glReadPixels per row.
+// back with a single glReadPixels per row, or summed on the GPU.
+#include <chrono>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -25,6 +27,8 @@
 
 namespace luz {
 
+class GpuRowSums;
+
 // One entry of a form-factor row: F_ij for patch j.
 struct FormFactor {
   uint32_t patch = 0;
@@ -34,8 +38,8 @@ struct FormFactor {
 // Where a row's time goes, in seconds (for `luz bench radiosity`).
 struct RowTimes {
   double draw = 0.0;        // drawing the five faces (until the GPU has finished)
-  double read = 0.0;        // glReadPixels of the atlas
-  double accumulate = 0.0;  // summing the delta form factors per patch
+  double read = 0.0;        // glReadPixels of the atlas (GPU sums: summing and reading the sums)
+  double accumulate = 0.0;  // summing the delta form factors per patch (GPU sums: the row's list)
 };
 
 // Delta form factors of one pixel of area dA (half-width-1 hemicube), Cohen & Greenberg 1985.
@@ -48,7 +52,9 @@ public:
 
   // `items` (the patches on the GPU) must outlive the hemicube. `resolution`: pixels across the
   // top face, even, kMinHemicubeRes .. kMaxHemicubeRes (throws luz::Error bad_value otherwise).
-  Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution);
+  Hemicube(const PatchMesh& mesh, const PatchItems& items, int resolution,
+           HemicubePasses passes = HemicubePasses::five, HemicubeSums sums = HemicubeSums::cpu);
+  ~Hemicube();
 
   // Row i of the form-factor matrix: F_ij of every element j seen from the centre of element i.
   // `rotation` turns the hemicube about the normal (radians), to break aliasing.
@@ -67,11 +73,10 @@ public:
   int resolution() const { return res_; }
   const RowTimes& last_times() const { return times_; }
 
-  // The last row's item buffer (IDs + 1, 0 = nothing), for an overlay: atlas pixels in GL row
-  // order (row 0 at the bottom), also as a GL_R32UI texture.
+  // The last row's item buffer (IDs + 1, 0 = nothing), for an overlay: a GL_R32UI texture of the
+  // atlas, GL row order (row 0 at the bottom).
   int atlas_width() const { return 3 * res_; }
   int atlas_height() const { return res_; }
-  const std::vector<uint32_t>& item_buffer() const { return ids_; }
   unsigned item_texture() const { return target_.id_texture(); }
   struct Rect { int x, y, width, height; };
   Rect face_rect(int face) const;
@@ -79,10 +84,16 @@ public:
   const std::vector<float>& delta_form_factors() const { return weights_; }
 
 private:
+  using Clock = std::chrono::steady_clock;
+  void record_times(Clock::time_point drawn_from, Clock::time_point read_from,
+                    Clock::time_point summed_from);
+
   const PatchMesh& mesh_;
   const PatchItems& items_;
   int res_;
+  HemicubePasses passes_;
   float far_;
+  std::unique_ptr<GpuRowSums> gpu_sums_;  // null: summed on the CPU
   gl::ItemFramebuffer target_;
   std::vector<float> weights_;
   std::vector<uint32_t> ids_;

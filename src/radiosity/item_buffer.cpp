@@ -1,6 +1,8 @@
 #include "radiosity/item_buffer.h"
 
+#include <cassert>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -12,22 +14,28 @@ namespace luz {
 PatchItems::PatchItems(const PatchMesh& mesh) {
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
+  glGenBuffers(1, &ebo_);
   upload(mesh);
 }
 
+// Indexed, over the mesh's shared vertices: software rasterisers shade each vertex once for the
+// half a dozen elements around it instead of three times per element.
 void PatchItems::upload(const PatchMesh& mesh) {
-  std::vector<glm::vec3> corners;
-  corners.reserve(mesh.size() * 3);
+  std::vector<uint32_t> indices;
+  indices.reserve(mesh.size() * 3);
   for (const Patch& p : mesh.patches)
-    for (const uint32_t v : p.vertices) corners.push_back(mesh.vertices[v]);
-  vertex_count_ = GLsizei(corners.size());
+    for (const uint32_t v : p.vertices) indices.push_back(v);
+  index_count_ = GLsizei(indices.size());
 
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data(),
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec3)), mesh.vertices.data(),
                GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);  // recorded in the vertex array
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -35,6 +43,7 @@ void PatchItems::upload(const PatchMesh& mesh) {
 PatchItems::~PatchItems() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
   if (vbo_) glDeleteBuffers(1, &vbo_);
+  if (ebo_) glDeleteBuffers(1, &ebo_);
 }
 
 void PatchItems::begin() const {
@@ -51,7 +60,34 @@ void PatchItems::begin() const {
 
 void PatchItems::draw(const glm::mat4& view_projection) const {
   program_.set("u_view_projection", view_projection);
-  glDrawArrays(GL_TRIANGLES, 0, vertex_count_);
+  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+// A face's clip coordinates c land in its rectangle of the atlas: x_atlas = sx x + ox w, so that
+// after the divide x_atlas / w = sx (x / w) + ox maps the face's [-1, 1] onto its pixels.
+void PatchItems::draw_atlas(std::span<const AtlasFace> faces, int atlas_width, int atlas_height) const {
+  assert(faces.size() <= size_t(kMaxAtlasFaces));
+  atlas_program_.use();
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const AtlasFace& face = faces[f];
+    const float sx = float(face.width) / float(atlas_width);
+    const float sy = float(face.height) / float(atlas_height);
+    const float ox = float(2 * face.x + face.width) / float(atlas_width) - 1.0f;
+    const float oy = float(2 * face.y + face.height) / float(atlas_height) - 1.0f;
+    glm::mat4 to_atlas(1.0f);  // column-major: column 3 holds what w adds to each row
+    to_atlas[0][0] = sx;
+    to_atlas[1][1] = sy;
+    to_atlas[3][0] = ox;
+    to_atlas[3][1] = oy;
+    const std::string index = "[" + std::to_string(f) + "]";
+    atlas_program_.set("u_face_view_projection" + index, face.view_projection);
+    atlas_program_.set("u_face_to_atlas" + index, to_atlas);
+  }
+  for (int plane = 0; plane < 4; ++plane) glEnable(GLenum(GL_CLIP_DISTANCE0 + plane));
+  glViewport(0, 0, atlas_width, atlas_height);
+  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(faces.size()));
+  for (int plane = 0; plane < 4; ++plane) glDisable(GLenum(GL_CLIP_DISTANCE0 + plane));
+  program_.use();
 }
 
 void PatchItems::end() const {

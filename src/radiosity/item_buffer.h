@@ -1,7 +1,9 @@
 #pragma once
-// The patches on the GPU for item buffers: one non-indexed triangle list (patch i = triangle i)
+// The patches on the GPU for item buffers: one indexed triangle list (patch i = triangle i)
 // and the program that writes patch ID + 1 per pixel (shaders/item_buffer.*). The hemicube and
 // the point sources draw the scene through it from their own viewpoints.
+#include <span>
+
 #include <glm/mat4x4.hpp>
 
 #include "gl/functions.h"
@@ -9,6 +11,12 @@
 #include "radiosity/patch_mesh.h"
 
 namespace luz {
+
+// One face of a cube of item buffers: its camera and its rectangle of the atlas, in pixels.
+struct AtlasFace {
+  glm::mat4 view_projection;
+  int x = 0, y = 0, width = 0, height = 0;
+};
 
 class PatchItems {
 public:
@@ -23,12 +31,18 @@ public:
   // makes the program current; then draw() once per face.
   void begin() const;
   void draw(const glm::mat4& view_projection) const;
+  // Every face at once (at most kMaxAtlasFaces), one instance per face, into the bound atlas
+  // of atlas_width x atlas_height pixels: the same pixels as one draw() per face in its viewport.
+  void draw_atlas(std::span<const AtlasFace> faces, int atlas_width, int atlas_height) const;
   void end() const;
+
+  static constexpr int kMaxAtlasFaces = 6;
 
 private:
   mutable gl::Program program_{{"item_buffer.vert", "item_buffer.frag"}};
-  GLuint vao_ = 0, vbo_ = 0;
-  GLsizei vertex_count_ = 0;
+  mutable gl::Program atlas_program_{{"item_buffer_atlas.vert", "item_buffer.frag"}};
+  GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
+  GLsizei index_count_ = 0;
 };
 
 // A unit vector perpendicular to n, so that (t, cross(n, t), n) is a right-handed frame.

@@ -31,8 +31,10 @@ std::string RadiosityOptions::to_string() const {
     mesh += fmt::format(", adaptive ({:g}, {} cuts)", refine_threshold, refine_levels);
   const std::string stop = max_shots > 0 ? fmt::format("{} shots", max_shots)
                                          : fmt::format("until unshot < {:.3g}", converge);
-  return fmt::format("RadiosityOptions [{}, hemicube {}{}, {} form factors, {}{}{}{}{}]", mesh,
+  return fmt::format("RadiosityOptions [{}, hemicube {}{}{}{}, {} form factors, {}{}{}{}{}]", mesh,
                      hemicube_res, random_rotation ? " rotated" : "",
+                     hemicube_passes == HemicubePasses::one ? " in one pass" : "",
+                     hemicube_sums == HemicubeSums::gpu ? " summed on the GPU" : "",
                      form_factors == FormFactorMethod::rays
                          ? fmt::format("rays ({} per element)", visibility_rays)
                          : luz::to_string(form_factors),

@@ -10,6 +10,13 @@ enum class FormFactorMethod { hemicube, analytic, rays };
 const char* to_string(FormFactorMethod method);  // "hemicube", "analytic", "rays"
 enum class Meshing { uniform, adaptive };
 const char* to_string(Meshing meshing);  // "uniform", "adaptive"
+// How the hemicube's five faces reach its item buffer: five draws, each face in its own viewport
+// (the slide's picture), or one instanced draw whose instances are the faces, each clipped to its
+// rectangle of the atlas (the same pixels, fewer draw calls).
+enum class HemicubePasses { five, one };
+// Where F_ij is summed: on the CPU over the item buffer read back, or on the GPU, which reads
+// back one sum per element (gpu_row_sums.h).
+enum class HemicubeSums { cpu, gpu };
 
 struct RadiosityOptions {
   // ---- Meshing (slide 40, "Mallado - Subestructuracion") ----
@@ -35,6 +42,10 @@ struct RadiosityOptions {
 
   // ---- Form factors: the hemicube (slide 37) ----
   int hemicube_res = 128;       // pixels across the top face (64 .. 1024, even)
+  // The same rows either way (tests hold them equal); on Mesa's software rasteriser five passes
+  // and the CPU's sums are the faster (docs/radiosity-meshing.md, "Faster shots").
+  HemicubePasses hemicube_passes = HemicubePasses::five;
+  HemicubeSums hemicube_sums = HemicubeSums::cpu;
   // hemicube: every F from the hemicube (point-to-area from the shooter's centre).
   // analytic: the hemicube finds how much of each element the shooter sees; F itself is
   // Lambert's exact contour integral from the element to the patch polygon

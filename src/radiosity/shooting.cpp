@@ -58,7 +58,7 @@ double ProgressiveSolver::power(const Rgb& exitance, float area) {
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, PatchMesh& mesh,
                                      const RadiosityOptions& options)
     : scene_(scene), mesh_(mesh), revision_(mesh.revision), options_(options), items_(mesh),
-      hemicube_(mesh, items_, options.hemicube_res) {
+      hemicube_(mesh, items_, options.hemicube_res, options.hemicube_passes, options.hemicube_sums) {
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     const Light& light = scene.lights[k];
     if (!light.enabled) continue;
