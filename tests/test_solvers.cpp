@@ -7,10 +7,12 @@
 // - A closed diffuse box with an emitting ceiling (192 patches, hemicube 64): the residuals of
 //   Jacobi and Gauss-Seidel fall at every sweep; Gauss-Seidel reaches |r| < 1e-6 |E| in fewer
 //   sweeps than Jacobi; Jacobi, Gauss-Seidel and Southwell end within 1e-6 (area-weighted L1,
-//   relative) of the converged B, and the shooting within 5%: it solves the system whose column
-//   i is row i by reciprocity, F_ji = F_ij A_i / A_j, and hemicube form factors between
-//   neighbouring patches are not reciprocal to better than a few percent (the hemicube samples
-//   from the patch centre: test_radiosity.cpp's furnace shows the same at the edges).
+//   relative) of the converged B, and the shooting within 1%: it solves the system whose column
+//   i is row i by reciprocity, F_ji = F_ij A_i / A_j, which the analytic form factors keep (the
+//   same contour integral both ways; only the visibility, here nearly 1 everywhere, comes from
+//   each side's hemicube). With the hemicube's own point-to-area values, which between
+//   neighbouring patches are not reciprocal to better than a few percent, the shooting ends
+//   several times farther away (within 5%).
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -23,6 +25,7 @@
 #include "radiosity/patch_mesh.h"
 #include "radiosity/solver_comparison.h"
 #include "radiosity/system_solvers.h"
+#include "radiosity_scenes.h"
 
 namespace luz {
 namespace {
@@ -193,10 +196,29 @@ TEST_F(ClosedBox, TheFourMethodsConvergeToTheSameRadiosity) {
   for (const Method m : {Method::jacobi, Method::gauss_seidel, Method::southwell})
     EXPECT_LT(race_->curve(m).back().error, 1e-6) << to_string(m);
   EXPECT_LT(race_->curve(Method::shooting).back().residual, 1e-6) << "the shooting has converged";
-  EXPECT_LT(race_->curve(Method::shooting).back().error, 0.05) << "the shooting's B, against B*";
+  EXPECT_LT(race_->curve(Method::shooting).back().error, 0.01) << "the shooting's B, against B*";
   // B* itself solves the system.
   const RadiositySystem& s = race_->system();
   EXPECT_LT(power_norm(s, residual(s, race_->converged())), 1e-9 * power_norm(s, s.E));
+}
+
+// The same race with hemicube rows: the shooting converges, to a B farther from the matrix's.
+TEST_F(ClosedBox, HemicubeRowsAreNotReciprocalAndTheShootingShowsIt) {
+  RadiosityOptions options;
+  options.patch_size = 0.4f;
+  options.elements_per_edge = 1;
+  options.hemicube_res = 64;
+  options.form_factors = FormFactorMethod::hemicube;
+  PatchMesh mesh = PatchMesh::build(*scene_, options);
+  SolverComparison race(*scene_, mesh, options, size_t(kSweeps) * mesh.size());
+  while (race.step()) {}
+  const double analytic = race_->curve(Method::shooting).back().error;
+  const double hemicube = race.curve(Method::shooting).back().error;
+  printf("the shooting against the matrix's B*: analytic %.3g, hemicube %.3g\n", analytic, hemicube);
+  EXPECT_LT(race.curve(Method::shooting).back().residual, 1e-6);
+  EXPECT_LT(race.curve(Method::gauss_seidel).back().error, 1e-6);
+  EXPECT_LT(hemicube, 0.05);
+  EXPECT_LT(3.0 * analytic, hemicube);
 }
 
 TEST_F(ClosedBox, ShootingShowsAUsablePictureFirst) {
@@ -218,6 +240,94 @@ TEST_F(ClosedBox, ShootingShowsAUsablePictureFirst) {
                               power_norm(s, race_->converged());
   EXPECT_NEAR(jacobi[1].error, emitted_only, 1e-12);
   EXPECT_LT(shooting_error, emitted_only);
+}
+
+
+// ---- The analytic matrix ----------------------------------------------------------------------
+// Reciprocity wall by wall: the sum over pairs of walls (a, b) of |A_a F_ab - A_b F_ba|, over the
+// sum of A_a F_ab, where A_a F_ab = sum over i in a, j in b of A_i F_ij. Per patch pair, the
+// visibility's pixel count is too noisy for small far patches to show anything.
+double reciprocity_gap(const PatchMesh& mesh, const FormFactorMatrix& F, size_t walls) {
+  std::vector<std::vector<double>> between(walls, std::vector<double>(walls, 0.0));
+  for (size_t i = 0; i < mesh.size(); ++i)
+    for (const FormFactor& f : F.rows[i])
+      between[size_t(mesh.patches[i].mesh)][size_t(mesh.patches[f.patch].mesh)] +=
+          double(mesh.patches[i].area) * f.value;
+  double differences = 0.0, total = 0.0;
+  for (size_t a = 0; a < walls; ++a)
+    for (size_t b = 0; b < walls; ++b) {
+      differences += std::abs(between[a][b] - between[b][a]);
+      total += between[a][b];
+    }
+  return differences / total;
+}
+
+double worst_row_sum_error(const FormFactorMatrix& F) {
+  double worst = 0.0;
+  for (const auto& row : F.rows) {
+    double sum = 0.0;
+    for (const FormFactor& f : row) sum += f.value;
+    worst = std::max(worst, std::abs(sum - 1.0));
+  }
+  return worst;
+}
+
+// An empty closed box 1 x 1 x 1.6 m: the walls' patches are not the floor's size. Nothing hides
+// anything, so the analytic rows, one contour integral each way, are reciprocal but for the
+// hemicube's pixel count of what is visible; the hemicube's own point-to-area rows are not.
+TEST(AnalyticMatrix, ReciprocalInAnEmptyBoxOfUnequalPatches) {
+  Scene scene;
+  const int grey = test::add_material(scene, 0.5f);
+  using v = glm::vec3;
+  const float d = 1.6f;
+  test::add_quad(scene, v(0, 0, 0), v(0, 0, d), v(1, 0, d), v(1, 0, 0), grey, "floor");
+  test::add_quad(scene, v(0, 1, 0), v(1, 1, 0), v(1, 1, d), v(0, 1, d), grey, "ceiling");
+  test::add_quad(scene, v(0, 0, 0), v(0, 1, 0), v(0, 1, d), v(0, 0, d), grey, "x0");
+  test::add_quad(scene, v(1, 0, 0), v(1, 0, d), v(1, 1, d), v(1, 1, 0), grey, "x1");
+  test::add_quad(scene, v(0, 0, 0), v(1, 0, 0), v(1, 1, 0), v(0, 1, 0), grey, "z0");
+  test::add_quad(scene, v(0, 0, d), v(0, 1, d), v(1, 1, d), v(1, 0, d), grey, "z1");
+  const PatchMesh mesh = PatchMesh::build(scene, 0.3f);
+  const PatchItems items(mesh);
+  Hemicube hemicube(mesh, items, 128);
+  const FormFactorMatrix analytic = FormFactorMatrix::build_analytic(mesh, hemicube);
+  const FormFactorMatrix by_hemicube = FormFactorMatrix::build(mesh, hemicube);
+  float smallest = 1e9f, largest = 0.0f;
+  for (const Patch& p : mesh.patches) {
+    smallest = std::min(smallest, p.area);
+    largest = std::max(largest, p.area);
+  }
+  const double analytic_gap = reciprocity_gap(mesh, analytic, scene.meshes.size());
+  const double hemicube_gap = reciprocity_gap(mesh, by_hemicube, scene.meshes.size());
+  printf("%zu patches of %.4f .. %.4f m^2: reciprocity off by %.4f analytic, %.4f hemicube; rows sum to 1 "
+         "within %.4f\n", mesh.size(), smallest, largest, analytic_gap, hemicube_gap, worst_row_sum_error(analytic));
+  ASSERT_GT(largest, 1.2f * smallest);
+  EXPECT_LT(analytic_gap, 0.001);
+  EXPECT_LT(3.0 * analytic_gap, hemicube_gap);
+  EXPECT_LT(worst_row_sum_error(analytic), 0.01);
+}
+
+// A cube floating in a closed box: every hemicube pixel sees a front face, so what patch i sees
+// of the others adds up to 1 in the analytic rows too, the hemicube's visibility taking off what
+// the cube hides of each patch.
+TEST(AnalyticMatrix, RowsSumToOneAroundABlock) {
+  Scene scene;
+  const int grey = test::add_material(scene, 0.5f);
+  const int materials[6] = {grey, grey, grey, grey, grey, grey};
+  test::add_closed_box(scene, materials);
+  using v = glm::vec3;
+  const float x0 = 0.3f, x1 = 0.6f, y0 = 0.3f, y1 = 0.6f, z0 = 0.35f, z1 = 0.65f;
+  test::add_quad(scene, v(x0, y1, z0), v(x0, y1, z1), v(x1, y1, z1), v(x1, y1, z0), grey, "top");
+  test::add_quad(scene, v(x0, y0, z0), v(x1, y0, z0), v(x1, y0, z1), v(x0, y0, z1), grey, "bottom");
+  test::add_quad(scene, v(x0, y0, z0), v(x0, y0, z1), v(x0, y1, z1), v(x0, y1, z0), grey, "-x");
+  test::add_quad(scene, v(x1, y0, z0), v(x1, y1, z0), v(x1, y1, z1), v(x1, y0, z1), grey, "+x");
+  test::add_quad(scene, v(x0, y0, z0), v(x0, y1, z0), v(x1, y1, z0), v(x1, y0, z0), grey, "-z");
+  test::add_quad(scene, v(x0, y0, z1), v(x1, y0, z1), v(x1, y1, z1), v(x0, y1, z1), grey, "+z");
+  const PatchMesh mesh = PatchMesh::build(scene, 0.25f);
+  const PatchItems items(mesh);
+  Hemicube hemicube(mesh, items, 128);
+  const double worst = worst_row_sum_error(FormFactorMatrix::build_analytic(mesh, hemicube));
+  printf("%zu patches: the analytic rows sum to 1 within %.4f\n", mesh.size(), worst);
+  EXPECT_LT(worst, 0.02);
 }
 
 }  // namespace

@@ -144,6 +144,12 @@ int main(int argc, char** argv) {
       trf("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
           luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
       ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes));
+  solvers->add_option("--form-factors", solvers_settings.form_factors,
+                      tr("analytic (Lambert's contour integral, the hemicube for visibility: rows and shot columns "
+                         "reciprocal) or hemicube (both from the hemicube)"))
+      ->transform(CLI::CheckedTransformer(std::map<std::string, luz::FormFactorMethod>{
+          {"analytic", luz::FormFactorMethod::analytic}, {"hemicube", luz::FormFactorMethod::hemicube}}))
+      ->capture_default_str();
   solvers->add_option("--iterations", solvers_settings.iterations,
                       tr("Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows"))
       ->check(CLI::Range(1, 10000))->capture_default_str();

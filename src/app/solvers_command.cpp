@@ -82,6 +82,7 @@ int run_solvers(const SolversSettings& settings) {
     options.target_patches = settings.patches;
     options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
     options.hemicube_res = settings.hemicube_res;
+    options.form_factors = settings.form_factors;
     PatchMesh mesh = PatchMesh::build(scene, options);
     if (mesh.size() > kMaxSolverPatches)
       throw Error(ErrorKind::bad_value,
@@ -98,9 +99,10 @@ int run_solvers(const SolversSettings& settings) {
     if (!settings.png.empty()) io::write_image(plot_curves(race, mesh.size()), settings.png, 0.0f);
 
     if (!settings.quiet) {
-      fmt::print("{}\n", trf("solvers: {} patches, {} form-factor entries, the matrix in {:.2f} s ({} "
+      fmt::print("{}\n", trf("solvers: {} patches, {} form-factor entries ({}), the matrix in {:.2f} s ({} "
                              "hemicubes of {})", mesh.size(), race.system().F.nonzeros(),
-                             race.matrix_seconds(), mesh.size(), settings.hemicube_res));
+                             to_string(settings.form_factors), race.matrix_seconds(), mesh.size(),
+                             settings.hemicube_res));
       for (const Method m : kMethods) {
         const SolverSample& last = race.curve(m).back();
         fmt::print("{}\n", trf("  {:<13} {:>6} iterations {:>8} rows {:8.3f} s   residual {:.2e}   error {:.2e}",

@@ -15,6 +15,10 @@ struct SolversSettings {
   float patch_size = 0.0f;         // 0: from `patches`
   int patches = 400;               // about this many patches (when no --patch-size)
   int hemicube_res = 64;
+  // analytic: F_ij from Lambert's contour integral, the hemicube giving only the visibility, so
+  // that the shooting's columns and the matrix's rows are reciprocal; hemicube: both from the
+  // hemicube's point-to-area values, which are not.
+  FormFactorMethod form_factors = FormFactorMethod::analytic;
   int iterations = 20;             // Jacobi and Gauss-Seidel sweeps; the others run as many rows
   bool quiet = false;
 };

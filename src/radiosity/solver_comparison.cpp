@@ -35,9 +35,10 @@ SolverComparison::SolverComparison(const Scene& scene, PatchMesh& mesh,
     : mesh_(mesh), max_rows_(max_rows) {
   // The shooting of slide 39, its hemicube unrotated so that its rows are the matrix's rows:
   // what differs is only how it uses them (column i by reciprocity). It runs until told to stop.
+  // Ray-cast factors are random per shot, so rays mean the analytic method here.
   RadiosityOptions shooting_options = options;
   shooting_options.random_rotation = false;
-  shooting_options.form_factors = FormFactorMethod::hemicube;  // the matrix's own rows
+  if (shooting_options.form_factors == FormFactorMethod::rays) shooting_options.form_factors = FormFactorMethod::analytic;
   shooting_options.meshing = Meshing::uniform;                 // the matrix's own elements
   shooting_options.max_shots = 0;
   shooting_options.converge = 0.0f;
@@ -46,7 +47,9 @@ SolverComparison::SolverComparison(const Scene& scene, PatchMesh& mesh,
   // Point lights first: what they leave on the patches becomes part of everyone's E.
   while (shooting_->lights_left() > 0) shooting_->step();
 
-  system_ = RadiositySystem::of(mesh, FormFactorMatrix::build(mesh, shooting_->hemicube()));
+  system_ = RadiositySystem::of(mesh, shooting_options.form_factors == FormFactorMethod::analytic
+                                          ? FormFactorMatrix::build_analytic(mesh, shooting_->hemicube())
+                                          : FormFactorMatrix::build(mesh, shooting_->hemicube()));
   system_.E = to_double(shooting_->displayed());  // pi Le + rho (direct light of point lights)
   converged_ = converged_solution(system_);
   converged_norm_ = std::max(power_norm(system_, converged_), 1e-300);

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "radiosity/element_form_factor.h"
+#include "radiosity/polygon_form_factor.h"
+
 namespace luz {
 
 namespace {
@@ -27,6 +30,28 @@ FormFactorMatrix FormFactorMatrix::build(const PatchMesh& mesh, Hemicube& hemicu
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<FormFactor>> rows(mesh.size());
   for (size_t i = 0; i < mesh.size(); ++i) rows[i] = hemicube.row(i);  // a hemicube per patch
+  FormFactorMatrix F = from_rows(std::move(rows));
+  F.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return F;
+}
+
+FormFactorMatrix FormFactorMatrix::build_analytic(const PatchMesh& mesh, Hemicube& hemicube) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::vector<FormFactor>> rows(mesh.size());
+  for (size_t i = 0; i < mesh.size(); ++i) {
+    const Patch& receiver = mesh.patches[i];
+    const glm::vec3 eye = receiver.centre + Hemicube::eye_height(receiver.clearance) * receiver.normal;
+    for (const FormFactor& seen : hemicube.row(i)) {
+      const ShootingPatch& sender = mesh.shooters[mesh.shooter_of[seen.patch]];
+      const double unoccluded = point_to_polygon_form_factor(eye, receiver.normal, sender.corners);
+      if (!(unoccluded > 0.0)) {  // as the shooting does: seen only past its edge, in a pixel
+        rows[i].push_back(seen);
+        continue;
+      }
+      const double visible = double(seen.value) / unoccluded;
+      rows[i].push_back({seen.patch, float(visible * element_to_patch_form_factor(mesh, receiver, sender))});
+    }
+  }
   FormFactorMatrix F = from_rows(std::move(rows));
   F.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return F;

@@ -37,6 +37,12 @@ struct FormFactorMatrix {
   size_t nonzeros() const;
   // One hemicube per patch, unrotated (needs the hemicube's GL context).
   static FormFactorMatrix build(const PatchMesh& mesh, Hemicube& hemicube);
+  // The analytic method's rows (shooting.h, FormFactorMethod::analytic) seen from the receiver:
+  // patch i's hemicube says which part of patch j it sees, and F_ij is that part of Lambert's
+  // contour integral from patch i to patch j's triangle, the same integral the shooting uses
+  // from j's side. Reciprocity A_i F_ij = A_j F_ji then holds but for the visibility, so that
+  // shooting and gathering solve the same system. The mesh must be one element per patch.
+  static FormFactorMatrix build_analytic(const PatchMesh& mesh, Hemicube& hemicube);
   // From rows given by hand (tests); fills the columns.
   static FormFactorMatrix from_rows(std::vector<std::vector<FormFactor>> rows);
 };
