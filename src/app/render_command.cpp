@@ -122,7 +122,11 @@ int run_render(const RenderSettings& settings) {
     }
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
+    using Clock = std::chrono::steady_clock;
+    const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    const auto loading = Clock::now();
     io::LoadedScene loaded = io::load_gltf(settings.scene);
+    const double load_seconds = seconds_since(loading);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
 
@@ -130,9 +134,11 @@ int run_render(const RenderSettings& settings) {
     int width = 0, height = 0;
     output_size(settings, camera, width, height);
 
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     Rendered rendered = model->render(scene, camera, width, height, settings);
+    const double model_seconds = seconds_since(start);
     const float exposure = settings.exposure.value_or(scene.exposure);
+    const auto writing = Clock::now();
     try {
       io::write_image(rendered.image, settings.out, exposure);
     } catch (const Error&) {
@@ -142,11 +148,14 @@ int run_render(const RenderSettings& settings) {
       throw;
     }
     if (rendered.ray_tree) write_text(ray_tree_path(settings.out), *rendered.ray_tree);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double write_seconds = seconds_since(writing);
+    const double seconds = seconds_since(start);
     if (!settings.quiet) {
       fmt::print("{}\n", trf("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
                              settings.model, width, height, camera.name, exposure, seconds));
       fmt::print("{}", rendered.summary);
+      fmt::print("{}\n", trf("phases: scene loaded in {:.3f} s, the model's picture (its set-up included) {:.3f} s, "
+                             "written in {:.3f} s", load_seconds, model_seconds, write_seconds));
       if (rendered.ray_tree) fmt::print("{}\n", trf("ray tree: {}", ray_tree_path(settings.out).string()));
     }
     return 0;

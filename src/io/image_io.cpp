@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cerrno>
 #include <cstring>
 #include <cstdint>
 #include <cstdio>
@@ -13,16 +14,17 @@
 #include <utility>
 #include <random>
 
+#include <dlfcn.h>
 #include <signal.h>
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "io/image_encoders.h"
+#include "io/image_reader_plugin.h"
 
 namespace luz::io {
 namespace fs = std::filesystem;
@@ -47,7 +49,7 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure) {
   return bytes;
 }
 
-// A name beside the target, with the same extension so OpenImageIO picks the same format.
+// A name beside the target, with the same extension.
 fs::path temporary_beside(const fs::path& path) {
   std::random_device random;
   const std::string stem = "." + path.stem().string() + fmt::format(".tmp{:08x}", random());
@@ -123,11 +125,6 @@ std::string one_line(std::string text) {
   return text;
 }
 
-// OpenImageIO keeps 8/16-bit files in their encoded values; everything Luz computes is linear.
-bool is_integer_format(const OIIO::ImageSpec& spec) {
-  return spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
-}
-
 // No PNG or JPEG holds more than this many bytes of pixels per byte of file: deflate's best
 // ratio is 1032:1 (RFC 1951's longest match, 258 bytes, in at most 2 bits), and a JPEG spends at
 // least a bit per 8 x 8 block of each component (ITU T.81), 4096:1 with 2x2 chroma subsampling
@@ -196,49 +193,88 @@ std::string header_problem(std::span<const unsigned char> head, uintmax_t file_b
   return problem.empty() ? problem : trf("header: {}", problem);
 }
 
-bool is_png_or_jpeg(const OIIO::ImageInput& input) {
-  const std::string format = input.format_name();
-  return format == "png" || format == "jpeg";
+// ---- The reader plugin (image_reader_plugin.h) ----
+// Beside the program (an installed or copied build), else where this build put it.
+std::filesystem::path reader_plugin_path() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path beside = exe.parent_path() / LUZ_IMAGE_READER_NAME;
+    if (fs::exists(beside, ec)) return beside;
+  }
+  return LUZ_IMAGE_READER_PATH;
 }
 
-// Reads an opened input into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
+// Opened once, on the first image read, and kept for the life of the process.
+const LuzImageReader& image_reader() {
+  static std::string failure;
+  static const LuzImageReader* reader = [] () -> const LuzImageReader* {
+    const fs::path path = reader_plugin_path();
+    void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    const auto entry = module ? reinterpret_cast<LuzImageReaderEntry>(dlsym(module, "luz_image_reader")) : nullptr;
+    if (!entry) {
+      const char* why = dlerror();
+      failure = trf("cannot load the image reader {}: {}", path.string(), why ? why : "no luz_image_reader");
+      return nullptr;
+    }
+    return entry();
+  }();
+  if (!reader) throw Error(ErrorKind::file_missing, failure);
+  return *reader;
+}
+
+// An image opened through the plugin, closed when it goes.
+class OpenedImage {
+ public:
+  OpenedImage(const LuzImageReader& reader, void* handle) : reader_(reader), handle_(handle) {}
+  ~OpenedImage() {
+    if (handle_) reader_.close(handle_);
+  }
+  OpenedImage(const OpenedImage&) = delete;
+  OpenedImage& operator=(const OpenedImage&) = delete;
+  LuzImageHeader header() const {
+    LuzImageHeader h;
+    reader_.header(handle_, &h);
+    return h;
+  }
+  bool read(void* pixels, std::string& error) const {
+    char message[1024] = "";
+    const QuietStderr quiet;
+    const bool read = reader_.read(handle_, pixels, message, sizeof message) != 0;
+    if (!read) error = one_line(message);
+    return read;
+  }
+
+ private:
+  const LuzImageReader& reader_;
+  void* handle_;
+};
+
+// Reads an opened image into linear RGB: grey is replicated, alpha dropped, 8/16-bit decoded.
 // The size comes from the header, which costs nothing to read; it is checked against the caps
 // before a byte of pixels is allocated (a 100-byte PNG can claim 65535 x 65535), and for a PNG
 // or JPEG of `encoded_bytes` against what so many bytes can hold.
-std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, std::string& error) {
-  const OIIO::ImageSpec& spec = input.spec();
-  if (spec.nchannels <= 0) {
+std::optional<Image> read_rgb(const OpenedImage& input, uintmax_t encoded_bytes, std::string& error) {
+  const LuzImageHeader spec = input.header();
+  if (spec.channels <= 0) {
     error = tr("image has no pixels");
     return std::nullopt;
   }
-  error = size_problem(spec.width, spec.height, int64_t(spec.pixel_bytes(true)),
-                       is_png_or_jpeg(input) ? encoded_bytes : 0);
+  error = size_problem(spec.width, spec.height, int64_t(spec.channels) * spec.bytes_per_channel,
+                       spec.png_or_jpeg ? encoded_bytes : 0);
   if (!error.empty()) return std::nullopt;
-  if (spec.nchannels > 16) {
-    error = trf("{} channels is beyond the limit of 16", spec.nchannels);
+  if (spec.channels > 16) {
+    error = trf("{} channels is beyond the limit of 16", spec.channels);
     return std::nullopt;
   }
-  // 8 and 16-bit files (PNG, JPEG) are read in their own format straight into our buffer and
-  // decoded below: read_image would first allocate a scratch buffer of its own, 64 MB whatever the
-  // image's size. Other formats (EXR, HDR) are read as floats.
-  const bool native = is_integer_format(spec);
-  const OIIO::TypeDesc format = native ? spec.format : OIIO::TypeDesc::FLOAT;
-  std::vector<unsigned char> data(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels) * format.size());
-  bool read = false;
-  {
-    const QuietStderr quiet;
-    read = native ? input.read_native_scanlines(0, 0, spec.y, spec.y + spec.height, spec.z, 0, spec.nchannels, data.data())
-                  : input.read_image(0, 0, 0, spec.nchannels, format, data.data());
-  }
-  if (!read) {
-    error = one_line(input.geterror());
-    return std::nullopt;
-  }
+  const size_t bytes = size_t(spec.bytes_per_channel);
+  std::vector<unsigned char> data(size_t(spec.width) * size_t(spec.height) * size_t(spec.channels) * bytes);
+  if (!input.read(data.data(), error)) return std::nullopt;
   // Channel k of pixel i as a linear float: the integer formats hold sRGB-encoded values.
   auto value = [&](size_t i, int k) {
-    const size_t at = i * size_t(spec.nchannels) + size_t(k);
-    if (format == OIIO::TypeDesc::UINT8) return srgb_decode(float(data[at]) / 255.0f);
-    if (format == OIIO::TypeDesc::UINT16) {
+    const size_t at = i * size_t(spec.channels) + size_t(k);
+    if (bytes == 1) return srgb_decode(float(data[at]) / 255.0f);
+    if (bytes == 2) {
       uint16_t v;
       std::memcpy(&v, &data[2 * at], sizeof v);
       return srgb_decode(float(v) / 65535.0f);
@@ -249,7 +285,7 @@ std::optional<Image> read_rgb(OIIO::ImageInput& input, uintmax_t encoded_bytes, 
   };
   Image image(spec.width, spec.height);
   for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = spec.nchannels >= 3 ? Rgb(value(i, 0), value(i, 1), value(i, 2)) : Rgb(value(i, 0));
+    image.pixels[i] = spec.channels >= 3 ? Rgb(value(i, 0), value(i, 1), value(i, 2)) : Rgb(value(i, 0));
   return image;
 }
 
@@ -282,20 +318,19 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
     return Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), why));
   };
 
-  auto output = OIIO::ImageOutput::create(temporary.string());
-  if (!output) throw fail(OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, 3,
-                       exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (exr) spec.attribute("compression", "zip");
-  if (!output->open(temporary.string(), spec)) throw fail(output->geterror());
-  bool written = false;
-  if (exr) {
-    written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-  } else {
-    const std::vector<uint8_t> bytes = encode_png_pixels(image, exposure);
-    written = output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+  std::string encoded;
+  try {
+    encoded = exr ? encode_exr(image) : encode_png(encode_png_pixels(image, exposure), image.width, image.height);
+  } catch (const std::exception& e) {  // out of memory
+    throw fail(e.what());
   }
-  if (!written || !output->close()) throw fail(output->geterror());
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw fail(std::strerror(errno));
+    file.write(encoded.data(), std::streamsize(encoded.size()));
+    file.close();
+    if (!file) throw fail(std::strerror(errno));
+  }
   std::error_code error;
   fs::rename(temporary, path, error);
   if (error) throw fail(error.message());
@@ -314,16 +349,17 @@ Image read_image(const fs::path& path) {
     if (const std::string problem = header_problem(head, file_bytes); !problem.empty())
       throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), problem));
   }
-  std::unique_ptr<OIIO::ImageInput> input;
+  const LuzImageReader& reader = image_reader();
+  char message[1024] = "";
+  void* handle = nullptr;
   {
     const QuietStderr quiet;
-    input = OIIO::ImageInput::open(path.string());
+    handle = reader.open_file(path.c_str(), message, sizeof message);
   }
-  if (!input)
-    throw Error(ErrorKind::bad_value,
-                trf("{}: not an image: {}", path.string(), one_line(OIIO::geterror())));
+  if (!handle) throw Error(ErrorKind::bad_value, trf("{}: not an image: {}", path.string(), one_line(message)));
+  const OpenedImage input(reader, handle);
   std::string error;
-  std::optional<Image> image = read_rgb(*input, file_bytes, error);
+  std::optional<Image> image = read_rgb(input, file_bytes, error);
   if (!image) throw Error(ErrorKind::bad_value, fmt::format("{}: {}", path.string(), error));
   return std::move(*image);
 }
@@ -346,21 +382,20 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
   }
   error = header_problem(bytes, bytes.size());
   if (!error.empty()) return std::nullopt;
-  OIIO::Filesystem::IOMemReader proxy(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(format, /*do_open=*/false);
-  bool opened = false;
-  if (input && input->set_ioproxy(&proxy)) {
+  const LuzImageReader& reader = image_reader();
+  char message[1024] = "";
+  void* handle = nullptr;
+  {
     const QuietStderr quiet;
-    OIIO::ImageSpec spec;
-    opened = input->open(std::string("texture.") + format, spec);
+    handle = reader.open_memory(bytes.data(), bytes.size(), format, message, sizeof message);
   }
-  if (!opened) {
+  if (!handle) {
     error = trf("not a readable {} image{}", format == std::string("png") ? "PNG" : "JPEG",
-                input && input->has_error() ? ": " + one_line(input->geterror()) : std::string());
-    (void)OIIO::geterror();  // clear OpenImageIO's pending message
+                message[0] ? ": " + one_line(message) : std::string());
     return std::nullopt;
   }
-  std::optional<Image> image = read_rgb(*input, bytes.size(), error);
+  const OpenedImage input(reader, handle);
+  std::optional<Image> image = read_rgb(input, bytes.size(), error);
   if (!image) return std::nullopt;
   Texture texture;
   texture.name = name;

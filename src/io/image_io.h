@@ -1,5 +1,6 @@
 #pragma once
-// Image files through OpenImageIO.
+// Image files: PNG and OpenEXR written by Luz's own encoders (image_encoders.h), every image read
+// through OpenImageIO in a plugin opened on the first read (image_reader_plugin.h).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -25,7 +26,8 @@ inline constexpr int64_t kMaxImagePixels = int64_t(4096) * 4096;
 void write_image(const Image& image, const std::filesystem::path& path, float exposure);
 
 // Reads any image OpenImageIO knows as linear RGB: 8-bit files are sRGB-decoded, float files
-// taken as they are. Throws luz::Error (file_missing / bad_value).
+// taken as they are. Throws luz::Error (file_missing / bad_value; file_missing too when the
+// reader plugin cannot be loaded).
 Image read_image(const std::filesystem::path& path);
 
 // Decodes an encoded image (PNG, JPEG, ... bytes as glTF embeds them) into a texture of linear

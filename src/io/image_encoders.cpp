@@ -1,0 +1,214 @@
+// PNG and OpenEXR encoders (image_encoders.h). Sections: [bytes] [png] [exr]
+#include "io/image_encoders.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include <zlib.h>
+
+namespace luz::io {
+namespace {
+
+// ---- [bytes] ------------------------------------------------------------------------------------
+void put_big_endian(std::string& out, uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(char((v >> shift) & 0xffu));
+}
+
+template <typename T>
+void put_little_endian(std::string& out, T v) {
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, &v, sizeof(T));  // x86-64 and every platform Luz builds on: little-endian
+  out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
+}
+
+// Null when zlib fails (it can only run out of memory).
+std::optional<std::string> deflated(const unsigned char* data, size_t size, int level) {
+  uLongf bound = compressBound(uLong(size));
+  std::string out(bound, '\0');
+  if (compress2(reinterpret_cast<Bytef*>(out.data()), &bound, data, uLong(size), level) != Z_OK) return std::nullopt;
+  out.resize(bound);
+  return out;
+}
+
+// ---- [png] --------------------------------------------------------------------------------------
+// A chunk: length, type, data, and the CRC-32 of type and data.
+void put_chunk(std::string& out, const char type[4], const std::string& data) {
+  put_big_endian(out, uint32_t(data.size()));
+  const size_t start = out.size();
+  out.append(type, 4);
+  out += data;
+  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(out.data() + start), uInt(out.size() - start));
+  put_big_endian(out, uint32_t(crc));
+}
+
+int paeth(int a, int b, int c) {
+  const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+  return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+// Row `row` (bytes per pixel 3) filtered by `type` against the row above (`above`, zeros for
+// the first row), the filter type byte first.
+void filter_row(const uint8_t* row, const uint8_t* above, size_t length, int type, uint8_t* out) {
+  out[0] = uint8_t(type);
+  for (size_t i = 0; i < length; ++i) {
+    const int a = i >= 3 ? row[i - 3] : 0, b = above[i], c = i >= 3 ? above[i - 3] : 0;
+    const int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2 : paeth(a, b, c);
+    out[1 + i] = uint8_t(row[i] - predicted);
+  }
+}
+
+}  // namespace
+
+std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
+  const size_t length = size_t(width) * 3;
+  std::vector<uint8_t> filtered((length + 1) * size_t(height));
+  const std::vector<uint8_t> zeros(length, 0);
+  std::vector<uint8_t> candidate(length + 1);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = rgb.data() + size_t(y) * length;
+    const uint8_t* above = y > 0 ? row - length : zeros.data();
+    uint8_t* out = filtered.data() + size_t(y) * (length + 1);
+    uint64_t best = UINT64_MAX;
+    for (int type = 0; type < 5; ++type) {
+      filter_row(row, above, length, type, candidate.data());
+      uint64_t sum = 0;  // the bytes as signed: small differences either way cost little
+      for (size_t i = 1; i <= length; ++i) sum += uint64_t(std::abs(int(int8_t(candidate[i]))));
+      if (sum < best) {
+        best = sum;
+        std::copy(candidate.begin(), candidate.end(), out);
+      }
+    }
+  }
+  std::string header;
+  put_big_endian(header, uint32_t(width));
+  put_big_endian(header, uint32_t(height));
+  header += std::string{char(8), char(2), char(0), char(0), char(0)};  // 8 bits, RGB, deflate, adaptive, no interlace
+
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  put_chunk(png, "IHDR", header);
+  put_chunk(png, "sRGB", std::string(1, char(0)));  // perceptual rendering intent
+  const std::optional<std::string> pixels = deflated(filtered.data(), filtered.size(), Z_DEFAULT_COMPRESSION);
+  if (!pixels) throw std::runtime_error("zlib could not compress the picture");
+  put_chunk(png, "IDAT", *pixels);
+  put_chunk(png, "IEND", {});
+  return png;
+}
+
+// ---- [exr] --------------------------------------------------------------------------------------
+namespace {
+
+constexpr int kZipScanlines = 16;  // ZIP compresses 16 scanlines at a time
+constexpr int kZipLevel = 4;       // OpenEXR's own default deflate level for ZIP
+
+void put_attribute(std::string& out, const char* name, const char* type, const std::string& value) {
+  out += name;
+  out.push_back('\0');
+  out += type;
+  out.push_back('\0');
+  put_little_endian(out, int32_t(value.size()));
+  out += value;
+}
+
+std::string box(int x_min, int y_min, int x_max, int y_max) {
+  std::string v;
+  for (const int32_t c : {x_min, y_min, x_max, y_max}) put_little_endian(v, c);
+  return v;
+}
+
+// ZIP's preparation of a block (the Technical Introduction's "ZIP" and OpenEXR's own encoder):
+// the bytes split into those at even and at odd offsets, one half after the other, then each
+// byte replaced by its difference to the one before (+128, modulo 256), which deflate packs
+// better for smooth pictures.
+std::vector<unsigned char> interleaved_differences(const std::string& raw) {
+  const size_t n = raw.size(), half = (n + 1) / 2;
+  std::vector<unsigned char> out(n);
+  for (size_t i = 0; i < n; ++i) out[(i % 2 == 0 ? 0 : half) + i / 2] = static_cast<unsigned char>(raw[i]);
+  int previous = n > 0 ? out[0] : 0;
+  for (size_t i = 1; i < n; ++i) {
+    const int value = out[i];
+    out[i] = static_cast<unsigned char>((value - previous + 128 + 256) & 0xff);
+    previous = value;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string encode_exr(const Image& image) {
+  const int width = image.width, height = image.height;
+  std::string header;
+  put_little_endian(header, int32_t(20000630));  // the magic number
+  put_little_endian(header, int32_t(2));         // version 2, single-part scanline file
+  std::string channels;                          // in alphabetical order, as the format requires
+  for (const char* name : {"B", "G", "R"}) {
+    channels += name;
+    channels.push_back('\0');
+    put_little_endian(channels, int32_t(2));  // FLOAT
+    channels += std::string(4, '\0');         // pLinear and three reserved bytes
+    put_little_endian(channels, int32_t(1));  // x sampling
+    put_little_endian(channels, int32_t(1));  // y sampling
+  }
+  channels.push_back('\0');
+  put_attribute(header, "channels", "chlist", channels);
+  put_attribute(header, "compression", "compression", std::string(1, char(3)));  // ZIP
+  put_attribute(header, "dataWindow", "box2i", box(0, 0, width - 1, height - 1));
+  put_attribute(header, "displayWindow", "box2i", box(0, 0, width - 1, height - 1));
+  put_attribute(header, "lineOrder", "lineOrder", std::string(1, char(0)));  // increasing y
+  std::string one;
+  put_little_endian(one, 1.0f);
+  put_attribute(header, "pixelAspectRatio", "float", one);
+  std::string centre;
+  put_little_endian(centre, 0.0f);
+  put_little_endian(centre, 0.0f);
+  put_attribute(header, "screenWindowCenter", "v2f", centre);
+  put_attribute(header, "screenWindowWidth", "float", one);
+  header.push_back('\0');  // the end of the header
+
+  // Each block: its first scanline, its size, then its data: per scanline, channel by channel
+  // (B, G, R), the row's values; deflated, or kept raw when deflate does not make it smaller.
+  const int blocks = (height + kZipScanlines - 1) / kZipScanlines;
+  std::vector<std::string> chunks(static_cast<size_t>(blocks));
+  const auto encode_block = [&](int b, std::vector<float>& values) {
+    const int first = b * kZipScanlines, last = std::min(height, first + kZipScanlines);
+    values.clear();
+    for (int y = first; y < last; ++y)
+      for (const int channel : {2, 1, 0})
+        for (int x = 0; x < width; ++x) values.push_back(image.at(x, y)[channel]);
+    // Little-endian floats, as on every platform Luz builds on.
+    const std::string raw(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+    const std::vector<unsigned char> prepared = interleaved_differences(raw);
+    const std::optional<std::string> packed = deflated(prepared.data(), prepared.size(), kZipLevel);
+    const std::string& data = packed && packed->size() < raw.size() ? *packed : raw;
+    std::string& chunk = chunks[size_t(b)];
+    put_little_endian(chunk, int32_t(first));
+    put_little_endian(chunk, int32_t(data.size()));
+    chunk += data;
+  };
+  // Deflate is most of the time: the blocks are independent, one thread per core takes them in turn.
+  std::atomic<int> next{0};
+  const auto worker = [&] {
+    std::vector<float> values;
+    for (int b; (b = next++) < blocks;) encode_block(b, values);
+  };
+  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  for (std::thread& t : threads) t = std::thread(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+
+  // The offset table: where each block starts, from the start of the file.
+  std::string exr = header;
+  uint64_t offset = header.size() + sizeof(uint64_t) * size_t(blocks);
+  for (const std::string& chunk : chunks) {
+    put_little_endian(exr, offset);
+    offset += chunk.size();
+  }
+  for (const std::string& chunk : chunks) exr += chunk;
+  return exr;
+}
+
+}  // namespace luz::io
