@@ -172,8 +172,9 @@ TEST(Robustness, HugeBaseColourIsClampedAndEveryModelStaysFinite) {
 }
 
 TEST(Robustness, SigtermDuringTheWriteLeavesNoTemporary) {
-  // A child writes a large EXR (seconds of zip compression); the parent waits for the hidden
-  // temporary to appear beside the target, then sends SIGTERM.
+  // A child writes a large EXR (a fraction of a second of zip compression, with the temporary
+  // open meanwhile); the parent waits for the hidden temporary to appear beside the target, then
+  // sends SIGTERM.
   ScratchDir dir;
   const fs::path target = dir / "big.exr";
   const pid_t child = fork();

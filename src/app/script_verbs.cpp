@@ -203,7 +203,11 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
                       {"show_help", s.show_help}, {"free_camera", s.free_camera},
                       {"language", i18n::language_name(i18n::language())}, {"settings", settings_json(s)},
-                      {"frame_ms", s.frame_ms}};
+                      {"frame_ms", s.frame_ms},
+                      {"frame_phases_ms", {{"models", s.frame_phases.models_ms},
+                                           {"exposure", s.frame_phases.exposure_ms},
+                                           {"panel", s.frame_phases.panel_ms},
+                                           {"present", s.frame_phases.present_ms}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
 }

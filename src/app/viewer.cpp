@@ -619,6 +619,8 @@ void Viewer::draw_picture(const Layout& l) {
   drawn_cameras_.assign(panes_.size(), camera);
   const bool reference_in_a_pane =
       std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
+  double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
+  auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
     const Viewport& v = l.panes[i];
     if (v.empty()) continue;
@@ -632,6 +634,7 @@ void Viewer::draw_picture(const Layout& l) {
     // The heat map instead, when it is on, in the active pane: the panes are of one size, so
     // the reference's one film serves whichever pane is compared.
     if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+    models_ms += finish_phase(phase_start);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y);
@@ -647,7 +650,10 @@ void Viewer::draw_picture(const Layout& l) {
     glBindVertexArray(0);
     glBindTexture(GL_TEXTURE_2D, 0);
     glUseProgram(0);
+    exposure_ms += finish_phase(phase_start);
   }
+  smooth(state_.frame_phases.models_ms, models_ms);
+  smooth(state_.frame_phases.exposure_ms, exposure_ms);
 }
 
 // The windows over the picture: the status line, the shown model's windows in the picture's
@@ -750,6 +756,7 @@ void Viewer::frame() {
     solvers_->advance(state_.solvers);
   }
 
+  const auto panel_building_start = FrameClock::now();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   if (scripted_click_frames_ > 0) {  // a script's click on the panel
@@ -763,18 +770,37 @@ void Viewer::frame() {
   if (state_.show_panel) draw_panel(state_, shown(), l.panel, l.window.y - l.status);
   draw_windows(l);
   ImGui::Render();
+  const double panel_building =
+      1000.0 * std::chrono::duration<double>(FrameClock::now() - panel_building_start).count();
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ViewerState::FramePhases& phases = state_.frame_phases;
   draw_picture(l);
+  auto phase_start = FrameClock::now();
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   take_screenshots(l);
+  smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
   window_.swap();
+  smooth(phases.present_ms, finish_phase(phase_start));
 }
+
+// Each phase of the frame ends with glFinish, so that its time is its own and not the next one's
+// wait: the ms since `start`, which becomes now.
+double Viewer::finish_phase(FrameClock::time_point& start) {
+  glFinish();
+  const auto end = FrameClock::now();
+  const double ms = 1000.0 * std::chrono::duration<double>(end - start).count();
+  start = end;
+  return ms;
+}
+
+// Smoothed as frame_ms is, over about ten frames.
+void Viewer::smooth(double& ms, double sample) { ms = 0.9 * ms + 0.1 * sample; }
 
 // ---- [the loop] --------------------------------------------------------------------------------
 // Frames are drawn while something changes: after an event, while a model runs (a trace, the

@@ -123,6 +123,9 @@ private:
   bool flying() const;
 
   void frame();
+  using FrameClock = std::chrono::steady_clock;
+  static double finish_phase(FrameClock::time_point& start);
+  static void smooth(double& ms, double sample);
   void draw_picture(const Layout& l);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);

@@ -318,19 +318,18 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
     return Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), why));
   };
 
+  // The temporary is opened first: a folder that cannot be written to fails before the encoding.
+  std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+  if (!file) throw fail(std::strerror(errno));
   std::string encoded;
   try {
     encoded = exr ? encode_exr(image) : encode_png(encode_png_pixels(image, exposure), image.width, image.height);
   } catch (const std::exception& e) {  // out of memory
     throw fail(e.what());
   }
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw fail(std::strerror(errno));
-    file.write(encoded.data(), std::streamsize(encoded.size()));
-    file.close();
-    if (!file) throw fail(std::strerror(errno));
-  }
+  file.write(encoded.data(), std::streamsize(encoded.size()));
+  file.close();
+  if (!file) throw fail(std::strerror(errno));
   std::error_code error;
   fs::rename(temporary, path, error);
   if (error) throw fail(error.message());

@@ -120,6 +120,10 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
   GLint previous_fbo = 0, previous_viewport[4] = {};
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
+  const auto restore = [&] {
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+  };
   target_.bind_and_clear();
   items_.begin();
   if (passes_ == HemicubePasses::one) {
@@ -135,8 +139,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
   const auto t1 = Clock::now();
   if (gpu_sums_) {
     const std::vector<float>& sums = gpu_sums_->sum(target_.id_texture(), mesh_.size());
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    restore();
     const auto t2 = Clock::now();
     row_.clear();
     for (size_t j = 0; j < sums.size(); ++j)
@@ -145,8 +148,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
     return row_;
   }
   target_.read(ids_);
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
-  glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+  restore();
   const auto t2 = Clock::now();
 
   // F_ij = sum of the delta form factors of the pixels showing patch j.
