@@ -213,8 +213,8 @@ const LuzImageReader& image_reader() {
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     const auto entry = module ? reinterpret_cast<LuzImageReaderEntry>(dlsym(module, "luz_image_reader")) : nullptr;
     if (!entry) {
-      const char* why = dlerror();
-      failure = trf("cannot load the image reader {}: {}", path.string(), why ? why : "no luz_image_reader");
+      const char* why = dlerror();  // names the file
+      failure = trf("cannot load the image reader: {}", why ? why : path.string() + ": no luz_image_reader");
       return nullptr;
     }
     return entry();
