@@ -195,7 +195,8 @@ std::string encode_exr(const Image& image) {
     std::vector<float> values;
     for (int b; (b = next++) < blocks;) encode_block(b, values);
   };
-  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> threads(std::min(cores, unsigned(blocks)) - 1);
   for (std::thread& t : threads) t = std::thread(worker);
   worker();
   for (std::thread& t : threads) t.join();
