@@ -196,7 +196,7 @@ std::string encode_exr(const Image& image) {
     for (int b; (b = next++) < blocks;) encode_block(b, values);
   };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> threads(std::min(cores, unsigned(blocks)) - 1);
+  std::vector<std::thread> threads(std::min(cores, unsigned(std::max(blocks, 1))) - 1);
   for (std::thread& t : threads) t = std::thread(worker);
   worker();
   for (std::thread& t : threads) t.join();
