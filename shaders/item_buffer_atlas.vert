@@ -1,11 +1,11 @@
 #version 330 core
-// The faces of a hemicube (or of a light's cube) in one instanced draw: instance f draws the
+// The five faces of a hemicube in one instanced draw: instance f draws the
 // patches through face f's camera, then moves the picture into the face's rectangle of the
 // atlas. The four clip distances cut it at the sides of the face's own frustum, where the
 // face's viewport would have ended it, so no face spills into its neighbour.
 layout(location = 0) in vec3 a_position;
 
-const int kMaxFaces = 6;
+const int kMaxFaces = 5;  // PatchItems::kMaxAtlasFaces
 uniform mat4 u_face_view_projection[kMaxFaces];
 uniform mat4 u_face_to_atlas[kMaxFaces];
 

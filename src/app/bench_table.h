@@ -1,8 +1,9 @@
 #pragma once
-// The fixed-width tables of `luz bench whitted` and `luz bench local`, and their figures' summary. Each column is as wide as
-// its default or as its header in the current language, whichever is wider, so that a Spanish
-// header longer than the English one keeps the figures under it. Widths count the characters
-// shown, not the bytes: "proporción" is 10 wide in UTF-8's 11 bytes.
+// The fixed-width tables of `luz bench whitted` and `luz bench local`, and their figures'
+// summary. Each column is as wide as its default or as its header in the current language,
+// whichever is wider, so that a Spanish header longer than the English one keeps the figures
+// under it. Widths count the characters shown, not the bytes: "proporción" is 10 wide in UTF-8's
+// 11 bytes.
 #include <string>
 #include <string_view>
 #include <vector>

@@ -756,6 +756,9 @@ void Viewer::frame() {
     solvers_->advance(state_.solvers);
   }
 
+  // The first frames (shaders compiled, maps drawn) are not the steady frame being measured.
+  timing_phases_ = frame_number_ >= 16 && frame_number_ % 8 == 0;
+  ++frame_number_;
   const auto panel_building_start = FrameClock::now();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
@@ -789,9 +792,11 @@ void Viewer::frame() {
   smooth(phases.present_ms, finish_phase(phase_start));
 }
 
-// Each phase of the frame ends with glFinish, so that its time is its own and not the next one's
-// wait: the ms since `start`, which becomes now.
-double Viewer::finish_phase(FrameClock::time_point& start) {
+// On the frames that time their phases (one in eight: the waits would slow every frame), each
+// phase ends with glFinish, so that its time is its own and not the next one's wait: the ms
+// since `start`, which becomes now. On the others, nothing.
+double Viewer::finish_phase(FrameClock::time_point& start) const {
+  if (!timing_phases_) return 0.0;
   glFinish();
   const auto end = FrameClock::now();
   const double ms = 1000.0 * std::chrono::duration<double>(end - start).count();
@@ -799,8 +804,10 @@ double Viewer::finish_phase(FrameClock::time_point& start) {
   return ms;
 }
 
-// Smoothed as frame_ms is, over about ten frames.
-void Viewer::smooth(double& ms, double sample) { ms = 0.9 * ms + 0.1 * sample; }
+// Smoothed over about ten timed frames, from the first.
+void Viewer::smooth(double& ms, double sample) const {
+  if (timing_phases_) ms = ms == 0.0 ? sample : 0.9 * ms + 0.1 * sample;
+}
 
 // ---- [the loop] --------------------------------------------------------------------------------
 // Frames are drawn while something changes: after an event, while a model runs (a trace, the

@@ -84,9 +84,9 @@ struct ViewerState {
 
   // For the status line.
   double frame_ms = 0.0;
-  // Where a frame's time goes, in ms, smoothed as frame_ms: the models' pictures (into their
-  // float targets), their exposure to the window, the panel's ImGui pass (building and drawing),
-  // and presenting the frame (glfwSwapBuffers).
+  // Where a frame's time goes, in ms, timed on one frame in eight and smoothed: the models'
+  // pictures (into their float targets), their exposure to the window, the panel's ImGui pass
+  // (building and drawing), and presenting the frame (glfwSwapBuffers).
   struct FramePhases {
     double models_ms = 0.0, exposure_ms = 0.0, panel_ms = 0.0, present_ms = 0.0;
   } frame_phases;

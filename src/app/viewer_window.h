@@ -124,8 +124,8 @@ private:
 
   void frame();
   using FrameClock = std::chrono::steady_clock;
-  static double finish_phase(FrameClock::time_point& start);
-  static void smooth(double& ms, double sample);
+  double finish_phase(FrameClock::time_point& start) const;
+  void smooth(double& ms, double sample) const;
   void draw_picture(const Layout& l);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
@@ -168,6 +168,8 @@ private:
   std::vector<std::string> warnings_;  // the scene's loader and renderer warnings, shown in the window
   bool show_warnings_ = false;
   bool quit_ = false;
+  unsigned frame_number_ = 0;
+  bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
   Layout last_layout_;
 

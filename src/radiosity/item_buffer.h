@@ -36,7 +36,7 @@ public:
   void draw_atlas(std::span<const AtlasFace> faces, int atlas_width, int atlas_height) const;
   void end() const;
 
-  static constexpr int kMaxAtlasFaces = 6;
+  static constexpr int kMaxAtlasFaces = 5;  // the hemicube's
 
 private:
   mutable gl::Program program_{{"item_buffer.vert", "item_buffer.frag"}};
