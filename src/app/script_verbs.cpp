@@ -207,6 +207,7 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                       {"frame_phases_ms", {{"models", s.frame_phases.models_ms},
                                            {"exposure", s.frame_phases.exposure_ms},
                                            {"panel", s.frame_phases.panel_ms},
+                                           {"panel_building", s.frame_phases.panel_building_ms},
                                            {"present", s.frame_phases.present_ms}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);

@@ -88,7 +88,7 @@ struct ViewerState {
   // pictures (into their float targets), their exposure to the window, the panel's ImGui pass
   // (building and drawing), and presenting the frame (glfwSwapBuffers).
   struct FramePhases {
-    double models_ms = 0.0, exposure_ms = 0.0, panel_ms = 0.0, present_ms = 0.0;
+    double models_ms = 0.0, exposure_ms = 0.0, panel_ms = 0.0, panel_building_ms = 0.0, present_ms = 0.0;
   } frame_phases;
 };
 

@@ -8,8 +8,6 @@
 
 namespace luz::rt {
 
-namespace {
-
 // ---- [queues] -----------------------------------------------------------------------------------
 // One generation of rays, as a structure of arrays: the rays contiguous for Embree's stream, the
 // rest read once per ray by the shading loop. Cleared, never shrunk: after the first tiles a
@@ -45,6 +43,8 @@ struct RayQueue {
   }
 };
 
+namespace {
+
 // Everything one generation needs, kept per thread and reused from tile to tile.
 struct Scratch {
   RayQueue queue, reflected, transmitted;  // this generation; the next one's two kinds
@@ -63,6 +63,22 @@ Wavefront::Wavefront(const Scene& scene, Whitted& shading, const Intersector& in
     : scene_(scene), shading_(shading), intersector_(intersector), options_(options),
       counters_(counters), log_(log) {}
 
+// Counted by kind with one pass over the kinds each (a counter incremented ray by ray waits on its
+// own previous increment), and logged ray by ray when the benchmark keeps them.
+void Wavefront::count(const RayQueue& queue) {
+  if (log_) {
+    for (size_t k = 0; k < queue.size(); ++k) log_->push_back({queue.rays[k], queue.kinds[k]});
+  }
+  for (const RayKind kind : {RayKind::primary, RayKind::reflected, RayKind::transmitted})
+    counters_[kind] += uint64_t(std::count(queue.kinds.begin(), queue.kinds.end(), kind));
+}
+
+void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
+  if (log_)
+    for (const Ray& ray : rays) log_->push_back({ray, kind});
+  counters_[kind] += rays.size();
+}
+
 // ---- [one tile's samples] -----------------------------------------------------------------------
 void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> seeds,
                       const Rgb& weight, std::span<Rgb> radiance) {
@@ -76,7 +92,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
   for (int depth = 1; queue.size() > 0; ++depth) {
     const size_t n = queue.size();
     const std::span<const Ray> rays = queue.rays;
-    for (size_t k = 0; k < n; ++k) count(rays[k], queue.kinds[k]);
+    count(queue);
 
     // 1. "Determinar intersección con objeto más cercano", for the whole queue at once.
     scratch.hits.resize(n);
@@ -102,10 +118,8 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     if (options_.shadows) {
       const size_t m = scratch.lights.size();
       scratch.shadow_rays.resize(m);
-      for (size_t j = 0; j < m; ++j) {
-        scratch.shadow_rays[j] = scratch.lights[j].shadow;
-        count(scratch.shadow_rays[j], RayKind::shadow);
-      }
+      for (size_t j = 0; j < m; ++j) scratch.shadow_rays[j] = scratch.lights[j].shadow;
+      count(scratch.shadow_rays, RayKind::shadow);
       const std::span<bool> flags = scratch.blocked.first(m);
       intersector_.occluded(scratch.shadow_rays, flags, counters_.intersection_tests);
       blocked = flags.data();

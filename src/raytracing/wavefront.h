@@ -35,6 +35,8 @@
 
 namespace luz::rt {
 
+struct RayQueue;  // one generation of rays (wavefront.cpp)
+
 class Wavefront {
 public:
   // `shading`: the Whitted tracer whose per-hit functions shade the hits (the hybrid's diffuse
@@ -49,10 +51,9 @@ public:
              std::span<Rgb> radiance);
 
 private:
-  void count(const Ray& ray, RayKind kind) {
-    ++counters_[kind];
-    if (log_) log_->push_back({ray, kind});
-  }
+  // Counts every ray of a generation, or of a stream of one kind, as traced (and logs them).
+  void count(const RayQueue& queue);
+  void count(std::span<const Ray> rays, RayKind kind);
 
   const Scene& scene_;
   Whitted& shading_;
