@@ -3,6 +3,7 @@
 // fixture (Xvfb, Mesa's software GL); these tests read what it dumped. Skipped only when xvfb-run
 // is missing.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -139,6 +140,32 @@ TEST_F(ViewerLayout, TheInterfaceScalesForAProjector) {
   const Rect panel_large = rect_of((*window_named(windows, "Luz"))["rect"]);
   const Rect panel_normal = rect_of((*window_named(normal, "Luz"))["rect"]);
   EXPECT_NEAR(panel_large.x1 - panel_large.x0, 1.5 * (panel_normal.x1 - panel_normal.x0), 1.0);
+}
+
+// The panel's pixels (left of the picture, above the status line, whose frame time changes).
+test::Codes panel_of(const test::Codes& window, const Rect& view) {
+  test::Codes panel{int(std::lround(view.x0)), int(std::lround(view.y1)), {}};
+  for (int y = 0; y < panel.height; ++y)
+    for (int x = 0; x < panel.width; ++x)
+      for (int c = 0; c < 3; ++c) panel.values.push_back(window.at(x, y, c));
+  return panel;
+}
+
+// The panel is drawn into a cache when it changes and copied from it on the other frames: what
+// the window shows is the same as drawing it every frame, and a change shows at once.
+TEST_F(ViewerLayout, ThePanelFromItsCacheIsThePanelDrawnAgain) {
+  const nlohmann::json steady = json_of(file("panel-steady.json"))["panel_cache"];
+  EXPECT_TRUE(steady["on"].get<bool>());
+  EXPECT_GE(steady["hits"].get<long>(), 8) << "ten steady frames: the panel should come from the cache";
+  const Rect view = rect_of(json_of(file("panel-windows.json"))["view"]);
+  ASSERT_GT(view.x0, 100.0);
+  const test::Codes cached = panel_of(test::codes(file("panel-cached.png")), view);
+  const test::Codes drawn = panel_of(test::codes(file("panel-drawn.png")), view);
+  const test::Codes changed_cached = panel_of(test::codes(file("panel-changed-cached.png")), view);
+  const test::Codes changed_drawn = panel_of(test::codes(file("panel-changed-drawn.png")), view);
+  EXPECT_EQ(test::share_moved(cached, drawn, 0), 0.0);
+  EXPECT_GT(test::share_moved(changed_drawn, drawn, 0), 0.0) << "key 1 should have changed the panel";
+  EXPECT_EQ(test::share_moved(changed_cached, changed_drawn, 0), 0.0) << "the cache kept the panel of before key 1";
 }
 
 // Redrawn only on events and while something runs: 10 s idle cost (well) under 5 % of a core.

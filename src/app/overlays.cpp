@@ -78,15 +78,29 @@ void end_hint(WindowCorners& corners) {
   ImGui::End();
 }
 
+void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGuiWindowFlags flags, Edge edge) {
+  ImGui::SetNextWindowPos(ImVec2(origin.x, origin.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(size.x, size.y), ImGuiCond_Always);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::Begin(name, nullptr, flags);
+  ImGui::PopStyleVar();
+  const float t = std::max(ImGui::GetStyle().WindowBorderSize, 1.0f);
+  const glm::vec2 end = origin + size;
+  const ImVec2 a = edge == Edge::top ? ImVec2(origin.x, origin.y) : ImVec2(end.x - t, origin.y);
+  const ImVec2 b = edge == Edge::top ? ImVec2(end.x, origin.y + t) : ImVec2(end.x, end.y);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(a, b);
+  draw->AddRectFilled(a, b, ImGui::GetColorU32(ImGuiCol_Border));  // square corners: no anti-aliased fringe
+  draw->PopClipRect();
+}
+
 void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height) {
   const Scene& scene = *state.scene;
-  ImGui::SetNextWindowPos(ImVec2(0, top));
-  ImGui::SetNextWindowSize(ImVec2(width, height));
   const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
-  ImGui::Begin("status", nullptr, fixed);
+  begin_frame_window("status", glm::vec2(0.0f, top), glm::vec2(width, height), fixed, Edge::top);
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
   const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
   ImGui::Text(tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s"), model.c_str(),

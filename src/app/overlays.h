@@ -50,6 +50,13 @@ private:
 void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin);
 void end_hint(WindowCorners& corners);
 
+// The panel and the status line frame the picture: fixed windows without ImGui's own border,
+// whose anti-aliased edge reaches a pixel past the window, onto the picture (and into the
+// panel cache's way, panel_cache.h). A line of the border's colour inside the window along
+// `edge` takes its place. Ends with ImGui::End as any window.
+enum class Edge { top, right };
+void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGuiWindowFlags flags, Edge edge);
+
 // Model, its state, frame time, triangles, lights, camera and the latest message, in one line
 // at `top` (the status line; wrapped to a second line when it does not fit).
 void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height);

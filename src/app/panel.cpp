@@ -16,6 +16,7 @@
 #include "app/classroom_ui.h"
 #include "app/i18n.h"
 #include "app/model_registry.h"
+#include "app/overlays.h"
 #include "app/options_tables.h"
 #include "app/panes.h"
 
@@ -367,12 +368,10 @@ void draw_local_formula(const LocalOptions& o, const Scene& scene) {
 
 // ---- [the panel] -------------------------------------------------------------------------------
 void draw_panel(ViewerState& state, ModelView& shown, float width, float height) {
-  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
-  ImGui::Begin("Luz", nullptr, flags);
+  begin_frame_window("Luz", glm::vec2(0.0f), glm::vec2(width, height), flags, Edge::right);
   // Widgets take 58 % of the width, their labels the rest: a label is never cut at the edge.
   ImGui::PushItemWidth(-0.42f * width);
   model_header(state, shown);

@@ -208,9 +208,22 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                            {"exposure", s.frame_phases.exposure_ms},
                                            {"panel", s.frame_phases.panel_ms},
                                            {"panel_building", s.frame_phases.panel_building_ms},
-                                           {"present", s.frame_phases.present_ms}}}};
+                                           {"present", s.frame_phases.present_ms}}},
+                      {"panel_cache", {{"on", v.panel_cache().enabled},
+                                       {"hits", v.panel_cache().hits},
+                                       {"redraws", v.panel_cache().redraws}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
+}
+
+std::string check_on_off(const ScriptCommand& c) {
+  return c.args.size() == 1 && (c.args[0] == "on" || c.args[0] == "off") ? "" : fmt::format("`{}` takes on or off", c.verb);
+}
+
+// `panel-cache off`: the panel drawn every frame, to hold the cached frames against.
+bool run_panel_cache(Viewer& v, const ScriptCommand& c, std::string&) {
+  v.panel_cache().enabled = c.args[0] == "on";
+  return true;
 }
 
 bool run_dump_windows(Viewer& v, const ScriptCommand& c, std::string& error) {
@@ -275,6 +288,7 @@ constexpr ScriptVerb verbs[] = {
     {"dump-inspector", "dump-inspector FILE.json", check_json_file, run_dump_inspector, true},
     {"dump-state", "dump-state FILE.json", check_json_file, run_dump_state, true},
     {"dump-windows", "dump-windows FILE.json", check_json_file, run_dump_windows, true},
+    {"panel-cache", "panel-cache on|off", check_on_off, run_panel_cache, true},
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},

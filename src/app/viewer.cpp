@@ -48,6 +48,7 @@ constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
 constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
+constexpr glm::vec4 background{0.06f, 0.06f, 0.07f, 1.0f};  // the window where nothing is drawn
 const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 Viewer& viewer_of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
@@ -188,8 +189,12 @@ Layout Viewer::layout() const {
   l.window = glm::vec2(float(std::max(w, 1)), float(std::max(h, 1)));
   l.framebuffer = window_.framebuffer_size();
   const glm::vec2 scale = glm::vec2(l.framebuffer) / l.window;
-  l.panel = state_.show_panel ? std::min(panel_width * ui_scale_, 0.6f * l.window.x) : 0.0f;
-  l.status = ImGui::GetFontSize() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+  // The panel and the status line end on whole pixels: no pixel is half panel, half picture.
+  const auto whole_pixels = [](float units, float pixels_per_unit) {
+    return pixels_per_unit > 0.0f ? std::round(units * pixels_per_unit) / pixels_per_unit : units;  // 0: minimised
+  };
+  l.panel = state_.show_panel ? whole_pixels(std::min(panel_width * ui_scale_, 0.6f * l.window.x), scale.x) : 0.0f;
+  l.status = whole_pixels(ImGui::GetFontSize() + 2.0f * ImGui::GetStyle().WindowPadding.y, scale.y);
   Viewport& v = l.view;
   v.origin = glm::vec2(l.panel, 0.0f);
   v.size = glm::vec2(l.window.x - l.panel, std::max(l.window.y - l.status, 0.0f));
@@ -779,14 +784,16 @@ void Viewer::frame() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   glDisable(GL_SCISSOR_TEST);
-  glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+  glClearColor(background.r, background.g, background.b, background.a);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ViewerState::FramePhases& phases = state_.frame_phases;
   draw_picture(l);
   auto phase_start = FrameClock::now();
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  const FramebufferRect panel{0, l.framebuffer.y - l.view.pixels.y, l.view.gl_origin.x, l.view.pixels.y};
+  panel_cache_.draw(*ImGui::GetDrawData(), panel, background);
   take_screenshots(l);
+  smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
   window_.swap();
   smooth(phases.present_ms, finish_phase(phase_start));

@@ -19,6 +19,7 @@
 #include "app/model_registry.h"
 #include "app/model_view.h"
 #include "app/orbit_camera.h"
+#include "app/panel_cache.h"
 #include "app/script.h"
 #include "app/shortcuts.h"
 #include "app/solvers_view.h"
@@ -104,6 +105,7 @@ public:
   SolversView* solvers() { return solvers_.get(); }
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
+  PanelCache& panel_cache() { return panel_cache_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
@@ -142,6 +144,7 @@ private:
   std::unique_ptr<LocalRenderer> renderer_;
   std::unique_ptr<Picker> picker_;
   std::vector<std::unique_ptr<gl::Framebuffer>> pictures_;  // each pane's float radiance
+  PanelCache panel_cache_;  // the panel's pixels, drawn again only when it changes
   gl::Program display_{{"display.vert", "display.frag"}};
   GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
   OrbitCamera orbit_;

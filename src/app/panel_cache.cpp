@@ -1,0 +1,168 @@
+#include "app/panel_cache.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <imgui.h>
+
+#include <backends/imgui_impl_opengl3.h>
+
+namespace luz::app {
+namespace {
+
+constexpr gl::ColourFormat rgba8{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, "RGBA8"};
+
+int framebuffer_width(const ImDrawData& d) { return int(d.DisplaySize.x * d.FramebufferScale.x); }
+int framebuffer_height(const ImDrawData& d) { return int(d.DisplaySize.y * d.FramebufferScale.y); }
+
+// The pixels a command may touch: the box around its triangles' vertices, within its clip
+// rectangle turned into a scissor box exactly as imgui_impl_opengl3 does, within the
+// framebuffer. (A window's background is clipped to the whole screen: only its vertices say
+// where it lies.) Empty when the backend skips the command.
+FramebufferRect pixels_of(const ImDrawData& d, const ImDrawList& list, const ImDrawCmd& cmd) {
+  const ImVec2 scale = d.FramebufferScale;
+  const float height = float(framebuffer_height(d));
+  const ImVec2 min((cmd.ClipRect.x - d.DisplayPos.x) * scale.x, (cmd.ClipRect.y - d.DisplayPos.y) * scale.y);
+  const ImVec2 max((cmd.ClipRect.z - d.DisplayPos.x) * scale.x, (cmd.ClipRect.w - d.DisplayPos.y) * scale.y);
+  if (max.x <= min.x || max.y <= min.y || cmd.ElemCount == 0) return {};
+  const int sx = int(min.x), sy = int(height - max.y);
+  int x0 = std::max(sx, 0), y0 = std::max(sy, 0);
+  int x1 = std::min(sx + int(max.x - min.x), framebuffer_width(d));
+  int y1 = std::min(sy + int(max.y - min.y), framebuffer_height(d));
+
+  ImVec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (unsigned int i = 0; i < cmd.ElemCount; ++i) {
+    const ImVec2 p = list.VtxBuffer[int(cmd.VtxOffset + list.IdxBuffer[int(cmd.IdxOffset + i)])].pos;
+    lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
+    hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
+  }
+  x0 = std::max(x0, int(std::floor((lo.x - d.DisplayPos.x) * scale.x)));
+  x1 = std::min(x1, int(std::ceil((hi.x - d.DisplayPos.x) * scale.x)));
+  y0 = std::max(y0, int(std::floor(height - (hi.y - d.DisplayPos.y) * scale.y)));
+  y1 = std::min(y1, int(std::ceil(height - (lo.y - d.DisplayPos.y) * scale.y)));
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+bool inside(const FramebufferRect& r, const FramebufferRect& panel) {
+  return r.x >= panel.x && r.y >= panel.y && r.x + r.width <= panel.x + panel.width &&
+         r.y + r.height <= panel.y + panel.height;
+}
+
+bool meets(const FramebufferRect& r, const FramebufferRect& panel) {
+  return r.x < panel.x + panel.width && panel.x < r.x + r.width && r.y < panel.y + panel.height &&
+         panel.y < r.y + r.height;
+}
+
+template <class T>
+void append(std::vector<std::byte>& bytes, const T* data, size_t count) {
+  const size_t at = bytes.size(), size = count * sizeof(T);
+  bytes.resize(at + size);
+  if (size > 0) std::memcpy(bytes.data() + at, data, size);
+}
+
+// `frame` with only `lists`, for the backend.
+void render(const ImDrawData& frame, std::vector<ImDrawList*>& lists) {
+  if (lists.empty()) return;
+  ImDrawData part = frame;
+  part.CmdLists = lists.data();
+  part.CmdListsCount = int(lists.size());
+  part.TotalVtxCount = part.TotalIdxCount = 0;
+  for (const ImDrawList* list : lists) {
+    part.TotalVtxCount += list->VtxBuffer.Size;
+    part.TotalIdxCount += list->IdxBuffer.Size;
+  }
+  ImGui_ImplOpenGL3_RenderDrawData(&part);
+}
+
+}  // namespace
+
+// A list is the cache's when every pixel it draws is the panel's, it samples only the font atlas
+// (an image in the panel, such as the hemicube's item buffer, changes without its vertices
+// changing) and no list before it that reaches into the panel from outside (a tooltip, a
+// combo's popup) has to stay on top of it.
+void PanelCache::split(const ImDrawData& frame, FramebufferRect panel) {
+  cached_.clear();
+  live_.clear();
+  const ImTextureID font = ImGui::GetIO().Fonts->TexID;
+  bool covered = false;
+  for (int i = 0; i < frame.CmdListsCount; ++i) {
+    ImDrawList* list = frame.CmdLists[i];
+    bool within = true, touches = false;
+    for (const ImDrawCmd& cmd : list->CmdBuffer) {
+      const FramebufferRect r = pixels_of(frame, *list, cmd);
+      if (r.empty()) continue;
+      within = within && inside(r, panel) && cmd.UserCallback == nullptr && cmd.TextureId == font;
+      touches = touches || meets(r, panel);
+    }
+    if (within && !covered) {
+      cached_.push_back(list);
+    } else {
+      live_.push_back(list);
+      covered = covered || touches;
+    }
+  }
+}
+
+// Whether the cache already holds this frame's panel: the same lists, byte for byte, at the
+// same size.
+bool PanelCache::unchanged(const ImDrawData& frame, FramebufferRect panel) {
+  next_.clear();
+  append(next_, &panel, 1);
+  append(next_, &frame.DisplaySize, 1);
+  append(next_, &frame.FramebufferScale, 1);
+  for (const ImDrawList* list : cached_) {
+    const int sizes[] = {list->CmdBuffer.Size, list->VtxBuffer.Size, list->IdxBuffer.Size};
+    append(next_, sizes, 3);
+    for (const ImDrawCmd& cmd : list->CmdBuffer) {
+      append(next_, &cmd.ClipRect, 1);
+      append(next_, &cmd.TextureId, 1);
+      const unsigned int offsets[] = {cmd.VtxOffset, cmd.IdxOffset, cmd.ElemCount};
+      append(next_, offsets, 3);
+    }
+    append(next_, list->VtxBuffer.Data, size_t(list->VtxBuffer.Size));
+    append(next_, list->IdxBuffer.Data, size_t(list->IdxBuffer.Size));
+  }
+  return target_ && width_ == framebuffer_width(frame) && height_ == framebuffer_height(frame) && next_ == drawn_;
+}
+
+void PanelCache::redraw(const ImDrawData& frame, glm::vec4 background) {
+  if (!target_ || width_ != framebuffer_width(frame) || height_ != framebuffer_height(frame)) {
+    width_ = framebuffer_width(frame);
+    height_ = framebuffer_height(frame);
+    target_.reset();  // before the next one is made: the old one's memory goes first
+    target_ = std::make_unique<gl::RenderTarget>(width_, height_, rgba8);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, target_->fbo);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(background.r, background.g, background.b, background.a);
+  glClear(GL_COLOR_BUFFER_BIT);
+  render(frame, cached_);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  drawn_.swap(next_);
+}
+
+void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background) {
+  if (!enabled || panel.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0) {
+    ImGui_ImplOpenGL3_RenderDrawData(&frame);
+    return;
+  }
+  split(frame, panel);
+  if (!cached_.empty()) {
+    if (unchanged(frame, panel)) {
+      ++hits;
+    } else {
+      redraw(frame, background);
+      ++redraws;
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int x1 = panel.x + panel.width, y1 = panel.y + panel.height;
+    glBlitFramebuffer(panel.x, panel.y, x1, y1, panel.x, panel.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  render(frame, live_);
+}
+
+}  // namespace luz::app
