@@ -77,14 +77,10 @@ void render(const ImDrawData& frame, std::vector<ImDrawList*>& lists) {
 
 }  // namespace
 
-// A list is the cache's when every pixel it draws is the panel's, it samples only the font atlas
-// (an image in the panel, such as the hemicube's item buffer, changes without its vertices
-// changing) and no list before it that reaches into the panel from outside (a tooltip, a
-// combo's popup) has to stay on top of it.
-void PanelCache::split(const ImDrawData& frame, FramebufferRect panel) {
-  cached_.clear();
-  live_.clear();
-  const ImTextureID font = ImGui::GetIO().Fonts->TexID;
+void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
+                 std::vector<ImDrawList*>& live) {
+  cached.clear();
+  live.clear();
   bool covered = false;
   for (int i = 0; i < frame.CmdListsCount; ++i) {
     ImDrawList* list = frame.CmdLists[i];
@@ -96,9 +92,9 @@ void PanelCache::split(const ImDrawData& frame, FramebufferRect panel) {
       touches = touches || meets(r, panel);
     }
     if (within && !covered) {
-      cached_.push_back(list);
+      cached.push_back(list);
     } else {
-      live_.push_back(list);
+      live.push_back(list);
       covered = covered || touches;
     }
   }
@@ -148,7 +144,7 @@ void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 backgr
     ImGui_ImplOpenGL3_RenderDrawData(&frame);
     return;
   }
-  split(frame, panel);
+  split_lists(frame, panel, ImGui::GetIO().Fonts->TexID, cached_, live_);
   if (!cached_.empty()) {
     if (unchanged(frame, panel)) {
       ++hits;

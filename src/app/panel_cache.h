@@ -25,6 +25,14 @@ struct FramebufferRect {
   bool empty() const { return width <= 0 || height <= 0; }
 };
 
+// Which of a frame's draw lists the cache may hold (`cached`) and which are drawn as they are
+// (`live`), each in ImGui's order. A list is the cache's when every pixel it draws lies in
+// `panel`, it samples only `font` (an image in the panel changes without its vertices
+// changing) and no list before it that reaches into the panel from outside (a tooltip, a
+// combo's popup) has to stay on top of it.
+void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
+                 std::vector<ImDrawList*>& live);
+
 class PanelCache {
 public:
   // Draws `frame` into the window's framebuffer (bound, window-sized): the lists wholly inside
@@ -37,7 +45,6 @@ public:
   long redraws = 0;  // frames that drew the panel into it
 
 private:
-  void split(const ImDrawData& frame, FramebufferRect panel);
   bool unchanged(const ImDrawData& frame, FramebufferRect panel);
   void redraw(const ImDrawData& frame, glm::vec4 background);
 
