@@ -8,6 +8,7 @@
 // the same either way: `enabled = false` draws every list every frame, to compare.
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -52,6 +53,7 @@ private:
   std::vector<std::byte> drawn_, next_;     // what the cache holds; this frame's cached lists
   std::unique_ptr<gl::RenderTarget> target_;
   int width_ = 0, height_ = 0;
+  std::optional<bool> blit_allowed_;  // the window's framebuffer takes a blit (asked once)
 };
 
 }  // namespace luz::app
