@@ -217,7 +217,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
 }
 
 std::string check_on_off(const ScriptCommand& c) {
-  return c.args.size() == 1 && (c.args[0] == "on" || c.args[0] == "off") ? "" : fmt::format("`{}` takes on or off", c.verb);
+  const bool on_or_off = c.args.size() == 1 && (c.args[0] == "on" || c.args[0] == "off");
+  return on_or_off ? "" : fmt::format("`{}` takes on or off", c.verb);
 }
 
 // `panel-cache off`: the panel drawn every frame, to hold the cached frames against.
