@@ -335,10 +335,19 @@ bool viewer_sees_back(vec3 P, vec3 N) {
 
 // ---- [the fragment] ----------------------------------------------------------------------------
 #ifdef LUZ_FRAGMENT_SHADER
+#if LUZ_DISPLAY_OUTPUT
+// The viewer's opaque meshes: the radiance, and beside it in a second colour buffer what the
+// window shows of it (radiance x 2^exposure through the sRGB curve), so that the window copies
+// the picture instead of running its display pass over it.
+layout(location = 0) out vec4 frag_radiance;
+layout(location = 1) out vec4 frag_display;
+uniform float u_display_scale;  // 2^exposure
+#else
 // Two outputs for dual-source blending (GL 3.3 core): the radiance, and what share of the pixel
 // behind it comes through (kt, for a transparent mesh drawn with glBlendFunc(ONE, SRC1_COLOR)).
 layout(location = 0, index = 0) out vec4 frag_radiance;
 layout(location = 0, index = 1) out vec4 frag_transmittance;
+#endif
 
 // What the pixel shows of the surface at P: the local formula, + kr Ir, then the fog.
 // A transparent surface adds kt times the pixel behind it (non-refractive transparency):
@@ -353,6 +362,10 @@ void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
   // it (kt's mean: one alpha for three channels).
   float through = (transmitted.r + transmitted.g + transmitted.b) / 3.0;
   frag_radiance = vec4(f * I + (1.0 - f) * u_fog_colour, 1.0 - through);
+#if LUZ_DISPLAY_OUTPUT
+  frag_display = vec4(srgb_encode(frag_radiance.rgb * u_display_scale), 1.0);
+#else
   frag_transmittance = vec4(transmitted, through);
+#endif
 }
 #endif

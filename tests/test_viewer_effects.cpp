@@ -47,6 +47,21 @@ TEST_F(ViewerEffects, EachKeyChangesThePicture) {
   EXPECT_GT(share_moved(codes(run_dir / "fog-linear.png"), codes(run_dir / "fog-exponential.png"), 8), 0.01) << "G cycles the fog's modes";
 }
 
+// What the window shows right of the panel (the picture's top-right corner is the window's)
+// is the picture the screenshot saved: with transparency on the local models' displayed values
+// cannot be copied (the blend acts on radiance), so the display pass draws them.
+TEST_F(ViewerEffects, TheWindowShowsThePictureWithEveryEffectOn) {
+  const Codes window = codes(run_dir / "all-panel.png"), picture = codes(run_dir / "all.png");
+  ASSERT_LT(picture.width, window.width);
+  const int left = window.width - picture.width;
+  Codes shown{picture.width, picture.height, {}};
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x)
+      for (int c = 0; c < 3; ++c) shown.values.push_back(window.at(left + x, y, c));
+  EXPECT_LT(share_moved(shown, picture, 1), 0.001);
+  EXPECT_EQ(json_of(run_dir / "all-state.json")["display_copy"]["copied_panes"].get<int>(), 0);
+}
+
 TEST_F(ViewerEffects, EverythingOnIsWhatLuzRenderMakesWithTheFlags) {
   const Codes viewer = codes(run_dir / "all.png");
   test::ScratchDir dir;

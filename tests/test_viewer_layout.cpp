@@ -168,6 +168,27 @@ TEST_F(ViewerLayout, ThePanelFromItsCacheIsThePanelDrawnAgain) {
   EXPECT_EQ(test::share_moved(changed_cached, changed_drawn, 0), 0.0) << "the cache kept the panel of before key 1";
 }
 
+// The Phong picture copied from the model's second colour buffer (the sRGB curve computed as it
+// draws) is the display pass's over the radiance, within one code.
+TEST_F(ViewerLayout, TheCopiedPictureIsTheDisplayPasss) {
+  EXPECT_EQ(json_of(file("display-copied.json"))["display_copy"]["copied_panes"].get<int>(), 1);
+  EXPECT_EQ(json_of(file("display-pass.json"))["display_copy"]["copied_panes"].get<int>(), 0);
+  const Rect view = rect_of(json_of(file("panel-windows.json"))["view"]);
+  const test::Codes copied = test::codes(file("display-copied.png")), drawn = test::codes(file("display-pass.png"));
+  ASSERT_EQ(copied.size(), drawn.size());
+  size_t values = 0, moved = 0, far = 0;
+  for (int y = int(view.y0); y < int(view.y1); ++y)
+    for (int x = int(view.x0); x < int(view.x1); ++x)
+      for (int c = 0; c < 3; ++c) {
+        const int d = std::abs(copied.at(x, y, c) - drawn.at(x, y, c));
+        ++values;
+        moved += d > 0;
+        far += d > 1;
+      }
+  EXPECT_EQ(far, 0u);
+  EXPECT_LT(double(moved) / double(values), 0.001);
+}
+
 // Redrawn only on events and while something runs: 10 s idle cost (well) under 5 % of a core.
 TEST_F(ViewerLayout, AnIdleWindowCostsNoCpu) {
   const double cpu = json_of(file("idle.json"))["idle_cpu_fraction"].get<double>();

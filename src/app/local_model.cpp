@@ -1,5 +1,7 @@
 #include "app/local_model.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 #include <imgui.h>
 
@@ -42,8 +44,14 @@ void LocalModel::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
   ViewerState& state = viewer_.state();
   state.local.shading = shading_;
   LocalRenderer& renderer = viewer_.local_renderer();
-  picture.bind();
-  renderer.draw(camera, viewport.pixels.x, viewport.pixels.y, state.local);
+  // The displayed values beside the radiance when the picture has room for them and the
+  // window asks (display_copy: off to compare with the display pass).
+  const bool display = picture.display_texture() != 0 && state.display_copy;
+  if (display) picture.bind_with_display();
+  else picture.bind();
+  renderer.draw(camera, viewport.pixels.x, viewport.pixels.y, state.local,
+                display ? std::optional<float>(std::exp2(state.exposure)) : std::nullopt);
+  drew_display_ = display && renderer.drew_display();
   const bool inspected = refresh_inspection(viewer_, camera, viewport);
   picture.bind();  // the picker drew into its own framebuffer
   if (!inspected) {

@@ -17,6 +17,7 @@ public:
 
   void scene_changed() override { reading_.reset(); }
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
+  bool drew_display() const override { return drew_display_; }
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void panel() override;
   void windows(const Viewport& viewport, WindowCorners& corners) override;
@@ -27,6 +28,7 @@ private:
   ViewerServices& viewer_;
   Shading shading_;
   std::optional<InspectorReading> reading_;
+  bool drew_display_ = false;
 };
 
 // Re-picks the inspected pixel when the camera or the picture's size changed since it was

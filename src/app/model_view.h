@@ -94,6 +94,10 @@ public:
   virtual void advance(const Camera& /*camera*/, const Viewport& /*viewport*/) {}
   // The picture's radiance (and depth) into `picture`, viewport.pixels in size, bound.
   virtual void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) = 0;
+  // Whether the last draw() also left what the window shows in the picture's display buffer
+  // (gl::Framebuffer::display_texture), so that the window copies it instead of running the
+  // display pass over the radiance.
+  virtual bool drew_display() const { return false; }
   // A left click (no drag) on a pixel of the picture.
   virtual void click(const Camera& /*camera*/, const Viewport& /*viewport*/, glm::ivec2 /*pixel*/) {}
   virtual void panel() = 0;

@@ -8,6 +8,8 @@
 
 #include <backends/imgui_impl_opengl3.h>
 
+#include "gl/framebuffer.h"
+
 namespace luz::app {
 namespace {
 
@@ -140,11 +142,7 @@ void PanelCache::redraw(const ImDrawData& frame, glm::vec4 background) {
 }
 
 void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background) {
-  if (!blit_allowed_) {  // a blit into a multisampled window (a driver's forced antialiasing) fails
-    GLint sample_buffers = 0;
-    glGetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers);
-    blit_allowed_ = sample_buffers == 0;
-  }
+  if (!blit_allowed_) blit_allowed_ = !gl::window_is_multisampled();
   const bool empty = panel.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0;
   if (!enabled || !*blit_allowed_ || empty) {
     ImGui_ImplOpenGL3_RenderDrawData(&frame);

@@ -209,6 +209,7 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                            {"panel", s.frame_phases.panel_ms},
                                            {"panel_building", s.frame_phases.panel_building_ms},
                                            {"present", s.frame_phases.present_ms}}},
+                      {"display_copy", {{"on", s.display_copy}, {"copied_panes", v.copied_panes()}}},
                       {"panel_cache", {{"on", v.panel_cache().enabled},
                                        {"hits", v.panel_cache().hits},
                                        {"redraws", v.panel_cache().redraws}}}};
@@ -224,6 +225,12 @@ std::string check_on_off(const ScriptCommand& c) {
 // `panel-cache off`: the panel drawn every frame, to hold the cached frames against.
 bool run_panel_cache(Viewer& v, const ScriptCommand& c, std::string&) {
   v.panel_cache().enabled = c.args[0] == "on";
+  return true;
+}
+
+// `display-copy off`: the display pass over the radiance, to hold the copied frames against.
+bool run_display_copy(Viewer& v, const ScriptCommand& c, std::string&) {
+  v.state().display_copy = c.args[0] == "on";
   return true;
 }
 
@@ -290,6 +297,7 @@ constexpr ScriptVerb verbs[] = {
     {"dump-state", "dump-state FILE.json", check_json_file, run_dump_state, true},
     {"dump-windows", "dump-windows FILE.json", check_json_file, run_dump_windows, true},
     {"panel-cache", "panel-cache on|off", check_on_off, run_panel_cache, true},
+    {"display-copy", "display-copy on|off", check_on_off, run_display_copy, true},
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},

@@ -625,22 +625,37 @@ void Viewer::draw_picture(const Layout& l) {
   const bool reference_in_a_pane =
       std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
   double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
+  copied_panes_ = 0;
   auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
     const Viewport& v = l.panes[i];
     if (v.empty()) continue;
     std::unique_ptr<gl::Framebuffer>& picture = pictures_[i];
     if (!picture || picture->width() != v.pixels.x || picture->height() != v.pixels.y)
-      picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y);
+      picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y, window_takes_blits_);
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
     picture->bind();
     pane_view.draw(camera, v, *picture);
     // The heat map instead, when it is on, in the active pane: the panes are of one size, so
     // the reference's one film serves whichever pane is compared.
+    const bool heat_map = i == active_pane_ && state_.difference.on;
     if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
     models_ms += finish_phase(phase_start);
 
+    if (pane_view.drew_display() && !heat_map) {  // the model wrote what the window shows: a copy
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, picture->id());
+      glReadBuffer(GL_COLOR_ATTACHMENT1);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+      glBlitFramebuffer(0, 0, v.pixels.x, v.pixels.y, v.gl_origin.x, v.gl_origin.y, v.gl_origin.x + v.pixels.x,
+                        v.gl_origin.y + v.pixels.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, picture->id());
+      glReadBuffer(GL_COLOR_ATTACHMENT0);
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      ++copied_panes_;
+      exposure_ms += finish_phase(phase_start);
+      continue;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y);
     glDisable(GL_DEPTH_TEST);

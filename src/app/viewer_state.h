@@ -45,6 +45,8 @@ struct ViewerState {
   std::string model = "phong";          // a name of the registry (model_registry.h); the
                                         // panel's radio buttons set it, the viewer follows
   float exposure = 0.0f;                // EV, from the scene, then the panel's
+  bool display_copy = true;             // the local models' displayed values copied to the window
+                                        // (script: display-copy off runs the display pass instead)
   int scene_camera = 0;                 // the scene camera shown while !free_camera
   bool free_camera = false;             // the orbit camera moved away from it
   int selected_material = -1;           // the panel's material section (-1: none yet)

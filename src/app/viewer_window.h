@@ -106,6 +106,7 @@ public:
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
   PanelCache& panel_cache() { return panel_cache_; }
+  int copied_panes() const { return copied_panes_; }  // last frame's panes shown by a copy
   const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
@@ -145,7 +146,9 @@ private:
   std::unique_ptr<Picker> picker_;
   std::vector<std::unique_ptr<gl::Framebuffer>> pictures_;  // each pane's float radiance
   PanelCache panel_cache_;  // the panel's pixels, drawn again only when it changes
-  gl::Program display_{{"display.vert", "display.frag"}};
+  gl::Program display_{{"display.vert", "display.frag"}, {"srgb.glsl"}};
+  bool window_takes_blits_ = !gl::window_is_multisampled();  // the displayed values copied, not drawn
+  int copied_panes_ = 0;
   GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
   OrbitCamera orbit_;
   Inspection inspection_;

@@ -1,5 +1,6 @@
 #pragma once
-// An offscreen render target: RGBA32F colour (linear radiance, unclamped) and a depth buffer.
+// An offscreen render target: RGBA32F colour (linear radiance, unclamped) and a depth buffer;
+// for the viewer's pictures also an RGBA8 second colour buffer, the displayed values.
 #include "core/image.h"
 #include "gl/functions.h"
 #include "gl/render_target.h"
@@ -9,7 +10,8 @@ namespace luz::gl {
 class Framebuffer {
 public:
   // Throws luz::Error (kind gl) when the driver cannot make a complete float framebuffer.
-  Framebuffer(int width, int height);
+  explicit Framebuffer(int width, int height, bool with_display = false);
+  ~Framebuffer();
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
 
@@ -18,14 +20,22 @@ public:
   GLuint id() const { return target_.fbo; }
   GLuint colour_texture() const { return target_.colour; }
 
-  // Binds it for drawing and reading, with the viewport covering it.
+  // Binds it for drawing and reading, with the viewport covering it: the radiance alone, or
+  // (with_display) the radiance and the displayed values, draw buffers 0 and 1.
   void bind() const;
+  void bind_with_display() const;
+  GLuint display_texture() const { return display_; }  // 0 without
   // The colour buffer as an Image with row 0 at the TOP (GL's rows go bottom-up).
   Image read() const;
 
 private:
   int width_, height_;
   RenderTarget target_;
+  GLuint display_ = 0;
 };
+
+// Whether the window's framebuffer (0) is multisampled (a driver's forced antialiasing): a blit
+// into it then fails, so what is copied elsewhere is drawn instead.
+bool window_is_multisampled();
 
 }  // namespace luz::gl

@@ -134,6 +134,7 @@ struct ScenePass {
   glm::vec3 eye{0.0f};
   bool fog = true;          // the picture has the fog; the cube maps see the surfaces unfogged
   bool reflections = true;  // a cube map shows objects without their own reflections
+  bool display = false;     // the opaque meshes also write the displayed value (attachment 1)
   int skip_mesh = -1;       // the object a cube map is rendered from
 };
 
@@ -150,6 +151,7 @@ struct Switches {
   bool ambient = true, diffuse = true, specular = true, emission = true, blinn = false;
   bool kd_texture = false;
   bool shadows = false, reflection = false, environment = false, transparent = false;
+  bool display = false;  // lighting.glsl's second output, the displayed value
   FogMode fog = FogMode::off;
   int lights = 0, area_lights = 0;  // how many the shaders' loops run over
   std::vector<int> light_types;     // per light (lighting.glsl POINT, SPOT, DIRECTIONAL)
@@ -167,7 +169,8 @@ struct Switches {
            fmt::format("#define LUZ_LIGHT_COUNT {}\n#define LUZ_AREA_LIGHT_COUNT {}\n", lights, area_lights) +
            fmt::format("#define LUZ_LIGHT_TYPES {}-1\n", list(light_types)) +
            fmt::format("#define LUZ_LIGHT_SHADOW_KINDS {}-1\n", list(shadow_kinds)) +
-           fmt::format("#define LUZ_AREA_SHADOW_KIND {}\n", int(area_shadow_kind));
+           fmt::format("#define LUZ_AREA_SHADOW_KIND {}\n", int(area_shadow_kind)) +
+           fmt::format("#define LUZ_DISPLAY_OUTPUT {}\n", int(display));  // for #if
   }
 
   static std::string list(const std::vector<int>& values) {  // "1, 2, " for {1, 2}
@@ -220,6 +223,8 @@ struct LocalRenderer::Impl {
   GLuint cube_framebuffer = 0, cube_depth = 0;
   int cube_depth_size = 0;
   bool drew_reflections = false;
+  float display_scale = 1.0f;               // 2^exposure for the displayed value
+  bool drew_display = false;                // the last draw() left it whole (drew_display())
   std::string environment_path;             // the image in environment_texture
   Image environment;
   GLuint environment_texture = 0;
@@ -370,6 +375,7 @@ void LocalRenderer::Impl::set_pass(gl::Program& p, const ScenePass& pass, const 
   p.set("u_fog_near", options.fog.near);
   p.set("u_fog_far", options.fog.far);
   p.set("u_fog_density", options.fog.density);
+  if (pass.display) p.set("u_display_scale", display_scale);
 }
 
 Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
@@ -384,7 +390,7 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
     case Shading::gouraud: stages = {"gouraud.vert", "gouraud.frag"}; break;
     case Shading::phong: stages = {"local.vert", "phong.frag"}; break;
   }
-  Variant variant{gl::Program(stages, {"lighting.glsl"}, key)};
+  Variant variant{gl::Program(stages, {"srgb.glsl", "lighting.glsl"}, key)};
   return programs.emplace(std::move(key), std::move(variant)).first->second;
 }
 
@@ -461,6 +467,7 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
     switches.kd_texture = is_textured(material, options);
     switches.reflection = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
     switches.transparent = transparent;
+    switches.display = pass.display && !transparent;
     Variant& variant = program_for(switches);
     gl::Program& p = variant.program;
     p.use();
@@ -484,6 +491,11 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
 
   // Then back to front, blended: pixel = (this surface's radiance) + kt * (pixel behind).
   if (!transparent.empty()) {
+    if (pass.display) {  // the blend acts on radiance only, and dual-source blending takes one draw buffer
+      drew_display = false;
+      const GLenum radiance = GL_COLOR_ATTACHMENT0;
+      glDrawBuffers(1, &radiance);
+    }
     std::stable_sort(transparent.begin(), transparent.end(), [&](size_t a, size_t b) {
       return glm::length(centres[a] - pass.eye) > glm::length(centres[b] - pass.eye);
     });
@@ -500,6 +512,9 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    // GL's default again: a blend function that reads SRC1 forbids a second draw buffer even
+    // with blending off (Mesa then refuses the draws that also write the displayed values).
+    glBlendFunc(GL_ONE, GL_ZERO);
   }
 
   for (int unit : {kd_unit, shadow_unit, reflection_unit, environment_unit}) {
@@ -607,7 +622,7 @@ void LocalRenderer::Impl::render_reflection_maps(const LocalOptions& options) {
 
 // ---- [draw and render] -------------------------------------------------------------------------
 void LocalRenderer::draw(const Camera& camera, int width, int height,
-                         const LocalOptions& options) {
+                         const LocalOptions& options, std::optional<float> display_scale) {
   Impl& s = *impl_;
   GLint target = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
@@ -651,12 +666,21 @@ void LocalRenderer::draw(const Camera& camera, int width, int height,
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
   ScenePass pass;
+  pass.display = s.drew_display = display_scale.has_value();
+  if (display_scale) {
+    s.display_scale = *display_scale;
+    const float shown[4] = {srgb_encode(clear.r * *display_scale), srgb_encode(clear.g * *display_scale),
+                            srgb_encode(clear.b * *display_scale), 1.0f};
+    glClearBufferfv(GL_COLOR, 1, shown);
+  }
   // Vertical field of view is the camera's yfov whatever the output's aspect.
   pass.view_projection = camera.projection(float(width) / float(height), s.far_plane(camera.position())) *
                          camera.view();
   pass.eye = camera.position();
   s.draw_scene(pass, options);
 }
+
+bool LocalRenderer::drew_display() const { return impl_->drew_display; }
 
 Image LocalRenderer::render(const Camera& camera, int width, int height,
                             const LocalOptions& options) {

@@ -34,7 +34,14 @@ public:
   // Draws into the currently bound framebuffer (the window's, or an FBO) of the given size.
   // With shadows or reflection maps on, their passes run first (into their own framebuffers).
   // Throws luz::Error when the environment image of options.reflection cannot be read.
-  void draw(const Camera& camera, int width, int height, const LocalOptions& options);
+  // With `display_scale` (2^exposure), the opaque meshes also write what the window shows of
+  // them (the sRGB curve of display_scale x radiance, as the viewer's display pass computes it)
+  // into colour attachment 1, which the caller has made draw buffer 1.
+  void draw(const Camera& camera, int width, int height, const LocalOptions& options,
+            std::optional<float> display_scale = std::nullopt);
+  // Whether the last draw() left the displayed picture whole in attachment 1: asked for, and no
+  // transparent mesh blended over it (blending acts on radiance, not on displayed values).
+  bool drew_display() const;
 
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
   Image render(const Camera& camera, int width, int height, const LocalOptions& options);
