@@ -152,9 +152,13 @@ void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 backgr
   if (!cached_.empty()) {
     if (unchanged(frame, panel)) {
       ++hits;
-    } else {
+    } else if (next_ == previous_) {  // the same as last frame's: the panel has settled
       redraw(frame, background);
       ++redraws;
+    } else {  // changing (a plot, a hover): drawn as it is until it settles
+      previous_.swap(next_);
+      ImGui_ImplOpenGL3_RenderDrawData(&frame);
+      return;
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

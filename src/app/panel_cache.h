@@ -3,9 +3,10 @@
 // costs its pixels, not its building: the panel's background blended over a quarter of a
 // million pixels and its text take about 2 ms of a 10 ms frame, while the panel changes only
 // when the user touches it (a hover, a click, a scroll). So the draw lists that fall inside the
-// panel are drawn into an 8-bit copy of the window when they change, and on the other frames
-// that copy's panel rectangle is copied into the window (glBlitFramebuffer). What is drawn is
-// the same either way: `enabled = false` draws every list every frame, to compare.
+// panel are drawn into an 8-bit copy of the window once they have settled (the same two frames
+// running: a panel that changes every frame, radiosity's plot, is drawn as before), and on the
+// next frames that copy's panel rectangle is copied into the window (glBlitFramebuffer). What
+// is drawn is the same either way: `enabled = false` draws every list every frame, to compare.
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -51,6 +52,7 @@ private:
 
   std::vector<ImDrawList*> cached_, live_;  // this frame's lists, in ImGui's order within each
   std::vector<std::byte> drawn_, next_;     // what the cache holds; this frame's cached lists
+  std::vector<std::byte> previous_;         // the last frame's, while the panel was changing
   std::unique_ptr<gl::RenderTarget> target_;
   int width_ = 0, height_ = 0;
   std::optional<bool> blit_allowed_;  // the window's framebuffer takes a blit (asked once)

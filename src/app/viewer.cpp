@@ -616,7 +616,9 @@ nlohmann::json Viewer::windows_json() const {
 
 // ---- [the frame] -------------------------------------------------------------------------------
 // Each pane's view draws its radiance into that pane's picture, then the display pass shows it:
-// radiance -> exposure -> sRGB, pixel for pixel into the pane's rectangle. One camera for all.
+// radiance -> exposure -> sRGB, pixel for pixel into the pane's rectangle. A local model that
+// computed those displayed values as it drew (ModelView::drew_display) is copied instead: the
+// display pass's float fetch is most of its cost on a software rasteriser. One camera for all.
 void Viewer::draw_picture(const Layout& l) {
   if (l.view.empty()) return;
   const Camera camera = current_camera();

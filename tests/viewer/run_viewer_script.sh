@@ -29,10 +29,12 @@ EOF
 # The X authority file lives here rather than in a temporary folder of xvfb-run's, and a lost
 # race for a display number with another Xvfb starting at the same moment (parallel CI jobs) is
 # retried; any other failure is the test's.
+# A run that has not finished after 270 s (CTest's limit is 300) is stopped, so that its log,
+# which says how far the script got, is printed.
 attempt=1
 while :; do
   status=0
-  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n $((100 + $$ % 400)) -f "$PWD/xauthority" -e "$PWD/xvfb.log" \
+  LIBGL_ALWAYS_SOFTWARE=1 timeout -k 10 270 xvfb-run -a -n $((100 + $$ % 400)) -f "$PWD/xauthority" -e "$PWD/xvfb.log" \
     -s "-screen 0 1600x1200x24 -noreset" "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 || status=$?
   [ "$status" -eq 0 ] && break
   if [ "$attempt" -lt 3 ] && grep -q "Failed to open display" viewer.log; then
@@ -42,7 +44,11 @@ while :; do
     continue
   fi
   cat viewer.log
-  echo "the scripted viewer exited with $status"
+  if [ "$status" -eq 124 ]; then
+    echo "the scripted viewer did not finish in 270 s"
+  else
+    echo "the scripted viewer exited with $status"
+  fi
   exit 1
 done
 cat viewer.log
