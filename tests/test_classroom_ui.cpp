@@ -11,6 +11,7 @@
 #include "app/classroom_ui.h"
 #include "app/label_text.h"
 #include "app/ui_glyphs.h"
+#include "imgui_headless.h"
 
 namespace luz {
 namespace {
@@ -19,18 +20,7 @@ constexpr float kWindowW = 1280.0f, kWindowH = 760.0f;  // the viewer's default 
 
 class Caption : public ::testing::Test {
 protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(kWindowW, kWindowH);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.Fonts->AddFontFromFileTTF(app::LabelFont::default_file().c_str(), 16.0f, nullptr,
-                                 reinterpret_cast<const ImWchar*>(app::kUiGlyphRanges));
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  }
+  void SetUp() override { test::create_headless_imgui(kWindowW, kWindowH); }
   void TearDown() override { ImGui::DestroyContext(); }
 
   // A few frames, as auto-resizing windows take two to settle.

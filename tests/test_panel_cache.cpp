@@ -10,9 +10,9 @@
 
 #include <imgui.h>
 
-#include "app/label_text.h"
 #include "app/overlays.h"
 #include "app/panel_cache.h"
+#include "imgui_headless.h"
 
 namespace luz {
 namespace {
@@ -25,16 +25,8 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
 class PanelCacheLists : public ::testing::Test {
 protected:
   void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(kWindowW, kWindowH);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.Fonts->AddFontFromFileTTF(app::LabelFont::default_file().c_str(), 16.0f);
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(intptr_t(1)));
+    test::create_headless_imgui(kWindowW, kWindowH);
+    ImGui::GetIO().Fonts->SetTexID(reinterpret_cast<ImTextureID>(intptr_t(1)));
   }
   void TearDown() override { ImGui::DestroyContext(); }
 

@@ -8,8 +8,6 @@
 
 #include <backends/imgui_impl_opengl3.h>
 
-#include "gl/framebuffer.h"
-
 namespace luz::app {
 namespace {
 
@@ -142,9 +140,8 @@ void PanelCache::redraw(const ImDrawData& frame, glm::vec4 background) {
 }
 
 void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background) {
-  if (!blit_allowed_) blit_allowed_ = !gl::window_is_multisampled();
   const bool empty = panel.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0;
-  if (!enabled || !*blit_allowed_ || empty) {
+  if (!enabled || empty) {
     ImGui_ImplOpenGL3_RenderDrawData(&frame);
     return;
   }

@@ -9,7 +9,6 @@
 // is drawn is the same either way: `enabled = false` draws every list every frame, to compare.
 #include <cstddef>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -37,7 +36,8 @@ void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std
 
 class PanelCache {
 public:
-  // Draws `frame` into the window's framebuffer (bound, window-sized): the lists wholly inside
+  // Draws `frame` into the window's framebuffer (bound, window-sized, single-sampled: a blit
+  // into a multisampled one fails, see gl::window_is_multisampled): the lists wholly inside
   // `panel` from the cache, the rest as ImGui drew them. `background` is what the window
   // shows where nothing is drawn.
   void draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background);
@@ -55,7 +55,6 @@ private:
   std::vector<std::byte> previous_;         // the last frame's, while the panel was changing
   std::unique_ptr<gl::RenderTarget> target_;
   int width_ = 0, height_ = 0;
-  std::optional<bool> blit_allowed_;  // the window's framebuffer takes a blit (asked once)
 };
 
 }  // namespace luz::app

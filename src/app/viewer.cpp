@@ -808,7 +808,8 @@ void Viewer::frame() {
   auto phase_start = FrameClock::now();
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   const FramebufferRect panel{0, l.framebuffer.y - l.view.pixels.y, l.view.gl_origin.x, l.view.pixels.y};
-  panel_cache_.draw(*ImGui::GetDrawData(), panel, background);
+  if (window_takes_blits_) panel_cache_.draw(*ImGui::GetDrawData(), panel, background);
+  else ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   take_screenshots(l);
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));

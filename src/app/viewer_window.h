@@ -147,7 +147,7 @@ private:
   std::vector<std::unique_ptr<gl::Framebuffer>> pictures_;  // each pane's float radiance
   PanelCache panel_cache_;  // the panel's pixels, drawn again only when it changes
   gl::Program display_{{"display.vert", "display.frag"}, {"srgb.glsl"}};
-  bool window_takes_blits_ = !gl::window_is_multisampled();  // the displayed values copied, not drawn
+  bool window_takes_blits_ = !gl::window_is_multisampled();  // panel and displayed values copied, not drawn
   int copied_panes_ = 0;
   GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
   OrbitCamera orbit_;
