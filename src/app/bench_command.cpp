@@ -1,4 +1,5 @@
-// `luz bench whitted`. For each scene: the full render (best and median of N), then the same
+// `luz bench whitted`. For each scene: the full render (best and median of N, after one untimed
+// render that sizes every thread's scratch queues and wakes TBB's workers), then the same
 // render once more keeping every ray it traced, then those rays traced bare through the same
 // Embree scene on the same TBB threads, as the renderer (--renderer) traces them: primary and
 // shadow rays as streams of 256 in the order the tracer made them (a tile's worth; with the
@@ -150,6 +151,9 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       rt::WhittedRenderer tracer(scene);
       const double build = seconds_since(start);
 
+      // Untimed: the first render of a process also pays for its threads' start and their scratch
+      // queues' first growth (about 5% at 1024x1024), which a benchmark of the tracer leaves out.
+      tracer.render(camera, settings.width, settings.height, options);
       double render = 1e30;
       rt::Counters counters;
       std::vector<double> times;
