@@ -71,6 +71,21 @@ void LocalModel::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
   reading_->gl_pixel = Rgb(rgba[0], rgba[1], rgba[2]);
 }
 
+// The inspector, when shown, reads the radiance GL drew at its pixel, and a transparent mesh
+// blends over radiance: both need the picture.
+bool LocalModel::draw_into_window(const Camera& camera, const Viewport& viewport) {
+  ViewerState& state = viewer_.state();
+  LocalRenderer& renderer = viewer_.local_renderer();
+  state.local.shading = shading_;
+  if ((viewer_.inspection().pick && state.show_inspector) || renderer.blends(state.local)) return false;
+  gl::bind_window_for_display();
+  renderer.draw_display(camera, viewport.gl_origin, viewport.pixels, state.local, std::exp2(state.exposure));
+  gl::bind_window();
+  drew_display_ = false;
+  reading_.reset();
+  return true;
+}
+
 void LocalModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
   ViewerState& state = viewer_.state();
   if (inspect(viewer_, camera, viewport, pixel)) {

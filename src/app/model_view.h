@@ -6,7 +6,8 @@
 //
 // The frame, for the view that is shown:
 //   advance()  its work of this frame (shots within a budget, finished tiles uploaded);
-//   draw()     its picture's radiance into the picture framebuffer (the viewport's pixels);
+//   draw()     its picture's radiance into the picture framebuffer (the viewport's pixels), or
+//              draw_into_window() what the window shows, when nothing needs the radiance;
 //   windows()  its windows over the picture (inspector, hints), inside the viewport;
 //   panel()    its section of the panel, under the model's radio buttons.
 // The registry (model_registry.h) makes one view per model the first time it is shown.
@@ -98,6 +99,11 @@ public:
   // (gl::Framebuffer::display_texture), so that the window copies it instead of running the
   // display pass over the radiance.
   virtual bool drew_display() const { return false; }
+  // What the window shows, drawn straight into the window's rectangle `viewport`
+  // (gl::bind_window_for_display) instead of a picture: the viewer asks on the frames that need
+  // no radiance (no heat map, no screenshot of the picture). False, having drawn nothing, where
+  // the view cannot; then draw() runs.
+  virtual bool draw_into_window(const Camera& /*camera*/, const Viewport& /*viewport*/) { return false; }
   // A left click (no drag) on a pixel of the picture.
   virtual void click(const Camera& /*camera*/, const Viewport& /*viewport*/, glm::ivec2 /*pixel*/) {}
   virtual void panel() = 0;

@@ -209,7 +209,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                            {"panel", s.frame_phases.panel_ms},
                                            {"panel_building", s.frame_phases.panel_building_ms},
                                            {"present", s.frame_phases.present_ms}}},
-                      {"display_copy", {{"on", s.display_copy}, {"copied_panes", v.copied_panes()}}},
+                      {"display_copy", {{"on", s.display_copy}, {"copied_panes", v.copied_panes()},
+                                        {"direct", s.display_direct}, {"direct_panes", v.direct_panes()}}},
                       {"panel_cache", {{"on", v.panel_cache().enabled},
                                        {"hits", v.panel_cache().hits},
                                        {"redraws", v.panel_cache().redraws}}}};
@@ -231,6 +232,13 @@ bool run_panel_cache(Viewer& v, const ScriptCommand& c, std::string&) {
 // `display-copy off`: the display pass over the radiance, to hold the copied frames against.
 bool run_display_copy(Viewer& v, const ScriptCommand& c, std::string&) {
   v.state().display_copy = c.args[0] == "on";
+  return true;
+}
+
+// `display-direct off`: the local models draw into their pictures on every frame, to hold the
+// frames drawn straight into the window against.
+bool run_display_direct(Viewer& v, const ScriptCommand& c, std::string&) {
+  v.state().display_direct = c.args[0] == "on";
   return true;
 }
 
@@ -298,6 +306,7 @@ constexpr ScriptVerb verbs[] = {
     {"dump-windows", "dump-windows FILE.json", check_json_file, run_dump_windows, true},
     {"panel-cache", "panel-cache on|off", check_on_off, run_panel_cache, true},
     {"display-copy", "display-copy on|off", check_on_off, run_display_copy, true},
+    {"display-direct", "display-direct on|off", check_on_off, run_display_direct, true},
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},

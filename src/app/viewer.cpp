@@ -618,7 +618,10 @@ nlohmann::json Viewer::windows_json() const {
 // Each pane's view draws its radiance into that pane's picture, then the display pass shows it:
 // radiance -> exposure -> sRGB, pixel for pixel into the pane's rectangle. A local model that
 // computed those displayed values as it drew (ModelView::drew_display) is copied instead: the
-// display pass's float fetch is most of its cost on a software rasteriser. One camera for all.
+// display pass's float fetch is most of its cost on a software rasteriser. On a frame that needs
+// no radiance (no heat map, no screenshot of the picture) a view may draw what the window shows
+// straight into it (ModelView::draw_into_window: the local models, but for the inspector and
+// transparency), which saves the copy and the float picture's writes. One camera for all.
 void Viewer::draw_picture(const Layout& l) {
   if (l.view.empty()) return;
   const Camera camera = current_camera();
@@ -627,7 +630,10 @@ void Viewer::draw_picture(const Layout& l) {
   const bool reference_in_a_pane =
       std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
   double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
-  copied_panes_ = 0;
+  copied_panes_ = direct_panes_ = 0;
+  const bool radiance_wanted =
+      state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
+      std::any_of(screenshots_.begin(), screenshots_.end(), [](const PendingScreenshot& s) { return !s.with_panel; });
   auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
     const Viewport& v = l.panes[i];
@@ -637,6 +643,12 @@ void Viewer::draw_picture(const Layout& l) {
       picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y, window_takes_blits_);
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
+    if (!radiance_wanted && pane_view.draw_into_window(camera, v)) {
+      if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+      ++direct_panes_;
+      models_ms += finish_phase(phase_start);
+      continue;
+    }
     picture->bind();
     pane_view.draw(camera, v, *picture);
     // The heat map instead, when it is on, in the active pane: the panes are of one size, so

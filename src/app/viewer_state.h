@@ -46,6 +46,7 @@ struct ViewerState {
                                         // panel's radio buttons set it, the viewer follows
   float exposure = 0.0f;                // EV, from the scene, then the panel's
   bool display_copy = true;             // the local models' displayed values copied to the window
+  bool display_direct = true;           // ...or drawn straight into it when no radiance is needed
                                         // (script: display-copy off runs the display pass instead)
   int scene_camera = 0;                 // the scene camera shown while !free_camera
   bool free_camera = false;             // the orbit camera moved away from it

@@ -107,6 +107,7 @@ public:
   Classroom& classroom() { return classroom_; }
   PanelCache& panel_cache() { return panel_cache_; }
   int copied_panes() const { return copied_panes_; }  // last frame's panes shown by a copy
+  int direct_panes() const { return direct_panes_; }  // ...drawn straight into the window
   const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
@@ -149,6 +150,7 @@ private:
   gl::Program display_{{"display.vert", "display.frag"}, {"srgb.glsl"}};
   bool window_takes_blits_ = !gl::window_is_multisampled();  // panel and displayed values copied, not drawn
   int copied_panes_ = 0;
+  int direct_panes_ = 0;
   GLuint empty_vertex_array_ = 0;  // core profile draws need one bound, even with no attributes
   OrbitCamera orbit_;
   Inspection inspection_;

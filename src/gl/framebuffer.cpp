@@ -46,6 +46,17 @@ void Framebuffer::bind_with_display() const {
   glDrawBuffers(display_ ? 2 : 1, both);
 }
 
+void bind_window_for_display() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const GLenum outputs[2] = {GL_NONE, GL_BACK_LEFT};
+  glDrawBuffers(2, outputs);
+}
+
+void bind_window() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDrawBuffer(GL_BACK);
+}
+
 Image Framebuffer::read() const {
   std::vector<float> rgba(size_t(width_) * height_ * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target_.fbo);

@@ -34,6 +34,12 @@ private:
   GLuint display_ = 0;
 };
 
+// The window's framebuffer (0) bound so that a program's output 1, the displayed values, goes to
+// its back buffer and output 0, the radiance, nowhere: what LocalRenderer::draw_display draws
+// into. bind_window() binds it as usual again (output 0 to the back buffer).
+void bind_window_for_display();
+void bind_window();
+
 // Whether the window's framebuffer (0) is multisampled (a driver's forced antialiasing): a blit
 // into it then fails, so what is copied elsewhere is drawn instead.
 bool window_is_multisampled();

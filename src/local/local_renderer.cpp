@@ -262,6 +262,9 @@ struct LocalRenderer::Impl {
   void set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view);
   float far_plane(const glm::vec3& eye) const;
   void draw_scene(const ScenePass& pass, const LocalOptions& options);
+  // LocalRenderer::draw and draw_display: the maps, then the picture into the rectangle.
+  void draw(const Camera& camera, glm::ivec2 origin, glm::ivec2 size, const LocalOptions& options,
+            std::optional<float> scale);
   void update_environment(const ReflectionMap& settings);
   void render_reflection_maps(const LocalOptions& options);
 };
@@ -623,9 +626,27 @@ void LocalRenderer::Impl::render_reflection_maps(const LocalOptions& options) {
 // ---- [draw and render] -------------------------------------------------------------------------
 void LocalRenderer::draw(const Camera& camera, int width, int height,
                          const LocalOptions& options, std::optional<float> display_scale) {
-  Impl& s = *impl_;
-  GLint target = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+  impl_->draw(camera, glm::ivec2(0), glm::ivec2(width, height), options, display_scale);
+}
+
+void LocalRenderer::draw_display(const Camera& camera, glm::ivec2 origin, glm::ivec2 size,
+                                 const LocalOptions& options, float display_scale) {
+  impl_->draw(camera, origin, size, options, display_scale);
+}
+
+bool LocalRenderer::blends(const LocalOptions& options) const {
+  if (!options.transparency.on) return false;
+  for (size_t m = 0; m < impl_->meshes.size(); ++m)
+    if (any(impl_->material_of(m).kt)) return true;
+  return false;
+}
+
+void LocalRenderer::Impl::draw(const Camera& camera, glm::ivec2 origin, glm::ivec2 size,
+                               const LocalOptions& options, std::optional<float> scale) {
+  Impl& s = *this;
+  glDisable(GL_SCISSOR_TEST);  // the maps are drawn whole
+  GLint drawn_into = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &drawn_into);
 
   // 1. The shadow maps (S_i).
   s.drew_shadows = options.shadows.on;
@@ -653,9 +674,11 @@ void LocalRenderer::draw(const Camera& camera, int width, int height,
   }
 
   // 3. The picture.
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
-  glViewport(0, 0, width, height);
-  glDisable(GL_SCISSOR_TEST);
+  // The scissor keeps the clears inside the rectangle (all of an FBO, a pane of the window).
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(drawn_into));
+  glViewport(origin.x, origin.y, size.x, size.y);
+  glScissor(origin.x, origin.y, size.x, size.y);
+  glEnable(GL_SCISSOR_TEST);
   // Rays that hit nothing see the background, or through fog the fog colour (f = 0 at infinity).
   // glClearBuffer does not clamp, so a background radiance above 1 survives in a float target.
   const Rgb clear = options.fog.mode != FogMode::off ? options.fog.colour : s.scene.background;
@@ -666,18 +689,19 @@ void LocalRenderer::draw(const Camera& camera, int width, int height,
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
   ScenePass pass;
-  pass.display = s.drew_display = display_scale.has_value();
-  if (display_scale) {
-    s.display_scale = *display_scale;
-    const float shown[4] = {srgb_encode(clear.r * *display_scale), srgb_encode(clear.g * *display_scale),
-                            srgb_encode(clear.b * *display_scale), 1.0f};
+  pass.display = s.drew_display = scale.has_value();
+  if (scale) {
+    s.display_scale = *scale;
+    const float shown[4] = {srgb_encode(clear.r * *scale), srgb_encode(clear.g * *scale),
+                            srgb_encode(clear.b * *scale), 1.0f};
     glClearBufferfv(GL_COLOR, 1, shown);
   }
   // Vertical field of view is the camera's yfov whatever the output's aspect.
-  pass.view_projection = camera.projection(float(width) / float(height), s.far_plane(camera.position())) *
+  pass.view_projection = camera.projection(float(size.x) / float(size.y), s.far_plane(camera.position())) *
                          camera.view();
   pass.eye = camera.position();
   s.draw_scene(pass, options);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 bool LocalRenderer::drew_display() const { return impl_->drew_display; }

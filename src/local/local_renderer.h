@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
@@ -42,6 +44,14 @@ public:
   // Whether the last draw() left the displayed picture whole in attachment 1: asked for, and no
   // transparent mesh blended over it (blending acts on radiance, not on displayed values).
   bool drew_display() const;
+  // Whether draw() with these options blends a transparent mesh over the picture.
+  bool blends(const LocalOptions& options) const;
+  // As draw() with `display_scale`, into the rectangle of the bound framebuffer whose lower-left
+  // corner is `origin` (GL's pixels) and nothing outside it: the viewer draws what its window
+  // shows straight into it, with the window's back buffer as draw buffer 1 and no draw buffer 0
+  // (gl::bind_window_for_display). Only for options that do not blend (blends()).
+  void draw_display(const Camera& camera, glm::ivec2 origin, glm::ivec2 size, const LocalOptions& options,
+                    float display_scale);
 
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
   Image render(const Camera& camera, int width, int height, const LocalOptions& options);
