@@ -167,15 +167,17 @@ struct Switches {
            line("LUZ_ENVIRONMENT", environment) + line("LUZ_TRANSPARENT", transparent) +
            fmt::format("#define LUZ_FOG_MODE {}\n", int(fog)) +  // lighting.glsl's FOG_*
            fmt::format("#define LUZ_LIGHT_COUNT {}\n#define LUZ_AREA_LIGHT_COUNT {}\n", lights, area_lights) +
-           fmt::format("#define LUZ_LIGHT_TYPES {}-1\n", list(light_types)) +
-           fmt::format("#define LUZ_LIGHT_SHADOW_KINDS {}-1\n", list(shadow_kinds)) +
+           fmt::format("#define LUZ_LIGHT_TYPES {}\n", list(light_types)) +
+           fmt::format("#define LUZ_LIGHT_SHADOW_KINDS {}\n", list(shadow_kinds)) +
            fmt::format("#define LUZ_AREA_SHADOW_KIND {}\n", int(area_shadow_kind)) +
            fmt::format("#define LUZ_DISPLAY_OUTPUT {}\n", int(display));  // for #if
   }
 
-  static std::string list(const std::vector<int>& values) {  // "1, 2, " for {1, 2}
+  // lighting.glsl's per-light arrays, max_lights long: "1, 2, -1, ..., -1" for {1, 2}.
+  static std::string list(const std::vector<int>& values) {
     std::string text;
-    for (int v : values) text += fmt::format("{}, ", v);
+    for (int i = 0; i < max_lights; ++i)
+      text += fmt::format("{}{}", i ? ", " : "", size_t(i) < values.size() ? values[size_t(i)] : -1);
     return text;
   }
 };
