@@ -271,7 +271,9 @@ Terms local_model(vec3 P, vec3 N) {
   if (ambient_on) terms.ambient = u_ambient * u_ka;  // I_A = Ia * ka
   // The punctual lights one call each, not a loop: Mesa unrolls a loop only while its body is
   // small, and a loop left rolled runs every type's and every shadow kind's code for every light
-  // (1.5x the time of six shadowed lights on llvmpipe). The calls past light_count fold away.
+  // (the effects plate's six shadowed lights took 1.6-1.8x as long on llvmpipe; the written-out
+  // calls compile for longer, once per machine with Mesa's shader cache). The calls past
+  // light_count fold away.
 #if MAX_LIGHTS != 16
 #error "local_model() calls add_punctual_light() once per light: MAX_LIGHTS times"
 #endif
