@@ -182,7 +182,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     first[i] = lights.size();
     answers[i].hit = hits[i];
     if (hits[i].found()) {
-      answers[i].point = whitted.surface_at(rays[i], hits[i]);
+      whitted.surface_at(rays[i], hits[i], answers[i].point);
       whitted.light_samples(answers[i].point, -rays[i].direction, seeds[i], lights);
     }
   }

@@ -103,7 +103,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     // several hits.
     scratch.points.resize(n);
     for (size_t k = 0; k < n; ++k)
-      if (scratch.hits[k].found()) scratch.points[k] = shading_.surface_at(rays[k], scratch.hits[k]);
+      if (scratch.hits[k].found()) shading_.surface_at(rays[k], scratch.hits[k], scratch.points[k]);
     scratch.first.resize(n + 1);
     scratch.lights.clear();
     for (size_t k = 0; k < n; ++k) {
@@ -142,9 +142,11 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     scratch.reflected.clear();
     scratch.transmitted.clear();
     if (depth < max_depth_of(options_)) {
+      SecondaryRays spawned;
       for (size_t k = 0; k < n; ++k) {
         if (!scratch.hits[k].found()) continue;
-        for (const SecondaryRay& s : shading_.secondary_rays(scratch.points[k], rays[k])) {
+        shading_.secondary_rays(scratch.points[k], rays[k], spawned);
+        for (const SecondaryRay& s : spawned) {
           RayQueue& next = s.kind == RayKind::reflected ? scratch.reflected : scratch.transmitted;
           next.push(s.ray, s.kind, queue.samples[k], queue.throughputs[k] * s.weight,
                     branch_seed(queue.seeds[k], s.kind));

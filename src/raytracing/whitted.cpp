@@ -100,7 +100,7 @@ Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lig
   return color;
 }
 
-SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) const {
+void Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray, SecondaryRays& out) const {
   const Material& o = *p.material;
   const glm::vec3 V = -ray.direction;
   // The transmitted direction by Snell's law. The ray enters the object when it hits the front
@@ -117,7 +117,7 @@ SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) con
   const Rgb kr = o.kr + o.kt * F;       // SCENES.md: kr, or kr + kt*F with Fresnel
   const Rgb kt = o.kt * (1.0f - F);     //            kt, or kt*(1 - F) with Fresnel
 
-  SecondaryRays out;
+  out.count = 0;
   // "si o es reflexivo": R := rayo de reflexión.
   if (positive(kr)) {
     const glm::vec3 R = keep_on_side(reflect(ray.direction, p.N), p.geometric);
@@ -129,7 +129,6 @@ SecondaryRays Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray) con
     out.rays[out.count++] = {Ray{offset_origin(p.position, inward), keep_on_side(*T, inward)},
                              RayKind::transmitted, kt};
   }
-  return out;
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------
@@ -198,8 +197,8 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   }
   if (!positive(term)) return;
   // The shadow ray, from just off the surface on the light's side to just short of the light
-  // (an emitter's sample lies on the emitter, which must not block it).
-  LightSample sample;
+  // (an emitter's sample lies on the emitter, which must not block it). Written in place.
+  LightSample& sample = out.emplace_back();
   sample.term = term;
   const glm::vec3 side = glm::dot(L, p.geometric) >= 0.0f ? p.geometric : -p.geometric;
   sample.shadow.origin = offset_origin(p.position, side);
@@ -207,7 +206,6 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   sample.shadow.tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
   sample.distance = distance;
   sample.light = light;
-  out.push_back(sample);
 }
 
 LightsAt Whitted::lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed) {
@@ -254,14 +252,13 @@ Rgb Whitted::kd_at(const SurfacePoint& p) const {
 }
 
 // ---- [surface] ----------------------------------------------------------------------------------
-SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
+void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const {
   static const Material fallback;
   const Mesh& mesh = scene_.meshes[size_t(hit.mesh)];
   const size_t t = size_t(hit.triangle);
   const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
   const float w = 1.0f - hit.u - hit.v;
 
-  SurfacePoint p;
   p.mesh = hit.mesh;
   p.triangle = hit.triangle;
   const glm::vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
@@ -281,11 +278,9 @@ SurfacePoint Whitted::surface_at(const Ray& ray, const Hit& hit) const {
   if (glm::dot(face, N) * glm::dot(face, -ray.direction) < 0.0f) N = -N;
   p.N = N;
 
-  if (!mesh.uvs.empty())
-    p.uv = w * mesh.uvs[i0] + hit.u * mesh.uvs[i1] + hit.v * mesh.uvs[i2];
+  p.uv = mesh.uvs.empty() ? glm::vec2(0.0f) : w * mesh.uvs[i0] + hit.u * mesh.uvs[i1] + hit.v * mesh.uvs[i2];
   const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
   p.material = known ? &scene_.materials[size_t(mesh.material)] : &fallback;
-  return p;
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------

@@ -114,7 +114,14 @@ public:
   // Color(o, r, p, N, d), for the hit of the ray of that seed.
   Rgb color(const SurfacePoint& p, const Ray& ray, int depth, uint64_t seed);
 
-  SurfacePoint surface_at(const Ray& ray, const Hit& hit) const;
+  // The surface point of a ray's hit, written in place: a 72-byte point returned by value and
+  // copied into a queue is read back before its stores have landed, which stalls the copy.
+  void surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const;
+  SurfacePoint surface_at(const Ray& ray, const Hit& hit) const {
+    SurfacePoint p;
+    surface_at(ray, hit, p);
+    return p;
+  }
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
   // (not traced): punctual lights and the samples of the emissive triangles, these drawn from
@@ -126,7 +133,13 @@ public:
   Rgb local_color(const SurfacePoint& p, std::span<const LightSample> lights, const bool* blocked) const;
   // The reflected and transmitted rays of the hit p of `ray`, with their weights: Fresnel's
   // split of kt (when on), Snell's law, total internal reflection (no transmitted ray).
-  SecondaryRays secondary_rays(const SurfacePoint& p, const Ray& ray) const;
+  // Written in place, as surface_at().
+  void secondary_rays(const SurfacePoint& p, const Ray& ray, SecondaryRays& out) const;
+  SecondaryRays secondary_rays(const SurfacePoint& p, const Ray& ray) const {
+    SecondaryRays out;
+    secondary_rays(p, ray, out);
+    return out;
+  }
   // Record every ray and its result in `tree` (trace_pixel), or log the rays (benchmark).
   void record_tree(RayTree* tree) { tree_ = RayTreeRecorder(tree); }
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
