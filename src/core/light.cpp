@@ -8,11 +8,6 @@
 
 namespace luz {
 
-float Attenuation::factor(float d) const {
-  if (!classroom) return 1.0f / (d * d);
-  return 1.0f / (c.x + c.y * d + c.z * d * d);
-}
-
 float Light::spot_factor(const glm::vec3& light_to_point) const {
   if (type != LightType::spot) return 1.0f;
   const float cos_angle = glm::dot(direction, light_to_point);

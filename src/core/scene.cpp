@@ -15,6 +15,13 @@ Rgb Mesh::colour_at(size_t triangle, const glm::vec2& barycentrics) const {
          v * colors[indices[3 * triangle + 2]];
 }
 
+glm::vec2 Mesh::uv_at(size_t triangle, const glm::vec2& barycentrics) const {
+  if (uvs.empty()) return glm::vec2(0.0f);
+  const float u = barycentrics.x, v = barycentrics.y;
+  return (1.0f - u - v) * uvs[indices[3 * triangle]] + u * uvs[indices[3 * triangle + 1]] +
+         v * uvs[indices[3 * triangle + 2]];
+}
+
 void Bounds::grow(const glm::vec3& p) {
   min = glm::min(min, p);
   max = glm::max(max, p);

@@ -49,6 +49,8 @@ struct Mesh {
   // COLOR_0 at barycentrics (u, v) of `triangle` (weights 1 - u - v, u, v of its three corners),
   // white when the mesh has no vertex colours: the factor every model multiplies kd by.
   Rgb colour_at(size_t triangle, const glm::vec2& barycentrics) const;
+  // TEXCOORD_0 at barycentrics (u, v) of `triangle`, (0, 0) when the mesh has none.
+  glm::vec2 uv_at(size_t triangle, const glm::vec2& barycentrics) const;
 };
 
 // An emissive triangle seen as a light (SCENES.md "Emissive triangles are area lights").

@@ -27,15 +27,6 @@ float power_heuristic(float pdf_a, float pdf_b) {
   return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// As in the Whitted tracer: a direction computed from the shading normal may point through the
-// face it leaves; it is bent to just graze the side (unit normal n) it must leave on.
-glm::vec3 keep_on_side(const glm::vec3& direction, const glm::vec3& n) {
-  constexpr float graze = 1e-3f;
-  const float c = glm::dot(direction, n);
-  if (c >= graze) return direction;
-  return glm::normalize(direction + (graze - c) * n);
-}
-
 }  // namespace
 
 // ---- [film] -------------------------------------------------------------------------------------

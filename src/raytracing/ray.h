@@ -1,5 +1,8 @@
 #pragma once
-// A ray and what it hits: the two values every part of the tracer passes around.
+// A ray and what it hits: the two values every part of the tracer passes around; and where a ray
+// leaving a surface starts.
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -32,5 +35,34 @@ struct Hit {
   float v = 0.0f;
   bool found() const { return mesh >= 0; }
 };
+
+// a where c holds, else b, chosen component by component: for a loop over many hits the compiler
+// turns this into vector blends, where a ternary between two vectors becomes a copy through memory
+// that stops it vectorising the loop.
+inline glm::vec3 select(bool c, const glm::vec3& a, const glm::vec3& b) {
+  return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
+}
+
+// The origin of a ray leaving point p toward the side of unit normal n, moved off the surface far
+// enough that the new ray cannot hit the surface it leaves, however large the coordinates: each
+// coordinate moves by a number of float ULPs proportional to n (so the offset grows with the
+// scene's scale), with a small fixed offset near the world origin where ULPs vanish. The method of
+// Wachter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems
+// (2019), chapter 6. Inline and without branches, so that loops over many hits vectorise.
+inline glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n) {
+  constexpr float near_origin = 1.0f / 32.0f;  // below this, ULPs are too small to rely on
+  constexpr float fixed_scale = 1.0f / 65536.0f;
+  constexpr float ulp_scale = 256.0f;  // ULPs per unit of n: covers the hit point's rounding
+  glm::vec3 moved;
+  for (int i = 0; i < 3; ++i) {
+    // Adding k to a positive float's bits moves it k ULPs away from zero (k ULPs toward zero
+    // for a negative float), so the step follows the coordinate's magnitude.
+    const int32_t ulps = int32_t(ulp_scale * n[i]);
+    const int32_t bits = std::bit_cast<int32_t>(p[i]);
+    const float stepped = std::bit_cast<float>(bits + (p[i] < 0.0f ? -ulps : ulps));
+    moved[i] = std::abs(p[i]) < near_origin ? p[i] + fixed_scale * n[i] : stepped;
+  }
+  return moved;
+}
 
 }  // namespace luz::rt

@@ -26,12 +26,13 @@ namespace luz::rt {
 // pixel and the sample index, it gives the same sequence on any thread.
 class Random {
 public:
+  Random() = default;
   explicit Random(uint64_t seed) : state_(seed) {}
   Random(int x, int y, int sample);  // Random(sample_seed(x, y, sample))
   float next();  // uniform in [0, 1)
 
 private:
-  uint64_t state_;
+  uint64_t state_ = 0;
 };
 
 // The seed of the ray tree of sample `sample` of pixel (x, y): its primary ray's.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "raytracing/hit_lanes.h"
 #include "raytracing/sampling.h"
 
 namespace luz::rt {
@@ -49,12 +50,31 @@ namespace {
 struct Scratch {
   RayQueue queue, reflected, transmitted;  // this generation; the next one's two kinds
   std::vector<Hit> hits;
-  std::vector<SurfacePoint> points;
-  std::vector<LightSample> lights;  // every hit's light samples, hit k's from first[k]
-  std::vector<size_t> first;
-  std::vector<Ray> shadow_rays;
+  std::vector<uint32_t> found;  // the queue indices of a chunk's hits, one a lane
+  HitLanes lanes;
+  LaneLights lights;   // the generation's light samples, hit by hit
   BlockedFlags blocked;
+  std::vector<Rgb> local;  // each hit's local colour
+  SpawnLanes spawned;
 };
+
+// The reflected and transmitted rays of the lanes' hits, weighted by their parents' throughput,
+// into the next generation's two queues.
+void spawn_rays(const HitLanes& lanes, const RayQueue& queue, SpawnLanes& spawned, RayQueue& reflected,
+                RayQueue& transmitted) {
+  lanes.secondary_rays(spawned);
+  for (size_t j = 0; j < spawned.size; ++j) {
+    const uint32_t q = lanes.ray(spawned.lane[j]);
+    if (spawned.reflects[j])
+      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, RayKind::reflected,
+                     queue.samples[q], queue.throughputs[q] * spawned.kr[j],
+                     branch_seed(queue.seeds[q], RayKind::reflected));
+    if (spawned.transmits[j])
+      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]},
+                       RayKind::transmitted, queue.samples[q], queue.throughputs[q] * spawned.kt[j],
+                       branch_seed(queue.seeds[q], RayKind::transmitted));
+  }
+}
 
 }  // namespace
 
@@ -88,6 +108,8 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
   for (size_t i = 0; i < primary.size(); ++i)
     queue.push(primary[i], RayKind::primary, uint32_t(i), weight, seeds[i]);
 
+  HitLanes& lanes = scratch.lanes;
+  lanes.shade_with(scene_, shading_, options_);
   // Slide 26's depth: primary rays have depth 1, and a hit at depth d spawns rays while d < max.
   for (int depth = 1; queue.size() > 0; ++depth) {
     const size_t n = queue.size();
@@ -98,60 +120,43 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     scratch.hits.resize(n);
     intersector_.intersect(rays, scratch.hits, counters_.intersection_tests);
 
-    // 2. "calcular la normal", then the light samples of each hit from its ray's seed. Two loops:
-    // each body is short enough for the processor to overlap the square roots and divisions of
-    // several hits.
-    scratch.points.resize(n);
-    for (size_t k = 0; k < n; ++k)
-      if (scratch.hits[k].found()) shading_.surface_at(rays[k], scratch.hits[k], scratch.points[k]);
-    scratch.first.resize(n + 1);
-    scratch.lights.clear();
-    for (size_t k = 0; k < n; ++k) {
-      scratch.first[k] = scratch.lights.size();
-      if (scratch.hits[k].found())
-        shading_.light_samples(scratch.points[k], -rays[k].direction, queue.seeds[k], scratch.lights);
+    // 2. "calcular la normal", every hit's light samples and the local colour without them, and
+    // its reflected and transmitted rays, weighted once more, into the next generation: kLanes
+    // rays of the queue at a time, in the queue's order.
+    scratch.reflected.clear();
+    scratch.transmitted.clear();
+    scratch.local.resize(n);
+    LaneLights& lights = scratch.lights;
+    lights.size = 0;
+    const bool spawn = depth < max_depth_of(options_);
+    for (size_t start = 0; start < n; start += kLanes) {
+      scratch.found.clear();
+      for (size_t q = start; q < std::min(n, start + kLanes); ++q)
+        if (scratch.hits[q].found()) scratch.found.push_back(uint32_t(q));
+      lanes.load(scratch.found, rays, scratch.hits, queue.seeds);
+      lanes.light_samples(lights);
+      lanes.unlit_colors(scratch.local);
+      if (spawn) spawn_rays(lanes, queue, scratch.spawned, scratch.reflected, scratch.transmitted);
     }
-    scratch.first[n] = scratch.lights.size();
 
     // 3. Every shadow ray of the generation, as one stream.
+    const std::span<const Ray> shadow_rays(lights.shadow.data(), lights.size);
     const bool* blocked = nullptr;  // shadows off: no light is blocked
     if (options_.shadows) {
-      const size_t m = scratch.lights.size();
-      scratch.shadow_rays.resize(m);
-      for (size_t j = 0; j < m; ++j) scratch.shadow_rays[j] = scratch.lights[j].shadow;
-      count(scratch.shadow_rays, RayKind::shadow);
-      const std::span<bool> flags = scratch.blocked.first(m);
-      intersector_.occluded(scratch.shadow_rays, flags, counters_.intersection_tests);
+      count(shadow_rays, RayKind::shadow);
+      const std::span<bool> flags = scratch.blocked.first(lights.size);
+      intersector_.occluded(shadow_rays, flags, counters_.intersection_tests);
       blocked = flags.data();
     }
 
-    // 4. Each hit's local colour, weighted by its throughput, into its sample's radiance; then
-    // (a second loop, as in step 2) its reflected and transmitted rays, weighted once more, into
-    // the next generation.
-    for (size_t k = 0; k < n; ++k) {
-      const Rgb& throughput = queue.throughputs[k];
-      if (!scratch.hits[k].found()) {
-        radiance[queue.samples[k]] += throughput * scene_.background;
-        continue;
-      }
-      const size_t first = scratch.first[k];
-      const std::span<const LightSample> lights(scratch.lights.data() + first, scratch.first[k + 1] - first);
-      radiance[queue.samples[k]] +=
-          throughput * shading_.local_color(scratch.points[k], lights, blocked ? blocked + first : nullptr);
-    }
-    scratch.reflected.clear();
-    scratch.transmitted.clear();
-    if (depth < max_depth_of(options_)) {
-      SecondaryRays spawned;
-      for (size_t k = 0; k < n; ++k) {
-        if (!scratch.hits[k].found()) continue;
-        shading_.secondary_rays(scratch.points[k], rays[k], spawned);
-        for (const SecondaryRay& s : spawned) {
-          RayQueue& next = s.kind == RayKind::reflected ? scratch.reflected : scratch.transmitted;
-          next.push(s.ray, s.kind, queue.samples[k], queue.throughputs[k] * s.weight,
-                    branch_seed(queue.seeds[k], s.kind));
-        }
-      }
+    // 4. Each hit's local colour: S_i = 1, each unblocked sample's term, a hit's in the order of
+    // its lights. Then each ray's local colour (the background where it hit nothing), weighted
+    // by its throughput, into its sample's radiance.
+    for (size_t j = 0; j < lights.size; ++j)
+      if (!blocked || !blocked[j]) scratch.local[lights.hit[j]] += lights.term[j];
+    for (size_t q = 0; q < n; ++q) {
+      const Rgb local = scratch.hits[q].found() ? scratch.local[q] : scene_.background;
+      radiance[queue.samples[q]] += queue.throughputs[q] * local;
     }
 
     // The next generation: the reflected rays, then the transmitted ones, each in the order of

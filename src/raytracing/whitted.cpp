@@ -12,25 +12,13 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "raytracing/optics.h"
+#include "raytracing/hit_math.h"
 
 namespace luz::rt {
 
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-
-bool positive(const Rgb& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
-
-// A shading normal is not the face's normal, so a reflected ray may point into the surface it
-// leaves (or a transmitted one out of it) and hit it again at once. Such a ray is bent to just
-// graze the surface on the side it must leave on (unit normal n of that side).
-glm::vec3 keep_on_side(const glm::vec3& direction, const glm::vec3& n) {
-  constexpr float graze = 1e-3f;
-  const float c = glm::dot(direction, n);
-  if (c >= graze) return direction;
-  return glm::normalize(direction + (graze - c) * n);
-}
 
 }  // namespace
 
@@ -102,32 +90,18 @@ Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lig
 
 void Whitted::secondary_rays(const SurfacePoint& p, const Ray& ray, SecondaryRays& out) const {
   const Material& o = *p.material;
-  const glm::vec3 V = -ray.direction;
-  // The transmitted direction by Snell's law. The ray enters the object when it hits the front
-  // (counter-clockwise) face, glTF's outside: eta = n1/n2 = 1/ior; leaving, eta = ior.
-  std::optional<glm::vec3> T;
-  float F = 0.0f;  // the share of kt that reflects instead
-  if (positive(o.kt)) {
-    const float eta = p.front ? 1.0f / o.ior : o.ior;
-    T = refract(ray.direction, p.N, eta);
-    const float cos_i = std::max(glm::dot(V, p.N), 0.0f);
-    if (options_.fresnel) F = fresnel_dielectric(cos_i, eta);  // 1 under total internal reflection
-    else if (!T) F = 1.0f;  // total internal reflection moves kt's share to the reflected ray
-  }
-  const Rgb kr = o.kr + o.kt * F;       // SCENES.md: kr, or kr + kt*F with Fresnel
-  const Rgb kt = o.kt * (1.0f - F);     //            kt, or kt*(1 - F) with Fresnel
-
+  const Split split = split_at(o.kr, o.kt, o.ior, p.front, ray.direction, p.N, options_.fresnel);
   out.count = 0;
   // "si o es reflexivo": R := rayo de reflexión.
-  if (positive(kr)) {
+  if (positive(split.kr)) {
     const glm::vec3 R = keep_on_side(reflect(ray.direction, p.N), p.geometric);
-    out.rays[out.count++] = {Ray{offset_origin(p.position, p.geometric), R}, RayKind::reflected, kr};
+    out.rays[out.count++] = {Ray{offset_origin(p.position, p.geometric), R}, RayKind::reflected, split.kr};
   }
   // "si o es transmisivo y no hay reflexión interna total": T := rayo de refracción.
-  if (positive(kt) && T) {
+  if (positive(split.kt) && split.refracts) {
     const glm::vec3 inward = -p.geometric;
-    out.rays[out.count++] = {Ray{offset_origin(p.position, inward), keep_on_side(*T, inward)},
-                             RayKind::transmitted, kt};
+    out.rays[out.count++] = {Ray{offset_origin(p.position, inward), keep_on_side(split.T, inward)},
+                             RayKind::transmitted, split.kt};
   }
 }
 
@@ -188,22 +162,12 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   Rgb term(0.0f);
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see local_color()).
   if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
-  if (options_.terms.specular && positive(o.ks)) {
-    // cos(alpha): Phong's mirror direction of the light against the viewer, or Blinn's N.H.
-    const float cos_alpha = options_.terms.blinn
-                                ? std::max(glm::dot(p.N, glm::normalize(L + V)), 0.0f)
-                                : std::max(glm::dot(reflect(-L, p.N), V), 0.0f);
-    term += IL * o.ks * std::pow(cos_alpha, o.shininess);  // I_S = IL ks cos^n(alpha)
-  }
+  if (options_.terms.specular && positive(o.ks))
+    term += IL * o.ks * std::pow(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
   if (!positive(term)) return;
-  // The shadow ray, from just off the surface on the light's side to just short of the light
-  // (an emitter's sample lies on the emitter, which must not block it). Written in place.
-  LightSample& sample = out.emplace_back();
+  LightSample& sample = out.emplace_back();  // written in place: see surface_at() in whitted.h
   sample.term = term;
-  const glm::vec3 side = glm::dot(L, p.geometric) >= 0.0f ? p.geometric : -p.geometric;
-  sample.shadow.origin = offset_origin(p.position, side);
-  sample.shadow.direction = L;
-  sample.shadow.tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
+  sample.shadow = shadow_ray(p.position, p.geometric, L, distance);
   sample.distance = distance;
   sample.light = light;
 }
@@ -231,16 +195,21 @@ const bool* Whitted::shadow_rays(const LightsAt& lights) {
 }
 
 Rgb Whitted::kd_at(const SurfacePoint& p) const {
-  const Material& o = *p.material;
+  return kd_at(*p.material, p.mesh, p.triangle, p.barycentrics, p.uv);
+}
+
+Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 barycentrics,
+                   glm::vec2 uv) const {
+  const Mesh& mesh = scene_.meshes[size_t(mesh_index)];
   // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
-  const Rgb kd = o.kd * scene_.meshes[size_t(p.mesh)].colour_at(size_t(p.triangle), p.barycentrics);
+  const Rgb kd = o.kd * mesh.colour_at(size_t(triangle), barycentrics);
   if (!options_.terms.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
-      scene_.meshes[size_t(p.mesh)].uvs.empty())
+      mesh.uvs.empty())
     return kd;
   // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the
   // base level (the rasteriser's mipmaps only differ where a texel is smaller than a pixel).
   const Texture& tex = scene_.textures[size_t(o.kd_texture)];
-  const float x = p.uv.x * float(tex.width) - 0.5f, y = p.uv.y * float(tex.height) - 0.5f;
+  const float x = uv.x * float(tex.width) - 0.5f, y = uv.y * float(tex.height) - 0.5f;
   const float fx = std::floor(x), fy = std::floor(y);
   const float ax = x - fx, ay = y - fy;
   const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
@@ -257,28 +226,17 @@ void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const 
   const Mesh& mesh = scene_.meshes[size_t(hit.mesh)];
   const size_t t = size_t(hit.triangle);
   const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
-  const float w = 1.0f - hit.u - hit.v;
-
+  const SurfaceGeometry g = surface_geometry(mesh.positions[i0], mesh.positions[i1], mesh.positions[i2],
+                                             mesh.normals[i0], mesh.normals[i1], mesh.normals[i2],
+                                             hit.u, hit.v, ray.direction);
+  p.position = g.position;
+  p.geometric = g.geometric;
+  p.N = g.N;
+  p.front = g.front;
   p.mesh = hit.mesh;
   p.triangle = hit.triangle;
-  const glm::vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
-  // The hit point from the barycentrics: its error is a few ULPs of the vertices' coordinates,
-  // which is what offset_origin's offsets are sized for (o + t d would add t's error).
-  p.position = w * p0 + hit.u * p1 + hit.v * p2;
   p.barycentrics = glm::vec2(hit.u, hit.v);
-  const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));  // counter-clockwise front
-  p.front = glm::dot(face, ray.direction) < 0.0f;
-  p.geometric = p.front ? face : -face;
-
-  glm::vec3 N = w * mesh.normals[i0] + hit.u * mesh.normals[i1] + hit.v * mesh.normals[i2];
-  const float length = glm::length(N);
-  N = length > 0.0f ? N / length : face;
-  // Two-sided lighting, as lighting.glsl: N is turned over when the viewer sees the side of the
-  // face opposite to it.
-  if (glm::dot(face, N) * glm::dot(face, -ray.direction) < 0.0f) N = -N;
-  p.N = N;
-
-  p.uv = mesh.uvs.empty() ? glm::vec2(0.0f) : w * mesh.uvs[i0] + hit.u * mesh.uvs[i1] + hit.v * mesh.uvs[i2];
+  p.uv = mesh.uv_at(t, p.barycentrics);
   const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
   p.material = known ? &scene_.materials[size_t(mesh.material)] : &fallback;
 }
@@ -294,22 +252,6 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   corner_ = rotation * glm::vec3(-tan_half * aspect, tan_half, -1.0f);
   right_ = rotation * glm::vec3(2.0f * tan_half * aspect / float(width), 0.0f, 0.0f);
   down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
-}
-
-glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n) {
-  constexpr float near_origin = 1.0f / 32.0f;  // below this, ULPs are too small to rely on
-  constexpr float fixed_scale = 1.0f / 65536.0f;
-  constexpr float ulp_scale = 256.0f;  // ULPs per unit of n: covers the hit point's rounding
-  glm::vec3 moved;
-  for (int i = 0; i < 3; ++i) {
-    // Adding k to a positive float's bits moves it k ULPs away from zero (k ULPs toward zero
-    // for a negative float), so the step follows the coordinate's magnitude.
-    const int32_t ulps = int32_t(ulp_scale * n[i]);
-    const int32_t bits = std::bit_cast<int32_t>(p[i]);
-    const float stepped = std::bit_cast<float>(bits + (p[i] < 0.0f ? -ulps : ulps));
-    moved[i] = std::abs(p[i]) < near_origin ? p[i] + fixed_scale * n[i] : stepped;
-  }
-  return moved;
 }
 
 const char* to_string(RayKind kind) {

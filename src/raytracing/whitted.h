@@ -123,6 +123,10 @@ public:
     return p;
   }
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
+  // The same at barycentrics (u, v) and texture coordinates uv of a triangle of material o.
+  Rgb kd_at(const Material& o, int mesh, int triangle, glm::vec2 barycentrics, glm::vec2 uv) const;
+  // The hybrid's diffuse part, or nullptr: Whitted's own local terms.
+  const DiffuseSource* diffuse_source() const { return diffuse_; }
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
   // (not traced): punctual lights and the samples of the emissive triangles, these drawn from
   // the generator of `seed`, the seed of the ray that hit p.
@@ -202,13 +206,5 @@ private:
 inline Ray primary_ray(const Camera& camera, int width, int height, glm::vec2 image_point) {
   return PrimaryRays(camera, width, height).through(image_point);
 }
-
-// The origin of a secondary ray leaving point p toward the side of unit normal n, moved off the
-// surface far enough that the new ray cannot hit the surface it leaves, however large the
-// coordinates: each coordinate moves by a number of float ULPs proportional to n (so the offset
-// grows with the scene's scale), with a small fixed offset near the world origin where ULPs
-// vanish. The method of Wachter & Binder, "A Fast and Robust Method for Avoiding
-// Self-Intersection", Ray Tracing Gems (2019), chapter 6.
-glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n);
 
 }  // namespace luz::rt

@@ -1,0 +1,305 @@
+// The wavefront's shading lanes (hit_lanes.h). Sections: [the hits] [lights] [colour] [rays]
+// Each vectorised loop reads and writes the lanes' arrays and loop-invariant locals only, so the
+// compiler can see that no store of one lane touches another's input.
+#include "raytracing/hit_lanes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "raytracing/hit_math.h"
+
+namespace luz::rt {
+
+namespace {
+constexpr float kPi = std::numbers::pi_v<float>;
+}  // namespace
+
+void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options) {
+  scene_ = &scene;
+  shading_ = &shading;
+  options_ = &options;
+}
+
+// ---- [the hits] ---------------------------------------------------------------------------------
+void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
+                    std::span<const uint64_t> seeds) {
+  static const Material fallback;
+  count_ = queue.size();
+  const size_t n = count_;
+  // Each hit's triangle: indices, then corners and normals, wherever they lie in memory.
+  for (size_t k = 0; k < n; ++k) {
+    const Hit& hit = hits[queue[k]];
+    const Mesh& mesh = scene_->meshes[size_t(hit.mesh)];
+    const size_t t = size_t(hit.triangle);
+    const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
+    p0_.set(k, mesh.positions[i0]);
+    p1_.set(k, mesh.positions[i1]);
+    p2_.set(k, mesh.positions[i2]);
+    n0_.set(k, mesh.normals[i0]);
+    n1_.set(k, mesh.normals[i1]);
+    n2_.set(k, mesh.normals[i2]);
+    u_[k] = hit.u;
+    v_[k] = hit.v;
+    ray_[k] = queue[k];
+    d_.set(k, rays[queue[k]].direction);
+    seed_[k] = seeds[queue[k]];
+    mesh_[k] = hit.mesh;
+    triangle_[k] = hit.triangle;
+    const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_->materials.size();
+    material_[k] = known ? &scene_->materials[size_t(mesh.material)] : &fallback;
+  }
+  // "calcular la normal", every lane at once.
+  for (size_t k = 0; k < n; ++k) {
+    const SurfaceGeometry g = surface_geometry(p0_[k], p1_[k], p2_[k], n0_[k], n1_[k], n2_[k], u_[k], v_[k], d_[k]);
+    position_.set(k, g.position);
+    geometric_.set(k, g.geometric);
+    N_.set(k, g.N);
+    front_[k] = g.front;
+  }
+  // What the light terms read of each material: kd (x COLOR_0 x the texture; in the hybrid
+  // radiosity has the diffuse term), ks and the exponent.
+  const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
+  for (size_t k = 0; k < n; ++k) {
+    const Material& o = *material_[k];
+    if (diffuse) {
+      const glm::vec2 barycentrics(u_[k], v_[k]);
+      const glm::vec2 uv = scene_->meshes[size_t(mesh_[k])].uv_at(size_t(triangle_[k]), barycentrics);
+      kd_.set(k, shading_->kd_at(o, mesh_[k], triangle_[k], barycentrics, uv));
+    } else {
+      kd_.set(k, Rgb(0.0f));
+    }
+    ks_.set(k, o.ks);
+    shininess_[k] = o.shininess;
+    shiny_[k] = options_->terms.specular && positive(o.ks);
+  }
+}
+
+// ---- [lights] -----------------------------------------------------------------------------------
+// Whitted::light_samples, light by light: the punctual lights, then each emissive triangle's
+// samples, so that each lane meets its lights in the recursion's order.
+void HitLanes::light_samples(LaneLights& out) {
+  by_light_.size = 0;
+  for (size_t i = 0; i < scene_->lights.size(); ++i) {
+    if (!scene_->lights[i].enabled) continue;
+    toward_light(scene_->lights[i]);
+    add_light(by_light_);
+  }
+  area_light_samples();
+  sort_by_lane(by_light_, out);
+}
+
+void HitLanes::area_light_samples() {
+  if (scene_->area_lights.empty()) return;
+  const int samples = std::max(1, options_->light_samples);
+  for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
+  for (const AreaLight& area : scene_->area_lights) {
+    area_points_.resize(size_t(samples));
+    if (samples == 1) {
+      // The centroid, for every lane: exactly the rasteriser's light.
+      for (size_t k = 0; k < count_; ++k) area_points_[0].set(k, area.centroid);
+    } else {
+      // N-rooks points on the emitter, each lane's from its own generator (scalar: the
+      // permutation). A lane on the emitter itself draws none, as in the recursion.
+      const Mesh& mesh = scene_->meshes[size_t(area.mesh)];
+      const size_t t = size_t(area.triangle);
+      const glm::vec3 &a = mesh.positions[mesh.indices[3 * t]], &b = mesh.positions[mesh.indices[3 * t + 1]],
+                      &c = mesh.positions[mesh.indices[3 * t + 2]];
+      for (size_t k = 0; k < count_; ++k) {
+        if (mesh_[k] == area.mesh && triangle_[k] == area.triangle) continue;
+        triangle_samples(a, b, c, samples, random_[k], triangle_points_);
+        for (int j = 0; j < samples; ++j) area_points_[size_t(j)].set(k, triangle_points_[size_t(j)]);
+      }
+    }
+    for (int j = 0; j < samples; ++j) {
+      toward_area_sample(area, samples, area_points_[size_t(j)]);
+      add_light(by_light_);
+    }
+  }
+}
+
+// A punctual light: IL = I * f_att(d) * spot / pi, or E_perp / pi for a directional one.
+void HitLanes::toward_light(const Light& light) {
+  const size_t n = count_;
+  if (light.type == LightType::directional) {
+    const glm::vec3 L = -glm::normalize(light.direction);
+    const Rgb IL = light.intensity / kPi;
+    for (size_t k = 0; k < n; ++k) {
+      L_.set(k, L);
+      IL_.set(k, IL);
+      distance_[k] = kInfinity;
+      lit_[k] = true;
+    }
+    return;
+  }
+  const glm::vec3 origin = light.position;
+  for (size_t k = 0; k < n; ++k) {
+    const glm::vec3 to_light = origin - position_[k];
+    const float d = glm::length(to_light);
+    L_.set(k, to_light / d);
+    distance_[k] = d;
+    lit_[k] = !(d <= 0.0f);
+  }
+  // The spot's cone (scalar: Warn's exponent calls pow); 1 for a point light.
+  if (light.type == LightType::spot)
+    for (size_t k = 0; k < n; ++k) spot_[k] = light.spot_factor(-L_[k]);
+  else
+    std::fill(spot_, spot_ + n, 1.0f);
+  const Rgb intensity = light.intensity;
+  const Attenuation attenuation = light.attenuation;
+  for (size_t k = 0; k < n; ++k) IL_.set(k, intensity * attenuation.factor(distance_[k]) * spot_[k] / kPi);
+}
+
+// One sample point y of an emissive triangle per lane (of `samples`): it stands for area A/N and
+// lights like a point of intensity Le (A/N) cos(theta_e) (SCENES.md).
+void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points) {
+  const size_t n = count_;
+  const glm::vec3 normal = area.normal;
+  const Rgb radiance = area.radiance;
+  const float share = area.area / float(samples);
+  const int mesh = area.mesh, triangle = area.triangle;
+  for (size_t k = 0; k < n; ++k) {
+    const glm::vec3 to_light = points[k] - position_[k];
+    const float d = glm::length(to_light);
+    const glm::vec3 L = to_light / d;
+    const float cos_theta_e = std::max(glm::dot(normal, -L), 0.0f);  // dark behind it
+    L_.set(k, L);
+    IL_.set(k, radiance * share * cos_theta_e / (d * d) / kPi);
+    distance_[k] = d;
+    // An emitter cannot light itself.
+    lit_[k] = !(d < 1e-6f) & !((mesh_[k] == mesh) & (triangle_[k] == triangle));
+  }
+}
+
+void HitLanes::add_light(LaneLights& out) {
+  const size_t n = count_;
+  const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
+  const bool blinn = options_->terms.blinn;
+  // "si (L·N) > 0", and cos(alpha) of every lane.
+  for (size_t k = 0; k < n; ++k) {
+    const float cos_theta = glm::dot(N_[k], L_[k]);
+    lit_[k] = lit_[k] & !(cos_theta <= 0.0f) & positive(IL_[k]);
+    cos_alpha_[k] = cos_alpha(N_[k], L_[k], -d_[k], blinn);
+  }
+  // cos^n(alpha), where a highlight counts (scalar: pow).
+  for (size_t k = 0; k < n; ++k)
+    highlight_[k] = shiny_[k] && lit_[k] ? std::pow(cos_alpha_[k], shininess_[k]) : 0.0f;
+
+  // The terms of every lane, then their shadow rays; those that count appended in lane order.
+  // (Three loops, not one: GCC 12 vectorises each of them, and gives up on the three together.)
+  const size_t first = out.size;
+  if (out.shadow.size() < first + n) {
+    out.shadow.resize(first + n + kLanes);
+    out.hit.resize(out.shadow.size());
+    out.term.resize(out.shadow.size());
+  }
+  for (size_t k = 0; k < n; ++k) {
+    const float cos_theta = glm::dot(N_[k], L_[k]);
+    const Rgb IL = IL_[k];
+    const Rgb I_D = IL * kd_[k] * cos_theta;  // in the hybrid radiosity has it already
+    const Rgb I_S = IL * ks_[k] * highlight_[k];
+    Rgb t(0.0f);
+    t += select(diffuse, I_D, Rgb(0.0f));
+    t += select(shiny_[k] != 0, I_S, Rgb(0.0f));
+    term_.set(k, t);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    lit_[k] = lit_[k] & positive(term_[k]);
+    const Ray shadow = shadow_ray(position_[k], geometric_[k], L_[k], distance_[k]);
+    origin_.set(k, shadow.origin);
+    tfar_[k] = shadow.tfar;
+  }
+  size_t m = first;
+  for (size_t k = 0; k < n; ++k) {
+    out.shadow[m] = Ray{origin_[k], L_[k], tfar_[k]};
+    out.hit[m] = uint32_t(k);
+    out.term[m] = term_[k];
+    m += lit_[k] ? 1 : 0;
+  }
+  out.size = m;
+}
+
+// The samples lane by lane, each lane's in the order of its lights, as the recursion makes them.
+// Embree may answer a shadow ray that grazes an edge differently with other rays beside it in a
+// packet, so the stream holds the recursion's rays in the recursion's order: the same shadows.
+void HitLanes::sort_by_lane(const LaneLights& in, LaneLights& out) const {
+  uint32_t first[kLanes + 1] = {};  // lane k's samples go to first[k] ...
+  first[0] = uint32_t(out.size);
+  for (size_t j = 0; j < in.size; ++j) ++first[in.hit[j] + 1];
+  for (size_t k = 0; k < count_; ++k) first[k + 1] += first[k];
+  out.size += in.size;
+  if (out.shadow.size() < out.size) {
+    out.shadow.resize(2 * out.size);
+    out.hit.resize(out.shadow.size());
+    out.term.resize(out.shadow.size());
+  }
+  for (size_t j = 0; j < in.size; ++j) {
+    const uint32_t to = first[in.hit[j]]++;
+    out.shadow[to] = in.shadow[j];
+    out.hit[to] = ray_[in.hit[j]];
+    out.term[to] = in.term[j];
+  }
+}
+
+// ---- [colour] -----------------------------------------------------------------------------------
+void HitLanes::unlit_colors(std::span<Rgb> local) const {
+  const DiffuseSource* diffuse = shading_->diffuse_source();
+  const TermSwitches& terms = options_->terms;
+  for (size_t k = 0; k < count_; ++k) {
+    const Material& o = *material_[k];
+    Rgb color(0.0f);
+    if (!diffuse) {
+      if (terms.ambient) color = scene_->ambient * o.ka;
+      if (terms.emission && front_[k]) color += o.emission;  // an emitter shows Le on its front
+    } else if (terms.diffuse && front_[k]) {
+      color = diffuse->diffuse_radiance(mesh_[k], triangle_[k], glm::vec2(u_[k], v_[k]));
+    }
+    local[ray_[k]] = color;
+  }
+}
+
+// ---- [rays] -------------------------------------------------------------------------------------
+void HitLanes::secondary_rays(SpawnLanes& out) const {
+  // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered.
+  Vec3Lanes d, N, position, geometric;
+  int32_t front[kLanes];
+  float ior[kLanes];
+  size_t m = 0;
+  for (size_t k = 0; k < count_; ++k) {
+    const Material& o = *material_[k];
+    if (!positive(o.kr) && !positive(o.kt)) continue;
+    out.lane[m] = uint32_t(k);
+    out.kr.set(m, o.kr);
+    out.kt.set(m, o.kt);
+    ior[m] = o.ior;
+    d.set(m, d_[k]);
+    N.set(m, N_[k]);
+    position.set(m, position_[k]);
+    geometric.set(m, geometric_[k]);
+    front[m] = front_[k];
+    ++m;
+  }
+  out.size = m;
+  // kr and kt, and whether each ray is spawned.
+  const bool fresnel = options_->fresnel;
+  for (size_t j = 0; j < m; ++j) {
+    const Split split = split_at(out.kr[j], out.kt[j], ior[j], front[j], d[j], N[j], fresnel);
+    out.kr.set(j, split.kr);
+    out.kt.set(j, split.kt);
+    out.transmitted_direction.set(j, split.T);
+    // "si o es reflexivo"; "si o es transmisivo y no hay reflexión interna total".
+    out.reflects[j] = positive(split.kr);
+    out.transmits[j] = positive(split.kt) & split.refracts;
+  }
+  // R := rayo de reflexión, T := rayo de refracción: where they leave, which way.
+  for (size_t j = 0; j < m; ++j) {
+    out.reflected_origin.set(j, offset_origin(position[j], geometric[j]));
+    out.reflected_direction.set(j, keep_on_side(reflect(d[j], N[j]), geometric[j]));
+    out.transmitted_origin.set(j, offset_origin(position[j], -geometric[j]));
+    out.transmitted_direction.set(j, keep_on_side(out.transmitted_direction[j], -geometric[j]));
+  }
+}
+
+}  // namespace luz::rt

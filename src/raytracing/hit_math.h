@@ -1,0 +1,95 @@
+#pragma once
+// The arithmetic of slide 26's Color() at one hit, as inline functions of plain values. The
+// recursion (whitted.cpp) calls them for one hit at a time; the wavefront's lanes (hit_lanes.h)
+// call them in loops over many hits, which the compiler turns into vector instructions. Written
+// once, so the two renderers cannot drift apart: the same operations in the same order give the
+// same bits (no fused multiply-adds: the tracer is built for baseline x86-64).
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/color.h"
+#include "raytracing/optics.h"
+#include "raytracing/ray.h"
+
+namespace luz::rt {
+
+// Some channel above zero. (A bitwise or: no branches in the lanes' loops.)
+inline bool positive(const Rgb& c) { return (c.x > 0.0f) | (c.y > 0.0f) | (c.z > 0.0f); }
+
+// "calcular la normal": where a ray of direction d meets triangle (p0, p1, p2), whose vertex
+// normals are (n0, n1, n2), at barycentrics (u, v).
+struct SurfaceGeometry {
+  glm::vec3 position;   // from the barycentrics, not o + t d (see offset_origin)
+  glm::vec3 geometric;  // unit face normal on the side the ray came from
+  glm::vec3 N;          // unit shading normal (interpolated), turned to the ray's side
+  bool front;           // the ray hit the counter-clockwise (glTF front) face
+};
+
+inline SurfaceGeometry surface_geometry(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+                                        const glm::vec3& n0, const glm::vec3& n1, const glm::vec3& n2,
+                                        float u, float v, const glm::vec3& d) {
+  const float w = 1.0f - u - v;
+  SurfaceGeometry g;
+  // The hit point from the barycentrics: its error is a few ULPs of the vertices' coordinates,
+  // which is what offset_origin's offsets are sized for (o + t d would add t's error).
+  g.position = w * p0 + u * p1 + v * p2;
+  const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));  // counter-clockwise front
+  g.front = glm::dot(face, d) < 0.0f;
+  g.geometric = select(g.front, face, -face);
+  const glm::vec3 interpolated = w * n0 + u * n1 + v * n2;
+  const float length = glm::length(interpolated);
+  const glm::vec3 N = select(length > 0.0f, interpolated / length, face);
+  // Two-sided lighting, as lighting.glsl: N is turned over when the viewer sees the side of the
+  // face opposite to it.
+  g.N = select(glm::dot(face, N) * glm::dot(face, -d) < 0.0f, -N, N);
+  return g;
+}
+
+// cos(alpha) of the highlight I_S = IL ks cos^n(alpha): Phong's mirror direction of the light
+// against the viewer, or Blinn's N.H. L toward the light, V toward the viewer.
+inline float cos_alpha(const glm::vec3& N, const glm::vec3& L, const glm::vec3& V, bool blinn) {
+  return blinn ? std::max(glm::dot(N, glm::normalize(L + V)), 0.0f)
+               : std::max(glm::dot(reflect(-L, N), V), 0.0f);
+}
+
+// The shadow ray of a light in direction L at `distance` from a point (infinite: a directional
+// light): from just off the surface on the light's side to just short of the light (an emitter's
+// sample lies on the emitter, which must not block it).
+inline Ray shadow_ray(const glm::vec3& position, const glm::vec3& geometric, const glm::vec3& L,
+                      float distance) {
+  const glm::vec3 side = select(glm::dot(L, geometric) >= 0.0f, geometric, -geometric);
+  return Ray{offset_origin(position, side), L,
+             std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f)};
+}
+
+// How a hit splits the light it passes on (slide 26's kr and kt, SCENES.md): with Fresnel on,
+// kr + kt F and kt (1 - F); without it kr and kt, and under total internal reflection kt's share
+// goes to the reflected ray. The ray enters the object when it hits the front (counter-clockwise)
+// face, glTF's outside: eta = n1/n2 = 1/ior; leaving, eta = ior.
+struct Split {
+  Rgb kr;
+  Rgb kt;
+  glm::vec3 T;     // the transmitted direction (Snell's law), when `refracts`
+  bool refracts;   // kt > 0 and no total internal reflection
+};
+
+inline Split split_at(const Rgb& kr, const Rgb& kt, float ior, bool front, const glm::vec3& d,
+                      const glm::vec3& N, bool fresnel) {
+  const bool transmissive = positive(kt);
+  const float inverse = 1.0f / ior;
+  const float eta = front ? inverse : ior;
+  bool total = false;
+  const glm::vec3 T = refract(d, N, eta, total);
+  const float cos_i = std::max(glm::dot(-d, N), 0.0f);
+  // The share of kt that reflects instead: 1 under total internal reflection.
+  const float fresnel_F = fresnel_dielectric(cos_i, eta);
+  const float without_fresnel = total ? 1.0f : 0.0f;
+  const float share = fresnel ? fresnel_F : without_fresnel;
+  const float F = transmissive ? share : 0.0f;
+  // T by components: copied whole, GCC 12 keeps the split in memory and the loop unvectorised.
+  return Split{kr + kt * F, kt * (1.0f - F), glm::vec3(T.x, T.y, T.z), bool(transmissive & !total)};
+}
+
+}  // namespace luz::rt
