@@ -184,5 +184,32 @@ TEST(WavefrontEqualsRecursion, SameIntersectionTests) {
   EXPECT_LE(worst_difference(wavefront, recursive), 1e-6f);
 }
 
+// Embree may answer a shadow ray that grazes an edge differently with other rays beside it in a
+// packet, so the wavefront sends the first generation's shadow rays in the recursion's order: each
+// sample's, light by light, sample by sample. At depth 1 the logs hold just that generation.
+TEST(WavefrontEqualsRecursion, ShadowRaysInTheRecursionsOrder) {
+  const Scene scene = io::load_gltf(test::scene_dir() / "cornell_spheres.gltf").scene;
+  ASSERT_GE(scene.lights.size() + scene.area_lights.size(), 2u);
+  WhittedRenderer tracer(scene);
+  tracer.keep_rays(true);
+  WhittedOptions options;
+  options.max_depth = 1;
+  options.spp = 4;
+  options.light_samples = 2;
+  const auto shadow_rays = [&](RendererKind renderer) {
+    options.renderer = renderer;
+    tracer.render(scene.cameras[0], kWidth, kHeight, options);
+    std::vector<std::tuple<float, float, float, float, float, float, float>> rays;
+    for (const RecordedRay& r : tracer.take_rays())
+      if (r.kind == RayKind::shadow)
+        rays.emplace_back(r.ray.origin.x, r.ray.origin.y, r.ray.origin.z, r.ray.direction.x,
+                          r.ray.direction.y, r.ray.direction.z, r.ray.tfar);
+    return rays;
+  };
+  const auto recursive = shadow_rays(RendererKind::recursive);
+  EXPECT_GT(recursive.size(), size_t(kWidth * kHeight));
+  EXPECT_TRUE(shadow_rays(RendererKind::wavefront) == recursive);
+}
+
 }  // namespace
 }  // namespace luz::rt

@@ -63,8 +63,10 @@ void triangle_samples(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3&
     points.push_back((p0 + p1 + p2) / 3.0f);
     return;
   }
-  // A random permutation pairs the u-strata with the v-strata (Fisher-Yates).
-  std::vector<int> permutation(static_cast<size_t>(count));
+  // A random permutation pairs the u-strata with the v-strata (Fisher-Yates). Its buffer is kept
+  // per thread: this runs for every hit and every emissive triangle.
+  thread_local std::vector<int> permutation;
+  permutation.resize(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) permutation[size_t(i)] = i;
   for (int i = count - 1; i > 0; --i) {
     const int j = std::min(i, int(random.next() * float(i + 1)));

@@ -5,20 +5,22 @@
 //   queue := the primary rays of a tile's samples
 //   while the queue is not empty:
 //     1. the queue's nearest hits, as one Embree stream
-//     2. each hit's surface point and light samples
-//     3. all their shadow rays, as one stream
-//     4. each hit's local colour x its throughput (the product of the weights kr, kt and 1/spp
-//        from its primary ray down) added to its sample's radiance; its reflected and
-//        transmitted rays into the next queue
+//     2. each hit's surface point, light samples and local colour before its lights, and its
+//        reflected and transmitted rays into the next queue
+//     3. all the light samples' shadow rays, as one stream
+//     4. each hit's local colour (its unblocked lights added) x its throughput (the product of
+//        the weights kr, kt and 1/spp from its primary ray down) added to its sample's radiance
 //
 // Embree traces a stream of rays faster than the same rays one by one (it traverses them in
-// packets, and its memory stays in cache), and the shading of a queue runs as one loop.
+// packets, and its memory stays in cache). Step 2 runs over 64 hits at a time as a structure of
+// arrays (hit_lanes.h), in loops the compiler vectorises.
 // By the distributive law the sum of throughput x local colour over a sample's ray tree is what
 // the recursion's nested local + kr (local + kr (...)) + kt (...) adds up to; only the rounding
-// differs. Every per-hit step is the recursion's own function (Whitted::surface_at,
-// light_samples, local_color, secondary_rays), and every ray draws its random numbers from its
-// place in the tree (sampling.h), so the two renderers agree within float rounding
-// (test_whitted_streams holds them to it on every shipped scene).
+// differs. The arithmetic of every per-hit step is the recursion's own (hit_math.h), the shadow
+// rays go to Embree in the order the recursion's first generation sends them (Embree may answer
+// a ray that grazes an edge by the rays beside it in its packet), and every ray draws its random
+// numbers from its place in the tree (sampling.h), so the two renderers agree within float
+// rounding (test_whitted_streams holds them to it on every shipped scene).
 //
 // The recursion stays the reference: it draws the ray tree (trace_pixel) and serves adaptive
 // sampling, whose samples depend on each other's results.

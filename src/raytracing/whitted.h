@@ -16,8 +16,9 @@
 // light samples at its own hit draw from it. The wavefront renderer (wavefront.h), which traces
 // the same rays in another order, gives each ray the same seed and so the same picture.
 //
-// The pieces of Color() that the wavefront renderer shares, so that it cannot drift from the
-// slide's code: surface_at(), light_samples(), local_color() and secondary_rays().
+// The pieces of Color(): surface_at(), light_samples(), local_color() and secondary_rays(). Their
+// arithmetic is in hit_math.h, which the wavefront renderer's lanes (hit_lanes.h) run too, so
+// that it cannot drift from the slide's code.
 #include <cstdint>
 #include <span>
 #include <vector>
