@@ -11,8 +11,9 @@ namespace luz::rt {
 
 // ---- [queues] -----------------------------------------------------------------------------------
 // One generation of rays, as a structure of arrays: the rays contiguous for Embree's stream, the
-// rest read once per ray by the shading loop. Cleared, never shrunk: after the first tiles a
-// thread's queues have the capacity they need and a tile allocates nothing.
+// rest read once per ray by the shading loop. Its first size() entries are the generation; the
+// arrays only grow: after the first tiles a thread's queues have the room they need, a tile
+// allocates nothing, and adding a ray checks the room once, not once per array.
 struct RayQueue {
   std::vector<Ray> rays;
   std::vector<RayKind> kinds;
@@ -20,28 +21,32 @@ struct RayQueue {
   std::vector<Rgb> throughputs;    // the product of the weights from that primary ray down
   std::vector<uint64_t> seeds;     // its place in the ray tree (sampling.h)
 
-  size_t size() const { return rays.size(); }
-  void clear() {
-    rays.clear();
-    kinds.clear();
-    samples.clear();
-    throughputs.clear();
-    seeds.clear();
-  }
+  size_t size() const { return size_; }
+  std::span<const Ray> generation() const { return {rays.data(), size_}; }
+  void clear() { size_ = 0; }
   void push(const Ray& ray, RayKind kind, uint32_t sample, const Rgb& throughput, uint64_t seed) {
-    rays.push_back(ray);
-    kinds.push_back(kind);
-    samples.push_back(sample);
-    throughputs.push_back(throughput);
-    seeds.push_back(seed);
+    if (size_ == rays.size()) grow(2 * size_ + 256);
+    rays[size_] = ray;
+    kinds[size_] = kind;
+    samples[size_] = sample;
+    throughputs[size_] = throughput;
+    seeds[size_] = seed;
+    ++size_;
   }
   void append(const RayQueue& other) {
-    rays.insert(rays.end(), other.rays.begin(), other.rays.end());
-    kinds.insert(kinds.end(), other.kinds.begin(), other.kinds.end());
-    samples.insert(samples.end(), other.samples.begin(), other.samples.end());
-    throughputs.insert(throughputs.end(), other.throughputs.begin(), other.throughputs.end());
-    seeds.insert(seeds.end(), other.seeds.begin(), other.seeds.end());
+    for (size_t i = 0; i < other.size(); ++i)
+      push(other.rays[i], other.kinds[i], other.samples[i], other.throughputs[i], other.seeds[i]);
   }
+
+private:
+  void grow(size_t capacity) {
+    rays.resize(capacity);
+    kinds.resize(capacity);
+    samples.resize(capacity);
+    throughputs.resize(capacity);
+    seeds.resize(capacity);
+  }
+  size_t size_ = 0;
 };
 
 namespace {
@@ -89,8 +94,9 @@ void Wavefront::count(const RayQueue& queue) {
   if (log_) {
     for (size_t k = 0; k < queue.size(); ++k) log_->push_back({queue.rays[k], queue.kinds[k]});
   }
+  const auto kinds = queue.kinds.begin(), end = kinds + std::ptrdiff_t(queue.size());
   for (const RayKind kind : {RayKind::primary, RayKind::reflected, RayKind::transmitted})
-    counters_[kind] += uint64_t(std::count(queue.kinds.begin(), queue.kinds.end(), kind));
+    counters_[kind] += uint64_t(std::count(kinds, end, kind));
 }
 
 void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
@@ -113,7 +119,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
   // Slide 26's depth: primary rays have depth 1, and a hit at depth d spawns rays while d < max.
   for (int depth = 1; queue.size() > 0; ++depth) {
     const size_t n = queue.size();
-    const std::span<const Ray> rays = queue.rays;
+    const std::span<const Ray> rays = queue.generation();
     count(queue);
 
     // 1. "Determinar intersección con objeto más cercano", for the whole queue at once.
