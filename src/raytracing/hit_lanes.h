@@ -8,8 +8,8 @@
 // rays that survive) runs in short scalar loops of its own between them.
 //
 // Per lane, the operations are those of Whitted::surface_at, light_samples, local_color and
-// secondary_rays, in the same order, so the picture and every ray are the recursion's to the bit
-// (test_whitted_streams).
+// secondary_rays, in the same order, so every ray is the recursion's to the bit and every light's
+// term too (test_whitted_streams).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -82,7 +82,6 @@ public:
   // The lanes' reflected and transmitted rays (Whitted::secondary_rays).
   void secondary_rays(SpawnLanes& out) const;
 
-  size_t size() const { return count_; }
   uint32_t ray(size_t lane) const { return ray_[lane]; }  // the lane's place in the queue
 
 private:

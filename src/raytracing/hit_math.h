@@ -4,6 +4,7 @@
 // call them in loops over many hits, which the compiler turns into vector instructions. Written
 // once, so the two renderers cannot drift apart: the same operations in the same order give the
 // same bits (no fused multiply-adds: the tracer is built for baseline x86-64).
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -78,7 +79,7 @@ struct Split {
 inline Split split_at(const Rgb& kr, const Rgb& kt, float ior, bool front, const glm::vec3& d,
                       const glm::vec3& N, bool fresnel) {
   const bool transmissive = positive(kt);
-  const float inverse = 1.0f / ior;
+  const float inverse = 1.0f / ior;  // computed, then chosen: no branch (see select())
   const float eta = front ? inverse : ior;
   bool total = false;
   const glm::vec3 T = refract(d, N, eta, total);
@@ -88,8 +89,7 @@ inline Split split_at(const Rgb& kr, const Rgb& kt, float ior, bool front, const
   const float without_fresnel = total ? 1.0f : 0.0f;
   const float share = fresnel ? fresnel_F : without_fresnel;
   const float F = transmissive ? share : 0.0f;
-  // T by components: copied whole, GCC 12 keeps the split in memory and the loop unvectorised.
-  return Split{kr + kt * F, kt * (1.0f - F), glm::vec3(T.x, T.y, T.z), bool(transmissive & !total)};
+  return Split{kr + kt * F, kt * (1.0f - F), T, bool(transmissive & !total)};
 }
 
 }  // namespace luz::rt

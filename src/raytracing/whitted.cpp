@@ -2,11 +2,9 @@
 #include "raytracing/whitted.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <optional>
 #include <utility>
 
 #include <glm/geometric.hpp>
