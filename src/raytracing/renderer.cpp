@@ -24,6 +24,7 @@ struct TileScratch {
   std::vector<Ray> rays;
   std::vector<Hit> hits;
   std::vector<glm::vec2> offsets;
+  std::vector<glm::vec2> points;  // the samples' image points
   std::vector<StreamedAnswers> answers;
   std::vector<size_t> first;
   std::vector<uint64_t> seeds;
@@ -34,6 +35,7 @@ struct TileScratch {
   void resize(size_t n) {
     if (rays.size() >= n) return;
     rays.resize(n);
+    points.resize(n);
     hits.resize(n);
     answers.resize(n);
     first.resize(n + 1);
@@ -144,10 +146,13 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
       Random jitter(x, y, -1);
       stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {
-        camera_rays.through(glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)], rays[i]);
+        scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
         seeds[i] = sample_seed(x, y, s);
       }
     }
+  // The rays in a loop of their own, without calls: the processor overlaps the square roots and
+  // divisions of their normalisations.
+  for (i = 0; i < n; ++i) camera_rays.through(scratch.points[i], rays[i]);
   counters.samples += n;
   const Rgb weight(1.0f / float(samples_per_pixel));
 
