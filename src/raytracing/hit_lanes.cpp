@@ -26,7 +26,6 @@ void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const Whit
 // ---- [the hits] ---------------------------------------------------------------------------------
 void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
                     std::span<const uint64_t> seeds) {
-  static const Material fallback;
   count_ = queue.size();
   const size_t n = count_;
   // Each hit's triangle: indices, then corners and normals, wherever they lie in memory.
@@ -48,8 +47,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     seed_[k] = seeds[queue[k]];
     mesh_[k] = hit.mesh;
     triangle_[k] = hit.triangle;
-    const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_->materials.size();
-    material_[k] = known ? &scene_->materials[size_t(mesh.material)] : &fallback;
+    material_[k] = &shading_->material_of(mesh);
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {

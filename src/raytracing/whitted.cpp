@@ -220,7 +220,6 @@ Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 ba
 
 // ---- [surface] ----------------------------------------------------------------------------------
 void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const {
-  static const Material fallback;
   const Mesh& mesh = scene_.meshes[size_t(hit.mesh)];
   const size_t t = size_t(hit.triangle);
   const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
@@ -235,8 +234,13 @@ void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const 
   p.triangle = hit.triangle;
   p.barycentrics = glm::vec2(hit.u, hit.v);
   p.uv = mesh.uv_at(t, p.barycentrics);
+  p.material = &material_of(mesh);
+}
+
+const Material& Whitted::material_of(const Mesh& mesh) const {
+  static const Material fallback;
   const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
-  p.material = known ? &scene_.materials[size_t(mesh.material)] : &fallback;
+  return known ? scene_.materials[size_t(mesh.material)] : fallback;
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------
