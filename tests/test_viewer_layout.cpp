@@ -169,6 +169,48 @@ TEST_F(ViewerLayout, ThePanelFromItsCacheIsThePanelDrawnAgain) {
   EXPECT_EQ(test::share_moved(changed_cached, changed_drawn, 0), 0.0) << "the cache kept the panel of before key 1";
 }
 
+// The window above the status line (whose frame time changes from frame to frame).
+test::Codes above_status(const test::Codes& window, const Rect& view) {
+  test::Codes above{window.width, int(std::lround(view.y1)), {}};
+  for (int y = 0; y < above.height; ++y)
+    for (int x = 0; x < above.width; ++x)
+      for (int c = 0; c < 3; ++c) above.values.push_back(window.at(x, y, c));
+  return above;
+}
+
+// Where the window keeps its back buffer (Mesa's software rasteriser, which these tests run
+// on), a steady panel is left in the window and only the rest is shown again; what the display
+// shows, read back from the X server, is what the frame drew, before and after the panel
+// changes, and with every frame shown whole.
+TEST_F(ViewerLayout, TheDisplayShowsTheFrameDrawnWhenOnlyItsChangedPartsArePresented) {
+  const nlohmann::json steady = json_of(file("present-steady.json"));
+  ASSERT_TRUE(steady["present_parts"]["window_keeps_back_buffer"].get<bool>()) << "llvmpipe under Xvfb keeps it";
+  EXPECT_GE(steady["panel_cache"]["kept"].get<long>(), 8) << "ten steady frames: the panel should have stayed in the window";
+  const nlohmann::json whole = json_of(file("present-whole.json"));
+  EXPECT_FALSE(whole["present_parts"]["on"].get<bool>());
+  // (the script's dump and switch are a frame apart)
+  EXPECT_LE(whole["panel_cache"]["kept"].get<long>() - json_of(file("present-back.json"))["panel_cache"]["kept"].get<long>(), 1)
+      << "with every frame shown whole the panel is copied in";
+
+  const Rect view = rect_of(json_of(file("panel-windows.json"))["view"]);
+  const auto shown_vs_drawn = [&](const std::string& name) {
+    const test::Codes drawn = above_status(test::codes(file("present-" + name + "-drawn.png")), view);
+    const test::Codes shown = above_status(test::codes(file("present-" + name + "-shown.png")), view);
+    return test::share_moved(shown, drawn, 0);
+  };
+  EXPECT_EQ(test::share_moved(above_status(test::codes(file("present-shown.png")), view),
+                              above_status(test::codes(file("present-drawn.png")), view), 0),
+            0.0);
+  EXPECT_EQ(shown_vs_drawn("changed"), 0.0) << "the display should show key 1's panel and picture";
+  EXPECT_EQ(shown_vs_drawn("back"), 0.0) << "the display should show key 3's panel and picture";
+  EXPECT_EQ(shown_vs_drawn("whole"), 0.0);
+  const test::Codes before = panel_of(test::codes(file("present-shown.png")), view);
+  const test::Codes changed = panel_of(test::codes(file("present-changed-shown.png")), view);
+  EXPECT_GT(test::share_moved(changed, before, 0), 0.0) << "key 1 should have changed the panel shown";
+  const test::Codes flashed = panel_of(test::codes(file("present-flash-shown.png")), view);
+  EXPECT_EQ(test::share_moved(flashed, before, 0), 0.0) << "the panel of a one-frame change stayed on the display";
+}
+
 // How the last frame before a dump showed its pane: drawn into the window, copied, or neither
 // (the display pass).
 std::pair<int, int> direct_and_copied(const std::filesystem::path& state) {

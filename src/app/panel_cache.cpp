@@ -77,11 +77,11 @@ void render(const ImDrawData& frame, std::vector<ImDrawList*>& lists) {
 
 }  // namespace
 
-void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
+bool split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
                  std::vector<ImDrawList*>& live) {
   cached.clear();
   live.clear();
-  bool covered = false;
+  bool covered = false;  // a live list reaches into the panel
   for (int i = 0; i < frame.CmdListsCount; ++i) {
     ImDrawList* list = frame.CmdLists[i];
     bool within = true, touches = false;
@@ -98,6 +98,7 @@ void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std
       covered = covered || touches;
     }
   }
+  return covered;
 }
 
 // Whether the cache already holds this frame's panel: the same lists, byte for byte, at the
@@ -139,31 +140,53 @@ void PanelCache::redraw(const ImDrawData& frame, glm::vec4 background) {
   drawn_.swap(next_);
 }
 
-void PanelCache::draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background) {
+bool PanelCache::prepare(ImDrawData& frame, FramebufferRect panel, bool window_kept) {
+  frame_ = &frame;
+  panel_ = panel;
+  panel_is_ = Panel::drawn;
+  reached_into_ = false;
   const bool empty = panel.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0;
-  if (!enabled || empty) {
-    ImGui_ImplOpenGL3_RenderDrawData(&frame);
-    return;
+  if (!enabled || empty) return false;
+  reached_into_ = split_lists(frame, panel, ImGui::GetIO().Fonts->TexID, cached_, live_);
+  if (cached_.empty()) return false;
+  if (unchanged(frame, panel)) {
+    panel_is_ = window_kept && in_window_ && !reached_into_ ? Panel::kept : Panel::cached;
+  } else if (next_ == previous_) {  // the same as last frame's: the panel has settled
+    panel_is_ = Panel::redrawn;
+  } else {  // changing (a plot, a hover): drawn as it is until it settles
+    previous_.swap(next_);
   }
-  split_lists(frame, panel, ImGui::GetIO().Fonts->TexID, cached_, live_);
-  if (!cached_.empty()) {
-    if (unchanged(frame, panel)) {
-      ++hits;
-    } else if (next_ == previous_) {  // the same as last frame's: the panel has settled
+  return panel_is_ == Panel::kept;
+}
+
+void PanelCache::draw(glm::vec4 background) {
+  ImDrawData& frame = *frame_;
+  switch (panel_is_) {
+    case Panel::drawn:
+      ImGui_ImplOpenGL3_RenderDrawData(&frame);
+      in_window_ = false;
+      return;
+    case Panel::redrawn:
       redraw(frame, background);
       ++redraws;
-    } else {  // changing (a plot, a hover): drawn as it is until it settles
-      previous_.swap(next_);
-      ImGui_ImplOpenGL3_RenderDrawData(&frame);
-      return;
-    }
+      break;
+    case Panel::cached:
+      ++hits;
+      break;
+    case Panel::kept:
+      ++hits;
+      ++kept;
+      break;
+  }
+  if (panel_is_ != Panel::kept) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    const int x1 = panel.x + panel.width, y1 = panel.y + panel.height;
-    glBlitFramebuffer(panel.x, panel.y, x1, y1, panel.x, panel.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const int x1 = panel_.x + panel_.width, y1 = panel_.y + panel_.height;
+    glBlitFramebuffer(panel_.x, panel_.y, x1, y1, panel_.x, panel_.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
   render(frame, live_);
+  in_window_ = !reached_into_;
 }
 
 }  // namespace luz::app

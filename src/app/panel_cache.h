@@ -7,12 +7,17 @@
 // running: a panel that changes every frame, radiosity's plot, is drawn as before), and on the
 // next frames that copy's panel rectangle is copied into the window (glBlitFramebuffer). What
 // is drawn is the same either way: `enabled = false` draws every list every frame, to compare.
+// Where the window keeps its back buffer from frame to frame (gl::WindowContext::
+// keeps_back_buffer: the software rasteriser), the panel copied in on one frame is still there
+// on the next: while it stays the cache's, nothing is drawn over its rectangle and the window
+// need not show that rectangle again.
 #include <cstddef>
 #include <memory>
 #include <vector>
 
 #include <glm/vec4.hpp>
 
+#include "gl/pixel_rect.h"
 #include "gl/render_target.h"
 
 struct ImDrawData;
@@ -20,36 +25,49 @@ struct ImDrawList;
 
 namespace luz::app {
 
-// A rectangle of the window's pixels, GL's way: origin at the bottom left.
-struct FramebufferRect {
-  int x = 0, y = 0, width = 0, height = 0;
-  bool empty() const { return width <= 0 || height <= 0; }
-};
+using FramebufferRect = gl::PixelRect;
 
 // Which of a frame's draw lists the cache may hold (`cached`) and which are drawn as they are
 // (`live`), each in ImGui's order. A list is the cache's when every pixel it draws lies in
 // `panel`, it samples only `font` (an image in the panel changes without its vertices
 // changing) and no list before it that reaches into the panel from outside (a tooltip, a
-// combo's popup) has to stay on top of it.
-void split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
+// combo's popup) has to stay on top of it. Returns whether a live list reaches into the panel.
+bool split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
                  std::vector<ImDrawList*>& live);
 
 class PanelCache {
 public:
-  // Draws `frame` into the window's framebuffer (bound, window-sized, single-sampled: a blit
-  // into a multisampled one fails, see gl::window_is_multisampled): the lists wholly inside
-  // `panel` from the cache, the rest as ImGui drew them. `background` is what the window
-  // shows where nothing is drawn.
-  void draw(ImDrawData& frame, FramebufferRect panel, glm::vec4 background);
+  // Before anything of the frame is drawn: which of `frame`'s lists come from the cache.
+  // Returns true when the window's panel rectangle may be left as the last frame left it:
+  // `window_kept` (the back buffer still holds the last frame), the cache's panel was copied
+  // into the window and is still this frame's, and no other list reaches into it.
+  bool prepare(ImDrawData& frame, FramebufferRect panel, bool window_kept);
+
+  // Draws the prepared frame into the window's framebuffer (bound, window-sized,
+  // single-sampled: a blit into a multisampled one fails, see gl::window_is_multisampled):
+  // the lists wholly inside the panel from the cache, the rest as ImGui drew them.
+  // `background` is what the window shows where nothing is drawn.
+  void draw(glm::vec4 background);
+
+  // Whether the prepared frame's panel rectangle is painted whole by draw(): copied from the
+  // cache or left as it was, not drawn over what is under it.
+  bool paints_panel() const { return panel_is_ != Panel::drawn; }
 
   bool enabled = true;
   long hits = 0;     // frames whose panel came from the cache
   long redraws = 0;  // frames that drew the panel into it
+  long kept = 0;     // frames that left the window's panel pixels as they were
 
 private:
+  enum class Panel { drawn, redrawn, cached, kept };  // this frame's: as it is, into the cache, from it, left
   bool unchanged(const ImDrawData& frame, FramebufferRect panel);
   void redraw(const ImDrawData& frame, glm::vec4 background);
 
+  ImDrawData* frame_ = nullptr;  // the prepared frame
+  FramebufferRect panel_;
+  Panel panel_is_ = Panel::drawn;
+  bool reached_into_ = false;   // a live list draws over the panel this frame
+  bool in_window_ = false;      // the window's back buffer holds the cache's panel
   std::vector<ImDrawList*> cached_, live_;  // this frame's lists, in ImGui's order within each
   std::vector<std::byte> drawn_, next_;     // what the cache holds; this frame's cached lists
   std::vector<std::byte> previous_;         // the last frame's, while the panel was changing

@@ -34,6 +34,18 @@ void save_window(int width, int height, const std::filesystem::path& path) {
   io::write_image(image, path, 0.0f);
 }
 
+void save_shown_window(const gl::WindowContext& window, const std::filesystem::path& path) {
+  const glm::ivec2 size = window.framebuffer_size();
+  const std::vector<std::uint8_t> rgba = window.shown_pixels();  // rows from the top
+  Image image(size.x, size.y);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const std::uint8_t* p = &rgba[(size_t(y) * size.x + x) * 4];
+      image.at(x, y) = Rgb(srgb_decode(p[0] / 255.0f), srgb_decode(p[1] / 255.0f), srgb_decode(p[2] / 255.0f));
+    }
+  io::write_image(image, path, 0.0f);
+}
+
 std::filesystem::path next_screenshot_name(const std::filesystem::path& scene, bool with_panel) {
   for (int n = 1;; ++n) {
     std::filesystem::path name = fmt::format("luz-{}{}-{}.png", scene.stem().string(),

@@ -65,7 +65,8 @@ std::string check_wait(const ScriptCommand& c) {
 
 std::string check_screenshot(const ScriptCommand& c) {
   if (auto e = check_count(c, 1, 2); !e.empty()) return e;
-  if (c.args.size() == 2 && c.args[1] != "--with-panel") return fmt::format("unknown option \"{}\"", c.args[1]);
+  if (c.args.size() == 2 && c.args[1] != "--with-panel" && c.args[1] != "--shown")
+    return fmt::format("unknown option \"{}\"", c.args[1]);
   return c.args[0].ends_with(".png") ? "" : "screenshots are .png files";
 }
 
@@ -153,7 +154,8 @@ bool run_scroll(Viewer& v, const ScriptCommand& c, std::string&) {
 }
 
 bool run_screenshot(Viewer& v, const ScriptCommand& c, std::string&) {
-  v.screenshot({c.args[0], c.args.size() == 2, fmt::format("{}:{}", c.line, c.args[0])});
+  const bool shown = c.args.size() == 2 && c.args[1] == "--shown";
+  v.screenshot({c.args[0], c.args.size() == 2, shown, fmt::format("{}:{}", c.line, c.args[0])});
   return true;
 }
 
@@ -213,7 +215,9 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                         {"direct", s.display_direct}, {"direct_panes", v.direct_panes()}}},
                       {"panel_cache", {{"on", v.panel_cache().enabled},
                                        {"hits", v.panel_cache().hits},
-                                       {"redraws", v.panel_cache().redraws}}}};
+                                       {"redraws", v.panel_cache().redraws},
+                                       {"kept", v.panel_cache().kept}}},
+                      {"present_parts", {{"on", s.present_parts}, {"window_keeps_back_buffer", v.window_keeps_back_buffer()}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
   return write_json(c.args[0], j, "the viewer's state", error);
 }
@@ -239,6 +243,13 @@ bool run_display_copy(Viewer& v, const ScriptCommand& c, std::string&) {
 // frames drawn straight into the window against.
 bool run_display_direct(Viewer& v, const ScriptCommand& c, std::string&) {
   v.state().display_direct = c.args[0] == "on";
+  return true;
+}
+
+// `present-parts off`: the panel copied into the window and the whole window shown on every
+// frame, to hold the frames that keep the panel's pixels against.
+bool run_present_parts(Viewer& v, const ScriptCommand& c, std::string&) {
+  v.state().present_parts = c.args[0] == "on";
   return true;
 }
 
@@ -294,7 +305,7 @@ constexpr ScriptVerb verbs[] = {
     {"drag", "drag X0 Y0 X1 Y1 [left|right]", check_drag, run_drag, true},
     {"scroll", "scroll STEPS", check_number, run_scroll, false},
     {"wait", "wait N", check_wait, run_nothing, true},
-    {"screenshot", "screenshot FILE.png [--with-panel]", check_screenshot, run_screenshot, true},
+    {"screenshot", "screenshot FILE.png [--with-panel|--shown]", check_screenshot, run_screenshot, true},
     {"camera", "camera N|NAME", check_one, run_camera, true},
     {"model", "model NAME", check_model, run_model, false},
     {"set", "set NAME VALUE", check_set, run_set, false},
@@ -307,6 +318,7 @@ constexpr ScriptVerb verbs[] = {
     {"panel-cache", "panel-cache on|off", check_on_off, run_panel_cache, true},
     {"display-copy", "display-copy on|off", check_on_off, run_display_copy, true},
     {"display-direct", "display-direct on|off", check_on_off, run_display_direct, true},
+    {"present-parts", "present-parts on|off", check_on_off, run_present_parts, true},
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},

@@ -103,7 +103,10 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   });
   glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { viewer_of(win).frames_to_draw_ = 3; });
   glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { viewer_of(win).frames_to_draw_ = 3; });
-  glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { viewer_of(win).frames_to_draw_ = 3; });
+  glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) {  // uncovered: its pixels are gone from the screen
+    viewer_of(win).frames_to_draw_ = 3;
+    viewer_of(win).show_whole_window_ = true;
+  });
   glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { viewer_of(win).frames_to_draw_ = 3; });
 
   // Dear ImGui, scaled for the screen: fonts are rasterised at the pixel size they will have.
@@ -523,7 +526,7 @@ void Viewer::apply(Action action) {
     case Action::screenshot:
     case Action::screenshot_with_panel: {
       const bool with_panel = action == Action::screenshot_with_panel;
-      screenshots_.push_back({next_screenshot_name(state_.scene_path, with_panel), with_panel, ""});
+      screenshots_.push_back({next_screenshot_name(state_.scene_path, with_panel), with_panel, false, ""});
       break;
     }
     case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
@@ -737,7 +740,8 @@ std::vector<const gl::Framebuffer*> Viewer::pane_pictures() const {
 void Viewer::take_screenshots(const Layout& l) {
   for (const PendingScreenshot& shot : screenshots_) {
     try {
-      if (shot.with_panel) save_window(l.framebuffer.x, l.framebuffer.y, shot.path);
+      if (shot.shown) save_shown_window(window_, shot.path);
+      else if (shot.with_panel) save_window(l.framebuffer.x, l.framebuffer.y, shot.path);
       else if (panes_.size() > 1 && pictures_.size() == panes_.size() && l.panes.size() == panes_.size())
         save_panes(pane_pictures(), l.panes, state_.panes, l.view, shot.path, state_.exposure);
       else if (!pictures_.empty() && pictures_.front()) save_picture(*pictures_.front(), shot.path, state_.exposure);
@@ -750,6 +754,28 @@ void Viewer::take_screenshots(const Layout& l) {
     }
   }
   screenshots_.clear();
+}
+
+// Clears to the background the window's pixels that nothing paints whole this frame: the status
+// line's strip (its window may be translucent), the panel's rectangle unless the cache copies or
+// keeps it there, and the view unless its panes tile it. On the software rasteriser a clear
+// costs per pixel (a whole 1280x720 window's about 2 ms), so what is painted anyway is not
+// cleared first. Nothing reads the window's depth but the local models, which clear their pane's.
+void Viewer::clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_painted, glm::vec4 background) {
+  long tiled = 0;
+  for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
+  std::vector<FramebufferRect> unpainted = {{0, 0, l.framebuffer.x, l.view.gl_origin.y}};
+  if (!panel_painted) unpainted.push_back(panel);
+  if (l.view.empty() || tiled != long(l.view.pixels.x) * l.view.pixels.y)
+    unpainted.push_back({l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y});
+  glClearColor(background.r, background.g, background.b, background.a);
+  glEnable(GL_SCISSOR_TEST);
+  for (const FramebufferRect& r : unpainted)
+    if (!r.empty()) {
+      glScissor(r.x, r.y, r.width, r.height);
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Viewer::frame() {
@@ -810,22 +836,28 @@ void Viewer::frame() {
   const double panel_building =
       1000.0 * std::chrono::duration<double>(FrameClock::now() - panel_building_start).count();
 
+  // Where the window keeps its back buffer, a panel that has not changed stays there: the frame
+  // draws and shows only the rest of the window (the view and the status line).
+  const FramebufferRect panel{0, l.view.gl_origin.y, l.view.gl_origin.x, l.view.pixels.y};
+  const bool window_kept = window_.keeps_back_buffer() && state_.present_parts;
+  const bool panel_kept = window_takes_blits_ && panel_cache_.prepare(*ImGui::GetDrawData(), panel, window_kept);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
-  glDisable(GL_SCISSOR_TEST);
-  glClearColor(background.r, background.g, background.b, background.a);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  clear_unpainted(l, panel, window_takes_blits_ && panel_cache_.paints_panel(), background);
   ViewerState::FramePhases& phases = state_.frame_phases;
   draw_picture(l);
   auto phase_start = FrameClock::now();
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
-  const FramebufferRect panel{0, l.framebuffer.y - l.view.pixels.y, l.view.gl_origin.x, l.view.pixels.y};
-  if (window_takes_blits_) panel_cache_.draw(*ImGui::GetDrawData(), panel, background);
+  if (window_takes_blits_) panel_cache_.draw(background);
   else ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   take_screenshots(l);
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
-  window_.swap();
+  const FramebufferRect rest[] = {{panel.width, 0, l.framebuffer.x - panel.width, l.framebuffer.y},
+                                  {0, 0, panel.width, panel.y}};
+  if (panel_kept && !show_whole_window_) window_.present(rest);
+  else window_.present();
+  show_whole_window_ = false;
   smooth(phases.present_ms, finish_phase(phase_start));
 }
 

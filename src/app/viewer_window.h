@@ -38,6 +38,7 @@ enum class DragButton { none, left, right };
 struct PendingScreenshot {
   std::filesystem::path path;
   bool with_panel = false;
+  bool shown = false;  // the window as the display shows it (the front buffer), panel and all
   std::string origin;  // "demo.txt:12" for a script's, empty for a key's
 };
 
@@ -106,6 +107,7 @@ public:
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
   PanelCache& panel_cache() { return panel_cache_; }
+  bool window_keeps_back_buffer() const { return window_.keeps_back_buffer(); }
   int copied_panes() const { return copied_panes_; }  // last frame's panes shown by a copy
   int direct_panes() const { return direct_panes_; }  // ...drawn straight into the window
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -131,6 +133,7 @@ private:
   double finish_phase(FrameClock::time_point& start) const;
   void smooth(double& ms, double sample) const;
   void draw_picture(const Layout& l);
+  void clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_painted, glm::vec4 background);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
@@ -179,6 +182,7 @@ private:
   unsigned frame_number_ = 0;
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
+  bool show_whole_window_ = true;  // the next frame shows every pixel, kept or not (an expose)
   Layout last_layout_;
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a

@@ -5,7 +5,12 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <bit>
 #include <string>
+#include <string_view>
+
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
 
 #include <fmt/format.h>
 
@@ -29,6 +34,13 @@ void on_glfw_error(int code, const char* description) {
 bool init_glfw() {
   glfwSetErrorCallback(on_glfw_error);
   return glfwInit() == GLFW_TRUE;  // a no-op returning true when already initialised
+}
+
+// Mesa's software rasterisers: their swap copies the window's pixels on the CPU.
+bool software_renderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string_view r = renderer ? renderer : "";
+  return r.find("llvmpipe") != r.npos || r.find("softpipe") != r.npos || r.find("Software Rasterizer") != r.npos;
 }
 
 }  // namespace
@@ -64,6 +76,20 @@ WindowContext::WindowContext(int width, int height, const std::string& title) {
     if (--open_windows == 0) glfwTerminate();
     throw;
   }
+  // GLX's own functions through its glXGetProcAddress: no link to libX11 or a GLFW built for
+  // X11 (Debian also ships one for Wayland only).
+  if (software_renderer() && glfwExtensionSupported("GLX_MESA_copy_sub_buffer")) {
+    using CurrentDisplay = void* (*)();
+    using CurrentDrawable = unsigned long (*)();
+    const auto display = reinterpret_cast<CurrentDisplay>(glfwGetProcAddress("glXGetCurrentDisplay"));
+    const auto drawable = reinterpret_cast<CurrentDrawable>(glfwGetProcAddress("glXGetCurrentDrawable"));
+    const auto copy = reinterpret_cast<CopySubBuffer>(glfwGetProcAddress("glXCopySubBufferMESA"));
+    if (display && drawable && copy && display() && drawable()) {
+      display_ = display();
+      drawable_ = drawable();
+      copy_sub_buffer_ = copy;
+    }
+  }
 }
 
 WindowContext::~WindowContext() {
@@ -77,7 +103,55 @@ glm::ivec2 WindowContext::framebuffer_size() const {
   return size;
 }
 
-void WindowContext::swap() { glfwSwapBuffers(window_); }
+void WindowContext::present(std::span<const PixelRect> changed) {
+  if (!copy_sub_buffer_) {
+    glfwSwapBuffers(window_);
+    return;
+  }
+  if (changed.empty()) {
+    const glm::ivec2 size = framebuffer_size();
+    copy_sub_buffer_(display_, drawable_, 0, 0, size.x, size.y);
+    return;
+  }
+  for (const PixelRect& r : changed)
+    if (!r.empty()) copy_sub_buffer_(display_, drawable_, r.x, r.y, r.width, r.height);
+}
+std::vector<std::uint8_t> WindowContext::shown_pixels() const {
+  using CurrentDisplay = Display* (*)();
+  const auto current = reinterpret_cast<CurrentDisplay>(glfwGetProcAddress("glXGetCurrentDisplay"));
+  Display* display = current ? current() : nullptr;
+  if (!display) throw Error(ErrorKind::gl, tr("reading what the window shows needs an X11 display"));
+  int x = 0, y = 0;
+  glfwGetWindowPos(window_, &x, &y);
+  const glm::ivec2 size = framebuffer_size();
+  const int screen_w = DisplayWidth(display, DefaultScreen(display));
+  const int screen_h = DisplayHeight(display, DefaultScreen(display));
+  if (x < 0 || y < 0 || x + size.x > screen_w || y + size.y > screen_h || size.x <= 0 || size.y <= 0)
+    throw Error(ErrorKind::gl, tr("the window is not wholly on the screen: what it shows cannot be read"));
+  // The same connection as GL's presents: the server has drawn them before it answers this.
+  XSync(display, False);
+  XImage* image = XGetImage(display, DefaultRootWindow(display), x, y, unsigned(size.x), unsigned(size.y),
+                            AllPlanes, ZPixmap);
+  if (!image) throw Error(ErrorKind::gl, tr("the X server did not return the window's pixels"));
+  const auto channel = [](unsigned long pixel, unsigned long mask) {
+    if (mask == 0) return std::uint8_t(0);
+    const unsigned long value = (pixel & mask) >> std::countr_zero(mask);
+    return std::uint8_t(value * 255 / (mask >> std::countr_zero(mask)));
+  };
+  std::vector<std::uint8_t> rgba(size_t(size.x) * size.y * 4);
+  for (int row = 0; row < size.y; ++row)
+    for (int column = 0; column < size.x; ++column) {
+      const unsigned long pixel = XGetPixel(image, column, row);
+      std::uint8_t* out = &rgba[(size_t(row) * size.x + column) * 4];
+      out[0] = channel(pixel, image->red_mask);
+      out[1] = channel(pixel, image->green_mask);
+      out[2] = channel(pixel, image->blue_mask);
+      out[3] = 255;
+    }
+  XDestroyImage(image);
+  return rgba;
+}
+
 bool WindowContext::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void WindowContext::poll() { glfwPollEvents(); }
 
