@@ -63,18 +63,17 @@ std::vector<uint32_t> ProgressiveSolver::too_coarse(const MeshBisection& bisecti
   return marked;
 }
 
-// What element j has received so far, per square metre: from every patch i that has shot,
-// F(j -> i) V_ij times all it sent (its elements' radiosity, seen from j as a shot is), and from
-// every light already shot, its flux through the element.
-Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<Rgb>& sent,
+// What element j has received so far, per square metre: from every patch i that has shot
+// (`senders`, in order), F(j -> i) V_ij times all it sent (its elements' radiosity, seen from j
+// as a shot is), and from every light already shot, its flux through the element.
+Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<uint32_t>& senders, const std::vector<Rgb>& sent,
                               const std::vector<ShooterEmission>& emissions,
                               const std::vector<std::vector<Rgb>>& parts) const {
   const Patch& element = mesh_.patches[j];
   const size_t m = size_t(options_.visibility_rays);
   uint64_t traced = 0;
   glm::dvec3 arrived(0.0);
-  for (size_t i = 0; i < mesh_.shooters.size(); ++i) {
-    if (mean(sent[i]) == 0.0) continue;
+  for (const uint32_t i : senders) {
     const ShootingPatch& shooter = mesh_.shooters[i];
     const double F_ij = rays_->element_factor(i, emissions[i], j, m, options_.seed, kGatherShot, traced);
     if (!(F_ij > 0.0)) continue;
@@ -99,8 +98,13 @@ size_t ProgressiveSolver::refine() {
   rays();
   MeshBisection bisection(mesh_);
   // What each patch has sent in all its shots, per square metre (its elements' radiosity).
+  // Only the patches that have shot: after a few shots of a large model, a few of 100 000.
   std::vector<Rgb> sent(mesh_.shooters.size(), Rgb(0.0f));
-  for (size_t i = 0; i < mesh_.shooters.size(); ++i) sent[i] = patch_sent(i);
+  std::vector<uint32_t> senders;
+  for (size_t i = 0; i < mesh_.shooters.size(); ++i) {
+    sent[i] = patch_sent(i);
+    if (mean(sent[i]) != 0.0) senders.push_back(uint32_t(i));
+  }
 
   std::vector<uint32_t> candidates(mesh_.size()), changed;
   std::iota(candidates.begin(), candidates.end(), 0u);
@@ -146,7 +150,7 @@ size_t ProgressiveSolver::refine() {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16),
                       [&](const tbb::blocked_range<size_t>& range) {
                         for (size_t k = range.begin(); k != range.end(); ++k)
-                          gathered[k] = gather(changed[k], sent, emissions, parts);
+                          gathered[k] = gather(changed[k], senders, sent, emissions, parts);
                       });
     for (size_t k = 0; k < changed.size(); ++k) {
       const uint32_t e = changed[k];

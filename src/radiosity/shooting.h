@@ -167,7 +167,7 @@ private:
   // Adaptive subdivision's pieces (adaptive_subdivision.cpp).
   std::vector<uint32_t> too_coarse(const MeshBisection& bisection,
                                    const std::vector<uint32_t>& candidates) const;
-  Rgb gather(uint32_t element, const std::vector<Rgb>& sent,
+  Rgb gather(uint32_t element, const std::vector<uint32_t>& senders, const std::vector<Rgb>& sent,
              const std::vector<ShooterEmission>& emissions,
              const std::vector<std::vector<Rgb>>& parts) const;
   // What a shooting patch has sent in all its shots, per square metre.
