@@ -17,6 +17,13 @@ flat out vec2 g_uv;
 flat out vec3 g_colour;  // COLOR_0 at the centroid
 flat out vec3 g_mirror;
 out vec3 g_position;
+#if LUZ_DISPLAY_OUTPUT
+// Without fog the triangle's one colour is one displayed value too, so the sRGB curve runs once
+// per triangle instead of once per pixel: for the side that emits and the other (an emitter
+// shows its Le on one side only, which the fragment knows).
+flat out vec3 g_displayed_front;
+flat out vec3 g_displayed_back;
+#endif
 
 void main() {
   // The centroid (named `middle`: "centroid" is a GLSL keyword).
@@ -31,6 +38,14 @@ void main() {
   vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
   vec3 colour = (v_colour[0] + v_colour[1] + v_colour[2]) / 3.0;
   vec3 mirror = mirror_direction(middle, N);
+#if LUZ_DISPLAY_OUTPUT
+  vec3 displayed_front = vec3(0.0), displayed_back = vec3(0.0);
+  if (fog_mode == FOG_OFF) {
+    kd_colour = colour;
+    displayed_front = displayed(surface_radiance(terms, uv, true, mirror));
+    displayed_back = displayed(surface_radiance(terms, uv, false, mirror));
+  }
+#endif
 
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
@@ -41,6 +56,10 @@ void main() {
     g_colour = colour;
     g_mirror = mirror;
     g_position = v_position[i];
+#if LUZ_DISPLAY_OUTPUT
+    g_displayed_front = displayed_front;
+    g_displayed_back = displayed_back;
+#endif
     EmitVertex();
   }
   EndPrimitive();

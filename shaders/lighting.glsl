@@ -348,15 +348,27 @@ bool viewer_sees_back(vec3 P, vec3 N) {
 }
 #endif
 
+// What the surface at P sends to the eye before the fog: the local formula, + kr Ir.
+vec3 surface_radiance(Terms terms, vec2 uv, bool emitting_side, vec3 R) {
+  vec3 I = radiance(terms, uv, emitting_side);
+  if (reflection_on) I += u_kr * reflected(R);  // + kr Ir
+  return I;
+}
+
+#if LUZ_DISPLAY_OUTPUT
+uniform float u_display_scale;  // 2^exposure
+// What the window shows of radiance I: I x 2^exposure through the sRGB curve.
+vec3 displayed(vec3 I) { return srgb_encode(I * u_display_scale); }
+#endif
+
 // ---- [the fragment] ----------------------------------------------------------------------------
 #ifdef LUZ_FRAGMENT_SHADER
 #if LUZ_DISPLAY_OUTPUT
 // The viewer's opaque meshes: the radiance, and beside it in a second colour buffer what the
-// window shows of it (radiance x 2^exposure through the sRGB curve), so that the window copies
-// the picture instead of running its display pass over it.
+// window shows of it (displayed()), so that the window copies the picture instead of running
+// its display pass over it.
 layout(location = 0) out vec4 frag_radiance;
 layout(location = 1) out vec4 frag_display;
-uniform float u_display_scale;  // 2^exposure
 #else
 // Two outputs for dual-source blending (GL 3.3 core): the radiance, and what share of the pixel
 // behind it comes through (kt, for a transparent mesh drawn with glBlendFunc(ONE, SRC1_COLOR)).
@@ -368,8 +380,7 @@ layout(location = 0, index = 1) out vec4 frag_transmittance;
 // A transparent surface adds kt times the pixel behind it (non-refractive transparency):
 //   pixel = f (I + kt It) + (1 - f) C_fog,  with It taken as the pixel already drawn behind.
 void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
-  vec3 I = radiance(terms, uv, emitting_side);
-  if (reflection_on) I += u_kr * reflected(R);  // + kr Ir
+  vec3 I = surface_radiance(terms, uv, emitting_side, R);
   float f = fog_factor(length(P - u_eye));
   vec3 transmitted = transparent ? f * u_kt : vec3(0.0);
   // Alpha: how much of the pixel is covered, for the reflection cube maps (cleared to 0, where the
@@ -378,7 +389,7 @@ void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
   float through = (transmitted.r + transmitted.g + transmitted.b) / 3.0;
   frag_radiance = vec4(f * I + (1.0 - f) * u_fog_colour, 1.0 - through);
 #if LUZ_DISPLAY_OUTPUT
-  frag_display = vec4(srgb_encode(frag_radiance.rgb * u_display_scale), 1.0);
+  frag_display = vec4(displayed(frag_radiance.rgb), 1.0);
 #else
   frag_transmittance = vec4(transmitted, through);
 #endif

@@ -257,6 +257,28 @@ TEST_F(ViewerLayout, ThePictureDrawnIntoTheWindowIsTheCopiedOne) {
   EXPECT_EQ(test::share_moved(panel_of(direct, view), panel_of(copied, view), 0), 0.0);
 }
 
+// Flat shading drawn into the window, its displayed values computed once per triangle, is the
+// display pass over its radiance: within one code, but for the few pixels on triangles' edges
+// that the pane's offset gives to the triangle beside them.
+TEST_F(ViewerLayout, FlatDrawnIntoTheWindowIsTheDisplayPasss) {
+  EXPECT_EQ(direct_and_copied(file("flat-direct.json")), std::make_pair(1, 0));
+  const Rect view = rect_of(json_of(file("panel-windows.json"))["view"]);
+  const test::Codes direct = test::codes(file("flat-direct.png")), pass = test::codes(file("flat-pass.png"));
+  ASSERT_EQ(direct.size(), pass.size());
+  size_t pixels = 0, moved = 0, unexplained = 0;
+  for (int y = int(view.y0); y < int(view.y1); ++y)
+    for (int x = int(view.x0); x < int(view.x1); ++x) {
+      ++pixels;
+      bool close = true;
+      for (int c = 0; c < 3; ++c) close = close && std::abs(direct.at(x, y, c) - pass.at(x, y, c)) <= 1;
+      if (close) continue;
+      ++moved;
+      unexplained += !near_a_neighbour(direct, pass, x, y);
+    }
+  EXPECT_LT(double(moved) / double(pixels), 1e-3);
+  EXPECT_EQ(unexplained, 0u);
+}
+
 // The Phong picture copied from the model's second colour buffer is the display pass's over the
 // radiance, within one code.
 TEST_F(ViewerLayout, TheCopiedPictureIsTheDisplayPasss) {
