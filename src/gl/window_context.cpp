@@ -76,10 +76,10 @@ WindowContext::WindowContext(int width, int height, const std::string& title) {
     if (--open_windows == 0) glfwTerminate();
     throw;
   }
-  // GLX's own functions through its glXGetProcAddress: no link to libX11 or a GLFW built for
-  // X11 (Debian also ships one for Wayland only).
+  // GLX's own functions through its glXGetProcAddress, not GLFW's X11 handles: Debian also
+  // ships a GLFW built for Wayland only, which has none.
   if (software_renderer() && glfwExtensionSupported("GLX_MESA_copy_sub_buffer")) {
-    using CurrentDisplay = void* (*)();
+    using CurrentDisplay = Display* (*)();
     using CurrentDrawable = unsigned long (*)();
     const auto display = reinterpret_cast<CurrentDisplay>(glfwGetProcAddress("glXGetCurrentDisplay"));
     const auto drawable = reinterpret_cast<CurrentDrawable>(glfwGetProcAddress("glXGetCurrentDrawable"));
@@ -116,6 +116,7 @@ void WindowContext::present(std::span<const PixelRect> changed) {
   for (const PixelRect& r : changed)
     if (!r.empty()) copy_sub_buffer_(display_, drawable_, r.x, r.y, r.width, r.height);
 }
+
 std::vector<std::uint8_t> WindowContext::shown_pixels() const {
   using CurrentDisplay = Display* (*)();
   const auto current = reinterpret_cast<CurrentDisplay>(glfwGetProcAddress("glXGetCurrentDisplay"));
