@@ -143,6 +143,11 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   size_t i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
+      if (samples_per_pixel == 1) {  // the pixel's centre: no jitter to draw
+        scratch.points[i] = glm::vec2(float(x), float(y)) + 0.5f;
+        seeds[i++] = sample_seed(x, y, 0);
+        continue;
+      }
       Random jitter(x, y, -1);
       stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {

@@ -8,21 +8,6 @@
 
 namespace luz::rt {
 
-namespace {
-uint64_t splitmix(uint64_t& state) {
-  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-}  // namespace
-
-uint64_t sample_seed(int x, int y, int sample) {
-  uint64_t seed = (uint64_t(uint32_t(x)) << 32) ^ uint64_t(uint32_t(y));
-  seed = splitmix(seed) ^ uint64_t(uint32_t(sample));
-  return splitmix(seed);
-}
-
 uint64_t branch_seed(uint64_t parent, RayKind branch) {
   // One more SplitMix64 step of the parent's seed, told apart by the branch: the reflected and
   // the transmitted child of one hit get unrelated streams, and so do a child and its parent.

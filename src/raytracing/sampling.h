@@ -35,8 +35,21 @@ private:
   uint64_t state_ = 0;
 };
 
-// The seed of the ray tree of sample `sample` of pixel (x, y): its primary ray's.
-uint64_t sample_seed(int x, int y, int sample);
+// One step of SplitMix64: advances `state` and returns its next 64 random bits.
+inline uint64_t splitmix(uint64_t& state) {
+  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The seed of the ray tree of sample `sample` of pixel (x, y): its primary ray's. Inline: a
+// tile computes one per sample, in a loop the compiler unrolls.
+inline uint64_t sample_seed(int x, int y, int sample) {
+  uint64_t seed = (uint64_t(uint32_t(x)) << 32) ^ uint64_t(uint32_t(y));
+  seed = splitmix(seed) ^ uint64_t(uint32_t(sample));
+  return splitmix(seed);
+}
 // The seed of the reflected or transmitted ray (`branch`) spawned at the hit of the ray whose
 // seed is `parent`.
 uint64_t branch_seed(uint64_t parent, RayKind branch);
