@@ -764,10 +764,11 @@ void Viewer::take_screenshots(const Layout& l) {
 void Viewer::clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_painted, glm::vec4 background) {
   long tiled = 0;
   for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
-  std::vector<FramebufferRect> unpainted = {{0, 0, l.framebuffer.x, l.view.gl_origin.y}};
-  if (!panel_painted) unpainted.push_back(panel);
-  if (l.view.empty() || tiled != long(l.view.pixels.x) * l.view.pixels.y)
-    unpainted.push_back({l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y});
+  const bool view_tiled = !l.view.empty() && tiled == long(l.view.pixels.x) * l.view.pixels.y;
+  const FramebufferRect unpainted[] = {
+      {0, 0, l.framebuffer.x, l.view.gl_origin.y},  // the status line's strip
+      panel_painted ? FramebufferRect{} : panel,
+      view_tiled ? FramebufferRect{} : FramebufferRect{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
   glClearColor(background.r, background.g, background.b, background.a);
   glEnable(GL_SCISSOR_TEST);
   for (const FramebufferRect& r : unpainted)
