@@ -167,6 +167,52 @@ INSTANTIATE_TEST_SUITE_P(Shipped, WavefrontEqualsRecursion,
                            return std::get<0>(test.param) + "_" + std::get<1>(test.param).name;
                          });
 
+// Whitted's scene with its checkerboard's first material textured and every other mesh coloured
+// per vertex: kd from the texture (bilinear, repeating) and from COLOR_0, which no shipped scene
+// has, the same in both renderers and read at all.
+Scene textured_and_coloured_whitted() {
+  Scene scene = io::load_gltf(test::scene_dir() / "whitted.gltf").scene;
+  Texture texture;
+  texture.width = 3;
+  texture.height = 2;
+  texture.texels = {Rgb(1, 0.2f, 0.2f), Rgb(0.2f, 1, 0.2f), Rgb(0.2f, 0.2f, 1),
+                    Rgb(1, 1, 0.2f), Rgb(0.2f, 1, 1), Rgb(0.5f)};
+  scene.textures.push_back(texture);
+  scene.materials[0].kd_texture = int(scene.textures.size()) - 1;
+  for (Mesh& mesh : scene.meshes) {
+    if (mesh.material == 0) {
+      mesh.uvs.clear();
+      for (const glm::vec3& p : mesh.positions) mesh.uvs.emplace_back(0.37f * p.x, 0.29f * p.z);
+    } else {
+      mesh.colors.clear();
+      for (const glm::vec3& p : mesh.positions)
+        mesh.colors.emplace_back(0.5f + 0.5f * std::sin(p.x), 0.5f + 0.5f * std::cos(p.y), 0.7f);
+    }
+  }
+  return scene;
+}
+
+TEST(WavefrontEqualsRecursion, TexturedAndVertexColouredSurfaces) {
+  const Scene scene = textured_and_coloured_whitted();
+  ASSERT_TRUE(std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                          [](const Mesh& m) { return m.material == 0; }));
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 5;
+  options.spp = 4;
+  options.fresnel = true;
+  options.renderer = RendererKind::recursive;
+  const Image recursive = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+  options.renderer = RendererKind::wavefront;
+  const Image wavefront = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+  EXPECT_LE(worst_difference(wavefront, recursive), 1e-6f);
+
+  const Scene plain = io::load_gltf(test::scene_dir() / "whitted.gltf").scene;
+  WhittedRenderer plain_tracer(plain);
+  EXPECT_GT(worst_difference(plain_tracer.render(plain.cameras[0], kWidth, kHeight, options), wavefront), 0.1f)
+      << "the texture and the vertex colours change the picture";
+}
+
 // Through the brute-force intersector, which counts its tests: both renderers make the same ones.
 TEST(WavefrontEqualsRecursion, SameIntersectionTests) {
   const Scene scene = io::load_gltf(test::scene_dir() / "cornell_spheres.gltf").scene;

@@ -60,18 +60,23 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   // What the light terms read of each material: kd (x COLOR_0 x the texture; in the hybrid
   // radiosity has the diffuse term), ks and the exponent.
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
+  any_shiny_ = false;
   for (size_t k = 0; k < n; ++k) {
     const Material& o = *material_[k];
-    if (diffuse) {
-      const glm::vec2 barycentrics(u_[k], v_[k]);
-      const glm::vec2 uv = scene_->meshes[size_t(mesh_[k])].uv_at(size_t(triangle_[k]), barycentrics);
-      kd_.set(k, shading_->kd_at(o, mesh_[k], triangle_[k], barycentrics, uv));
-    } else {
+    const Mesh& mesh = scene_->meshes[size_t(mesh_[k])];
+    if (!diffuse) {
       kd_.set(k, Rgb(0.0f));
+    } else if (shading_->kd_is_uniform(o, mesh)) {
+      kd_.set(k, o.kd);  // kd_at's value without its call
+    } else {
+      const glm::vec2 barycentrics(u_[k], v_[k]);
+      const glm::vec2 uv = mesh.uv_at(size_t(triangle_[k]), barycentrics);
+      kd_.set(k, shading_->kd_at(o, mesh_[k], triangle_[k], barycentrics, uv));
     }
     ks_.set(k, o.ks);
     shininess_[k] = o.shininess;
     shiny_[k] = options_->terms.specular && positive(o.ks);
+    any_shiny_ = any_shiny_ || shiny_[k];
   }
 }
 
@@ -179,11 +184,16 @@ void HitLanes::add_light(LaneLights& out) {
   for (size_t k = 0; k < n; ++k) {
     const float cos_theta = glm::dot(N_[k], L_[k]);
     lit_[k] = lit_[k] & !(cos_theta <= 0.0f) & positive(IL_[k]);
-    cos_alpha_[k] = cos_alpha(N_[k], L_[k], -d_[k], blinn);
   }
-  // cos^n(alpha), where a highlight counts (scalar: pow).
-  for (size_t k = 0; k < n; ++k)
-    highlight_[k] = shiny_[k] && lit_[k] ? std::pow(cos_alpha_[k], shininess_[k]) : 0.0f;
+  // cos^n(alpha), where a highlight counts (scalar: pow); on lanes of matte materials only
+  // (a Cornell box) nothing to compute.
+  if (any_shiny_) {
+    for (size_t k = 0; k < n; ++k) cos_alpha_[k] = cos_alpha(N_[k], L_[k], -d_[k], blinn);
+    for (size_t k = 0; k < n; ++k)
+      highlight_[k] = shiny_[k] && lit_[k] ? std::pow(cos_alpha_[k], shininess_[k]) : 0.0f;
+  } else {
+    std::fill(highlight_, highlight_ + n, 0.0f);
+  }
 
   // The terms of every lane, then their shadow rays; those that count appended in lane order.
   // (Three loops, not one: GCC 12 vectorises each of them, and gives up on the three together.)

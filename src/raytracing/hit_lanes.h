@@ -113,6 +113,7 @@ private:
   Vec3Lanes kd_, ks_;
   float shininess_[kLanes];
   int32_t shiny_[kLanes];  // ks > 0 and the specular term on: the highlight counts
+  bool any_shiny_ = false;  // on some lane
   // One light at a time: the direction to it, its distance and IL, whether it can light the lane.
   Vec3Lanes L_, IL_;
   float distance_[kLanes], spot_[kLanes], cos_alpha_[kLanes], highlight_[kLanes];

@@ -196,14 +196,21 @@ Rgb Whitted::kd_at(const SurfacePoint& p) const {
   return kd_at(*p.material, p.mesh, p.triangle, p.barycentrics, p.uv);
 }
 
+bool Whitted::kd_is_uniform(const Material& o, const Mesh& mesh) const {
+  return mesh.colors.empty() && !samples_texture(o, mesh);
+}
+
+bool Whitted::samples_texture(const Material& o, const Mesh& mesh) const {
+  return options_.terms.textures && o.kd_texture >= 0 && size_t(o.kd_texture) < scene_.textures.size() &&
+         !mesh.uvs.empty();
+}
+
 Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 barycentrics,
                    glm::vec2 uv) const {
   const Mesh& mesh = scene_.meshes[size_t(mesh_index)];
   // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
   const Rgb kd = o.kd * mesh.colour_at(size_t(triangle), barycentrics);
-  if (!options_.terms.textures || o.kd_texture < 0 || size_t(o.kd_texture) >= scene_.textures.size() ||
-      mesh.uvs.empty())
-    return kd;
+  if (!samples_texture(o, mesh)) return kd;
   // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the
   // base level (the rasteriser's mipmaps only differ where a texel is smaller than a pixel).
   const Texture& tex = scene_.textures[size_t(o.kd_texture)];

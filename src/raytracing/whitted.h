@@ -127,6 +127,8 @@ public:
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
   // The same at barycentrics (u, v) and texture coordinates uv of a triangle of material o.
   Rgb kd_at(const Material& o, int mesh, int triangle, glm::vec2 barycentrics, glm::vec2 uv) const;
+  // Whether kd_at is o.kd itself all over `mesh`: no vertex colours, no texture sampled.
+  bool kd_is_uniform(const Material& o, const Mesh& mesh) const;
   // The hybrid's diffuse part, or nullptr: Whitted's own local terms.
   const DiffuseSource* diffuse_source() const { return diffuse_; }
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
@@ -151,6 +153,8 @@ public:
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
 
 private:
+  // Whether kd_at multiplies kd by o's base colour texture on `mesh`.
+  bool samples_texture(const Material& o, const Mesh& mesh) const;
   // The hit's light samples: the streamed ones when trace() was given them for this hit, else
   // sampled here. The one lookup of the streamed answers, so that color() has a single path.
   LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed);
