@@ -84,17 +84,27 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
 // Whitted::light_samples, light by light: the punctual lights, then each emissive triangle's
 // samples, so that each lane meets its lights in the recursion's order.
 void HitLanes::light_samples(LaneLights& out) {
+  // With a single light the samples come lane by lane already: straight into `out`.
+  size_t lights = size_t(std::max(1, options_->light_samples)) * scene_->area_lights.size();
+  for (const Light& light : scene_->lights) lights += light.enabled ? 1 : 0;
+  const bool one = lights == 1;
+  const size_t first = out.size;
+  LaneLights& made = one ? out : by_light_;
   by_light_.size = 0;
   for (size_t i = 0; i < scene_->lights.size(); ++i) {
     if (!scene_->lights[i].enabled) continue;
     toward_light(scene_->lights[i]);
-    add_light(by_light_);
+    add_light(made);
   }
-  area_light_samples();
-  sort_by_lane(by_light_, out);
+  area_light_samples(made);
+  if (!one) {
+    sort_by_lane(by_light_, out);
+    return;
+  }
+  for (size_t j = first; j < out.size; ++j) out.hit[j] = ray_[out.hit[j]];  // lane -> queue
 }
 
-void HitLanes::area_light_samples() {
+void HitLanes::area_light_samples(LaneLights& out) {
   if (scene_->area_lights.empty()) return;
   const int samples = std::max(1, options_->light_samples);
   for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
@@ -118,7 +128,7 @@ void HitLanes::area_light_samples() {
     }
     for (int j = 0; j < samples; ++j) {
       toward_area_sample(area, samples, area_points_[size_t(j)]);
-      add_light(by_light_);
+      add_light(out);
     }
   }
 }

@@ -85,8 +85,8 @@ public:
   uint32_t ray(size_t lane) const { return ray_[lane]; }  // the lane's place in the queue
 
 private:
-  // The emissive triangles' samples, after the punctual lights'.
-  void area_light_samples();
+  // The emissive triangles' samples, after the punctual lights', appended to `out`.
+  void area_light_samples(LaneLights& out);
   // Fills L, distance, IL and lit for one punctual light or one area-light sample point per lane.
   void toward_light(const Light& light);
   void toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points);

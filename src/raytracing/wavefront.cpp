@@ -33,9 +33,28 @@ struct RayQueue {
     seeds[size_] = seed;
     ++size_;
   }
+  // The first generation: primary ray i of sample i, each of weight `weight`. (Array by array,
+  // not ray by ray: each loop a copy or a fill.)
+  void start(std::span<const Ray> primary, std::span<const uint64_t> primary_seeds, const Rgb& weight) {
+    const size_t n = primary.size();
+    if (n > rays.size()) grow(n);
+    std::copy(primary.begin(), primary.end(), rays.begin());
+    std::fill_n(kinds.begin(), n, RayKind::primary);
+    for (size_t i = 0; i < n; ++i) samples[i] = uint32_t(i);
+    std::fill_n(throughputs.begin(), n, weight);
+    std::copy(primary_seeds.begin(), primary_seeds.end(), seeds.begin());
+    size_ = n;
+  }
   void append(const RayQueue& other) {
-    for (size_t i = 0; i < other.size(); ++i)
-      push(other.rays[i], other.kinds[i], other.samples[i], other.throughputs[i], other.seeds[i]);
+    const size_t n = other.size(), at = size_;
+    if (at + n > rays.size()) grow(2 * (at + n));
+    const auto to = std::ptrdiff_t(at), count = std::ptrdiff_t(n);
+    std::copy_n(other.rays.begin(), count, rays.begin() + to);
+    std::copy_n(other.kinds.begin(), count, kinds.begin() + to);
+    std::copy_n(other.samples.begin(), count, samples.begin() + to);
+    std::copy_n(other.throughputs.begin(), count, throughputs.begin() + to);
+    std::copy_n(other.seeds.begin(), count, seeds.begin() + to);
+    size_ += n;
   }
 
 private:
@@ -110,9 +129,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
                       const Rgb& weight, std::span<Rgb> radiance) {
   thread_local Scratch scratch;
   RayQueue& queue = scratch.queue;
-  queue.clear();
-  for (size_t i = 0; i < primary.size(); ++i)
-    queue.push(primary[i], RayKind::primary, uint32_t(i), weight, seeds[i]);
+  queue.start(primary, seeds, weight);
 
   HitLanes& lanes = scratch.lanes;
   lanes.shade_with(scene_, shading_, options_);
