@@ -279,44 +279,76 @@ void HitLanes::unlit_colors(std::span<Rgb> local) const {
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------
+// Fresnel on or off as a constant: GCC does not vectorise the loop when it chooses by a flag.
+template <bool kFresnel>
+void HitLanes::split_refracting(Refracting& t) {
+  for (size_t i = 0; i < t.size; ++i) {
+    const Split split = split_at(t.kr[i], t.kt[i], t.ior[i], t.front[i], t.d[i], t.N[i], kFresnel);
+    t.kr.set(i, split.kr);
+    t.kt.set(i, split.kt);
+    t.refracts[i] = split.refracts;
+    t.direction.set(i, split.T);
+  }
+  for (size_t i = 0; i < t.size; ++i) {
+    t.origin.set(i, offset_origin(t.position[i], -t.geometric[i]));
+    t.direction.set(i, keep_on_side(t.direction[i], -t.geometric[i]));
+  }
+}
+
 void HitLanes::secondary_rays(SpawnLanes& out) const {
-  // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered.
+  // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered;
+  // those that transmit gathered once more, apart: only they need Snell and Fresnel (a lane that
+  // transmits nothing keeps its kr, split_at adds kt x F = 0 to it).
   Vec3Lanes d, N, position, geometric;
-  int32_t front[kLanes];
-  float ior[kLanes];
   size_t m = 0;
+  Refracting t;
+  t.size = 0;
   for (size_t k = 0; k < count_; ++k) {
     const Material& o = *material_[k];
     if (!positive(o.kr) && !positive(o.kt)) continue;
     out.lane[m] = uint32_t(k);
     out.kr.set(m, o.kr);
     out.kt.set(m, o.kt);
-    ior[m] = o.ior;
     d.set(m, d_[k]);
     N.set(m, N_[k]);
     position.set(m, position_[k]);
     geometric.set(m, geometric_[k]);
-    front[m] = front_[k];
+    if (positive(o.kt)) {
+      const size_t i = t.size++;
+      t.spawn[i] = uint32_t(m);
+      t.kr.set(i, o.kr);
+      t.kt.set(i, o.kt);
+      t.ior[i] = o.ior;
+      t.front[i] = front_[k];
+      t.d.set(i, d_[k]);
+      t.N.set(i, N_[k]);
+      t.position.set(i, position_[k]);
+      t.geometric.set(i, geometric_[k]);
+    }
     ++m;
   }
   out.size = m;
-  // kr and kt, and whether each ray is spawned.
-  const bool fresnel = options_->fresnel;
-  for (size_t j = 0; j < m; ++j) {
-    const Split split = split_at(out.kr[j], out.kt[j], ior[j], front[j], d[j], N[j], fresnel);
-    out.kr.set(j, split.kr);
-    out.kt.set(j, split.kt);
-    out.transmitted_direction.set(j, split.T);
-    // "si o es reflexivo"; "si o es transmisivo y no hay reflexión interna total".
-    out.reflects[j] = positive(split.kr);
-    out.transmits[j] = positive(split.kt) & split.refracts;
-  }
-  // R := rayo de reflexión, T := rayo de refracción: where they leave, which way.
+  // "si o es reflexivo": R := rayo de reflexión, where it leaves, which way.
   for (size_t j = 0; j < m; ++j) {
     out.reflected_origin.set(j, offset_origin(position[j], geometric[j]));
     out.reflected_direction.set(j, keep_on_side(reflect(d[j], N[j]), geometric[j]));
-    out.transmitted_origin.set(j, offset_origin(position[j], -geometric[j]));
-    out.transmitted_direction.set(j, keep_on_side(out.transmitted_direction[j], -geometric[j]));
+    out.reflects[j] = positive(out.kr[j]);
+    out.transmits[j] = false;
+  }
+  // kr and kt split by Fresnel or total internal reflection, and "si o es transmisivo y no hay
+  // reflexión interna total": T := rayo de refracción.
+  if (options_->fresnel)
+    split_refracting<true>(t);
+  else
+    split_refracting<false>(t);
+  for (size_t i = 0; i < t.size; ++i) {
+    const size_t j = t.spawn[i];
+    out.kr.set(j, t.kr[i]);
+    out.kt.set(j, t.kt[i]);
+    out.reflects[j] = positive(t.kr[i]);
+    out.transmits[j] = positive(t.kt[i]) & t.refracts[i];
+    out.transmitted_origin.set(j, t.origin[i]);
+    out.transmitted_direction.set(j, t.direction[i]);
   }
 }
 

@@ -94,6 +94,17 @@ private:
   // shadow rays, and those that count appended to `out`.
   void add_light(LaneLights& out);
   void sort_by_lane(const LaneLights& in, LaneLights& out) const;
+  // The lanes of secondary_rays() whose material transmits, apart, and what Snell and Fresnel
+  // make of them: entry i is spawn entry spawn[i]'s.
+  struct Refracting {
+    size_t size = 0;
+    uint32_t spawn[kLanes];
+    Vec3Lanes kr, kt, d, N, position, geometric, origin, direction;
+    float ior[kLanes];
+    int32_t front[kLanes], refracts[kLanes];
+  };
+  template <bool kFresnel>
+  static void split_refracting(Refracting& t);
 
   const Scene* scene_ = nullptr;
   const Whitted* shading_ = nullptr;

@@ -89,7 +89,9 @@ inline Split split_at(const Rgb& kr, const Rgb& kt, float ior, bool front, const
   const float without_fresnel = total ? 1.0f : 0.0f;
   const float share = fresnel ? fresnel_F : without_fresnel;
   const float F = transmissive ? share : 0.0f;
-  return Split{kr + kt * F, kt * (1.0f - F), T, bool(transmissive & !total)};
+  // T component by component: a copy of the vector as a whole keeps GCC from vectorising a loop
+  // over many hits.
+  return Split{kr + kt * F, kt * (1.0f - F), glm::vec3(T.x, T.y, T.z), bool(transmissive & !total)};
 }
 
 }  // namespace luz::rt
