@@ -11,12 +11,12 @@ namespace luz::rt {
 
 // ---- [queues] -----------------------------------------------------------------------------------
 // One generation of rays, as a structure of arrays: the rays contiguous for Embree's stream, the
-// rest read once per ray by the shading loop. Its first size() entries are the generation; the
+// rest read once per ray by the shading loop. Its kind is known from where it stands: a first
+// generation is all primary rays, a later one its reflected rays, then its transmitted ones. Its first size() entries are the generation; the
 // arrays only grow: after the first tiles a thread's queues have the room they need, a tile
 // allocates nothing, and adding a ray checks the room once, not once per array.
 struct RayQueue {
   std::vector<Ray> rays;
-  std::vector<RayKind> kinds;
   std::vector<uint32_t> samples;   // the primary ray whose tree the ray belongs to
   std::vector<Rgb> throughputs;    // the product of the weights from that primary ray down
   std::vector<uint64_t> seeds;     // its place in the ray tree (sampling.h)
@@ -24,10 +24,9 @@ struct RayQueue {
   size_t size() const { return size_; }
   std::span<const Ray> generation() const { return {rays.data(), size_}; }
   void clear() { size_ = 0; }
-  void push(const Ray& ray, RayKind kind, uint32_t sample, const Rgb& throughput, uint64_t seed) {
+  void push(const Ray& ray, uint32_t sample, const Rgb& throughput, uint64_t seed) {
     if (size_ == rays.size()) grow(2 * size_ + 256);
     rays[size_] = ray;
-    kinds[size_] = kind;
     samples[size_] = sample;
     throughputs[size_] = throughput;
     seeds[size_] = seed;
@@ -39,7 +38,6 @@ struct RayQueue {
     const size_t n = primary.size();
     if (n > rays.size()) grow(n);
     std::copy(primary.begin(), primary.end(), rays.begin());
-    std::fill_n(kinds.begin(), n, RayKind::primary);
     for (size_t i = 0; i < n; ++i) samples[i] = uint32_t(i);
     std::fill_n(throughputs.begin(), n, weight);
     std::copy(primary_seeds.begin(), primary_seeds.end(), seeds.begin());
@@ -50,7 +48,6 @@ struct RayQueue {
     if (at + n > rays.size()) grow(2 * (at + n));
     const auto to = std::ptrdiff_t(at), count = std::ptrdiff_t(n);
     std::copy_n(other.rays.begin(), count, rays.begin() + to);
-    std::copy_n(other.kinds.begin(), count, kinds.begin() + to);
     std::copy_n(other.samples.begin(), count, samples.begin() + to);
     std::copy_n(other.throughputs.begin(), count, throughputs.begin() + to);
     std::copy_n(other.seeds.begin(), count, seeds.begin() + to);
@@ -60,7 +57,6 @@ struct RayQueue {
 private:
   void grow(size_t capacity) {
     rays.resize(capacity);
-    kinds.resize(capacity);
     samples.resize(capacity);
     throughputs.resize(capacity);
     seeds.resize(capacity);
@@ -90,12 +86,10 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, SpawnLanes& spawne
   for (size_t j = 0; j < spawned.size; ++j) {
     const uint32_t q = lanes.ray(spawned.lane[j]);
     if (spawned.reflects[j])
-      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, RayKind::reflected,
-                     queue.samples[q], queue.throughputs[q] * spawned.kr[j],
+      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, queue.samples[q], queue.throughputs[q] * spawned.kr[j],
                      branch_seed(queue.seeds[q], RayKind::reflected));
     if (spawned.transmits[j])
-      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]},
-                       RayKind::transmitted, queue.samples[q], queue.throughputs[q] * spawned.kt[j],
+      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]}, queue.samples[q], queue.throughputs[q] * spawned.kt[j],
                        branch_seed(queue.seeds[q], RayKind::transmitted));
   }
 }
@@ -106,17 +100,6 @@ Wavefront::Wavefront(const Scene& scene, Whitted& shading, const Intersector& in
                      const WhittedOptions& options, Counters& counters, std::vector<RecordedRay>* log)
     : scene_(scene), shading_(shading), intersector_(intersector), options_(options),
       counters_(counters), log_(log) {}
-
-// Counted by kind with one pass over the kinds each (a counter incremented ray by ray waits on its
-// own previous increment), and logged ray by ray when the benchmark keeps them.
-void Wavefront::count(const RayQueue& queue) {
-  if (log_) {
-    for (size_t k = 0; k < queue.size(); ++k) log_->push_back({queue.rays[k], queue.kinds[k]});
-  }
-  const auto kinds = queue.kinds.begin(), end = kinds + std::ptrdiff_t(queue.size());
-  for (const RayKind kind : {RayKind::primary, RayKind::reflected, RayKind::transmitted})
-    counters_[kind] += uint64_t(std::count(kinds, end, kind));
-}
 
 void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
   if (log_)
@@ -134,10 +117,16 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
   HitLanes& lanes = scratch.lanes;
   lanes.shade_with(scene_, shading_, options_);
   // Slide 26's depth: primary rays have depth 1, and a hit at depth d spawns rays while d < max.
+  size_t reflected = 0;  // of a later generation, its first rays
   for (int depth = 1; queue.size() > 0; ++depth) {
     const size_t n = queue.size();
     const std::span<const Ray> rays = queue.generation();
-    count(queue);
+    if (depth == 1) {
+      count(rays, RayKind::primary);
+    } else {
+      count(rays.first(reflected), RayKind::reflected);
+      count(rays.subspan(reflected), RayKind::transmitted);
+    }
 
     // 1. "Determinar intersección con objeto más cercano", for the whole queue at once.
     scratch.hits.resize(n);
@@ -184,6 +173,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
 
     // The next generation: the reflected rays, then the transmitted ones, each in the order of
     // their parents, so that neighbours in a stream mostly leave neighbouring hits in one way.
+    reflected = scratch.reflected.size();
     std::swap(scratch.queue, scratch.reflected);
     queue.append(scratch.transmitted);
   }

@@ -37,8 +37,6 @@
 
 namespace luz::rt {
 
-struct RayQueue;  // one generation of rays (wavefront.cpp)
-
 class Wavefront {
 public:
   // `shading`: the Whitted tracer whose per-hit functions shade the hits (the hybrid's diffuse
@@ -53,8 +51,7 @@ public:
              std::span<Rgb> radiance);
 
 private:
-  // Counts every ray of a generation, or of a stream of one kind, as traced (and logs them).
-  void count(const RayQueue& queue);
+  // Counts the rays of a stream of one kind as traced (and logs them).
   void count(std::span<const Ray> rays, RayKind kind);
 
   const Scene& scene_;

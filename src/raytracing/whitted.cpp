@@ -196,15 +196,6 @@ Rgb Whitted::kd_at(const SurfacePoint& p) const {
   return kd_at(*p.material, p.mesh, p.triangle, p.barycentrics, p.uv);
 }
 
-bool Whitted::kd_is_uniform(const Material& o, const Mesh& mesh) const {
-  return mesh.colors.empty() && !samples_texture(o, mesh);
-}
-
-bool Whitted::samples_texture(const Material& o, const Mesh& mesh) const {
-  return options_.terms.textures && o.kd_texture >= 0 && size_t(o.kd_texture) < scene_.textures.size() &&
-         !mesh.uvs.empty();
-}
-
 Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 barycentrics,
                    glm::vec2 uv) const {
   const Mesh& mesh = scene_.meshes[size_t(mesh_index)];

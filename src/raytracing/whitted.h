@@ -128,7 +128,9 @@ public:
   // The same at barycentrics (u, v) and texture coordinates uv of a triangle of material o.
   Rgb kd_at(const Material& o, int mesh, int triangle, glm::vec2 barycentrics, glm::vec2 uv) const;
   // Whether kd_at is o.kd itself all over `mesh`: no vertex colours, no texture sampled.
-  bool kd_is_uniform(const Material& o, const Mesh& mesh) const;
+  bool kd_is_uniform(const Material& o, const Mesh& mesh) const {
+    return mesh.colors.empty() && !samples_texture(o, mesh);
+  }
   // The hybrid's diffuse part, or nullptr: Whitted's own local terms.
   const DiffuseSource* diffuse_source() const { return diffuse_; }
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
@@ -154,7 +156,10 @@ public:
 
 private:
   // Whether kd_at multiplies kd by o's base colour texture on `mesh`.
-  bool samples_texture(const Material& o, const Mesh& mesh) const;
+  bool samples_texture(const Material& o, const Mesh& mesh) const {
+    return options_.terms.textures && o.kd_texture >= 0 && size_t(o.kd_texture) < scene_.textures.size() &&
+           !mesh.uvs.empty();
+  }
   // The hit's light samples: the streamed ones when trace() was given them for this hit, else
   // sampled here. The one lookup of the streamed answers, so that color() has a single path.
   LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed);
