@@ -10,17 +10,9 @@
 #include <glm/geometric.hpp>
 
 #include "raytracing/hit_math.h"
+#include "raytracing/vector_clones.h"
 
 namespace luz::rt {
-
-// x86-64's baseline has 4-wide vectors; processors since 2013 have 8-wide ones (AVX2). Each
-// vectorised function is compiled for both, and the loader picks the one the processor runs.
-// No fused multiply-add: the lanes' arithmetic stays the recursion's to the bit.
-#if defined(__x86_64__) && defined(__GNUC__)
-#define LUZ_LANES_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define LUZ_LANES_CLONES
-#endif
 
 namespace {
 constexpr float kPi = std::numbers::pi_v<float>;
@@ -33,7 +25,7 @@ void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const Whit
 }
 
 // ---- [the hits] ---------------------------------------------------------------------------------
-LUZ_LANES_CLONES void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
+LUZ_VECTOR_CLONES void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
                     std::span<const uint64_t> seeds) {
   count_ = queue.size();
   const size_t n = count_;
@@ -143,7 +135,7 @@ void HitLanes::area_light_samples(LaneLights& out) {
 }
 
 // A punctual light: IL = I * f_att(d) * spot / pi, or E_perp / pi for a directional one.
-LUZ_LANES_CLONES void HitLanes::toward_light(const Light& light) {
+LUZ_VECTOR_CLONES void HitLanes::toward_light(const Light& light) {
   const size_t n = count_;
   if (light.type == LightType::directional) {
     const glm::vec3 L = -glm::normalize(light.direction);
@@ -176,7 +168,7 @@ LUZ_LANES_CLONES void HitLanes::toward_light(const Light& light) {
 
 // One sample point y of an emissive triangle per lane (of `samples`): it stands for area A/N and
 // lights like a point of intensity Le (A/N) cos(theta_e) (SCENES.md).
-LUZ_LANES_CLONES void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points) {
+LUZ_VECTOR_CLONES void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points) {
   const size_t n = count_;
   const glm::vec3 normal = area.normal;
   const Rgb radiance = area.radiance;
@@ -195,7 +187,7 @@ LUZ_LANES_CLONES void HitLanes::toward_area_sample(const AreaLight& area, int sa
   }
 }
 
-LUZ_LANES_CLONES void HitLanes::add_light(LaneLights& out) {
+LUZ_VECTOR_CLONES void HitLanes::add_light(LaneLights& out) {
   const size_t n = count_;
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
   const bool blinn = options_->terms.blinn;
@@ -271,7 +263,7 @@ void HitLanes::sort_by_lane(const LaneLights& in, LaneLights& out) const {
 }
 
 // ---- [colour] -----------------------------------------------------------------------------------
-LUZ_LANES_CLONES void HitLanes::unlit_colors(std::span<Rgb> local) const {
+LUZ_VECTOR_CLONES void HitLanes::unlit_colors(std::span<Rgb> local) const {
   const DiffuseSource* diffuse = shading_->diffuse_source();
   const TermSwitches& terms = options_->terms;
   for (size_t k = 0; k < count_; ++k) {
@@ -290,7 +282,7 @@ LUZ_LANES_CLONES void HitLanes::unlit_colors(std::span<Rgb> local) const {
 // ---- [rays] -------------------------------------------------------------------------------------
 // Fresnel on or off as a constant: GCC does not vectorise the loop when it chooses by a flag.
 template <bool kFresnel>
-LUZ_LANES_CLONES void HitLanes::split_refracting(Refracting& t) {
+LUZ_VECTOR_CLONES void HitLanes::split_refracting(Refracting& t) {
   for (size_t i = 0; i < t.size; ++i) {
     const Split split = split_at(t.kr[i], t.kt[i], t.ior[i], t.front[i], t.d[i], t.N[i], kFresnel);
     t.kr.set(i, split.kr);
@@ -304,7 +296,7 @@ LUZ_LANES_CLONES void HitLanes::split_refracting(Refracting& t) {
   }
 }
 
-LUZ_LANES_CLONES void HitLanes::secondary_rays(SpawnLanes& out) const {
+LUZ_VECTOR_CLONES void HitLanes::secondary_rays(SpawnLanes& out) const {
   // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered;
   // those that transmit gathered once more, apart: only they need Snell and Fresnel (a lane that
   // transmits nothing keeps its kr, split_at adds kt x F = 0 to it).
