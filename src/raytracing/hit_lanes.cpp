@@ -25,7 +25,8 @@ void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const Whit
 }
 
 // ---- [the hits] ---------------------------------------------------------------------------------
-LUZ_VECTOR_CLONES void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
+LUZ_VECTOR_CLONES
+void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, std::span<const Hit> hits,
                     std::span<const uint64_t> seeds) {
   count_ = queue.size();
   const size_t n = count_;
@@ -52,7 +53,8 @@ LUZ_VECTOR_CLONES void HitLanes::load(std::span<const uint32_t> queue, std::span
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {
-    const SurfaceGeometry g = surface_geometry(p0_[k], p1_[k], p2_[k], n0_[k], n1_[k], n2_[k], u_[k], v_[k], d_[k]);
+    const SurfaceGeometry g =
+        surface_geometry(p0_[k], p1_[k], p2_[k], n0_[k], n1_[k], n2_[k], u_[k], v_[k], d_[k]);
     position_.set(k, g.position);
     geometric_.set(k, g.geometric);
     N_.set(k, g.N);
@@ -135,7 +137,8 @@ void HitLanes::area_light_samples(LaneLights& out) {
 }
 
 // A punctual light: IL = I * f_att(d) * spot / pi, or E_perp / pi for a directional one.
-LUZ_VECTOR_CLONES void HitLanes::toward_light(const Light& light) {
+LUZ_VECTOR_CLONES
+void HitLanes::toward_light(const Light& light) {
   const size_t n = count_;
   if (light.type == LightType::directional) {
     const glm::vec3 L = -glm::normalize(light.direction);
@@ -168,7 +171,8 @@ LUZ_VECTOR_CLONES void HitLanes::toward_light(const Light& light) {
 
 // One sample point y of an emissive triangle per lane (of `samples`): it stands for area A/N and
 // lights like a point of intensity Le (A/N) cos(theta_e) (SCENES.md).
-LUZ_VECTOR_CLONES void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points) {
+LUZ_VECTOR_CLONES
+void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points) {
   const size_t n = count_;
   const glm::vec3 normal = area.normal;
   const Rgb radiance = area.radiance;
@@ -187,7 +191,8 @@ LUZ_VECTOR_CLONES void HitLanes::toward_area_sample(const AreaLight& area, int s
   }
 }
 
-LUZ_VECTOR_CLONES void HitLanes::add_light(LaneLights& out) {
+LUZ_VECTOR_CLONES
+void HitLanes::add_light(LaneLights& out) {
   const size_t n = count_;
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
   const bool blinn = options_->terms.blinn;
@@ -263,7 +268,8 @@ void HitLanes::sort_by_lane(const LaneLights& in, LaneLights& out) const {
 }
 
 // ---- [colour] -----------------------------------------------------------------------------------
-LUZ_VECTOR_CLONES void HitLanes::unlit_colors(std::span<Rgb> local) const {
+LUZ_VECTOR_CLONES
+void HitLanes::unlit_colors(std::span<Rgb> local) const {
   const DiffuseSource* diffuse = shading_->diffuse_source();
   const TermSwitches& terms = options_->terms;
   for (size_t k = 0; k < count_; ++k) {
@@ -282,7 +288,8 @@ LUZ_VECTOR_CLONES void HitLanes::unlit_colors(std::span<Rgb> local) const {
 // ---- [rays] -------------------------------------------------------------------------------------
 // Fresnel on or off as a constant: GCC does not vectorise the loop when it chooses by a flag.
 template <bool kFresnel>
-LUZ_VECTOR_CLONES void HitLanes::split_refracting(Refracting& t) {
+LUZ_VECTOR_CLONES
+void HitLanes::split_refracting(Refracting& t) {
   for (size_t i = 0; i < t.size; ++i) {
     const Split split = split_at(t.kr[i], t.kt[i], t.ior[i], t.front[i], t.d[i], t.N[i], kFresnel);
     t.kr.set(i, split.kr);
@@ -296,7 +303,8 @@ LUZ_VECTOR_CLONES void HitLanes::split_refracting(Refracting& t) {
   }
 }
 
-LUZ_VECTOR_CLONES void HitLanes::secondary_rays(SpawnLanes& out) const {
+LUZ_VECTOR_CLONES
+void HitLanes::secondary_rays(SpawnLanes& out) const {
   // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered;
   // those that transmit gathered once more, apart: only they need Snell and Fresnel (a lane that
   // transmits nothing keeps its kr, split_at adds kt x F = 0 to it).

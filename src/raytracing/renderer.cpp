@@ -140,12 +140,13 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   scratch.resize(n);
   std::span<Ray> rays(scratch.rays.data(), n);
   std::span<uint64_t> seeds(scratch.seeds.data(), n);
+  const bool seeded = whitted.draws_random_numbers();
   size_t i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (samples_per_pixel == 1) {  // the pixel's centre: no jitter to draw
         scratch.points[i] = glm::vec2(float(x), float(y)) + 0.5f;
-        seeds[i++] = sample_seed(x, y, 0);
+        seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
         continue;
       }
       Random jitter(x, y, -1);

@@ -11,10 +11,11 @@ namespace luz::rt {
 
 // ---- [queues] -----------------------------------------------------------------------------------
 // One generation of rays, as a structure of arrays: the rays contiguous for Embree's stream, the
-// rest read once per ray by the shading loop. Its kind is known from where it stands: a first
-// generation is all primary rays, a later one its reflected rays, then its transmitted ones. Its first size() entries are the generation; the
-// arrays only grow: after the first tiles a thread's queues have the room they need, a tile
-// allocates nothing, and adding a ray checks the room once, not once per array.
+// rest read once per ray by the shading loop. A ray's kind is known from where it stands: a first
+// generation is all primary rays, a later one its reflected rays, then its transmitted ones. Its
+// first size() entries are the generation; the arrays only grow: after the first tiles a thread's
+// queues have the room they need, a tile allocates nothing, and adding a ray checks the room
+// once, not once per array.
 struct RayQueue {
   std::vector<Ray> rays;
   std::vector<uint32_t> samples;   // the primary ray whose tree the ray belongs to
@@ -79,18 +80,21 @@ struct Scratch {
 };
 
 // The reflected and transmitted rays of the lanes' hits, weighted by their parents' throughput,
-// into the next generation's two queues.
-void spawn_rays(const HitLanes& lanes, const RayQueue& queue, SpawnLanes& spawned, RayQueue& reflected,
-                RayQueue& transmitted) {
+// into the next generation's two queues; with their seeds where shading reads them (`seeded`).
+void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool seeded, SpawnLanes& spawned,
+                RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
   for (size_t j = 0; j < spawned.size; ++j) {
     const uint32_t q = lanes.ray(spawned.lane[j]);
+    const uint64_t seed = queue.seeds[q];
     if (spawned.reflects[j])
-      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, queue.samples[q], queue.throughputs[q] * spawned.kr[j],
-                     branch_seed(queue.seeds[q], RayKind::reflected));
+      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, queue.samples[q],
+                     queue.throughputs[q] * spawned.kr[j],
+                     seeded ? branch_seed(seed, RayKind::reflected) : 0);
     if (spawned.transmits[j])
-      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]}, queue.samples[q], queue.throughputs[q] * spawned.kt[j],
-                       branch_seed(queue.seeds[q], RayKind::transmitted));
+      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]},
+                       queue.samples[q], queue.throughputs[q] * spawned.kt[j],
+                       seeded ? branch_seed(seed, RayKind::transmitted) : 0);
   }
 }
 
@@ -141,6 +145,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
     LaneLights& lights = scratch.lights;
     lights.size = 0;
     const bool spawn = depth < max_depth_of(options_);
+    const bool seeded = shading_.draws_random_numbers();
     for (size_t start = 0; start < n; start += kLanes) {
       scratch.found.clear();
       for (size_t q = start; q < std::min(n, start + kLanes); ++q)
@@ -148,7 +153,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
       lanes.load(scratch.found, rays, scratch.hits, queue.seeds);
       lanes.light_samples(lights);
       lanes.unlit_colors(scratch.local);
-      if (spawn) spawn_rays(lanes, queue, scratch.spawned, scratch.reflected, scratch.transmitted);
+      if (spawn) spawn_rays(lanes, queue, seeded, scratch.spawned, scratch.reflected, scratch.transmitted);
     }
 
     // 3. Every shadow ray of the generation, as one stream.
