@@ -110,7 +110,8 @@ void HitLanes::light_samples(LaneLights& out) {
 void HitLanes::area_light_samples(LaneLights& out) {
   if (scene_->area_lights.empty()) return;
   const int samples = std::max(1, options_->light_samples);
-  for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
+  if (samples > 1)
+    for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
   for (const AreaLight& area : scene_->area_lights) {
     area_points_.resize(size_t(samples));
     if (samples == 1) {

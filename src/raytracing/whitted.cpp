@@ -235,12 +235,6 @@ void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const 
   p.material = &material_of(mesh);
 }
 
-const Material& Whitted::material_of(const Mesh& mesh) const {
-  static const Material fallback;
-  const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
-  return known ? scene_.materials[size_t(mesh.material)] : fallback;
-}
-
 // ---- [rays] -------------------------------------------------------------------------------------
 PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   // In camera space the image plane at z = -1 spans x in [-tan(yfov/2) aspect, +...] and

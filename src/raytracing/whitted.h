@@ -123,7 +123,12 @@ public:
     surface_at(ray, hit, p);
     return p;
   }
-  const Material& material_of(const Mesh& mesh) const;  // its material, or the default one
+  // Its material, or the default one.
+  const Material& material_of(const Mesh& mesh) const {
+    static const Material fallback;
+    const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
+    return known ? scene_.materials[size_t(mesh.material)] : fallback;
+  }
   Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
   // The same at barycentrics (u, v) and texture coordinates uv of a triangle of material o.
   Rgb kd_at(const Material& o, int mesh, int triangle, glm::vec2 barycentrics, glm::vec2 uv) const;
