@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 
@@ -63,7 +64,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   // What the light terms read of each material: kd (x COLOR_0 x the texture; in the hybrid
   // radiosity has the diffuse term), ks and the exponent.
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
-  any_shiny_ = false;
+  any_shiny_ = any_reflective_ = any_transmissive_ = false;
   for (size_t k = 0; k < n; ++k) {
     const Material& o = *material_[k];
     const Mesh& mesh = scene_->meshes[size_t(mesh_[k])];
@@ -80,6 +81,11 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     shininess_[k] = o.shininess;
     shiny_[k] = options_->terms.specular && positive(o.ks);
     any_shiny_ = any_shiny_ || shiny_[k];
+    kr_.set(k, o.kr);
+    kt_.set(k, o.kt);
+    ior_[k] = o.ior;
+    any_reflective_ = any_reflective_ || positive(o.kr);
+    any_transmissive_ = any_transmissive_ || positive(o.kt);
   }
 }
 
@@ -287,78 +293,45 @@ void HitLanes::unlit_colors(std::span<Rgb> local) const {
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------
-// Fresnel on or off as a constant: GCC does not vectorise the loop when it chooses by a flag.
-template <bool kFresnel>
-LUZ_VECTOR_CLONES
-void HitLanes::split_refracting(Refracting& t) {
-  for (size_t i = 0; i < t.size; ++i) {
-    const Split split = split_at(t.kr[i], t.kt[i], t.ior[i], t.front[i], t.d[i], t.N[i], kFresnel);
-    t.kr.set(i, split.kr);
-    t.kt.set(i, split.kt);
-    t.refracts[i] = split.refracts;
-    t.direction.set(i, split.T);
-  }
-  for (size_t i = 0; i < t.size; ++i) {
-    t.origin.set(i, offset_origin(t.position[i], -t.geometric[i]));
-    t.direction.set(i, keep_on_side(t.direction[i], -t.geometric[i]));
-  }
-}
-
 LUZ_VECTOR_CLONES
 void HitLanes::secondary_rays(SpawnLanes& out) const {
-  // The lanes whose material reflects or transmits at all (on most scenes the fewest), gathered;
-  // those that transmit gathered once more, apart: only they need Snell and Fresnel (a lane that
-  // transmits nothing keeps its kr, split_at adds kt x F = 0 to it).
-  Vec3Lanes d, N, position, geometric;
-  size_t m = 0;
-  Refracting t;
-  t.size = 0;
-  for (size_t k = 0; k < count_; ++k) {
-    const Material& o = *material_[k];
-    if (!positive(o.kr) && !positive(o.kt)) continue;
-    out.lane[m] = uint32_t(k);
-    out.kr.set(m, o.kr);
-    out.kt.set(m, o.kt);
-    d.set(m, d_[k]);
-    N.set(m, N_[k]);
-    position.set(m, position_[k]);
-    geometric.set(m, geometric_[k]);
-    if (positive(o.kt)) {
-      const size_t i = t.size++;
-      t.spawn[i] = uint32_t(m);
-      t.kr.set(i, o.kr);
-      t.kt.set(i, o.kt);
-      t.ior[i] = o.ior;
-      t.front[i] = front_[k];
-      t.d.set(i, d_[k]);
-      t.N.set(i, N_[k]);
-      t.position.set(i, position_[k]);
-      t.geometric.set(i, geometric_[k]);
-    }
-    ++m;
-  }
-  out.size = m;
+  // Every lane's rays, computed for all lanes at once (a lane that spawns none is left out when
+  // they are queued): where a chunk's lanes mix mirrors and walls this costs less than gathering
+  // the mirrors' lanes first. A chunk where no lane reflects or transmits computes nothing.
+  out.any = any_reflective_ || any_transmissive_;
+  if (!out.any) return;
+  const size_t n = count_;
   // "si o es reflexivo": R := rayo de reflexión, where it leaves, which way.
-  for (size_t j = 0; j < m; ++j) {
-    out.reflected_origin.set(j, offset_origin(position[j], geometric[j]));
-    out.reflected_direction.set(j, keep_on_side(reflect(d[j], N[j]), geometric[j]));
-    out.reflects[j] = positive(out.kr[j]);
-    out.transmits[j] = false;
+  for (size_t k = 0; k < n; ++k) {
+    out.kr.set(k, kr_[k]);
+    out.kt.set(k, kt_[k]);
+    out.reflected_origin.set(k, offset_origin(position_[k], geometric_[k]));
+    out.reflected_direction.set(k, keep_on_side(reflect(d_[k], N_[k]), geometric_[k]));
+    out.reflects[k] = positive(kr_[k]);
+    out.transmits[k] = false;
   }
-  // kr and kt split by Fresnel or total internal reflection, and "si o es transmisivo y no hay
-  // reflexión interna total": T := rayo de refracción.
+  // Where some lane transmits: kr and kt split by Fresnel or total internal reflection (a lane
+  // that transmits nothing keeps its kr, split_at adds kt x F = 0 to it), and "si o es
+  // transmisivo y no hay reflexión interna total": T := rayo de refracción. Fresnel on or off as
+  // a constant: GCC does not vectorise the loop when it chooses by a flag.
+  if (!any_transmissive_) return;
+  const auto split = [&](auto fresnel) {
+    for (size_t k = 0; k < n; ++k) {
+      const Split s = split_at(kr_[k], kt_[k], ior_[k], front_[k], d_[k], N_[k], fresnel);
+      out.kr.set(k, s.kr);
+      out.kt.set(k, s.kt);
+      out.reflects[k] = positive(s.kr);
+      out.transmits[k] = positive(s.kt) & s.refracts;
+      out.transmitted_direction.set(k, s.T);
+    }
+  };
   if (options_->fresnel)
-    split_refracting<true>(t);
+    split(std::true_type{});
   else
-    split_refracting<false>(t);
-  for (size_t i = 0; i < t.size; ++i) {
-    const size_t j = t.spawn[i];
-    out.kr.set(j, t.kr[i]);
-    out.kt.set(j, t.kt[i]);
-    out.reflects[j] = positive(t.kr[i]);
-    out.transmits[j] = positive(t.kt[i]) & t.refracts[i];
-    out.transmitted_origin.set(j, t.origin[i]);
-    out.transmitted_direction.set(j, t.direction[i]);
+    split(std::false_type{});
+  for (size_t k = 0; k < n; ++k) {
+    out.transmitted_origin.set(k, offset_origin(position_[k], -geometric_[k]));
+    out.transmitted_direction.set(k, keep_on_side(out.transmitted_direction[k], -geometric_[k]));
   }
 }
 

@@ -50,11 +50,10 @@ struct LaneLights {
   size_t size = 0;
 };
 
-// The rays spawned ("Trazar(R, d+1) * kr", "Trazar(T, d+1) * kt") by the lanes whose material
-// reflects or transmits: entry j is lane[j]'s, and each of its rays is spawned when its flag is set.
+// The rays spawned ("Trazar(R, d+1) * kr", "Trazar(T, d+1) * kt") by each lane, when its flag is
+// set: entry k is lane k's. Nothing is set when no lane spawns a ray (`any` false).
 struct SpawnLanes {
-  size_t size = 0;
-  uint32_t lane[kLanes];
+  bool any = false;
   Vec3Lanes reflected_origin, reflected_direction, kr;
   Vec3Lanes transmitted_origin, transmitted_direction, kt;
   int32_t reflects[kLanes], transmits[kLanes];
@@ -82,6 +81,7 @@ public:
   // The lanes' reflected and transmitted rays (Whitted::secondary_rays).
   void secondary_rays(SpawnLanes& out) const;
 
+  size_t size() const { return count_; }
   uint32_t ray(size_t lane) const { return ray_[lane]; }  // the lane's place in the queue
 
 private:
@@ -94,17 +94,6 @@ private:
   // shadow rays, and those that count appended to `out`.
   void add_light(LaneLights& out);
   void sort_by_lane(const LaneLights& in, LaneLights& out) const;
-  // The lanes of secondary_rays() whose material transmits, apart, and what Snell and Fresnel
-  // make of them: entry i is spawn entry spawn[i]'s.
-  struct Refracting {
-    size_t size = 0;
-    uint32_t spawn[kLanes];
-    Vec3Lanes kr, kt, d, N, position, geometric, origin, direction;
-    float ior[kLanes];
-    int32_t front[kLanes], refracts[kLanes];
-  };
-  template <bool kFresnel>
-  static void split_refracting(Refracting& t);
 
   const Scene* scene_ = nullptr;
   const Whitted* shading_ = nullptr;
@@ -125,6 +114,11 @@ private:
   float shininess_[kLanes];
   int32_t shiny_[kLanes];  // ks > 0 and the specular term on: the highlight counts
   bool any_shiny_ = false;  // on some lane
+  // What the secondary rays read: kr, kt and the index of refraction, and whether some lane
+  // reflects, some transmits.
+  Vec3Lanes kr_, kt_;
+  float ior_[kLanes];
+  bool any_reflective_ = false, any_transmissive_ = false;
   // One light at a time: the direction to it, its distance and IL, whether it can light the lane.
   Vec3Lanes L_, IL_;
   float distance_[kLanes], spot_[kLanes], cos_alpha_[kLanes], highlight_[kLanes];

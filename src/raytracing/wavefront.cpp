@@ -84,8 +84,9 @@ struct Scratch {
 void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool seeded, SpawnLanes& spawned,
                 RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
-  for (size_t j = 0; j < spawned.size; ++j) {
-    const uint32_t q = lanes.ray(spawned.lane[j]);
+  if (!spawned.any) return;
+  for (size_t j = 0; j < lanes.size(); ++j) {
+    const uint32_t q = lanes.ray(j);
     const uint64_t seed = queue.seeds[q];
     if (spawned.reflects[j])
       reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, queue.samples[q],
