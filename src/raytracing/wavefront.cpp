@@ -85,16 +85,16 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool seeded, Spawn
                 RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
   if (!spawned.any) return;
-  for (size_t j = 0; j < lanes.size(); ++j) {
-    const uint32_t q = lanes.ray(j);
+  for (size_t k = 0; k < lanes.size(); ++k) {
+    const uint32_t q = lanes.ray(k);
     const uint64_t seed = queue.seeds[q];
-    if (spawned.reflects[j])
-      reflected.push(Ray{spawned.reflected_origin[j], spawned.reflected_direction[j]}, queue.samples[q],
-                     queue.throughputs[q] * spawned.kr[j],
+    if (spawned.reflects[k])
+      reflected.push(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, queue.samples[q],
+                     queue.throughputs[q] * spawned.kr[k],
                      seeded ? branch_seed(seed, RayKind::reflected) : 0);
-    if (spawned.transmits[j])
-      transmitted.push(Ray{spawned.transmitted_origin[j], spawned.transmitted_direction[j]},
-                       queue.samples[q], queue.throughputs[q] * spawned.kt[j],
+    if (spawned.transmits[k])
+      transmitted.push(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]},
+                       queue.samples[q], queue.throughputs[q] * spawned.kt[k],
                        seeded ? branch_seed(seed, RayKind::transmitted) : 0);
   }
 }
