@@ -61,8 +61,9 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     N_.set(k, g.N);
     front_[k] = g.front;
   }
-  // What the light terms read of each material: kd (x COLOR_0 x the texture; in the hybrid
-  // radiosity has the diffuse term), ks and the exponent.
+  // What the light terms and the secondary rays read of each material: kd (x COLOR_0 x the
+  // texture; in the hybrid radiosity has the diffuse term), ks and the exponent, kr, kt and the
+  // index of refraction.
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
   any_shiny_ = any_reflective_ = any_transmissive_ = false;
   for (size_t k = 0; k < n; ++k) {
@@ -296,8 +297,9 @@ void HitLanes::unlit_colors(std::span<Rgb> local) const {
 LUZ_VECTOR_CLONES
 void HitLanes::secondary_rays(SpawnLanes& out) const {
   // Every lane's rays, computed for all lanes at once (a lane that spawns none is left out when
-  // they are queued): where a chunk's lanes mix mirrors and walls this costs less than gathering
-  // the mirrors' lanes first. A chunk where no lane reflects or transmits computes nothing.
+  // they are queued): where a chunk's lanes mix mirrors and walls this costs no more than
+  // gathering the mirrors' lanes first. A chunk where no lane reflects or transmits computes
+  // nothing.
   out.any = any_reflective_ || any_transmissive_;
   if (!out.any) return;
   const size_t n = count_;

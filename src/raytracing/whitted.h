@@ -138,7 +138,9 @@ public:
   }
   // Whether shading draws random numbers at all: only the area lights' samples beyond the
   // centroid do. Without them no ray's seed is ever read, and the renderers need not make one.
-  bool draws_random_numbers() const { return options_.light_samples > 1 && !scene_.area_lights.empty(); }
+  bool draws_random_numbers() const {
+    return options_.light_samples > 1 && !scene_.area_lights.empty();
+  }
   // The hybrid's diffuse part, or nullptr: Whitted's own local terms.
   const DiffuseSource* diffuse_source() const { return diffuse_; }
   // Every light's term at p for a viewer in direction V, if (L.N) > 0, with its shadow ray
