@@ -144,7 +144,9 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   size_t i = 0;
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
-      if (samples_per_pixel == 1) {  // the pixel's centre: no jitter to draw
+      // One sample a pixel: its centre, stratified_pixel_samples' rule, taken here without the
+      // call and the generator per pixel (2-3% of a Cornell box render at 1024x1024).
+      if (samples_per_pixel == 1) {
         scratch.points[i] = glm::vec2(float(x), float(y)) + 0.5f;
         seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
         continue;
