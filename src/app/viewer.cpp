@@ -768,7 +768,8 @@ void Viewer::clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_
   const FramebufferRect unpainted[] = {
       {0, 0, l.framebuffer.x, l.view.gl_origin.y},  // the status line's strip
       panel_painted ? FramebufferRect{} : panel,
-      view_tiled ? FramebufferRect{} : FramebufferRect{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
+      view_tiled ? FramebufferRect{}
+                 : FramebufferRect{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
   glClearColor(background.r, background.g, background.b, background.a);
   glEnable(GL_SCISSOR_TEST);
   for (const FramebufferRect& r : unpainted)

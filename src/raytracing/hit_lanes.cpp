@@ -23,6 +23,9 @@ void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const Whit
   scene_ = &scene;
   shading_ = &shading;
   options_ = &options;
+  // The lights each lane meets: the enabled punctual ones, then every area light's samples.
+  light_passes_ = size_t(std::max(1, options.light_samples)) * scene.area_lights.size();
+  for (const Light& light : scene.lights) light_passes_ += light.enabled ? 1 : 0;
 }
 
 // ---- [the hits] ---------------------------------------------------------------------------------
@@ -95,9 +98,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
 // samples, so that each lane meets its lights in the recursion's order.
 void HitLanes::light_samples(LaneLights& out) {
   // With a single light the samples come lane by lane already: straight into `out`.
-  size_t lights = size_t(std::max(1, options_->light_samples)) * scene_->area_lights.size();
-  for (const Light& light : scene_->lights) lights += light.enabled ? 1 : 0;
-  const bool one = lights == 1;
+  const bool one = light_passes_ == 1;
   const size_t first = out.size;
   LaneLights& made = one ? out : by_light_;
   by_light_.size = 0;

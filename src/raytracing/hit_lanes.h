@@ -98,6 +98,7 @@ private:
   const Scene* scene_ = nullptr;
   const Whitted* shading_ = nullptr;
   const WhittedOptions* options_ = nullptr;
+  size_t light_passes_ = 0;  // lights a lane meets (add_light calls of light_samples)
   size_t count_ = 0;
 
   // The hits: their rays' places in the queue and directions, their triangles (corners, vertex

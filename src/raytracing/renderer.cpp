@@ -155,7 +155,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
       stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
       for (int s = 0; s < samples_per_pixel; ++s, ++i) {
         scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
-        seeds[i] = sample_seed(x, y, s);
+        seeds[i] = seeded ? sample_seed(x, y, s) : 0;
       }
     }
   // The rays in a loop of their own, without calls: the processor overlaps the square roots and
