@@ -259,5 +259,63 @@ TEST(WavefrontEqualsRecursion, ShadowRaysInTheRecursionsOrder) {
   EXPECT_TRUE(shadow_rays(RendererKind::wavefront) == recursive);
 }
 
+// `luz bench whitted` traces the logged rays bare in the calls the renderer made, so the log must
+// say which rays went to Embree together: a tile's primary rays in one stream with both
+// renderers; the wavefront's later generations in streams too, the recursion's one ray at a time.
+TEST(WavefrontEqualsRecursion, TheLogKeepsEachRenderersStreams) {
+  const Scene scene = io::load_gltf(test::scene_dir() / "whitted.gltf").scene;
+  WhittedRenderer tracer(scene);
+  tracer.keep_rays(true);
+  WhittedOptions options;
+  options.max_depth = 5;
+  const size_t tiles = size_t(kWidth / options.tile_size) * size_t(kHeight / options.tile_size);
+  const size_t tile_rays = size_t(options.tile_size) * size_t(options.tile_size);
+  // For each kind: the rays in streams, the streams' starts, the rays traced alone.
+  struct Calls {
+    size_t in_stream = 0, streams = 0, alone = 0;
+  };
+  const auto calls_of = [&](RendererKind renderer) {
+    options.renderer = renderer;
+    tracer.render(scene.cameras[0], kWidth, kHeight, options);
+    std::vector<Calls> calls(kRayKinds);
+    std::vector<size_t> longest(kRayKinds), current(kRayKinds);
+    for (const RecordedRay& r : tracer.take_rays()) {
+      Calls& c = calls[size_t(r.kind)];
+      size_t& run = current[size_t(r.kind)];
+      if (r.traced == Traced::alone) {
+        ++c.alone;
+        continue;
+      }
+      ++c.in_stream;
+      if (r.traced == Traced::starts_stream) {
+        ++c.streams;
+        run = 0;
+      }
+      EXPECT_GT(c.streams, 0u) << "a stream's ray before any stream started";
+      longest[size_t(r.kind)] = std::max(longest[size_t(r.kind)], ++run);
+    }
+    EXPECT_EQ(longest[size_t(RayKind::primary)], tile_rays);
+    return calls;
+  };
+  for (RendererKind renderer : {RendererKind::recursive, RendererKind::wavefront}) {
+    const std::vector<Calls> calls = calls_of(renderer);
+    const Calls& primary = calls[size_t(RayKind::primary)];
+    EXPECT_EQ(primary.streams, tiles);
+    EXPECT_EQ(primary.in_stream, tiles * tile_rays);
+    EXPECT_EQ(primary.alone, 0u);
+    EXPECT_GT(calls[size_t(RayKind::shadow)].streams, 0u);
+    for (RayKind kind : {RayKind::reflected, RayKind::transmitted}) {
+      const Calls& c = calls[size_t(kind)];
+      if (renderer == RendererKind::recursive) {
+        EXPECT_GT(c.alone, 0u) << to_string(kind);
+        EXPECT_EQ(c.in_stream, 0u) << to_string(kind);
+      } else {
+        EXPECT_GT(c.streams, 0u) << to_string(kind);
+        EXPECT_EQ(c.alone, 0u) << to_string(kind);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace luz::rt

@@ -1,11 +1,9 @@
 // `luz bench whitted`. For each scene: the full render (best and median of N, after one untimed
 // render that sizes every thread's scratch queues and wakes TBB's workers), then the same
 // render once more keeping every ray it traced, then those rays traced bare through the same
-// Embree scene on the same TBB threads, as the renderer (--renderer) traces them: primary and
-// shadow rays as streams of 256 in the order the tracer made them (a tile's worth; with the
-// recursive renderer the bare run streams the deeper hits' shadow rays too, so it is if anything
-// faster than the tracer could be); reflected and transmitted rays as streams of 256 too for the
-// wavefront renderer, one by one for the recursive one, as its recursion traces them.
+// Embree scene on the same TBB threads and in the same calls as the renderer (--renderer) made
+// them: each stream of rays (the wavefront's every generation, a kind of ray at a time; the
+// recursion's first generation of a tile) as one stream, every other ray on its own.
 // render / bare is how close the tracer comes to Embree's limit on this machine; what it spends
 // beyond is shading, sampling and bookkeeping.
 #include "app/bench_command.h"
@@ -61,24 +59,38 @@ std::filesystem::path scene_path(const std::string& name) {
 constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
                                                     N_("transmitted")};
 
-// The rays of one kind traced bare: no shading, no recursion, no counters. `streamed`: reflected
-// and transmitted rays as streams (the wavefront renderer's way), else one by one.
-double trace_bare(const rt::Intersector& embree, std::span<const rt::Ray> rays, rt::RayKind kind,
-                  bool streamed) {
-  constexpr size_t chunk = 256;  // one 16x16 tile of primary rays
-  const size_t chunks = (rays.size() + chunk - 1) / chunk;
+// The rays of one kind traced bare, each stream in one call and the others one by one: no
+// shading, no recursion, no counters.
+double trace_bare(const rt::Intersector& embree, std::span<const rt::RecordedRay> rays, rt::RayKind kind) {
+  struct Call {
+    size_t first, count;
+  };
+  std::vector<Call> calls;
+  for (size_t i = 0; i < rays.size(); ++i)
+    if (rays[i].traced != rt::Traced::in_stream || calls.empty())
+      calls.push_back({i, 1});
+    else
+      ++calls.back().count;
+  // The rays as the renderer handed them over, before the clock starts.
+  std::vector<rt::Ray> plain(rays.size());
+  for (size_t i = 0; i < rays.size(); ++i) plain[i] = rays[i].ray;
+
   const auto start = Clock::now();
-  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-    const std::span<const rt::Ray> part = rays.subspan(c * chunk, std::min(chunk, rays.size() - c * chunk));
+  tbb::parallel_for(size_t(0), calls.size(), [&](size_t c) {
+    thread_local std::vector<rt::Hit> hits;
+    thread_local rt::BlockedFlags blocked;
+    const std::span<const rt::Ray> part = std::span(plain).subspan(calls[c].first, calls[c].count);
     uint64_t tests = 0;
-    if (kind == rt::RayKind::primary || (streamed && kind != rt::RayKind::shadow)) {
-      std::array<rt::Hit, chunk> hits;
-      embree.intersect(part, std::span(hits.data(), part.size()), tests);
+    if (rays[calls[c].first].traced == rt::Traced::alone) {
+      if (kind == rt::RayKind::shadow)
+        (void)embree.occluded(part[0], tests);
+      else
+        (void)embree.intersect(part[0], tests);
     } else if (kind == rt::RayKind::shadow) {
-      bool blocked[chunk];
-      embree.occluded(part, std::span(blocked, part.size()), tests);
+      embree.occluded(part, blocked.first(part.size()), tests);
     } else {
-      for (const rt::Ray& ray : part) (void)embree.intersect(ray, tests);
+      hits.resize(part.size());
+      embree.intersect(part, hits, tests);
     }
   });
   return seconds_since(start);
@@ -171,16 +183,15 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       tracer.render(camera, settings.width, settings.height, options);
       tracer.keep_rays(false);
       const std::vector<rt::RecordedRay> recorded = tracer.take_rays();
-      std::array<std::vector<rt::Ray>, rt::kRayKinds> by_kind;
-      for (const rt::RecordedRay& r : recorded) by_kind[size_t(r.kind)].push_back(r.ray);
+      std::array<std::vector<rt::RecordedRay>, rt::kRayKinds> by_kind;
+      for (const rt::RecordedRay& r : recorded) by_kind[size_t(r.kind)].push_back(r);
 
       std::array<double, rt::kRayKinds> bare{};
       bare.fill(1e30);
       for (int r = 0; r < settings.repeats; ++r)
         for (int k = 0; k < rt::kRayKinds; ++k)
           bare[size_t(k)] = std::min(bare[size_t(k)], trace_bare(tracer.intersector(options),
-                                                                 by_kind[size_t(k)], rt::RayKind(k),
-                                                                 settings.renderer == rt::RendererKind::wavefront));
+                                                                 by_kind[size_t(k)], rt::RayKind(k)));
       double bare_total = 0.0;
       for (double b : bare) bare_total += b;
       const double rays = double(counters.total_rays());

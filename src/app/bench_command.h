@@ -12,7 +12,8 @@ namespace CLI { class App; }
 namespace luz::app {
 
 // `luz bench whitted`: the tracer's time on shipped scenes, its rays per second of each kind, and
-// the same rays traced bare through Embree in the same run (the limit), as a ratio.
+// the same rays traced bare through Embree in the same run and the same calls (the limit), as a
+// ratio.
 struct WhittedBenchSettings {
   int width = 1920;
   int height = 1080;

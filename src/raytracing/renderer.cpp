@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <cmath>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -43,6 +44,15 @@ struct TileScratch {
     radiance.resize(n);
   }
 };
+
+// The first ray of each kind that the tile traced in a stream starts that stream (Whitted::count
+// logs the first generation's rays as in a stream, not knowing which comes first).
+void mark_stream_starts(std::vector<RecordedRay>& log) {
+  bool started[kRayKinds] = {};
+  for (RecordedRay& r : log)
+    if (r.traced == Traced::in_stream && !std::exchange(started[size_t(r.kind)], true))
+      r.traced = Traced::starts_stream;
+}
 
 }  // namespace
 
@@ -219,6 +229,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
       }
       image.at(x, y) = sum * weight;
     }
+  if (log) mark_stream_starts(*log);
 }
 
 // ---- [one pixel] --------------------------------------------------------------------------------

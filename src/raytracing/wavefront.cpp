@@ -108,7 +108,8 @@ Wavefront::Wavefront(const Scene& scene, Whitted& shading, const Intersector& in
 
 void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
   if (log_)
-    for (const Ray& ray : rays) log_->push_back({ray, kind});
+    for (const Ray& ray : rays)
+      log_->push_back({ray, kind, &ray == rays.data() ? Traced::starts_stream : Traced::in_stream});
   counters_[kind] += rays.size();
 }
 
@@ -133,9 +134,15 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
       count(rays.subspan(reflected), RayKind::transmitted);
     }
 
-    // 1. "Determinar intersección con objeto más cercano", for the whole queue at once.
+    // 1. "Determinar intersección con objeto más cercano", for the whole queue at once: a stream
+    // for each kind of ray (the reflected rays leave a surface more alike than with the
+    // transmitted ones among them).
     scratch.hits.resize(n);
-    intersector_.intersect(rays, scratch.hits, counters_.intersection_tests);
+    const std::span<Hit> hits(scratch.hits);
+    const size_t first_kind = depth == 1 ? n : reflected;
+    intersector_.intersect(rays.first(first_kind), hits.first(first_kind), counters_.intersection_tests);
+    if (first_kind < n)
+      intersector_.intersect(rays.subspan(first_kind), hits.subspan(first_kind), counters_.intersection_tests);
 
     // 2. "calcular la normal", every hit's light samples and the local colour without them, and
     // its reflected and transmitted rays, weighted once more, into the next generation: kLanes

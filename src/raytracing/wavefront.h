@@ -4,7 +4,7 @@
 //
 //   queue := the primary rays of a tile's samples
 //   while the queue is not empty:
-//     1. the queue's nearest hits, as one Embree stream
+//     1. the queue's nearest hits, as an Embree stream for each kind of ray
 //     2. each hit's surface point, light samples and local colour before its lights, and its
 //        reflected and transmitted rays into the next queue
 //     3. all the light samples' shadow rays, as one stream

@@ -27,7 +27,7 @@ Whitted::Whitted(const Scene& scene, const Intersector& intersector, const Whitt
 // ---- [Trazar] -----------------------------------------------------------------------------------
 Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb weight,
                    const StreamedAnswers* streamed) {
-  count(ray, kind);
+  count(ray, kind, streamed != nullptr);
   tree_.ray(ray, kind, depth, weight);
   // "Determinar intersección con objeto más cercano".
   const Hit hit = streamed ? streamed->hit : intersector_.intersect(ray, counters_.intersection_tests);
@@ -183,7 +183,7 @@ const bool* Whitted::shadow_rays(const LightsAt& lights) {
   const std::span<bool> blocked = blocked_.first(lights.samples.size());
   for (size_t i = 0; i < blocked.size(); ++i) {
     const LightSample& sample = lights.samples[i];
-    count(sample.shadow, RayKind::shadow);
+    count(sample.shadow, RayKind::shadow, lights.blocked != nullptr);
     // S_i = 0 when the shadow ray meets anything before the light.
     blocked[i] = lights.blocked ? lights.blocked[i]
                                 : intersector_.occluded(sample.shadow, counters_.intersection_tests);

@@ -52,10 +52,14 @@ struct SurfacePoint {
   int triangle = -1;
 };
 
-// A ray kept for the benchmark, which traces the same rays again without shading.
+// A ray kept for the benchmark, which traces the same rays again without shading and in the same
+// calls: a stream is the rays of one kind from one that `starts_stream` up to the next such ray
+// of that kind (or one traced alone), all handed to Embree at once.
+enum class Traced : uint8_t { alone, starts_stream, in_stream };
 struct RecordedRay {
   Ray ray;
   RayKind kind;
+  Traced traced = Traced::alone;
 };
 
 // A ray spawned at a hit ("Trazar(R, d+1) * kr", "Trazar(T, d+1) * kt") and the weight its
@@ -179,10 +183,11 @@ private:
   // Light `light`'s term at p (kd: kd_at(p)) and its shadow ray, if it lights p at all.
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
                  float distance, int light, const Rgb& kd, std::vector<LightSample>& out) const;
-  // Counts and logs a ray of `kind` as traced (inline: it runs for every ray).
-  void count(const Ray& ray, RayKind kind) {
+  // Counts and logs a ray of `kind` as traced (inline: it runs for every ray); `streamed`: the
+  // renderer traced it in its tile's stream (the first generation's rays).
+  void count(const Ray& ray, RayKind kind, bool streamed) {
     ++counters_[kind];
-    if (log_) log_->push_back({ray, kind});
+    if (log_) log_->push_back({ray, kind, streamed ? Traced::in_stream : Traced::alone});
   }
 
   const Scene& scene_;
