@@ -19,10 +19,36 @@ namespace {
 constexpr float kPi = std::numbers::pi_v<float>;
 }  // namespace
 
-void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options) {
+std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options) {
+  const bool diffuse = options.terms.diffuse && !shading.diffuse_source();
+  std::vector<LaneMesh> meshes;
+  meshes.reserve(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) {
+    const Material& o = shading.material_of(mesh);
+    meshes.push_back({.indices = mesh.indices.data(),
+                      .positions = mesh.positions.data(),
+                      .normals = mesh.normals.data(),
+                      .material = &o,
+                      .kd_uniform = !diffuse || shading.kd_is_uniform(o, mesh),
+                      .kd = diffuse ? o.kd : Rgb(0.0f),
+                      .ks = o.ks,
+                      .kr = o.kr,
+                      .kt = o.kt,
+                      .shininess = o.shininess,
+                      .ior = o.ior,
+                      .shiny = options.terms.specular && positive(o.ks),
+                      .reflective = positive(o.kr),
+                      .transmissive = positive(o.kt)});
+  }
+  return meshes;
+}
+
+void HitLanes::shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options,
+                          std::span<const LaneMesh> meshes) {
   scene_ = &scene;
   shading_ = &shading;
   options_ = &options;
+  meshes_ = meshes;
   // The lights each lane meets: the enabled punctual ones, then every area light's samples.
   light_passes_ = size_t(std::max(1, options.light_samples)) * scene.area_lights.size();
   for (const Light& light : scene.lights) light_passes_ += light.enabled ? 1 : 0;
@@ -37,7 +63,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   // Each hit's triangle: indices, then corners and normals, wherever they lie in memory.
   for (size_t k = 0; k < n; ++k) {
     const Hit& hit = hits[queue[k]];
-    const Mesh& mesh = scene_->meshes[size_t(hit.mesh)];
+    const LaneMesh& mesh = meshes_[size_t(hit.mesh)];
     const size_t t = size_t(hit.triangle);
     const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
     p0_.set(k, mesh.positions[i0]);
@@ -53,7 +79,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     seed_[k] = seeds[queue[k]];
     mesh_[k] = hit.mesh;
     triangle_[k] = hit.triangle;
-    material_[k] = &shading_->material_of(mesh);
+    material_[k] = mesh.material;
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {
@@ -65,32 +91,31 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     front_[k] = g.front;
   }
   // What the light terms and the secondary rays read of each material: kd (x COLOR_0 x the
-  // texture; in the hybrid radiosity has the diffuse term), ks and the exponent, kr, kt and the
-  // index of refraction.
-  const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
-  any_shiny_ = any_reflective_ = any_transmissive_ = false;
+  // texture), ks and the exponent, kr, kt and the index of refraction.
+  bool shiny = false, reflective = false, transmissive = false;
   for (size_t k = 0; k < n; ++k) {
-    const Material& o = *material_[k];
-    const Mesh& mesh = scene_->meshes[size_t(mesh_[k])];
-    if (!diffuse) {
-      kd_.set(k, Rgb(0.0f));
-    } else if (shading_->kd_is_uniform(o, mesh)) {
-      kd_.set(k, o.kd);  // kd_at's value without its call
+    const LaneMesh& m = meshes_[size_t(mesh_[k])];
+    if (m.kd_uniform) {
+      kd_.set(k, m.kd);
     } else {
+      const Mesh& mesh = scene_->meshes[size_t(mesh_[k])];
       const glm::vec2 barycentrics(u_[k], v_[k]);
       const glm::vec2 uv = mesh.uv_at(size_t(triangle_[k]), barycentrics);
-      kd_.set(k, shading_->kd_at(o, mesh_[k], triangle_[k], barycentrics, uv));
+      kd_.set(k, shading_->kd_at(*m.material, mesh_[k], triangle_[k], barycentrics, uv));
     }
-    ks_.set(k, o.ks);
-    shininess_[k] = o.shininess;
-    shiny_[k] = options_->terms.specular && positive(o.ks);
-    any_shiny_ = any_shiny_ || shiny_[k];
-    kr_.set(k, o.kr);
-    kt_.set(k, o.kt);
-    ior_[k] = o.ior;
-    any_reflective_ = any_reflective_ || positive(o.kr);
-    any_transmissive_ = any_transmissive_ || positive(o.kt);
+    ks_.set(k, m.ks);
+    shininess_[k] = m.shininess;
+    shiny_[k] = m.shiny;
+    kr_.set(k, m.kr);
+    kt_.set(k, m.kt);
+    ior_[k] = m.ior;
+    shiny |= m.shiny != 0;
+    reflective |= m.reflective;
+    transmissive |= m.transmissive;
   }
+  any_shiny_ = shiny;
+  any_reflective_ = reflective;
+  any_transmissive_ = transmissive;
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------

@@ -59,12 +59,32 @@ struct SpawnLanes {
   int32_t reflects[kLanes], transmits[kLanes];
 };
 
+// What the lanes read of a mesh, looked up once per render instead of once per hit: where its
+// triangles' indices, corners and normals lie, its material, and what the light terms and the
+// secondary rays take of that material.
+struct LaneMesh {
+  const uint32_t* indices;
+  const glm::vec3* positions;
+  const glm::vec3* normals;
+  const Material* material;
+  bool kd_uniform;  // kd is `kd` all over the mesh (else kd_at: COLOR_0, the texture)
+  Rgb kd;           // zero where the diffuse term is off, or the hybrid's radiosity has it
+  Rgb ks, kr, kt;
+  float shininess, ior;
+  int32_t shiny;    // ks > 0 and the specular term on: the highlight counts
+  bool reflective, transmissive;
+};
+
+// Every mesh of the scene as the lanes read it, for `shading` with `options`.
+std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options);
+
 class HitLanes {
 public:
   // What the lanes shade with, until told again: `shading` is the recursion whose kd_at() and
-  // diffuse source they share. (The lanes are kept per thread and reused, so this is no
-  // constructor.)
-  void shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options);
+  // diffuse source they share, `meshes` lane_meshes() of the same. (The lanes are kept per thread
+  // and reused, so this is no constructor.)
+  void shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options,
+                  std::span<const LaneMesh> meshes);
 
   // The lanes are hits[queue[k]] of rays[queue[k]], all found (queue.size() <= kLanes), whose
   // rays have seeds[queue[k]] (sampling.h): their triangles fetched, then every surface point
@@ -96,6 +116,7 @@ private:
   void sort_by_lane(const LaneLights& in, LaneLights& out) const;
 
   const Scene* scene_ = nullptr;
+  std::span<const LaneMesh> meshes_;
   const Whitted* shading_ = nullptr;
   const WhittedOptions* options_ = nullptr;
   size_t light_passes_ = 0;  // lights a lane meets (add_light calls of light_samples)

@@ -81,6 +81,11 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
   Image image(width, height);
   const std::vector<Tile> tiles = make_tiles(width, height, options.tile_size);
   intersector(options);  // build the brute-force triangles before the threads start
+  // What the wavefront's lanes read of each mesh, once for every tile.
+  const std::vector<LaneMesh> meshes =
+      options.renderer == RendererKind::wavefront
+          ? lane_meshes(scene_, Whitted(scene_, *embree_, options, counters_, diffuse_), options)
+          : std::vector<LaneMesh>{};
   counters_ = Counters{};
   rays_.clear();
 
@@ -92,7 +97,7 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
   int done = 0;
   tbb::parallel_for(size_t(0), tiles.size(), [&](size_t i) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return;
-    render_tile(tiles[i], camera, width, height, options, image, tile_counters[i],
+    render_tile(tiles[i], camera, width, height, options, meshes, image, tile_counters[i],
                 keep_rays_ ? &tile_rays[i] : nullptr);
     std::lock_guard lock(report);
     ++done;
@@ -107,8 +112,9 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
 
 // ---- [one tile] ---------------------------------------------------------------------------------
 void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int width, int height,
-                                  const WhittedOptions& options, Image& image, Counters& counters,
-                                  std::vector<RecordedRay>* log, RayTree* tree) {
+                                  const WhittedOptions& options, std::span<const LaneMesh> meshes,
+                                  Image& image, Counters& counters, std::vector<RecordedRay>* log,
+                                  RayTree* tree) {
   const Intersector& hits_of = intersector(options);
   const PrimaryRays camera_rays(camera, width, height);
   Whitted whitted(scene_, hits_of, options, counters, diffuse_);
@@ -178,7 +184,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
     // Every generation as streams (wavefront.h); each sample's radiance comes back x 1/spp.
     std::span<Rgb> radiance(scratch.radiance.data(), n);
     std::fill(radiance.begin(), radiance.end(), Rgb(0.0f));
-    Wavefront(scene_, whitted, hits_of, options, counters, log).trace(rays, seeds, weight, radiance);
+    Wavefront(scene_, whitted, meshes, hits_of, options, counters, log).trace(rays, seeds, weight, radiance);
     i = 0;
     for (int y = tile.y0; y < tile.y1; ++y)
       for (int x = tile.x0; x < tile.x1; ++x) {
@@ -242,7 +248,7 @@ RayTree WhittedRenderer::trace_pixel(const Camera& camera, int width, int height
   tree.height = height;
   Image image(width, height);
   Counters counters;
-  render_tile(Tile{x, y, x + 1, y + 1}, camera, width, height, options, image, counters, nullptr,
+  render_tile(Tile{x, y, x + 1, y + 1}, camera, width, height, options, {}, image, counters, nullptr,
               &tree);
   tree.pixel = image.at(x, y);
   // Each node's share of the pixel: the product of the weights from its primary ray down.

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include "core/camera.h"
@@ -37,6 +38,8 @@
 namespace luz::rt {
 
 // A finished tile: its pixels are final in `image` (the image being rendered).
+struct LaneMesh;
+
 struct TileDone {
   Tile tile;
   int done = 0;   // tiles finished so far, this one included
@@ -88,9 +91,10 @@ public:
   const Intersector& intersector(const WhittedOptions& options);
 
 private:
+  // `meshes`: lane_meshes() for the wavefront renderer (hit_lanes.h), else empty.
   void render_tile(const Tile& tile, const Camera& camera, int width, int height,
-                   const WhittedOptions& options, Image& image, Counters& counters,
-                   std::vector<RecordedRay>* log, RayTree* tree = nullptr);
+                   const WhittedOptions& options, std::span<const LaneMesh> meshes, Image& image,
+                   Counters& counters, std::vector<RecordedRay>* log, RayTree* tree = nullptr);
 
   const Scene& scene_;
   std::unique_ptr<Intersector> embree_;

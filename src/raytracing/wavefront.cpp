@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "raytracing/hit_lanes.h"
 #include "raytracing/sampling.h"
 
 namespace luz::rt {
@@ -101,9 +100,10 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool seeded, Spawn
 
 }  // namespace
 
-Wavefront::Wavefront(const Scene& scene, Whitted& shading, const Intersector& intersector,
-                     const WhittedOptions& options, Counters& counters, std::vector<RecordedRay>* log)
-    : scene_(scene), shading_(shading), intersector_(intersector), options_(options),
+Wavefront::Wavefront(const Scene& scene, Whitted& shading, std::span<const LaneMesh> meshes,
+                     const Intersector& intersector, const WhittedOptions& options, Counters& counters,
+                     std::vector<RecordedRay>* log)
+    : scene_(scene), shading_(shading), meshes_(meshes), intersector_(intersector), options_(options),
       counters_(counters), log_(log) {}
 
 void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
@@ -121,7 +121,7 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
   queue.start(primary, seeds, weight);
 
   HitLanes& lanes = scratch.lanes;
-  lanes.shade_with(scene_, shading_, options_);
+  lanes.shade_with(scene_, shading_, options_, meshes_);
   // Slide 26's depth: primary rays have depth 1, and a hit at depth d spawns rays while d < max.
   size_t reflected = 0;  // of a later generation, its first rays
   for (int depth = 1; queue.size() > 0; ++depth) {

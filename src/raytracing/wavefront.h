@@ -30,6 +30,7 @@
 
 #include "core/scene.h"
 #include "raytracing/counters.h"
+#include "raytracing/hit_lanes.h"
 #include "raytracing/intersector.h"
 #include "raytracing/ray.h"
 #include "raytracing/whitted.h"
@@ -40,9 +41,11 @@ namespace luz::rt {
 class Wavefront {
 public:
   // `shading`: the Whitted tracer whose per-hit functions shade the hits (the hybrid's diffuse
-  // source is its). `log`: where the traced rays are kept for the benchmark, or nullptr.
-  Wavefront(const Scene& scene, Whitted& shading, const Intersector& intersector,
-            const WhittedOptions& options, Counters& counters, std::vector<RecordedRay>* log);
+  // source is its), `meshes` lane_meshes() of it. `log`: where the traced rays are kept for the
+  // benchmark, or nullptr.
+  Wavefront(const Scene& scene, Whitted& shading, std::span<const LaneMesh> meshes,
+            const Intersector& intersector, const WhittedOptions& options, Counters& counters,
+            std::vector<RecordedRay>* log);
 
   // For each primary ray i (whose ray tree has seed seeds[i], see sampling.h): weight x the
   // radiance arriving along it, added to radiance[i]. Counts every ray traced, as the
@@ -56,6 +59,7 @@ private:
 
   const Scene& scene_;
   Whitted& shading_;
+  std::span<const LaneMesh> meshes_;
   const Intersector& intersector_;
   const WhittedOptions& options_;
   Counters& counters_;
