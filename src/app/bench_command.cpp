@@ -195,9 +195,9 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       double bare_total = 0.0;
       for (double b : bare) bare_total += b;
       const double rays = double(counters.total_rays());
-      fmt::print("{}", table.row({name, fmt::format("{:.3f}", render), fmt::format("{:.3f}", median),
+      fmt::print("{}", table.row({name, fmt::format("{:.4f}", render), fmt::format("{:.4f}", median),
                                   fmt::format("{:.2f}M", rays * 1e-6),
-                                  fmt::format("{:.2f}", rays / render * 1e-6), fmt::format("{:.3f}", bare_total),
+                                  fmt::format("{:.2f}", rays / render * 1e-6), fmt::format("{:.4f}", bare_total),
                                   fmt::format("{:.2f}", rays / bare_total * 1e-6),
                                   fmt::format("{:.2f}", render / bare_total)}));
       for (int k = 0; k < rt::kRayKinds; ++k) {

@@ -174,9 +174,7 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
         seeds[i] = seeded ? sample_seed(x, y, s) : 0;
       }
     }
-  // The rays in a loop of their own, without calls: the processor overlaps the square roots and
-  // divisions of their normalisations.
-  for (i = 0; i < n; ++i) camera_rays.through(scratch.points[i], rays[i]);
+  camera_rays.through(std::span(scratch.points).first(n), rays);
   counters.samples += n;
   const Rgb weight(1.0f / float(samples_per_pixel));
 

@@ -11,6 +11,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "raytracing/hit_math.h"
+#include "raytracing/vector_clones.h"
 
 namespace luz::rt {
 
@@ -246,6 +247,29 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   corner_ = rotation * glm::vec3(-tan_half * aspect, tan_half, -1.0f);
   right_ = rotation * glm::vec3(2.0f * tan_half * aspect / float(width), 0.0f, 0.0f);
   down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
+}
+
+LUZ_VECTOR_CLONES
+void PrimaryRays::through(std::span<const glm::vec2> image_points, std::span<Ray> rays) const {
+  // Blocks of directions as three arrays, which the compiler vectorises, then copied into rays.
+  constexpr size_t block = 64;
+  float x[block], y[block], z[block];
+  for (size_t start = 0; start < image_points.size(); start += block) {
+    const size_t n = std::min(block, image_points.size() - start);
+    const glm::vec2* points = image_points.data() + start;
+    for (size_t k = 0; k < n; ++k) {
+      const glm::vec3 d = glm::normalize(corner_ + points[k].x * right_ + points[k].y * down_);
+      x[k] = d.x;
+      y[k] = d.y;
+      z[k] = d.z;
+    }
+    Ray* out = rays.data() + start;
+    for (size_t k = 0; k < n; ++k) {
+      out[k].origin = origin_;
+      out[k].direction = glm::vec3(x[k], y[k], z[k]);
+      out[k].tfar = kInfinity;
+    }
+  }
 }
 
 const char* to_string(RayKind kind) {

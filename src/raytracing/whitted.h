@@ -221,6 +221,8 @@ public:
     through(image_point, ray);
     return ray;
   }
+  // The ray through each point, as through() makes it (the same bits), several to an instruction.
+  void through(std::span<const glm::vec2> image_points, std::span<Ray> rays) const;
 
 private:
   glm::vec3 origin_;
