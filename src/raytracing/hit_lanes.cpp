@@ -91,7 +91,30 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     front_[k] = g.front;
   }
   // What the light terms and the secondary rays read of each material: kd (x COLOR_0 x the
-  // texture), ks and the exponent, kr, kt and the index of refraction.
+  // texture), ks and the exponent, kr, kt and the index of refraction. Where every lane hit the
+  // same mesh of uniform kd (most chunks of a first generation), its factors for all lanes at
+  // once.
+  bool one_mesh = n > 0;
+  for (size_t k = 0; k < n; ++k) one_mesh &= mesh_[k] == mesh_[0];
+  if (one_mesh && meshes_[size_t(mesh_[0])].kd_uniform) {
+    const LaneMesh& m = meshes_[size_t(mesh_[0])];
+    const auto fill = [n](Vec3Lanes& lanes, const glm::vec3& v) {
+      std::fill_n(lanes.x, n, v.x);
+      std::fill_n(lanes.y, n, v.y);
+      std::fill_n(lanes.z, n, v.z);
+    };
+    fill(kd_, m.kd);
+    fill(ks_, m.ks);
+    fill(kr_, m.kr);
+    fill(kt_, m.kt);
+    std::fill_n(shininess_, n, m.shininess);
+    std::fill_n(shiny_, n, m.shiny);
+    std::fill_n(ior_, n, m.ior);
+    any_shiny_ = m.shiny != 0;
+    any_reflective_ = m.reflective;
+    any_transmissive_ = m.transmissive;
+    return;
+  }
   bool shiny = false, reflective = false, transmissive = false;
   for (size_t k = 0; k < n; ++k) {
     const LaneMesh& m = meshes_[size_t(mesh_[k])];
