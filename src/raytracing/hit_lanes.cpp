@@ -34,6 +34,8 @@ std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, co
                       .ks = o.ks,
                       .kr = o.kr,
                       .kt = o.kt,
+                      .ambient = options.terms.ambient ? scene.ambient * o.ka : Rgb(0.0f),
+                      .emission = options.terms.emission ? o.emission : Rgb(0.0f),
                       .shininess = o.shininess,
                       .ior = o.ior,
                       .shiny = options.terms.specular && positive(o.ks),
@@ -79,7 +81,6 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
     seed_[k] = seeds[queue[k]];
     mesh_[k] = hit.mesh;
     triangle_[k] = hit.triangle;
-    material_[k] = mesh.material;
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {
@@ -328,17 +329,17 @@ void HitLanes::sort_by_lane(const LaneLights& in, LaneLights& out) const {
 LUZ_VECTOR_CLONES
 void HitLanes::unlit_colors(std::span<Rgb> local) const {
   const DiffuseSource* diffuse = shading_->diffuse_source();
-  const TermSwitches& terms = options_->terms;
-  for (size_t k = 0; k < count_; ++k) {
-    const Material& o = *material_[k];
-    Rgb color(0.0f);
-    if (!diffuse) {
-      if (terms.ambient) color = scene_->ambient * o.ka;
-      if (terms.emission && front_[k]) color += o.emission;  // an emitter shows Le on its front
-    } else if (terms.diffuse && front_[k]) {
-      color = diffuse->diffuse_radiance(mesh_[k], triangle_[k], glm::vec2(u_[k], v_[k]));
+  if (!diffuse) {
+    for (size_t k = 0; k < count_; ++k) {
+      const LaneMesh& m = meshes_[size_t(mesh_[k])];
+      // An emitter shows Le on its front.
+      local[ray_[k]] = m.ambient + select(front_[k] != 0, m.emission, Rgb(0.0f));
     }
-    local[ray_[k]] = color;
+    return;
+  }
+  for (size_t k = 0; k < count_; ++k) {
+    const bool lit = options_->terms.diffuse && front_[k];
+    local[ray_[k]] = lit ? diffuse->diffuse_radiance(mesh_[k], triangle_[k], glm::vec2(u_[k], v_[k])) : Rgb(0.0f);
   }
 }
 

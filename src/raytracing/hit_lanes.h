@@ -70,6 +70,8 @@ struct LaneMesh {
   bool kd_uniform;  // kd is `kd` all over the mesh (else kd_at: COLOR_0, the texture)
   Rgb kd;           // zero where the diffuse term is off, or the hybrid's radiosity has it
   Rgb ks, kr, kt;
+  Rgb ambient;   // Ia * ka, zero where the ambient term is off
+  Rgb emission;  // Le, zero where the emission term is off
   float shininess, ior;
   int32_t shiny;    // ks > 0 and the specular term on: the highlight counts
   bool reflective, transmissive;
@@ -128,7 +130,6 @@ private:
   Vec3Lanes d_, p0_, p1_, p2_, n0_, n1_, n2_;
   float u_[kLanes], v_[kLanes];
   int mesh_[kLanes], triangle_[kLanes];
-  const Material* material_[kLanes];
   // The surface points and what their materials give the light terms.
   Vec3Lanes position_, geometric_, N_;
   int32_t front_[kLanes];
