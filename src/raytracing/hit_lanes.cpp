@@ -364,23 +364,26 @@ void HitLanes::secondary_rays(SpawnLanes& out) const {
   }
   // Where some lane transmits: kr and kt split by Fresnel or total internal reflection (a lane
   // that transmits nothing keeps its kr, split_at adds kt x F = 0 to it), and "si o es
-  // transmisivo y no hay reflexión interna total": T := rayo de refracción. Fresnel on or off as
-  // a constant: GCC does not vectorise the loop when it chooses by a flag.
+  // transmisivo y no hay reflexión interna total": T := rayo de refracción.
+  // GCC 12 vectorises these loops only as written: Fresnel on or off as a constant (not a flag
+  // the loop chooses by), the lambda inlined into each loop (an outlined call is scalar), and the
+  // flags in a loop of their own (with them the split's loop writes too many arrays).
   if (!any_transmissive_) return;
-  const auto split = [&](auto fresnel) {
-    for (size_t k = 0; k < n; ++k) {
-      const Split s = split_at(kr_[k], kt_[k], ior_[k], front_[k], d_[k], N_[k], fresnel);
-      out.kr.set(k, s.kr);
-      out.kt.set(k, s.kt);
-      out.reflects[k] = positive(s.kr);
-      out.transmits[k] = positive(s.kt) & s.refracts;
-      out.transmitted_direction.set(k, s.T);
-    }
+  const auto split = [&](size_t k, auto fresnel) __attribute__((always_inline)) {
+    const Split s = split_at(kr_[k], kt_[k], ior_[k], front_[k] != 0, d_[k], N_[k], fresnel);
+    out.kr.set(k, s.kr);
+    out.kt.set(k, s.kt);
+    out.transmits[k] = s.refracts;
+    out.transmitted_direction.set(k, s.T);
   };
   if (options_->fresnel)
-    split(std::true_type{});
+    for (size_t k = 0; k < n; ++k) split(k, std::true_type{});
   else
-    split(std::false_type{});
+    for (size_t k = 0; k < n; ++k) split(k, std::false_type{});
+  for (size_t k = 0; k < n; ++k) {
+    out.reflects[k] = positive(out.kr[k]);
+    out.transmits[k] = out.transmits[k] & positive(out.kt[k]);
+  }
   for (size_t k = 0; k < n; ++k) {
     out.transmitted_origin.set(k, offset_origin(position_[k], -geometric_[k]));
     out.transmitted_direction.set(k, keep_on_side(out.transmitted_direction[k], -geometric_[k]));
