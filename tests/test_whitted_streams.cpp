@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -168,6 +169,36 @@ INSTANTIATE_TEST_SUITE_P(Shipped, WavefrontEqualsRecursion,
                          [](const auto& test) {
                            return std::get<0>(test.param) + "_" + std::get<1>(test.param).name;
                          });
+
+// Each term of the formula switched off in turn (and Blinn's highlight for Phong's): the
+// wavefront's lanes read what is left of each material once per render, so each switch must
+// reach them as it reaches the recursion, and change the picture.
+TEST(WavefrontEqualsRecursion, EachTermSwitchedOff) {
+  const std::pair<const char*, bool TermSwitches::*> switches[] = {
+      {"ambient", &TermSwitches::ambient},   {"diffuse", &TermSwitches::diffuse},
+      {"specular", &TermSwitches::specular}, {"emission", &TermSwitches::emission},
+      {"blinn", &TermSwitches::blinn}};
+  for (const char* name : {"cornell_spheres", "whitted"}) {
+    const Scene scene = io::load_gltf(test::scene_dir() / (std::string(name) + ".gltf")).scene;
+    WhittedRenderer tracer(scene);
+    WhittedOptions options;
+    options.max_depth = 3;
+    options.renderer = RendererKind::wavefront;
+    const Image all_on = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+    for (const auto& [term, flag] : switches) {
+      WhittedOptions changed = options;
+      changed.terms.*flag = !(options.terms.*flag);
+      const Image wavefront = tracer.render(scene.cameras[0], kWidth, kHeight, changed);
+      changed.renderer = RendererKind::recursive;
+      const Image recursive = tracer.render(scene.cameras[0], kWidth, kHeight, changed);
+      EXPECT_LE(worst_difference(wavefront, recursive), 1e-6f) << name << ", " << term;
+      const bool has_term = std::string(name) != "whitted" || std::string(term) != "emission";  // no emitter
+      if (has_term) {
+        EXPECT_GT(worst_difference(wavefront, all_on), 1e-3f) << name << ", " << term << " changes nothing";
+      }
+    }
+  }
+}
 
 // Whitted's scene with its checkerboard's first material textured and every other mesh coloured
 // per vertex: kd from the texture (bilinear, repeating) and from COLOR_0, which no shipped scene
