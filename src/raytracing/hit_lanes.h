@@ -70,8 +70,8 @@ struct LaneMesh {
   bool kd_uniform;  // kd is `kd` all over the mesh (else kd_at: COLOR_0, the texture)
   Rgb kd;           // zero where the diffuse term is off, or the hybrid's radiosity has it
   Rgb ks, kr, kt;
-  Rgb ambient;   // Ia * ka, zero where the ambient term is off
-  Rgb emission;  // Le, zero where the emission term is off
+  Rgb ambient;      // Ia * ka, zero where the ambient term is off
+  Rgb emission;     // Le, zero where the emission term is off
   float shininess, ior;
   int32_t shiny;    // ks > 0 and the specular term on: the highlight counts
   bool reflective, transmissive;

@@ -37,9 +37,9 @@
 
 namespace luz::rt {
 
-// A finished tile: its pixels are final in `image` (the image being rendered).
 struct LaneMesh;
 
+// A finished tile: its pixels are final in `image` (the image being rendered).
 struct TileDone {
   Tile tile;
   int done = 0;   // tiles finished so far, this one included
