@@ -59,29 +59,39 @@ std::filesystem::path scene_path(const std::string& name) {
 constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
                                                     N_("transmitted")};
 
-// The rays of one kind traced bare, each stream in one call and the others one by one: no
-// shading, no recursion, no counters.
-double trace_bare(const rt::Intersector& embree, std::span<const rt::RecordedRay> rays, rt::RayKind kind) {
+// The rays of one kind as the renderer handed them to Embree: the rays, and the calls it made
+// (a stream, or a ray on its own).
+struct BareRays {
   struct Call {
     size_t first, count;
+    bool stream;
   };
+  std::vector<rt::Ray> rays;
   std::vector<Call> calls;
-  for (size_t i = 0; i < rays.size(); ++i)
-    if (rays[i].traced != rt::Traced::in_stream || calls.empty())
-      calls.push_back({i, 1});
-    else
-      ++calls.back().count;
-  // The rays as the renderer handed them over, before the clock starts.
-  std::vector<rt::Ray> plain(rays.size());
-  for (size_t i = 0; i < rays.size(); ++i) plain[i] = rays[i].ray;
+};
 
+std::array<BareRays, rt::kRayKinds> bare_rays(std::span<const rt::RecordedRay> recorded) {
+  std::array<BareRays, rt::kRayKinds> by_kind;
+  for (const rt::RecordedRay& r : recorded) {
+    BareRays& kind = by_kind[size_t(r.kind)];
+    if (r.traced != rt::Traced::in_stream || kind.calls.empty())
+      kind.calls.push_back({kind.rays.size(), 0, r.traced != rt::Traced::alone});
+    ++kind.calls.back().count;
+    kind.rays.push_back(r.ray);
+  }
+  return by_kind;
+}
+
+// The rays of one kind traced bare in the renderer's calls: no shading, no recursion, no counters.
+double trace_bare(const rt::Intersector& embree, const BareRays& bare, rt::RayKind kind) {
   const auto start = Clock::now();
-  tbb::parallel_for(size_t(0), calls.size(), [&](size_t c) {
+  tbb::parallel_for(size_t(0), bare.calls.size(), [&](size_t c) {
     thread_local std::vector<rt::Hit> hits;
     thread_local rt::BlockedFlags blocked;
-    const std::span<const rt::Ray> part = std::span(plain).subspan(calls[c].first, calls[c].count);
+    const BareRays::Call& call = bare.calls[c];
+    const std::span<const rt::Ray> part = std::span(bare.rays).subspan(call.first, call.count);
     uint64_t tests = 0;
-    if (rays[calls[c].first].traced == rt::Traced::alone) {
+    if (!call.stream) {
       if (kind == rt::RayKind::shadow)
         (void)embree.occluded(part[0], tests);
       else
@@ -182,9 +192,7 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       tracer.keep_rays(true);
       tracer.render(camera, settings.width, settings.height, options);
       tracer.keep_rays(false);
-      const std::vector<rt::RecordedRay> recorded = tracer.take_rays();
-      std::array<std::vector<rt::RecordedRay>, rt::kRayKinds> by_kind;
-      for (const rt::RecordedRay& r : recorded) by_kind[size_t(r.kind)].push_back(r);
+      const std::array<BareRays, rt::kRayKinds> by_kind = bare_rays(tracer.take_rays());
 
       std::array<double, rt::kRayKinds> bare{};
       bare.fill(1e30);
@@ -201,9 +209,9 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
                                   fmt::format("{:.2f}", rays / bare_total * 1e-6),
                                   fmt::format("{:.2f}", render / bare_total)}));
       for (int k = 0; k < rt::kRayKinds; ++k) {
-        const double n = double(by_kind[size_t(k)].size());
+        const double n = double(by_kind[size_t(k)].rays.size());
         fmt::print("{}\n", trf("  {:<12} {:>10} rays, bare {:7.2f} Mrays/s", tr(kKindLabels[k]),
-                                by_kind[size_t(k)].size(),
+                                by_kind[size_t(k)].rays.size(),
                                 bare[size_t(k)] > 0 ? n / bare[size_t(k)] * 1e-6 : 0.0));
       }
       fmt::print("{}\n", trf("  BVH build {:.3f} s", build));

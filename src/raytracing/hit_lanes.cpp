@@ -30,7 +30,7 @@ std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, co
                       .normals = mesh.normals.data(),
                       .material = &o,
                       .kd_uniform = !diffuse || shading.kd_is_uniform(o, mesh),
-                      .kd = diffuse ? o.kd : Rgb(0.0f),
+                      .kd = o.kd,
                       .ks = o.ks,
                       .kr = o.kr,
                       .kt = o.kt,

@@ -67,8 +67,10 @@ struct LaneMesh {
   const glm::vec3* positions;
   const glm::vec3* normals;
   const Material* material;
-  bool kd_uniform;  // kd is `kd` all over the mesh (else kd_at: COLOR_0, the texture)
-  Rgb kd;           // zero where the diffuse term is off, or the hybrid's radiosity has it
+  // kd is `kd` all over the mesh, or not read at all (the diffuse term off, or the hybrid's
+  // radiosity has it); else kd_at gives it (COLOR_0, the texture).
+  bool kd_uniform;
+  Rgb kd;
   Rgb ks, kr, kt;
   Rgb ambient;      // Ia * ka, zero where the ambient term is off
   Rgb emission;     // Le, zero where the emission term is off
