@@ -1,5 +1,7 @@
 // Core formulas worked by hand: sRGB, attenuation, spot cones, the roughness mapping, cameras.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/ext/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -20,6 +22,31 @@ TEST(Srgb, KnownPointsOfTheCurve) {
   EXPECT_NEAR(srgb_encode(0.002f), 12.92f * 0.002f, 1e-7f);  // linear toe
   EXPECT_FLOAT_EQ(srgb_encode(std::nanf("")), 0.0f);
   for (float x : {0.001f, 0.01f, 0.2f, 0.5f, 0.9f}) EXPECT_NEAR(srgb_decode(srgb_encode(x)), x, 1e-5f);
+}
+
+// The PNG byte from the table is the rounded curve itself, on every float where a code starts
+// (each start's neighbourhood, found from the inverse curve) and on a dense sweep of (0, 1).
+TEST(Srgb, ByteIsTheRoundedCurve) {
+  const auto expected = [](float x) { return long(std::lround(255.0f * srgb_encode(x))); };
+  size_t checked = 0;
+  for (int k = 1; k < 256; ++k) {
+    // The linear value where code k starts, then the 200 floats on each side of it.
+    float x = srgb_decode((float(k) - 0.5f) / 255.0f);
+    for (int i = 0; i < 200; ++i) x = std::nextafter(x, 0.0f);
+    for (int i = 0; i < 400; ++i, x = std::nextafter(x, 2.0f), ++checked)
+      ASSERT_EQ(long(srgb_byte(x)), expected(x)) << "x = " << x << " near the start of code " << k;
+  }
+  for (uint32_t bits = 1; bits < 0x3F800000u; bits += 997, ++checked) {
+    const float x = std::bit_cast<float>(bits);
+    ASSERT_EQ(long(srgb_byte(x)), expected(x)) << "x = " << x;
+  }
+  EXPECT_GT(checked, 1000000u);
+  EXPECT_EQ(srgb_byte(0.0f), 0);
+  EXPECT_EQ(srgb_byte(-1.0f), 0);
+  EXPECT_EQ(srgb_byte(std::nanf("")), 0);
+  EXPECT_EQ(srgb_byte(1.0f), 255);
+  EXPECT_EQ(srgb_byte(1e30f), 255);
+  EXPECT_EQ(srgb_byte(0.18f), 118);  // middle grey: 255 x 0.4613 = 117.6
 }
 
 TEST(Attenuation, PhysicalIsInverseSquare) {

@@ -40,7 +40,7 @@ TEST(ImageIo, ExrWrittenByLuzReadsBackBitForBitThroughOpenImageIo) {
   test::ScratchDir dir;
   std::mt19937 random(7);
   std::uniform_real_distribution<float> exponent(-30.0f, 30.0f), sign(-1.0f, 1.0f);
-  for (const auto [width, height] : {std::pair{1, 1}, {1, 37}, {123, 45}, {64, 16}}) {
+  for (const auto& [width, height] : {std::pair{1, 1}, {1, 37}, {123, 45}, {64, 16}}) {
     Image image(width, height);
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x)
@@ -56,30 +56,32 @@ TEST(ImageIo, ExrWrittenByLuzReadsBackBitForBitThroughOpenImageIo) {
 }
 
 // Every 8-bit value the encoder wrote comes back: noise (which the Paeth and None filters suit),
-// ramps (Sub, Up, Average) and flat rows, over a width that is not a multiple of anything.
+// ramps (Sub, Up, Average) and flat rows, over a width that is not a multiple of anything, and
+// over a picture large enough to be deflated in several bands joined into one stream.
 TEST(ImageIo, PngWrittenByLuzReadsBackValueForValueThroughOpenImageIo) {
   test::ScratchDir dir;
   std::mt19937 random(11);
-  const int width = 77, height = 41;
-  Image image(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const float noise = float(random() % 256) / 255.0f;
-      image.at(x, y) = y < 14 ? Rgb(noise, float(random() % 256) / 255.0f, noise * noise)
-                     : y < 28 ? Rgb(float(x) / float(width), float(y) / float(height), 0.5f)
-                              : Rgb(0.3f);
-    }
-  io::write_image(image, dir / "a.png", 0.0f);
-  const Image back = io::read_image(dir / "a.png");
-  ASSERT_EQ(back.width, width);
-  ASSERT_EQ(back.height, height);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      // The 8-bit code written (SCENES.md: the sRGB curve, rounded) and the one read back.
-      const long written = std::lround(255.0f * srgb_encode(image.pixels[i][c]));
-      const long read = std::lround(255.0f * srgb_encode(back.pixels[i][c]));
-      ASSERT_EQ(read, written) << "pixel " << i << " channel " << c;
-    }
+  for (const auto& [width, height] : {std::pair{77, 41}, {641, 480}}) {
+    Image image(width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const float noise = float(random() % 256) / 255.0f;
+        image.at(x, y) = 3 * y < height ? Rgb(noise, float(random() % 256) / 255.0f, noise * noise)
+                       : 3 * y < 2 * height ? Rgb(float(x) / float(width), float(y) / float(height), 0.5f)
+                                            : Rgb(0.3f);
+      }
+    io::write_image(image, dir / "a.png", 0.0f);
+    const Image back = io::read_image(dir / "a.png");
+    ASSERT_EQ(back.width, width);
+    ASSERT_EQ(back.height, height);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        // The 8-bit code written (SCENES.md: the sRGB curve, rounded) and the one read back.
+        const long written = std::lround(255.0f * srgb_encode(image.pixels[i][c]));
+        const long read = std::lround(255.0f * srgb_encode(back.pixels[i][c]));
+        ASSERT_EQ(read, written) << width << "x" << height << " pixel " << i << " channel " << c;
+      }
+  }
 }
 
 TEST(ImageIo, PngIsExposedThenSrgbEncoded) {

@@ -26,6 +26,21 @@ void put_little_endian(std::string& out, T v) {
   out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
 }
 
+// work(0), ..., work(count - 1), one thread per core taking them in turn (deflate is most of
+// an encoder's time, and each picture's pieces are independent).
+template <typename Work>
+void in_parallel(int count, const Work& work) {
+  std::atomic<int> next{0};
+  const auto worker = [&] {
+    for (int i; (i = next++) < count;) work(i);
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> threads(std::min(cores, unsigned(std::max(count, 1))) - 1);
+  for (std::thread& t : threads) t = std::thread(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+}
+
 // Null when zlib fails (it can only run out of memory).
 std::optional<std::string> deflated(const unsigned char* data, size_t size, int level) {
   uLongf bound = compressBound(uLong(size));
@@ -62,28 +77,67 @@ void filter_row(const uint8_t* row, const uint8_t* above, size_t length, int typ
   }
 }
 
+// `data` deflated as one zlib stream (RFC 1950), in bands deflated side by side: each band's
+// deflater starts with the 32 KiB before the band as its dictionary, which is what one deflater
+// going through the whole would remember there, and ends on a byte boundary (a sync flush), so
+// the bands' raw deflate data join into one stream (as pigz does). Null when zlib fails.
+std::optional<std::string> deflated_in_bands(const std::vector<uint8_t>& data, int level) {
+  constexpr size_t kWindow = 32768, kBand = 256 * 1024;  // bands under 256 KiB are not worth a thread
+  const int bands = int(std::max<size_t>(1, data.size() / kBand));
+  const size_t band = data.size() / size_t(bands);
+  std::vector<std::optional<std::string>> parts(static_cast<size_t>(bands));
+  in_parallel(bands, [&](int b) {
+    const size_t first = size_t(b) * band, last = b + 1 == bands ? data.size() : first + band;
+    z_stream z{};
+    if (deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) return;  // raw deflate
+    const size_t history = std::min(first, kWindow);
+    std::string out(deflateBound(&z, uLong(last - first)) + 16, '\0');  // + the sync flush's 5 bytes
+    z.next_in = const_cast<Bytef*>(data.data() + first);
+    z.avail_in = uInt(last - first);
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = uInt(out.size());
+    const bool ok = (history == 0 || deflateSetDictionary(&z, data.data() + first - history, uInt(history)) == Z_OK) &&
+                    deflate(&z, b + 1 == bands ? Z_FINISH : Z_SYNC_FLUSH) == (b + 1 == bands ? Z_STREAM_END : Z_OK) &&
+                    z.avail_in == 0;
+    out.resize(out.size() - z.avail_out);
+    deflateEnd(&z);
+    if (ok) parts[size_t(b)] = std::move(out);
+  });
+  std::string stream("\x78\x9c", 2);  // deflate with a 32 KiB window, the default level
+  for (const std::optional<std::string>& part : parts) {
+    if (!part) return std::nullopt;
+    stream += *part;
+  }
+  put_big_endian(stream, uint32_t(adler32(adler32(0L, nullptr, 0), data.data(), uInt(data.size()))));
+  return stream;
+}
+
 }  // namespace
 
 std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
   const size_t length = size_t(width) * 3;
   std::vector<uint8_t> filtered((length + 1) * size_t(height));
   const std::vector<uint8_t> zeros(length, 0);
-  std::vector<uint8_t> candidate(length + 1);
-  for (int y = 0; y < height; ++y) {
-    const uint8_t* row = rgb.data() + size_t(y) * length;
-    const uint8_t* above = y > 0 ? row - length : zeros.data();
-    uint8_t* out = filtered.data() + size_t(y) * (length + 1);
-    uint64_t best = UINT64_MAX;
-    for (int type = 0; type < 5; ++type) {
-      filter_row(row, above, length, type, candidate.data());
-      uint64_t sum = 0;  // the bytes as signed: small differences either way cost little
-      for (size_t i = 1; i <= length; ++i) sum += uint64_t(std::abs(int(int8_t(candidate[i]))));
-      if (sum < best) {
-        best = sum;
-        std::copy(candidate.begin(), candidate.end(), out);
+  constexpr int kRowsAtATime = 32;
+  in_parallel((height + kRowsAtATime - 1) / kRowsAtATime, [&](int part) {
+    thread_local std::vector<uint8_t> candidate;
+    candidate.resize(length + 1);
+    for (int y = part * kRowsAtATime; y < std::min(height, (part + 1) * kRowsAtATime); ++y) {
+      const uint8_t* row = rgb.data() + size_t(y) * length;
+      const uint8_t* above = y > 0 ? row - length : zeros.data();
+      uint8_t* out = filtered.data() + size_t(y) * (length + 1);
+      uint64_t best = UINT64_MAX;
+      for (int type = 0; type < 5; ++type) {
+        filter_row(row, above, length, type, candidate.data());
+        uint64_t sum = 0;  // the bytes as signed: small differences either way cost little
+        for (size_t i = 1; i <= length; ++i) sum += uint64_t(std::abs(int(int8_t(candidate[i]))));
+        if (sum < best) {
+          best = sum;
+          std::copy(candidate.begin(), candidate.end(), out);
+        }
       }
     }
-  }
+  });
   std::string header;
   put_big_endian(header, uint32_t(width));
   put_big_endian(header, uint32_t(height));
@@ -92,7 +146,7 @@ std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
   std::string png("\x89PNG\r\n\x1a\n", 8);
   put_chunk(png, "IHDR", header);
   put_chunk(png, "sRGB", std::string(1, char(0)));  // perceptual rendering intent
-  const std::optional<std::string> pixels = deflated(filtered.data(), filtered.size(), Z_DEFAULT_COMPRESSION);
+  const std::optional<std::string> pixels = deflated_in_bands(filtered, Z_DEFAULT_COMPRESSION);
   if (!pixels) throw std::runtime_error("zlib could not compress the picture");
   put_chunk(png, "IDAT", *pixels);
   put_chunk(png, "IEND", {});
@@ -189,17 +243,10 @@ std::string encode_exr(const Image& image) {
     put_little_endian(chunk, int32_t(data.size()));
     chunk += data;
   };
-  // Deflate is most of the time: the blocks are independent, one thread per core takes them in turn.
-  std::atomic<int> next{0};
-  const auto worker = [&] {
-    std::vector<float> values;
-    for (int b; (b = next++) < blocks;) encode_block(b, values);
-  };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> threads(std::min(cores, unsigned(std::max(blocks, 1))) - 1);
-  for (std::thread& t : threads) t = std::thread(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
+  in_parallel(blocks, [&](int b) {
+    thread_local std::vector<float> values;
+    encode_block(b, values);
+  });
 
   // The offset table: where each block starts, from the start of the file.
   std::string exr = header;

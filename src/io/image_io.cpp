@@ -43,17 +43,15 @@ std::string lower_extension(const fs::path& path) {
 std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure) {
   const float scale = std::exp2(exposure);
   std::vector<uint8_t> bytes(image.pixels.size() * 3);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      bytes[3 * i + c] = uint8_t(std::lround(255.0f * srgb_encode(image.pixels[i][c] * scale)));
+  srgb_bytes(image.pixels, scale, bytes);
   return bytes;
 }
 
 // A name beside the target, with the same extension.
 fs::path temporary_beside(const fs::path& path) {
   std::random_device random;
-  const std::string stem = "." + path.stem().string() + fmt::format(".tmp{:08x}", random());
-  return path.parent_path() / (stem + path.extension().string());
+  return path.parent_path() /
+         fmt::format(".{}.tmp{:08x}{}", path.stem().string(), random(), path.extension().string());
 }
 
 // While the temporary file exists, SIGINT and SIGTERM remove it before the process ends as it
