@@ -93,8 +93,7 @@ void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const C
 namespace {
 
 ImU32 imgui_colour(const Rgb& linear) {
-  return IM_COL32(int(std::lround(255.0f * srgb_encode(linear.r))), int(std::lround(255.0f * srgb_encode(linear.g))),
-                  int(std::lround(255.0f * srgb_encode(linear.b))), 255);
+  return IM_COL32(srgb_byte(linear.r), srgb_byte(linear.g), srgb_byte(linear.b), 255);
 }
 
 std::string percent(double fraction) { return fmt::format("{:.2f}%", 100.0 * fraction); }
