@@ -5,6 +5,8 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -27,18 +29,28 @@ void put_little_endian(std::string& out, T v) {
 }
 
 // work(0), ..., work(count - 1), one thread per core taking them in turn (deflate is most of
-// an encoder's time, and each picture's pieces are independent).
+// an encoder's time, and each picture's pieces are independent). The first exception a piece
+// throws (out of memory) is thrown again here once every thread has stopped.
 template <typename Work>
 void in_parallel(int count, const Work& work) {
   std::atomic<int> next{0};
+  std::exception_ptr failed;
+  std::mutex failing;
   const auto worker = [&] {
-    for (int i; (i = next++) < count;) work(i);
+    try {
+      for (int i; (i = next++) < count;) work(i);
+    } catch (...) {
+      next = count;  // the other threads stop too
+      const std::lock_guard lock(failing);
+      if (!failed) failed = std::current_exception();
+    }
   };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> threads(std::min(cores, unsigned(std::max(count, 1))) - 1);
   for (std::thread& t : threads) t = std::thread(worker);
   worker();
   for (std::thread& t : threads) t.join();
+  if (failed) std::rethrow_exception(failed);
 }
 
 // Null when zlib fails (it can only run out of memory).
@@ -108,7 +120,7 @@ std::optional<std::string> deflated_in_bands(const std::vector<uint8_t>& data, i
     if (!part) return std::nullopt;
     stream += *part;
   }
-  put_big_endian(stream, uint32_t(adler32(adler32(0L, nullptr, 0), data.data(), uInt(data.size()))));
+  put_big_endian(stream, uint32_t(adler32_z(adler32(0L, nullptr, 0), data.data(), data.size())));
   return stream;
 }
 
