@@ -57,7 +57,7 @@ TEST(ImageIo, ExrWrittenByLuzReadsBackBitForBitThroughOpenImageIo) {
 
 // Every 8-bit value the encoder wrote comes back: noise (which the Paeth and None filters suit),
 // ramps (Sub, Up, Average) and flat rows, over a width that is not a multiple of anything, and
-// over a picture large enough to be deflated in several bands joined into one stream.
+// over a picture whose rows are filtered on several threads.
 TEST(ImageIo, PngWrittenByLuzReadsBackValueForValueThroughOpenImageIo) {
   test::ScratchDir dir;
   std::mt19937 random(11);

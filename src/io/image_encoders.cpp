@@ -5,13 +5,14 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <exception>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 namespace luz::io {
 namespace {
@@ -53,24 +54,28 @@ void in_parallel(int count, const Work& work) {
   if (failed) std::rethrow_exception(failed);
 }
 
-// Null when zlib fails (it can only run out of memory).
+// `data` as one zlib stream (RFC 1950) deflated at `level` by libdeflate, which compresses a
+// whole buffer at once, 2-2.5x as fast as zlib at the same level here (the same size for the
+// EXR's blocks, 4-5% larger for a PNG). Null when it cannot allocate its compressor.
 std::optional<std::string> deflated(const unsigned char* data, size_t size, int level) {
-  uLongf bound = compressBound(uLong(size));
-  std::string out(bound, '\0');
-  if (compress2(reinterpret_cast<Bytef*>(out.data()), &bound, data, uLong(size), level) != Z_OK) return std::nullopt;
-  out.resize(bound);
+  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
+      libdeflate_alloc_compressor(level), &libdeflate_free_compressor);
+  if (!compressor) return std::nullopt;
+  std::string out(libdeflate_zlib_compress_bound(compressor.get(), size), '\0');
+  out.resize(libdeflate_zlib_compress(compressor.get(), data, size, out.data(), out.size()));
   return out;
 }
 
 // ---- [png] --------------------------------------------------------------------------------------
+constexpr int kPngLevel = 6;  // deflate's usual default, as zlib and libpng take it
+
 // A chunk: length, type, data, and the CRC-32 of type and data.
 void put_chunk(std::string& out, const char type[4], const std::string& data) {
   put_big_endian(out, uint32_t(data.size()));
   const size_t start = out.size();
   out.append(type, 4);
   out += data;
-  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(out.data() + start), uInt(out.size() - start));
-  put_big_endian(out, uint32_t(crc));
+  put_big_endian(out, libdeflate_crc32(0, out.data() + start, out.size() - start));
 }
 
 int paeth(int a, int b, int c) {
@@ -87,41 +92,6 @@ void filter_row(const uint8_t* row, const uint8_t* above, size_t length, int typ
     const int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2 : paeth(a, b, c);
     out[1 + i] = uint8_t(row[i] - predicted);
   }
-}
-
-// `data` deflated as one zlib stream (RFC 1950), in bands deflated side by side: each band's
-// deflater starts with the 32 KiB before the band as its dictionary, which is what one deflater
-// going through the whole would remember there, and ends on a byte boundary (a sync flush), so
-// the bands' raw deflate data join into one stream (as pigz does). Null when zlib fails.
-std::optional<std::string> deflated_in_bands(const std::vector<uint8_t>& data, int level) {
-  constexpr size_t kWindow = 32768, kBand = 256 * 1024;  // bands under 256 KiB are not worth a thread
-  const int bands = int(std::max<size_t>(1, data.size() / kBand));
-  const size_t band = data.size() / size_t(bands);
-  std::vector<std::optional<std::string>> parts(static_cast<size_t>(bands));
-  in_parallel(bands, [&](int b) {
-    const size_t first = size_t(b) * band, last = b + 1 == bands ? data.size() : first + band;
-    z_stream z{};
-    if (deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) return;  // raw deflate
-    const size_t history = std::min(first, kWindow);
-    std::string out(deflateBound(&z, uLong(last - first)) + 16, '\0');  // + the sync flush's 5 bytes
-    z.next_in = const_cast<Bytef*>(data.data() + first);
-    z.avail_in = uInt(last - first);
-    z.next_out = reinterpret_cast<Bytef*>(out.data());
-    z.avail_out = uInt(out.size());
-    const bool ok = (history == 0 || deflateSetDictionary(&z, data.data() + first - history, uInt(history)) == Z_OK) &&
-                    deflate(&z, b + 1 == bands ? Z_FINISH : Z_SYNC_FLUSH) == (b + 1 == bands ? Z_STREAM_END : Z_OK) &&
-                    z.avail_in == 0;
-    out.resize(out.size() - z.avail_out);
-    deflateEnd(&z);
-    if (ok) parts[size_t(b)] = std::move(out);
-  });
-  std::string stream("\x78\x9c", 2);  // deflate with a 32 KiB window, the default level
-  for (const std::optional<std::string>& part : parts) {
-    if (!part) return std::nullopt;
-    stream += *part;
-  }
-  put_big_endian(stream, uint32_t(adler32_z(adler32(0L, nullptr, 0), data.data(), data.size())));
-  return stream;
 }
 
 }  // namespace
@@ -158,8 +128,8 @@ std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
   std::string png("\x89PNG\r\n\x1a\n", 8);
   put_chunk(png, "IHDR", header);
   put_chunk(png, "sRGB", std::string(1, char(0)));  // perceptual rendering intent
-  const std::optional<std::string> pixels = deflated_in_bands(filtered, Z_DEFAULT_COMPRESSION);
-  if (!pixels) throw std::runtime_error("zlib could not compress the picture");
+  const std::optional<std::string> pixels = deflated(filtered.data(), filtered.size(), kPngLevel);
+  if (!pixels) throw std::runtime_error("libdeflate could not compress the picture");
   put_chunk(png, "IDAT", *pixels);
   put_chunk(png, "IEND", {});
   return png;

@@ -1,6 +1,6 @@
 #pragma once
-// The two picture formats Luz writes, encoded here (zlib's deflate is the only library they
-// need), so that writing a picture loads nothing else.
+// The two picture formats Luz writes, encoded here (deflate, from libdeflate, is the only library
+// they need), so that writing a picture loads nothing else.
 #include <cstdint>
 #include <string>
 #include <vector>
