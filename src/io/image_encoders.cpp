@@ -9,6 +9,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <thread>
 
@@ -160,17 +161,13 @@ std::string box(int x_min, int y_min, int x_max, int y_max) {
 // the bytes split into those at even and at odd offsets, one half after the other, then each
 // byte replaced by its difference to the one before (+128, modulo 256), which deflate packs
 // better for smooth pictures.
-std::vector<unsigned char> interleaved_differences(const std::string& raw) {
+void interleaved_differences(std::span<const unsigned char> raw, std::vector<unsigned char>& out) {
   const size_t n = raw.size(), half = (n + 1) / 2;
-  std::vector<unsigned char> out(n);
-  for (size_t i = 0; i < n; ++i) out[(i % 2 == 0 ? 0 : half) + i / 2] = static_cast<unsigned char>(raw[i]);
-  int previous = n > 0 ? out[0] : 0;
-  for (size_t i = 1; i < n; ++i) {
-    const int value = out[i];
-    out[i] = static_cast<unsigned char>((value - previous + 128 + 256) & 0xff);
-    previous = value;
-  }
-  return out;
+  out.resize(n);
+  for (size_t i = 0; i < half; ++i) out[i] = raw[2 * i];
+  for (size_t i = 0; i < n / 2; ++i) out[half + i] = raw[2 * i + 1];
+  // Last to first: each byte still holds its own value when the one after it takes the difference.
+  for (size_t i = n; i-- > 1;) out[i] = static_cast<unsigned char>(out[i] - out[i - 1] + 128);
 }
 
 }  // namespace
@@ -209,25 +206,28 @@ std::string encode_exr(const Image& image) {
   // (B, G, R), the row's values; deflated, or kept raw when deflate does not make it smaller.
   const int blocks = (height + kZipScanlines - 1) / kZipScanlines;
   std::vector<std::string> chunks(static_cast<size_t>(blocks));
-  const auto encode_block = [&](int b, std::vector<float>& values) {
+  const auto encode_block = [&](int b, std::vector<float>& values, std::vector<unsigned char>& prepared) {
     const int first = b * kZipScanlines, last = std::min(height, first + kZipScanlines);
-    values.clear();
+    values.resize(size_t(last - first) * 3 * size_t(width));
+    float* value = values.data();
     for (int y = first; y < last; ++y)
       for (const int channel : {2, 1, 0})
-        for (int x = 0; x < width; ++x) values.push_back(image.at(x, y)[channel]);
+        for (int x = 0; x < width; ++x) *value++ = image.at(x, y)[channel];
     // Little-endian floats, as on every platform Luz builds on.
-    const std::string raw(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
-    const std::vector<unsigned char> prepared = interleaved_differences(raw);
+    const std::span raw(reinterpret_cast<const unsigned char*>(values.data()), values.size() * sizeof(float));
+    interleaved_differences(raw, prepared);
     const std::optional<std::string> packed = deflated(prepared.data(), prepared.size(), kZipLevel);
-    const std::string& data = packed && packed->size() < raw.size() ? *packed : raw;
+    const bool smaller = packed && packed->size() < raw.size();
+    const std::span data = smaller ? std::span(reinterpret_cast<const unsigned char*>(packed->data()), packed->size()) : raw;
     std::string& chunk = chunks[size_t(b)];
     put_little_endian(chunk, int32_t(first));
     put_little_endian(chunk, int32_t(data.size()));
-    chunk += data;
+    chunk.append(reinterpret_cast<const char*>(data.data()), data.size());
   };
   in_parallel(blocks, [&](int b) {
     thread_local std::vector<float> values;
-    encode_block(b, values);
+    thread_local std::vector<unsigned char> prepared;
+    encode_block(b, values, prepared);
   });
 
   // The offset table: where each block starts, from the start of the file.
