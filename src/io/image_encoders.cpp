@@ -5,8 +5,8 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
-#include <memory>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <span>
