@@ -2,18 +2,15 @@
 #include "io/image_encoders.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdlib>
 #include <cstring>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <stdexcept>
-#include <thread>
 
 #include <libdeflate.h>
+#include <tbb/parallel_for.h>
 
 namespace luz::io {
 namespace {
@@ -28,31 +25,6 @@ void put_little_endian(std::string& out, T v) {
   unsigned char bytes[sizeof(T)];
   std::memcpy(bytes, &v, sizeof(T));  // x86-64 and every platform Luz builds on: little-endian
   out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
-}
-
-// work(0), ..., work(count - 1), one thread per core taking them in turn (deflate is most of
-// an encoder's time, and each picture's pieces are independent). The first exception a piece
-// throws (out of memory) is thrown again here once every thread has stopped.
-template <typename Work>
-void in_parallel(int count, const Work& work) {
-  std::atomic<int> next{0};
-  std::exception_ptr failed;
-  std::mutex failing;
-  const auto worker = [&] {
-    try {
-      for (int i; (i = next++) < count;) work(i);
-    } catch (...) {
-      next = count;  // the other threads stop too
-      const std::lock_guard lock(failing);
-      if (!failed) failed = std::current_exception();
-    }
-  };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> threads(std::min(cores, unsigned(std::max(count, 1))) - 1);
-  for (std::thread& t : threads) t = std::thread(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
-  if (failed) std::rethrow_exception(failed);
 }
 
 // `data` as one zlib stream (RFC 1950) deflated at `level` by libdeflate, which compresses a
@@ -101,11 +73,11 @@ std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
   const size_t length = size_t(width) * 3;
   std::vector<uint8_t> filtered((length + 1) * size_t(height));
   const std::vector<uint8_t> zeros(length, 0);
-  constexpr int kRowsAtATime = 32;
-  in_parallel((height + kRowsAtATime - 1) / kRowsAtATime, [&](int part) {
-    thread_local std::vector<uint8_t> candidate;
-    candidate.resize(length + 1);
-    for (int y = part * kRowsAtATime; y < std::min(height, (part + 1) * kRowsAtATime); ++y) {
+  // Row by row on every core (TBB hands out ranges of rows): each row's filter reads only the
+  // unfiltered picture.
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 32), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<uint8_t> candidate(length + 1);
+    for (int y = rows.begin(); y < rows.end(); ++y) {
       const uint8_t* row = rgb.data() + size_t(y) * length;
       const uint8_t* above = y > 0 ? row - length : zeros.data();
       uint8_t* out = filtered.data() + size_t(y) * (length + 1);
@@ -161,13 +133,14 @@ std::string box(int x_min, int y_min, int x_max, int y_max) {
 // the bytes split into those at even and at odd offsets, one half after the other, then each
 // byte replaced by its difference to the one before (+128, modulo 256), which deflate packs
 // better for smooth pictures.
-void interleaved_differences(std::span<const unsigned char> raw, std::vector<unsigned char>& out) {
+std::vector<unsigned char> interleaved_differences(std::span<const unsigned char> raw) {
   const size_t n = raw.size(), half = (n + 1) / 2;
-  out.resize(n);
+  std::vector<unsigned char> out(n);
   for (size_t i = 0; i < half; ++i) out[i] = raw[2 * i];
   for (size_t i = 0; i < n / 2; ++i) out[half + i] = raw[2 * i + 1];
   // Last to first: each byte still holds its own value when the one after it takes the difference.
   for (size_t i = n; i-- > 1;) out[i] = static_cast<unsigned char>(out[i] - out[i - 1] + 128);
+  return out;
 }
 
 }  // namespace
@@ -206,16 +179,17 @@ std::string encode_exr(const Image& image) {
   // (B, G, R), the row's values; deflated, or kept raw when deflate does not make it smaller.
   const int blocks = (height + kZipScanlines - 1) / kZipScanlines;
   std::vector<std::string> chunks(static_cast<size_t>(blocks));
-  const auto encode_block = [&](int b, std::vector<float>& values, std::vector<unsigned char>& prepared) {
+  // Deflate is most of the time: the blocks are independent, each core takes blocks in turn.
+  tbb::parallel_for(0, blocks, [&](int b) {
     const int first = b * kZipScanlines, last = std::min(height, first + kZipScanlines);
-    values.resize(size_t(last - first) * 3 * size_t(width));
+    std::vector<float> values(size_t(last - first) * 3 * size_t(width));
     float* value = values.data();
     for (int y = first; y < last; ++y)
       for (const int channel : {2, 1, 0})
         for (int x = 0; x < width; ++x) *value++ = image.at(x, y)[channel];
     // Little-endian floats, as on every platform Luz builds on.
     const std::span raw(reinterpret_cast<const unsigned char*>(values.data()), values.size() * sizeof(float));
-    interleaved_differences(raw, prepared);
+    const std::vector<unsigned char> prepared = interleaved_differences(raw);
     const std::optional<std::string> packed = deflated(prepared.data(), prepared.size(), kZipLevel);
     const bool smaller = packed && packed->size() < raw.size();
     const std::span data = smaller ? std::span(reinterpret_cast<const unsigned char*>(packed->data()), packed->size()) : raw;
@@ -223,11 +197,6 @@ std::string encode_exr(const Image& image) {
     put_little_endian(chunk, int32_t(first));
     put_little_endian(chunk, int32_t(data.size()));
     chunk.append(reinterpret_cast<const char*>(data.data()), data.size());
-  };
-  in_parallel(blocks, [&](int b) {
-    thread_local std::vector<float> values;
-    thread_local std::vector<unsigned char> prepared;
-    encode_block(b, values, prepared);
   });
 
   // The offset table: where each block starts, from the start of the file.
