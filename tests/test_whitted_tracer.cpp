@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -440,12 +441,24 @@ TEST(WhittedTracer, TilesAreReportedAndCancellationStopsTheRender) {
 
   std::atomic<bool> cancel{false};
   reported = 0;
-  const Image cut = tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone&) {
+  std::vector<Tile> rendered;
+  const Image cut = tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone& t) {
     ++reported;
+    rendered.push_back(t.tile);
     cancel = true;  // the viewer's camera moved
   }, &cancel);
   EXPECT_LT(reported, 48);
   EXPECT_LT(tracer.counters()[RayKind::primary], uint64_t(64 * 48));
+  // The tiles never rendered are black, not what the memory held (the picture is not cleared
+  // before the tiles write it; the first render's pixels were freed just before).
+  const auto in_rendered = [&](int x, int y) {
+    return std::ranges::any_of(rendered, [&](const Tile& t) { return x >= t.x0 && x < t.x1 && y >= t.y0 && y < t.y1; });
+  };
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) {
+      if (in_rendered(x, y)) continue;
+      ASSERT_EQ(cut.at(x, y), Rgb(0.0f)) << x << "," << y;
+    }
   cancel = true;
   reported = 0;
   tracer.render(scene.cameras[0], 64, 48, options, [&](const TileDone&) { ++reported; }, &cancel);

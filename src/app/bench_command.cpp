@@ -1,11 +1,10 @@
-// `luz bench whitted`. For each scene: the full render (best and median of N, after one untimed
-// render that sizes every thread's scratch queues and wakes TBB's workers), then the same
-// render once more keeping every ray it traced, then those rays traced bare through the same
-// Embree scene on the same TBB threads and in the same calls as the renderer (--renderer) made
-// them: each stream of rays (the wavefront's every generation, a kind of ray at a time; the
-// recursion's first generation of a tile) as one stream, every other ray on its own.
-// render / bare is how close the tracer comes to Embree's limit on this machine; what it spends
-// beyond is shading, sampling and bookkeeping.
+// `luz bench whitted`. For each scene: one untimed render that keeps every ray it traced (and
+// sizes every thread's scratch queues and wakes TBB's workers), then N rounds of the full render
+// followed by those rays traced bare through the same Embree scene on the same TBB threads and
+// in the same calls as the renderer (--renderer) made them: each stream of rays (the wavefront's
+// every generation, a kind of ray at a time; the recursion's first generation of a tile) as one
+// stream, every other ray on its own. render / bare is how close the tracer comes to Embree's
+// limit on this machine; what it spends beyond is shading, sampling and bookkeeping.
 #include "app/bench_command.h"
 
 #include <algorithm>
@@ -173,33 +172,38 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
       rt::WhittedRenderer tracer(scene);
       const double build = seconds_since(start);
 
-      // Untimed: the first render of a process also pays for its threads' start and their scratch
-      // queues' first growth (about 5% at 1024x1024), which a benchmark of the tracer leaves out.
-      tracer.render(camera, settings.width, settings.height, options);
-      double render = 1e30;
-      rt::Counters counters;
-      std::vector<double> times;
-      for (int r = 0; r < settings.repeats; ++r) {
-        tracer.render(camera, settings.width, settings.height, options);
-        times.push_back(tracer.counters().seconds);
-        if (tracer.counters().seconds < render) {
-          render = tracer.counters().seconds;
-          counters = tracer.counters();
-        }
-      }
-      const double median = best_and_median(times).median;
-
+      // Untimed, keeping every ray it traces for the bare runs: the first render of a process also
+      // pays for its threads' start and their scratch queues' first growth (about 5% at
+      // 1024x1024), which a benchmark of the tracer leaves out.
       tracer.keep_rays(true);
       tracer.render(camera, settings.width, settings.height, options);
       tracer.keep_rays(false);
       const std::array<BareRays, rt::kRayKinds> by_kind = bare_rays(tracer.take_rays());
 
+      // Rounds of one render, then its rays bare: a machine whose speed drifts from minute to
+      // minute (a shared virtual machine) slows both alike, and each round gives a ratio.
+      double render = 1e30;
+      rt::Counters counters;
+      std::vector<double> times, ratios;
       std::array<double, rt::kRayKinds> bare{};
       bare.fill(1e30);
-      for (int r = 0; r < settings.repeats; ++r)
-        for (int k = 0; k < rt::kRayKinds; ++k)
-          bare[size_t(k)] = std::min(bare[size_t(k)], trace_bare(tracer.intersector(options),
-                                                                 by_kind[size_t(k)], rt::RayKind(k)));
+      for (int r = 0; r < settings.repeats; ++r) {
+        tracer.render(camera, settings.width, settings.height, options);
+        const double seconds = tracer.counters().seconds;
+        times.push_back(seconds);
+        if (seconds < render) {
+          render = seconds;
+          counters = tracer.counters();
+        }
+        double round_bare = 0.0;
+        for (int k = 0; k < rt::kRayKinds; ++k) {
+          const double t = trace_bare(tracer.intersector(options), by_kind[size_t(k)], rt::RayKind(k));
+          bare[size_t(k)] = std::min(bare[size_t(k)], t);
+          round_bare += t;
+        }
+        ratios.push_back(seconds / round_bare);
+      }
+      const double median = best_and_median(times).median;
       double bare_total = 0.0;
       for (double b : bare) bare_total += b;
       const double rays = double(counters.total_rays());
@@ -214,6 +218,9 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
                                 by_kind[size_t(k)].rays.size(),
                                 bare[size_t(k)] > 0 ? n / bare[size_t(k)] * 1e-6 : 0.0));
       }
+      const Timing round_ratio = best_and_median(ratios);
+      fmt::print("{}\n", trf("  render / bare of each round: best {:.2f}, median {:.2f}", round_ratio.best,
+                              round_ratio.median));
       fmt::print("{}\n", trf("  BVH build {:.3f} s", build));
     }
     return 0;

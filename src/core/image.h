@@ -1,20 +1,46 @@
 #pragma once
 // A float RGB image of linear radiance, row 0 at the top.
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/color.h"
 
 namespace luz {
 
+// Allocates without writing: a vector of it sized n leaves its n elements as the memory held
+// them. A renderer that writes every pixel of a picture from many threads so neither pays for
+// clearing it first nor touches a fresh picture's pages from one thread only.
+template <typename T>
+struct UnclearedAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UnclearedAllocator<U>;
+  };
+  using std::allocator<T>::allocator;
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;  // default-initialised: nothing written for plain values
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 struct Image {
   int width = 0;
   int height = 0;
-  std::vector<Rgb> pixels;
+  std::vector<Rgb, UnclearedAllocator<Rgb>> pixels;
+
+  // Tells the constructor to leave the pixels unwritten: the caller writes every one.
+  struct Uncleared {};
 
   Image() = default;
   Image(int w, int h, Rgb fill = Rgb(0.0f)) : width(w), height(h), pixels(size_t(w) * h, fill) {}
+  Image(int w, int h, Uncleared) : width(w), height(h), pixels(size_t(w) * h) {}
 
   Rgb& at(int x, int y) { return pixels[size_t(y) * width + x]; }
   const Rgb& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
