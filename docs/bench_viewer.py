@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""The viewer's frame against `luz bench local`'s, on the same machine in the same minutes. A
+measurement, never part of the build or the tests; needs xvfb-run (setup.sh installs it):
+
+    python3 docs/bench_viewer.py [--luz build/luz] [--rounds 5] [--scene cornell_box]
+                                 [--window 1280x720] [--models flat phong]
+
+Each round runs `luz bench local` (the scene, each model without effects, 40 frames, 1280x720)
+and then the viewer under Xvfb, one window per model: a script that waits 60 frames and dumps
+the state seven times, 30 frames apart (`frame_ms` is smoothed over about ten frames; the
+round's figure is the median dump, printed with its phases). Rounds interleave the two, so a
+machine whose speed drifts slows both alike; the ratio is taken round by round and its median
+reported, with the load average (uptime) seen around the rounds.
+
+The bench draws 1280x720 pictures. In a 1280x720 window the panel takes the left part of it and
+the picture is smaller; `--window 1720x752` gives the picture itself 1280x720 at the default UI
+scale (`dump-windows` tells the picture's rectangle).
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DUMPS = 7
+
+
+def load_average():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
+def bench_medians(luz, scene, models):
+    """The bench's median ms per frame of each model, without effects."""
+    out = subprocess.run([luz, "bench", "local", "--scenes", scene, "--shadings", *models,
+                          "--effects", "none", "--frames", "40"],
+                         check=True, capture_output=True, text=True).stdout
+    medians = {}
+    for line in out.splitlines():
+        fields = line.split()
+        if len(fields) > 4 and fields[0] == scene and fields[1] in models:
+            medians[fields[1]] = float(fields[4])
+    missing = set(models) - set(medians)
+    if missing:
+        raise RuntimeError(f"no bench figure for {sorted(missing)} in:\n{out}")
+    return medians
+
+
+def viewer_frame(luz, scene_path, model, window, folder):
+    """The median of the dumps' frame_ms, and that dump's phases."""
+    lines = [f"model {model}", "wait 60"]
+    for i in range(DUMPS):
+        lines += [f"dump-state state{i}.json", "wait 30"]
+    lines.append("quit")
+    script = os.path.join(folder, "frames.txt")
+    with open(script, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", luz, "--script", script,
+                    "--size", window, scene_path],
+                   check=True, cwd=folder, capture_output=True, text=True, timeout=600)
+    states = []
+    for i in range(DUMPS):
+        with open(os.path.join(folder, f"state{i}.json")) as f:
+            states.append(json.load(f))
+    states.sort(key=lambda s: s["frame_ms"])
+    median = states[DUMPS // 2]
+    return median["frame_ms"], median["frame_phases_ms"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--luz", default=os.path.join(ROOT, "build", "luz"))
+    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--scene", default="cornell_box", help="a shipped scene's name")
+    parser.add_argument("--window", default="1280x720", help="the viewer's window, WxH")
+    parser.add_argument("--models", nargs="+", default=["flat", "phong"],
+                        choices=["flat", "gouraud", "phong"])
+    args = parser.parse_args()
+    scene_path = os.path.join(ROOT, "scenes", f"{args.scene}.gltf")
+    if not os.path.exists(scene_path):
+        sys.exit(f"bench_viewer.py: no shipped scene {args.scene} ({scene_path})")
+
+    ratios = {m: [] for m in args.models}
+    loads = [load_average()]
+    print(f"{args.scene}, window {args.window}, bench 1280x720; ms per frame (viewer phases: models,"
+          " panel, present)")
+    with tempfile.TemporaryDirectory() as folder:
+        for r in range(args.rounds):
+            bench = bench_medians(args.luz, args.scene, args.models)
+            for model in args.models:
+                frame, phases = viewer_frame(args.luz, scene_path, model, args.window, folder)
+                ratio = frame / bench[model]
+                ratios[model].append(ratio)
+                print(f"round {r + 1} {model:7} bench {bench[model]:6.2f}  viewer {frame:6.2f}"
+                      f" ({phases.get('models', 0):.2f}, {phases.get('panel', 0):.2f},"
+                      f" {phases.get('present', 0):.2f})  viewer / bench {ratio:.2f}", flush=True)
+            loads.append(load_average())
+    print(f"load average {min(loads):.1f}-{max(loads):.1f}")
+    for model in args.models:
+        values = ratios[model]
+        print(f"{model:7} viewer / bench: median {statistics.median(values):.2f}"
+              f" ({min(values):.2f}-{max(values):.2f}) over {len(values)} rounds")
+
+
+if __name__ == "__main__":
+    main()
