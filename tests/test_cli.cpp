@@ -416,6 +416,8 @@ TEST(CliSpanish, TheWhittedBenchTableSpeaksSpanish) {
   // At depth 1, 8 x 6 pixels, one sample each: 48 primary rays, named in Spanish.
   EXPECT_TRUE(std::regex_search(result.output, std::regex("  " + spanish("primary") + " +48 "))) << result.output;
   EXPECT_TRUE(has_spanish_line(result.output, "  {:<12} {:>10} rays, bare {:7.2f} Mrays/s")) << result.output;
+  EXPECT_TRUE(has_spanish_line(result.output, "  render / bare of each round: best {:.2f}, median {:.2f}"))
+      << result.output;
   EXPECT_TRUE(has_spanish_line(result.output, "  BVH build {:.3f} s")) << result.output;
 }
 
