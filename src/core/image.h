@@ -11,8 +11,8 @@
 namespace luz {
 
 // Allocates without writing: a vector of it sized n leaves its n elements as the memory held
-// them. A renderer that writes every pixel of a picture from many threads so neither pays for
-// clearing it first nor touches a fresh picture's pages from one thread only.
+// them. A renderer that writes every pixel of a picture from many threads then neither pays for
+// clearing it first nor has one thread touch all of a fresh picture's pages.
 template <typename T>
 struct UnclearedAllocator : std::allocator<T> {
   template <typename U>
