@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "core/color.h"
@@ -11,8 +10,9 @@
 namespace luz {
 
 // Allocates without writing: a vector of it sized n leaves its n elements as the memory held
-// them. A renderer that writes every pixel of a picture from many threads then neither pays for
-// clearing it first nor has one thread touch all of a fresh picture's pages.
+// them (a construction with a value is the standard one). A renderer that writes every pixel of
+// a picture from many threads then neither pays for clearing it first nor has one thread touch
+// all of a fresh picture's pages.
 template <typename T>
 struct UnclearedAllocator : std::allocator<T> {
   template <typename U>
@@ -24,16 +24,15 @@ struct UnclearedAllocator : std::allocator<T> {
   void construct(U* p) noexcept {
     ::new (static_cast<void*>(p)) U;  // default-initialised: nothing written for plain values
   }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
 };
+
+// The pixels of a picture or a texture, row by row.
+using Pixels = std::vector<Rgb, UnclearedAllocator<Rgb>>;
 
 struct Image {
   int width = 0;
   int height = 0;
-  std::vector<Rgb, UnclearedAllocator<Rgb>> pixels;
+  Pixels pixels;
 
   // Tells the constructor to leave the pixels unwritten: the caller writes every one.
   struct Uncleared {};

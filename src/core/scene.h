@@ -10,6 +10,7 @@
 
 #include "core/camera.h"
 #include "core/color.h"
+#include "core/image.h"
 #include "core/light.h"
 #include "core/material.h"
 
@@ -30,7 +31,7 @@ struct Texture {
   std::string name;
   int width = 1;
   int height = 1;
-  std::vector<Rgb> texels{Rgb(1.0f)};
+  Pixels texels{Rgb(1.0f)};
   Rgb texel(int x, int y) const { return texels[size_t(y) * width + x]; }
 };
 

@@ -398,7 +398,7 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
   texture.name = name;
   texture.width = image->width;
   texture.height = image->height;
-  texture.texels.assign(image->pixels.begin(), image->pixels.end());
+  texture.texels = std::move(image->pixels);
   return texture;
 }
 

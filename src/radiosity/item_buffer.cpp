@@ -79,7 +79,10 @@ void PatchItems::draw_atlas(std::span<const AtlasFace> faces, int atlas_width, i
     to_atlas[1][1] = sy;
     to_atlas[3][0] = ox;
     to_atlas[3][1] = oy;
-    const std::string index = "[" + std::to_string(f) + "]";
+    // Appended, not "[" + ...: GCC 12 warns falsely (-Wrestrict) on that inlined operator+.
+    std::string index = "[";
+    index += std::to_string(f);
+    index += ']';
     atlas_program_.set("u_face_view_projection" + index, face.view_projection);
     atlas_program_.set("u_face_to_atlas" + index, to_atlas);
   }

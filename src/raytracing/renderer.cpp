@@ -79,7 +79,7 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
                               const std::atomic<bool>* cancel) {
   const auto start = std::chrono::steady_clock::now();
   // Every tile writes all its pixels, so the picture is not cleared first (a serial pass over
-  // 12 MB at 1024x1024); a tile skipped by a cancel is cleared below.
+  // 12 MB at 1024x1024); a tile skipped by a cancel clears its own.
   Image image(width, height, Image::Uncleared{});
   const std::vector<Tile> tiles = make_tiles(width, height, options.tile_size);
   intersector(options);  // build the brute-force triangles before the threads start
@@ -97,10 +97,10 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
   std::vector<std::vector<RecordedRay>> tile_rays(keep_rays_ ? tiles.size() : 0);
   std::mutex report;
   int done = 0;
-  std::vector<char> skipped(tiles.size(), 0);
   tbb::parallel_for(size_t(0), tiles.size(), [&](size_t i) {
     if (cancel && cancel->load(std::memory_order_relaxed)) {
-      skipped[i] = 1;
+      for (int y = tiles[i].y0; y < tiles[i].y1; ++y)
+        std::fill_n(&image.at(tiles[i].x0, y), tiles[i].width(), Rgb(0.0f));
       return;
     }
     render_tile(tiles[i], camera, width, height, options, meshes, image, tile_counters[i],
@@ -110,10 +110,6 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
     if (on_tile) on_tile(TileDone{tiles[i], done, int(tiles.size()), image});
   });
 
-  for (size_t i = 0; i < tiles.size(); ++i)
-    if (skipped[i])
-      for (int y = tiles[i].y0; y < tiles[i].y1; ++y)
-        std::fill_n(&image.at(tiles[i].x0, y), tiles[i].width(), Rgb(0.0f));
   for (const Counters& c : tile_counters) counters_ += c;
   for (auto& r : tile_rays) rays_.insert(rays_.end(), r.begin(), r.end());
   counters_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
