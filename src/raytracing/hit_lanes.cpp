@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <numbers>
 #include <type_traits>
 
@@ -16,18 +18,78 @@
 namespace luz::rt {
 
 namespace {
+
 constexpr float kPi = std::numbers::pi_v<float>;
+
+// GCC's and Clang's vector types: their operations compile to SSE instructions in the baseline
+// clone of a LUZ_VECTOR_CLONES function and to AVX ones in its AVX2 clone.
+using Float4 = float __attribute__((vector_size(16)));
+using Float8 = float __attribute__((vector_size(32)));
+
+Float4 load_row(const std::byte* row) {
+  Float4 r;
+  std::memcpy(&r, row, sizeof r);
+  return r;
+}
+
+// Eight rows of four floats, lying anywhere in memory, into four arrays of eight lanes:
+// x[k] = row k's first float, y[k] its second, z[k] its third, w[k] its fourth (where w is
+// given); row k starts at rows[k] + offset bytes. A transpose in registers: eight 16-byte loads,
+// twelve shuffles and four 32-byte stores, where copying float by float takes 32 loads and 32
+// stores, and leaves eight-lane loops reading values stored one at a time (which stalls them:
+// the processor cannot forward several small stores to one wide load).
+[[gnu::always_inline]] inline void transpose_rows(const std::byte* const* rows, size_t offset, void* x, void* y,
+                                                  void* z, void* w) {
+  // Row i in the low half, row i + 4 in the high half: each half is then a 4x4 transpose.
+  // (Plain statements, no helper taking or returning a Float8: the baseline clone has no such
+  // registers to pass it in.)
+#define LUZ_ROW_PAIR(i) \
+  __builtin_shufflevector(load_row(rows[i] + offset), load_row(rows[(i) + 4] + offset), 0, 1, 2, 3, 4, 5, 6, 7)
+  const Float8 r0 = LUZ_ROW_PAIR(0), r1 = LUZ_ROW_PAIR(1), r2 = LUZ_ROW_PAIR(2), r3 = LUZ_ROW_PAIR(3);
+#undef LUZ_ROW_PAIR
+  const Float8 xy01 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);
+  const Float8 xy23 = __builtin_shufflevector(r2, r3, 0, 8, 1, 9, 4, 12, 5, 13);
+  const Float8 zw01 = __builtin_shufflevector(r0, r1, 2, 10, 3, 11, 6, 14, 7, 15);
+  const Float8 zw23 = __builtin_shufflevector(r2, r3, 2, 10, 3, 11, 6, 14, 7, 15);
+  const Float8 xs = __builtin_shufflevector(xy01, xy23, 0, 1, 8, 9, 4, 5, 12, 13);
+  const Float8 ys = __builtin_shufflevector(xy01, xy23, 2, 3, 10, 11, 6, 7, 14, 15);
+  const Float8 zs = __builtin_shufflevector(zw01, zw23, 0, 1, 8, 9, 4, 5, 12, 13);
+  const Float8 ws = __builtin_shufflevector(zw01, zw23, 2, 3, 10, 11, 6, 7, 14, 15);
+  std::memcpy(x, &xs, sizeof xs);
+  std::memcpy(y, &ys, sizeof ys);
+  std::memcpy(z, &zs, sizeof zs);
+  if (w) std::memcpy(w, &ws, sizeof ws);
+}
+
+// The rows load() transposes out of a Hit and a Ray.
+static_assert(offsetof(Hit, triangle) == offsetof(Hit, mesh) + 4 && offsetof(Hit, u) == offsetof(Hit, mesh) + 8 &&
+              offsetof(Hit, v) == offsetof(Hit, mesh) + 12 && sizeof(int) == sizeof(float));
+static_assert(offsetof(Ray, tfar) == offsetof(Ray, direction) + 12);
+
 }  // namespace
 
-std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options) {
+std::vector<float> triangle_corners(const Mesh& mesh) {
+  std::vector<float> corners;
+  corners.reserve(mesh.indices.size() * 6 + 1);
+  for (size_t t = 0; 3 * t + 2 < mesh.indices.size(); ++t)
+    for (const std::vector<glm::vec3>* attribute : {&mesh.positions, &mesh.normals})
+      for (size_t c = 0; c < 3; ++c) {
+        const glm::vec3& v = (*attribute)[mesh.indices[3 * t + c]];
+        corners.insert(corners.end(), {v.x, v.y, v.z});
+      }
+  corners.push_back(0.0f);
+  return corners;
+}
+
+std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options,
+                                  std::span<const std::vector<float>> corners) {
   const bool diffuse = options.terms.diffuse && !shading.diffuse_source();
   std::vector<LaneMesh> meshes;
   meshes.reserve(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
     const Material& o = shading.material_of(mesh);
-    meshes.push_back({.indices = mesh.indices.data(),
-                      .positions = mesh.positions.data(),
-                      .normals = mesh.normals.data(),
+    meshes.push_back({.corners = corners[m].data(),
                       .material = &o,
                       .kd_uniform = !diffuse || shading.kd_is_uniform(o, mesh),
                       .kd = o.kd,
@@ -62,25 +124,35 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
                     std::span<const uint64_t> seeds) {
   count_ = queue.size();
   const size_t n = count_;
-  // Each hit's triangle: indices, then corners and normals, wherever they lie in memory.
+  // Where each lane's hit, ray direction and triangle lie: rows to transpose into the lanes.
+  // Lanes past the last (up to a multiple of 8) repeat the first lane's rows.
+  const std::byte* hit_rows[kLanes];
+  const std::byte* direction_rows[kLanes];
+  const std::byte* triangle_rows[kLanes];
   for (size_t k = 0; k < n; ++k) {
     const Hit& hit = hits[queue[k]];
-    const LaneMesh& mesh = meshes_[size_t(hit.mesh)];
-    const size_t t = size_t(hit.triangle);
-    const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
-    p0_.set(k, mesh.positions[i0]);
-    p1_.set(k, mesh.positions[i1]);
-    p2_.set(k, mesh.positions[i2]);
-    n0_.set(k, mesh.normals[i0]);
-    n1_.set(k, mesh.normals[i1]);
-    n2_.set(k, mesh.normals[i2]);
-    u_[k] = hit.u;
-    v_[k] = hit.v;
+    hit_rows[k] = reinterpret_cast<const std::byte*>(&hit.mesh);
+    direction_rows[k] = reinterpret_cast<const std::byte*>(&rays[queue[k]].direction);
+    const float* corners = meshes_[size_t(hit.mesh)].corners + 18 * size_t(hit.triangle);
+    triangle_rows[k] = reinterpret_cast<const std::byte*>(corners);
     ray_[k] = queue[k];
-    d_.set(k, rays[queue[k]].direction);
     seed_[k] = seeds[queue[k]];
-    mesh_[k] = hit.mesh;
-    triangle_[k] = hit.triangle;
+  }
+  for (size_t k = n; k % 8 != 0; ++k) {
+    hit_rows[k] = hit_rows[0];
+    direction_rows[k] = direction_rows[0];
+    triangle_rows[k] = triangle_rows[0];
+  }
+  // Each hit's mesh, triangle and barycentrics, its ray's direction, and its triangle's corners
+  // and vertex normals, 8 lanes at a time.
+  Vec3Lanes* const triangle[6] = {&p0_, &p1_, &p2_, &n0_, &n1_, &n2_};
+  for (size_t k = 0; k < n; k += 8) {
+    transpose_rows(hit_rows + k, 0, mesh_ + k, triangle_ + k, u_ + k, v_ + k);
+    transpose_rows(direction_rows + k, 0, d_.x + k, d_.y + k, d_.z + k, nullptr);
+    for (size_t a = 0; a < 6; ++a) {
+      Vec3Lanes& to = *triangle[a];
+      transpose_rows(triangle_rows + k, 12 * a, to.x + k, to.y + k, to.z + k, nullptr);
+    }
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {

@@ -3,9 +3,10 @@
 // structure of arrays: each quantity of slide 26's Color() (the point and its normals, each
 // light's L, distance and term, the split into kr and kt) is an array with one lane per hit, and
 // each step is a loop over the lanes whose body is the recursion's own arithmetic (hit_math.h).
-// Such loops compile to vector instructions, several hits an instruction. What cannot be
-// vectorised (fetching each hit's triangle and material, pow, collecting the light samples and
-// rays that survive) runs in short scalar loops of its own between them.
+// Such loops compile to vector instructions, several hits an instruction. The hits' triangles,
+// scattered in memory, come into the arrays by transposes in registers, 8 hits at a time; what
+// cannot be vectorised (fetching each hit's material, pow, collecting the light samples and rays
+// that survive) runs in short scalar loops of its own between them.
 //
 // Per lane, the operations are those of Whitted::surface_at, light_samples, local_color and
 // secondary_rays, in the same order, so every ray is the recursion's to the bit and every light's
@@ -25,6 +26,7 @@
 namespace luz::rt {
 
 inline constexpr size_t kLanes = 64;  // hits shaded together: their arrays stay in the L1 cache
+static_assert(kLanes % 8 == 0, "HitLanes::load fills the lanes 8 at a time");
 
 // The lanes' flags are 32-bit integers, not bools: as wide as the floats they select between, so
 // the compiler keeps them in the same vector registers (with bools it gives up on the loop).
@@ -59,13 +61,18 @@ struct SpawnLanes {
   int32_t reflects[kLanes], transmits[kLanes];
 };
 
-// What the lanes read of a mesh, looked up once per render instead of once per hit: where its
-// triangles' indices, corners and normals lie, its material, and what the light terms and the
-// secondary rays take of that material.
+// Each triangle of a mesh as one piece: its corners and vertex normals side by side, p0 p1 p2
+// n0 n1 n2 (18 floats a triangle), and one float more at the end. The lanes fetch a hit's triangle
+// from one place instead of through its indices from six, in 16-byte rows that they transpose
+// into their arrays (HitLanes::load), the last row of the last triangle reaching into that float.
+// Geometry only: built once per scene, not per render.
+std::vector<float> triangle_corners(const Mesh& mesh);
+
+// What the lanes read of a mesh, looked up once per render instead of once per hit: its
+// triangle_corners(), its material, and what the light terms and the secondary rays take of that
+// material.
 struct LaneMesh {
-  const uint32_t* indices;
-  const glm::vec3* positions;
-  const glm::vec3* normals;
+  const float* corners;
   const Material* material;
   // kd is `kd` all over the mesh, or not read at all (the diffuse term off, or the hybrid's
   // radiosity has it); else kd_at gives it (COLOR_0, the texture).
@@ -79,8 +86,10 @@ struct LaneMesh {
   bool reflective, transmissive;
 };
 
-// Every mesh of the scene as the lanes read it, for `shading` with `options`.
-std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options);
+// Every mesh of the scene as the lanes read it, for `shading` with `options`; corners[m] is
+// triangle_corners() of mesh m.
+std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, const WhittedOptions& options,
+                                  std::span<const std::vector<float>> corners);
 
 class HitLanes {
 public:
@@ -127,7 +136,7 @@ private:
   size_t count_ = 0;
 
   // The hits: their rays' places in the queue and directions, their triangles (corners, vertex
-  // normals) and barycentrics.
+  // normals) and barycentrics. (Arrays of a multiple of 8 lanes: load() writes 8 at a time.)
   uint32_t ray_[kLanes];
   Vec3Lanes d_, p0_, p1_, p2_, n0_, n1_, n2_;
   float u_[kLanes], v_[kLanes];

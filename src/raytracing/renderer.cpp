@@ -13,6 +13,7 @@
 
 #include "raytracing/brute_force.h"
 #include "raytracing/embree_scene.h"
+#include "raytracing/hit_lanes.h"
 #include "raytracing/sampling.h"
 #include "raytracing/wavefront.h"
 
@@ -63,6 +64,8 @@ WhittedRenderer::~WhittedRenderer() = default;
 
 void WhittedRenderer::scene_changed() {
   embree_ = std::make_unique<EmbreeIntersector>(scene_);
+  corners_.clear();
+  for (const Mesh& mesh : scene_.meshes) corners_.push_back(triangle_corners(mesh));
   std::lock_guard lock(brute_force_mutex_);
   brute_force_.reset();
 }
@@ -86,7 +89,7 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
   // What the wavefront's lanes read of each mesh, once for every tile.
   const std::vector<LaneMesh> meshes =
       options.renderer == RendererKind::wavefront
-          ? lane_meshes(scene_, Whitted(scene_, *embree_, options, counters_, diffuse_), options)
+          ? lane_meshes(scene_, Whitted(scene_, *embree_, options, counters_, diffuse_), options, corners_)
           : std::vector<LaneMesh>{};
   counters_ = Counters{};
   rays_.clear();
@@ -157,38 +160,45 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
   const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
   const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
-  // Per-thread scratch, reused from tile to tile: no allocation or clearing per tile.
+  // Per-thread scratch, reused from tile to tile: no allocation or clearing per tile. The
+  // wavefront's primary rays and seeds are written straight into its first queue.
   thread_local TileScratch scratch;
   scratch.resize(n);
-  std::span<Ray> rays(scratch.rays.data(), n);
-  std::span<uint64_t> seeds(scratch.seeds.data(), n);
+  const bool streams = options.renderer == RendererKind::wavefront && !tree;
+  Wavefront wavefront(scene_, whitted, meshes, hits_of, options, counters, log);
+  const Wavefront::FirstGeneration primary =
+      streams ? wavefront.first_generation(n)
+              : Wavefront::FirstGeneration{{scratch.rays.data(), n}, {scratch.seeds.data(), n}};
+  const std::span<Ray> rays = primary.rays;
+  const std::span<uint64_t> seeds = primary.seeds;
   const bool seeded = whitted.draws_random_numbers();
   size_t i = 0;
-  for (int y = tile.y0; y < tile.y1; ++y)
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      // One sample a pixel: its centre, stratified_pixel_samples' rule, taken here without the
-      // call and the generator per pixel (2-3% of a Cornell box render at 1024x1024).
-      if (samples_per_pixel == 1) {
-        scratch.points[i] = glm::vec2(float(x), float(y)) + 0.5f;
-        seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
-        continue;
-      }
-      Random jitter(x, y, -1);
-      stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
-      for (int s = 0; s < samples_per_pixel; ++s, ++i) {
-        scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
-        seeds[i] = seeded ? sample_seed(x, y, s) : 0;
-      }
+  if (samples_per_pixel == 1) {
+    // One sample a pixel: its centre, stratified_pixel_samples' rule, taken here without the call
+    // and the generator per pixel.
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      camera_rays.through_pixel_centres(tile.x0, y, rays.subspan(i, size_t(tile.width())));
+      for (int x = tile.x0; x < tile.x1; ++x) seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
     }
-  camera_rays.through(std::span(scratch.points).first(n), rays);
+  } else {
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        Random jitter(x, y, -1);
+        stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
+        for (int s = 0; s < samples_per_pixel; ++s, ++i) {
+          scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
+          seeds[i] = seeded ? sample_seed(x, y, s) : 0;
+        }
+      }
+    camera_rays.through(std::span(scratch.points).first(n), rays);
+  }
   counters.samples += n;
   const Rgb weight(1.0f / float(samples_per_pixel));
 
-  if (options.renderer == RendererKind::wavefront && !tree) {
+  if (streams) {
     // Every generation as streams (wavefront.h); each sample's radiance comes back x 1/spp.
-    std::span<Rgb> radiance(scratch.radiance.data(), n);
-    std::fill(radiance.begin(), radiance.end(), Rgb(0.0f));
-    Wavefront(scene_, whitted, meshes, hits_of, options, counters, log).trace(rays, seeds, weight, radiance);
+    const std::span<Rgb> radiance(scratch.radiance.data(), n);
+    wavefront.trace(weight, radiance);
     i = 0;
     for (int y = tile.y0; y < tile.y1; ++y)
       for (int x = tile.x0; x < tile.x1; ++x) {

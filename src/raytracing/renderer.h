@@ -57,7 +57,8 @@ public:
   WhittedRenderer(const WhittedRenderer&) = delete;
   WhittedRenderer& operator=(const WhittedRenderer&) = delete;
 
-  // Rebuilds the intersectors from the scene's current geometry.
+  // Rebuilds the intersectors, and the wavefront's copy of the triangles, from the scene's
+  // current geometry.
   void scene_changed();
 
   // The hybrid model (slides 41-43): with a source set, the diffuse part of every hit (primary
@@ -100,6 +101,7 @@ private:
   std::unique_ptr<Intersector> embree_;
   std::unique_ptr<Intersector> brute_force_;  // built when first asked for
   std::mutex brute_force_mutex_;
+  std::vector<std::vector<float>> corners_;  // triangle_corners() of each mesh (hit_lanes.h)
   Counters counters_;
   const DiffuseSource* diffuse_ = nullptr;
   bool keep_rays_ = false;

@@ -14,7 +14,8 @@ namespace luz::rt {
 // generation is all primary rays, a later one its reflected rays, then its transmitted ones. Its
 // first size() entries are the generation; the arrays only grow: after the first tiles a thread's
 // queues have the room they need, a tile allocates nothing, and adding a ray checks the room
-// once, not once per array.
+// once, not once per array. A first generation holds rays and seeds only: its ray q is sample q,
+// and all its rays have the same throughput.
 struct RayQueue {
   std::vector<Ray> rays;
   std::vector<uint32_t> samples;   // the primary ray whose tree the ray belongs to
@@ -32,15 +33,9 @@ struct RayQueue {
     seeds[size_] = seed;
     ++size_;
   }
-  // The first generation: primary ray i of sample i, each of weight `weight`. (Array by array,
-  // not ray by ray: each loop a copy or a fill.)
-  void start(std::span<const Ray> primary, std::span<const uint64_t> primary_seeds, const Rgb& weight) {
-    const size_t n = primary.size();
+  // Room for a first generation of n rays, for the caller to write their rays and seeds.
+  void start(size_t n) {
     if (n > rays.size()) grow(n);
-    std::copy(primary.begin(), primary.end(), rays.begin());
-    for (size_t i = 0; i < n; ++i) samples[i] = uint32_t(i);
-    std::fill_n(throughputs.begin(), n, weight);
-    std::copy(primary_seeds.begin(), primary_seeds.end(), seeds.begin());
     size_ = n;
   }
   void append(const RayQueue& other) {
@@ -80,22 +75,28 @@ struct Scratch {
 
 // The reflected and transmitted rays of the lanes' hits, weighted by their parents' throughput,
 // into the next generation's two queues; with their seeds where shading reads them (`seeded`).
-void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool seeded, SpawnLanes& spawned,
-                RayQueue& reflected, RayQueue& transmitted) {
+// `first`: the queue is a first generation, each ray of throughput `weight`.
+void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool first, const Rgb& weight, bool seeded,
+                SpawnLanes& spawned, RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
   if (!spawned.any) return;
   for (size_t k = 0; k < lanes.size(); ++k) {
     const uint32_t q = lanes.ray(k);
+    const uint32_t sample = first ? q : queue.samples[q];
+    const Rgb throughput = first ? weight : queue.throughputs[q];
     const uint64_t seed = queue.seeds[q];
     if (spawned.reflects[k])
-      reflected.push(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, queue.samples[q],
-                     queue.throughputs[q] * spawned.kr[k],
-                     seeded ? branch_seed(seed, RayKind::reflected) : 0);
+      reflected.push(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, sample,
+                     throughput * spawned.kr[k], seeded ? branch_seed(seed, RayKind::reflected) : 0);
     if (spawned.transmits[k])
-      transmitted.push(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]},
-                       queue.samples[q], queue.throughputs[q] * spawned.kt[k],
-                       seeded ? branch_seed(seed, RayKind::transmitted) : 0);
+      transmitted.push(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]}, sample,
+                       throughput * spawned.kt[k], seeded ? branch_seed(seed, RayKind::transmitted) : 0);
   }
+}
+
+Scratch& scratch_of_this_thread() {
+  thread_local Scratch scratch;
+  return scratch;
 }
 
 }  // namespace
@@ -114,11 +115,15 @@ void Wavefront::count(std::span<const Ray> rays, RayKind kind) {
 }
 
 // ---- [one tile's samples] -----------------------------------------------------------------------
-void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> seeds,
-                      const Rgb& weight, std::span<Rgb> radiance) {
-  thread_local Scratch scratch;
+Wavefront::FirstGeneration Wavefront::first_generation(size_t n) {
+  RayQueue& queue = scratch_of_this_thread().queue;
+  queue.start(n);
+  return {{queue.rays.data(), n}, {queue.seeds.data(), n}};
+}
+
+void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
+  Scratch& scratch = scratch_of_this_thread();
   RayQueue& queue = scratch.queue;
-  queue.start(primary, seeds, weight);
 
   HitLanes& lanes = scratch.lanes;
   lanes.shade_with(scene_, shading_, options_, meshes_);
@@ -161,7 +166,9 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
       lanes.load(scratch.found, rays, scratch.hits, queue.seeds);
       lanes.light_samples(lights);
       lanes.unlit_colors(scratch.local);
-      if (spawn) spawn_rays(lanes, queue, seeded, scratch.spawned, scratch.reflected, scratch.transmitted);
+      if (spawn)
+        spawn_rays(lanes, queue, depth == 1, weight, seeded, scratch.spawned, scratch.reflected,
+                   scratch.transmitted);
     }
 
     // 3. Every shadow ray of the generation, as one stream.
@@ -176,12 +183,14 @@ void Wavefront::trace(std::span<const Ray> primary, std::span<const uint64_t> se
 
     // 4. Each hit's local colour: S_i = 1, each unblocked sample's term, a hit's in the order of
     // its lights. Then each ray's local colour (the background where it hit nothing), weighted
-    // by its throughput, into its sample's radiance.
+    // by its throughput, into its sample's radiance: the first generation's sets it.
     for (size_t j = 0; j < lights.size; ++j)
       if (!blocked || !blocked[j]) scratch.local[lights.hit[j]] += lights.term[j];
-    for (size_t q = 0; q < n; ++q) {
-      const Rgb local = scratch.hits[q].found() ? scratch.local[q] : scene_.background;
-      radiance[queue.samples[q]] += queue.throughputs[q] * local;
+    const auto local = [&](size_t q) { return scratch.hits[q].found() ? scratch.local[q] : scene_.background; };
+    if (depth == 1) {
+      for (size_t q = 0; q < n; ++q) radiance[q] = weight * local(q);
+    } else {
+      for (size_t q = 0; q < n; ++q) radiance[queue.samples[q]] += queue.throughputs[q] * local(q);
     }
 
     // The next generation: the reflected rays, then the transmitted ones, each in the order of

@@ -47,11 +47,17 @@ public:
             const Intersector& intersector, const WhittedOptions& options, Counters& counters,
             std::vector<RecordedRay>* log);
 
-  // For each primary ray i (whose ray tree has seed seeds[i], see sampling.h): weight x the
-  // radiance arriving along it, added to radiance[i]. Counts every ray traced, as the
-  // recursion counts them.
-  void trace(std::span<const Ray> primary, std::span<const uint64_t> seeds, const Rgb& weight,
-             std::span<Rgb> radiance);
+  // Where the caller writes a tile's n primary rays, and the seed of each one's ray tree
+  // (sampling.h), before trace(): this thread's first queue itself, so they are not copied.
+  struct FirstGeneration {
+    std::span<Ray> rays;
+    std::span<uint64_t> seeds;
+  };
+  FirstGeneration first_generation(size_t n);
+
+  // For each primary ray i of first_generation(): weight x the radiance arriving along it,
+  // written to radiance[i]. Counts every ray traced, as the recursion counts them.
+  void trace(const Rgb& weight, std::span<Rgb> radiance);
 
 private:
   // Counts the rays of a stream of one kind as traced (and logs them).

@@ -249,26 +249,49 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
   down_ = rotation * glm::vec3(0.0f, -2.0f * tan_half / float(height), 0.0f);
 }
 
+// Directions computed in blocks of three arrays, which the compiler vectorises, then copied into
+// the rays.
+namespace {
+constexpr size_t kRayBlock = 64;
+
+void write_rays(const glm::vec3& origin, const float* dx, const float* dy, const float* dz, size_t n, Ray* out) {
+  for (size_t k = 0; k < n; ++k) {
+    out[k].origin = origin;
+    out[k].direction = glm::vec3(dx[k], dy[k], dz[k]);
+    out[k].tfar = kInfinity;
+  }
+}
+}  // namespace
+
 LUZ_VECTOR_CLONES
 void PrimaryRays::through(std::span<const glm::vec2> image_points, std::span<Ray> rays) const {
-  // Blocks of directions as three arrays, which the compiler vectorises, then copied into rays.
-  constexpr size_t block = 64;
-  float x[block], y[block], z[block];
-  for (size_t start = 0; start < image_points.size(); start += block) {
-    const size_t n = std::min(block, image_points.size() - start);
+  float dx[kRayBlock], dy[kRayBlock], dz[kRayBlock];
+  for (size_t start = 0; start < image_points.size(); start += kRayBlock) {
+    const size_t n = std::min(kRayBlock, image_points.size() - start);
     const glm::vec2* points = image_points.data() + start;
     for (size_t k = 0; k < n; ++k) {
-      const glm::vec3 d = glm::normalize(corner_ + points[k].x * right_ + points[k].y * down_);
-      x[k] = d.x;
-      y[k] = d.y;
-      z[k] = d.z;
+      const glm::vec3 d = direction(points[k]);
+      dx[k] = d.x;
+      dy[k] = d.y;
+      dz[k] = d.z;
     }
-    Ray* out = rays.data() + start;
+    write_rays(origin_, dx, dy, dz, n, rays.data() + start);
+  }
+}
+
+LUZ_VECTOR_CLONES
+void PrimaryRays::through_pixel_centres(int x0, int y, std::span<Ray> rays) const {
+  float dx[kRayBlock], dy[kRayBlock], dz[kRayBlock];
+  for (size_t start = 0; start < rays.size(); start += kRayBlock) {
+    const size_t n = std::min(kRayBlock, rays.size() - start);
+    const int first = x0 + int(start);
     for (size_t k = 0; k < n; ++k) {
-      out[k].origin = origin_;
-      out[k].direction = glm::vec3(x[k], y[k], z[k]);
-      out[k].tfar = kInfinity;
+      const glm::vec3 d = direction(glm::vec2(float(first + int(k)), float(y)) + 0.5f);
+      dx[k] = d.x;
+      dy[k] = d.y;
+      dz[k] = d.z;
     }
+    write_rays(origin_, dx, dy, dz, n, rays.data() + start);
   }
 }
 

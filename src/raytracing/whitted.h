@@ -213,7 +213,7 @@ public:
   // stalls on store forwarding, which cost a tenth of a render).
   void through(glm::vec2 image_point, Ray& ray) const {
     ray.origin = origin_;
-    ray.direction = glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
+    ray.direction = direction(image_point);
     ray.tfar = kInfinity;
   }
   Ray through(glm::vec2 image_point) const {
@@ -223,8 +223,14 @@ public:
   }
   // The ray through each point, as through() makes it (the same bits), several to an instruction.
   void through(std::span<const glm::vec2> image_points, std::span<Ray> rays) const;
+  // The same for the centres of pixels x0 .. x0 + rays.size() - 1 of row y (one sample a pixel).
+  void through_pixel_centres(int x0, int y, std::span<Ray> rays) const;
 
 private:
+  glm::vec3 direction(glm::vec2 image_point) const {
+    return glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
+  }
+
   glm::vec3 origin_;
   glm::vec3 corner_;  // the direction through image point (0, 0), unnormalised
   glm::vec3 right_;   // its change per pixel to the right
