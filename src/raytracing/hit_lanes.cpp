@@ -331,12 +331,13 @@ void HitLanes::add_light(LaneLights& out) {
     const float cos_theta = glm::dot(N_[k], L_[k]);
     lit_[k] = lit_[k] & !(cos_theta <= 0.0f) & positive(IL_[k]);
   }
-  // cos^n(alpha), where a highlight counts (scalar: pow); on lanes of matte materials only
-  // (a Cornell box) nothing to compute.
+  // cos^n(alpha), where a highlight counts; on lanes of matte materials only (a Cornell box)
+  // nothing to compute.
   if (any_shiny_) {
-    for (size_t k = 0; k < n; ++k) cos_alpha_[k] = cos_alpha(N_[k], L_[k], -d_[k], blinn);
-    for (size_t k = 0; k < n; ++k)
-      highlight_[k] = shiny_[k] && lit_[k] ? std::pow(cos_alpha_[k], shininess_[k]) : 0.0f;
+    for (size_t k = 0; k < n; ++k) {
+      const float power = cos_power(cos_alpha(N_[k], L_[k], -d_[k], blinn), shininess_[k]);
+      highlight_[k] = (shiny_[k] & lit_[k]) != 0 ? power : 0.0f;
+    }
   } else {
     std::fill(highlight_, highlight_ + n, 0.0f);
   }

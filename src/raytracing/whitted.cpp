@@ -162,7 +162,7 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see local_color()).
   if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
   if (options_.terms.specular && positive(o.ks))
-    term += IL * o.ks * std::pow(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
+    term += IL * o.ks * cos_power(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
   if (!positive(term)) return;
   LightSample& sample = out.emplace_back();  // written in place: see surface_at() in whitted.h
   sample.term = term;
