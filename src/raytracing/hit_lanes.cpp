@@ -38,13 +38,14 @@ Float4 load_row(const std::byte* row) {
 // twelve shuffles and four 32-byte stores, where copying float by float takes 32 loads and 32
 // stores, and leaves eight-lane loops reading values stored one at a time (which stalls them:
 // the processor cannot forward several small stores to one wide load).
-[[gnu::always_inline]] inline void transpose_rows(const std::byte* const* rows, size_t offset, void* x, void* y,
-                                                  void* z, void* w) {
+[[gnu::always_inline]] inline void transpose_rows(const std::byte* const* rows, size_t offset, void* x,
+                                                  void* y, void* z, void* w) {
   // Row i in the low half, row i + 4 in the high half: each half is then a 4x4 transpose.
   // (Plain statements, no helper taking or returning a Float8: the baseline clone has no such
   // registers to pass it in.)
-#define LUZ_ROW_PAIR(i) \
-  __builtin_shufflevector(load_row(rows[i] + offset), load_row(rows[(i) + 4] + offset), 0, 1, 2, 3, 4, 5, 6, 7)
+#define LUZ_ROW_PAIR(i)                                                                          \
+  __builtin_shufflevector(load_row(rows[i] + offset), load_row(rows[(i) + 4] + offset), 0, 1, 2, 3, 4, 5, \
+                          6, 7)
   const Float8 r0 = LUZ_ROW_PAIR(0), r1 = LUZ_ROW_PAIR(1), r2 = LUZ_ROW_PAIR(2), r3 = LUZ_ROW_PAIR(3);
 #undef LUZ_ROW_PAIR
   const Float8 xy01 = __builtin_shufflevector(r0, r1, 0, 8, 1, 9, 4, 12, 5, 13);
@@ -62,8 +63,8 @@ Float4 load_row(const std::byte* row) {
 }
 
 // The rows load() transposes out of a Hit and a Ray.
-static_assert(offsetof(Hit, triangle) == offsetof(Hit, mesh) + 4 && offsetof(Hit, u) == offsetof(Hit, mesh) + 8 &&
-              offsetof(Hit, v) == offsetof(Hit, mesh) + 12 && sizeof(int) == sizeof(float));
+static_assert(offsetof(Hit, triangle) == offsetof(Hit, mesh) + 4 && offsetof(Hit, u) == offsetof(Hit, mesh) + 8);
+static_assert(offsetof(Hit, v) == offsetof(Hit, mesh) + 12 && sizeof(int) == sizeof(float));
 static_assert(offsetof(Ray, tfar) == offsetof(Ray, direction) + 12);
 
 }  // namespace

@@ -5,8 +5,8 @@
 // each step is a loop over the lanes whose body is the recursion's own arithmetic (hit_math.h).
 // Such loops compile to vector instructions, several hits an instruction. The hits' triangles,
 // scattered in memory, come into the arrays by transposes in registers, 8 hits at a time; what
-// cannot be vectorised (fetching each hit's material, pow, collecting the light samples and rays
-// that survive) runs in short scalar loops of its own between them.
+// cannot be vectorised (fetching each hit's material, collecting the light samples and rays that
+// survive) runs in short scalar loops of its own between them.
 //
 // Per lane, the operations are those of Whitted::surface_at, light_samples, local_color and
 // secondary_rays, in the same order, so every ray is the recursion's to the bit and every light's
@@ -155,7 +155,7 @@ private:
   bool any_reflective_ = false, any_transmissive_ = false;
   // One light at a time: the direction to it, its distance and IL, whether it can light the lane.
   Vec3Lanes L_, IL_;
-  float distance_[kLanes], spot_[kLanes], cos_alpha_[kLanes], highlight_[kLanes];
+  float distance_[kLanes], spot_[kLanes], highlight_[kLanes];
   int32_t lit_[kLanes];
   // Its terms and shadow rays (toward L_, up to tfar_) before those that count are collected.
   Vec3Lanes term_, origin_;

@@ -80,9 +80,8 @@ inline float cos_power(float x, float n) {
   // |f| <= 1/2, e^g by its series to g^7 (the next term is under 6e-9).
   const float i = (y + 12582912.0f) - 12582912.0f;
   const float g = (y - i) * 0.693147181f;
-  const float series =
-      1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f + g * (1.0f / 120.0f +
-                                                                              g * (1.0f / 720.0f + g / 5040.0f))))));
+  const float series = 1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f +
+                                 g * (1.0f / 120.0f + g * (1.0f / 720.0f + g / 5040.0f))))));
   const float power = series * std::bit_cast<float>((int32_t(i) + 127) << 23);
   return n == 0.0f ? 1.0f : (x > 0.0f ? power : 0.0f);
 }

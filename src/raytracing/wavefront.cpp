@@ -186,7 +186,9 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
     // by its throughput, into its sample's radiance: the first generation's sets it.
     for (size_t j = 0; j < lights.size; ++j)
       if (!blocked || !blocked[j]) scratch.local[lights.hit[j]] += lights.term[j];
-    const auto local = [&](size_t q) { return scratch.hits[q].found() ? scratch.local[q] : scene_.background; };
+    const auto local = [&](size_t q) {
+      return scratch.hits[q].found() ? scratch.local[q] : scene_.background;
+    };
     if (depth == 1) {
       for (size_t q = 0; q < n; ++q) radiance[q] = weight * local(q);
     } else {

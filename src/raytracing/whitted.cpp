@@ -254,7 +254,8 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
 namespace {
 constexpr size_t kRayBlock = 64;
 
-void write_rays(const glm::vec3& origin, const float* dx, const float* dy, const float* dz, size_t n, Ray* out) {
+void write_rays(const glm::vec3& origin, const float* dx, const float* dy, const float* dz, size_t n,
+                Ray* out) {
   for (size_t k = 0; k < n; ++k) {
     out[k].origin = origin;
     out[k].direction = glm::vec3(dx[k], dy[k], dz[k]);
