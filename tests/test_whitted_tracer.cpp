@@ -328,6 +328,30 @@ TEST(WhittedTracer, AreaLightSamplesEachStandForTheirShareOfTheArea) {
   }
 }
 
+// ---- An emitter seen from the front shows Le; from the back, nothing ------------------------------
+// A lamp (Le = (2, 3, 4)) that fills the view, with no ambient term and nothing else to light it
+// (an emitter cannot light itself): every pixel is Le from its front and black from its back,
+// with both renderers (the wavefront's lanes then all hit one mesh).
+TEST(WhittedTracer, AnEmitterShowsLeOnItsFrontOnly) {
+  Scene scene;
+  Material lamp = test::matte(Rgb(0.5f));
+  lamp.emission = Rgb(2.0f, 3.0f, 4.0f);
+  scene.materials.push_back(lamp);
+  scene.meshes.push_back(test::quad("lamp", {-50, -50, 0}, {100, 0, 0}, {0, 100, 0}, 0));  // front: +z
+  scene.find_area_lights();
+  WhittedRenderer tracer(scene);
+  for (const RendererKind renderer : {RendererKind::wavefront, RendererKind::recursive}) {
+    WhittedOptions options;
+    options.renderer = renderer;
+    for (const float side : {1.0f, -1.0f}) {
+      const Image image = tracer.render(test::look_at({0, 0, 5 * side}, {0, 0, 0}), 24, 16, options);
+      const Rgb expected = side > 0 ? lamp.emission : Rgb(0.0f);
+      for (const Rgb& pixel : image.pixels)
+        ASSERT_EQ(pixel, expected) << (side > 0 ? "front" : "back") << ", renderer " << int(renderer);
+    }
+  }
+}
+
 // ---- The picture is deterministic; the ray tree agrees with the render -------------------------
 TEST(WhittedTracer, SameSettingsGiveTheSameImageBitForBit) {
   const Scene scene = shipped("cornell_box");

@@ -170,6 +170,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   // once.
   bool one_mesh = n > 0;
   for (size_t k = 0; k < n; ++k) one_mesh &= mesh_[k] == mesh_[0];
+  one_mesh_ = one_mesh;
   if (one_mesh && meshes_[size_t(mesh_[0])].kd_uniform) {
     const LaneMesh& m = meshes_[size_t(mesh_[0])];
     const auto fill = [n](Vec3Lanes& lanes, const glm::vec3& v) {
@@ -404,9 +405,16 @@ LUZ_VECTOR_CLONES
 void HitLanes::unlit_colors(std::span<Rgb> local) const {
   const DiffuseSource* diffuse = shading_->diffuse_source();
   if (!diffuse) {
+    // An emitter shows Le on its front. (Where all lanes hit one mesh, its terms once.)
+    if (one_mesh_) {
+      const LaneMesh& m = meshes_[size_t(mesh_[0])];
+      const Rgb ambient = m.ambient, emission = m.emission;
+      for (size_t k = 0; k < count_; ++k)
+        local[ray_[k]] = ambient + select(front_[k] != 0, emission, Rgb(0.0f));
+      return;
+    }
     for (size_t k = 0; k < count_; ++k) {
       const LaneMesh& m = meshes_[size_t(mesh_[k])];
-      // An emitter shows Le on its front.
       local[ray_[k]] = m.ambient + select(front_[k] != 0, m.emission, Rgb(0.0f));
     }
     return;

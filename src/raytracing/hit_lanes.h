@@ -153,6 +153,7 @@ private:
   Vec3Lanes kr_, kt_;
   float ior_[kLanes];
   bool any_reflective_ = false, any_transmissive_ = false;
+  bool one_mesh_ = false;  // every lane hit the same mesh
   // One light at a time: the direction to it, its distance and IL, whether it can light the lane.
   Vec3Lanes L_, IL_;
   float distance_[kLanes], spot_[kLanes], highlight_[kLanes];
