@@ -230,6 +230,9 @@ private:
   glm::vec3 direction(glm::vec2 image_point) const {
     return glm::normalize(corner_ + image_point.x * right_ + image_point.y * down_);
   }
+  // rays[i] through image point point_of(i), for every i (whitted.cpp).
+  template <typename PointOf>
+  void through_points(std::span<Ray> rays, PointOf point_of) const;
 
   glm::vec3 origin_;
   glm::vec3 corner_;  // the direction through image point (0, 0), unnormalised
