@@ -1,7 +1,7 @@
 // Which of a frame's ImGui draw lists the panel cache may hold (app/panel_cache.h), on frames
-// built by Dear ImGui without a window: the panel's own lists are the cache's; the status line,
-// a window over the panel's edge and whatever the panel must show under it are drawn as they
-// are. (The cached pixels against the panel drawn every frame: test_viewer_layout.)
+// built by Dear ImGui without a window: the panel's own lists and the status line's are the
+// cache's; a window over the picture, a window over the panel's edge and whatever the panel must
+// show under it are drawn as they are. (The cached pixels against the panel drawn every frame: test_viewer_layout.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,7 +45,8 @@ protected:
       ImGui::End();
       more();
       ImGui::Render();
-      const app::FramebufferRect panel{0, int(kStatusH), int(kPanelW), int(kWindowH - kStatusH)};
+      const app::FramebufferRect panel[] = {{0, int(kStatusH), int(kPanelW), int(kWindowH - kStatusH)},
+                                            {0, 0, int(kWindowW), int(kStatusH)}};
       app::split_lists(*ImGui::GetDrawData(), panel, ImGui::GetIO().Fonts->TexID, cached, live);
     }
     return {names(cached), names(live)};
@@ -68,12 +69,15 @@ void window(const char* name, ImVec2 at, ImVec2 size) {
 
 using Names = std::vector<std::string>;
 
-// The panel, inside its rectangle, is the cache's; the status line below it is not, nor a
-// window over the picture.
+// The panel and the status line, each inside its rectangle, are the cache's; a window over the
+// picture is not, nor one across the picture and the status line.
 TEST_F(PanelCacheLists, ThePanelIsCachedAndTheRestDrawnAsItIs) {
-  const auto [cached, live] = split([] { window("hint", {600.0f, 100.0f}, {200.0f, 80.0f}); });
-  EXPECT_EQ(cached, Names{"Luz"});
-  EXPECT_EQ(live, (Names{"status", "hint"}));
+  const auto [cached, live] = split([] {
+    window("hint", {600.0f, 100.0f}, {200.0f, 80.0f});
+    window("warning", {600.0f, kWindowH - kStatusH - 20.0f}, {200.0f, 40.0f});
+  });
+  EXPECT_EQ(cached, (Names{"Luz", "status"}));
+  EXPECT_EQ(live, (Names{"hint", "warning"}));
 }
 
 // A window across the panel's edge is drawn after the cached panel, so it stays on top; a
@@ -85,8 +89,8 @@ TEST_F(PanelCacheLists, WhatMustStayOnTopOfAWindowOverThePanelIsNotCached) {
     window("tooltip", {380.0f, 300.0f}, {200.0f, 60.0f});
     window("popup after", {20.0f, 400.0f}, {150.0f, 60.0f});
   });
-  EXPECT_EQ(cached, (Names{"Luz", "popup before"}));
-  EXPECT_EQ(live, (Names{"status", "tooltip", "popup after"}));
+  EXPECT_EQ(cached, (Names{"Luz", "status", "popup before"}));
+  EXPECT_EQ(live, (Names{"tooltip", "popup after"}));
 }
 
 // An image (the hemicube's item buffer) changes without its vertices changing: a window showing
@@ -98,8 +102,8 @@ TEST_F(PanelCacheLists, AnImageOverThePanelIsDrawnAsItIs) {
     ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(7)), ImVec2(64.0f, 64.0f));
     ImGui::End();
   });
-  EXPECT_EQ(cached, Names{"Luz"});
-  EXPECT_EQ(live, (Names{"status", "item buffer"}));
+  EXPECT_EQ(cached, (Names{"Luz", "status"}));
+  EXPECT_EQ(live, Names{"item buffer"});
 }
 
 }  // namespace

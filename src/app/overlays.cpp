@@ -104,7 +104,7 @@ void draw_status_line(const ViewerState& state, const std::string& model, float 
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
   const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
   ImGui::Text(tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s"), model.c_str(),
-              state.frame_ms, scene.triangle_count(), int(lights), scene.area_lights.size(), camera.c_str(),
+              state.status_ms, scene.triangle_count(), int(lights), scene.area_lights.size(), camera.c_str(),
               state.note.c_str());
   ImGui::End();
 }

@@ -44,14 +44,22 @@ FramebufferRect pixels_of(const ImDrawData& d, const ImDrawList& list, const ImD
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
-bool inside(const FramebufferRect& r, const FramebufferRect& panel) {
-  return r.x >= panel.x && r.y >= panel.y && r.x + r.width <= panel.x + panel.width &&
-         r.y + r.height <= panel.y + panel.height;
+bool inside(const FramebufferRect& r, const FramebufferRect& area) {
+  return r.x >= area.x && r.y >= area.y && r.x + r.width <= area.x + area.width &&
+         r.y + r.height <= area.y + area.height;
 }
 
-bool meets(const FramebufferRect& r, const FramebufferRect& panel) {
-  return r.x < panel.x + panel.width && panel.x < r.x + r.width && r.y < panel.y + panel.height &&
-         panel.y < r.y + r.height;
+bool meets(const FramebufferRect& r, const FramebufferRect& area) {
+  return r.x < area.x + area.width && area.x < r.x + r.width && r.y < area.y + area.height &&
+         area.y < r.y + r.height;
+}
+
+bool inside_one(const FramebufferRect& r, std::span<const FramebufferRect> panel) {
+  return std::any_of(panel.begin(), panel.end(), [&](const FramebufferRect& area) { return inside(r, area); });
+}
+
+bool meets_one(const FramebufferRect& r, std::span<const FramebufferRect> panel) {
+  return std::any_of(panel.begin(), panel.end(), [&](const FramebufferRect& area) { return meets(r, area); });
 }
 
 template <class T>
@@ -77,8 +85,8 @@ void render(const ImDrawData& frame, std::vector<ImDrawList*>& lists) {
 
 }  // namespace
 
-bool split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std::vector<ImDrawList*>& cached,
-                 std::vector<ImDrawList*>& live) {
+bool split_lists(const ImDrawData& frame, std::span<const FramebufferRect> panel, void* font,
+                 std::vector<ImDrawList*>& cached, std::vector<ImDrawList*>& live) {
   cached.clear();
   live.clear();
   bool covered = false;  // a live list reaches into the panel
@@ -88,8 +96,8 @@ bool split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std
     for (const ImDrawCmd& cmd : list->CmdBuffer) {
       const FramebufferRect r = pixels_of(frame, *list, cmd);
       if (r.empty()) continue;
-      within = within && inside(r, panel) && cmd.UserCallback == nullptr && cmd.TextureId == font;
-      touches = touches || meets(r, panel);
+      within = within && inside_one(r, panel) && cmd.UserCallback == nullptr && cmd.TextureId == font;
+      touches = touches || meets_one(r, panel);
     }
     if (within && !covered) {
       cached.push_back(list);
@@ -103,9 +111,9 @@ bool split_lists(const ImDrawData& frame, FramebufferRect panel, void* font, std
 
 // Whether the cache already holds this frame's panel: the same lists, byte for byte, at the
 // same size.
-bool PanelCache::unchanged(const ImDrawData& frame, FramebufferRect panel) {
+bool PanelCache::unchanged(const ImDrawData& frame) {
   next_.clear();
-  append(next_, &panel, 1);
+  append(next_, panel_.data(), panel_.size());
   append(next_, &frame.DisplaySize, 1);
   append(next_, &frame.FramebufferScale, 1);
   for (const ImDrawList* list : cached_) {
@@ -140,16 +148,18 @@ void PanelCache::redraw(const ImDrawData& frame, glm::vec4 background) {
   drawn_.swap(next_);
 }
 
-bool PanelCache::prepare(ImDrawData& frame, FramebufferRect panel, bool window_kept) {
+bool PanelCache::prepare(ImDrawData& frame, std::span<const FramebufferRect> panel, bool window_kept) {
   frame_ = &frame;
-  panel_ = panel;
+  panel_.clear();
+  for (const FramebufferRect& area : panel)
+    if (!area.empty()) panel_.push_back(area);
   panel_is_ = Panel::drawn;
   reached_into_ = false;
-  const bool empty = panel.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0;
+  const bool empty = panel_.empty() || framebuffer_width(frame) <= 0 || framebuffer_height(frame) <= 0;
   if (!enabled || empty) return false;
-  reached_into_ = split_lists(frame, panel, ImGui::GetIO().Fonts->TexID, cached_, live_);
+  reached_into_ = split_lists(frame, panel_, ImGui::GetIO().Fonts->TexID, cached_, live_);
   if (cached_.empty()) return false;
-  if (unchanged(frame, panel)) {
+  if (unchanged(frame)) {
     panel_is_ = window_kept && in_window_ && !reached_into_ ? Panel::kept : Panel::cached;
   } else if (next_ == previous_) {  // the same as last frame's: the panel has settled
     panel_is_ = Panel::redrawn;
@@ -181,8 +191,10 @@ void PanelCache::draw(glm::vec4 background) {
   if (panel_is_ != Panel::kept) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    const int x1 = panel_.x + panel_.width, y1 = panel_.y + panel_.height;
-    glBlitFramebuffer(panel_.x, panel_.y, x1, y1, panel_.x, panel_.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    for (const FramebufferRect& area : panel_) {
+      const int x1 = area.x + area.width, y1 = area.y + area.height;
+      glBlitFramebuffer(area.x, area.y, x1, y1, area.x, area.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
   render(frame, live_);

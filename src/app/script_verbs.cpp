@@ -253,6 +253,13 @@ bool run_present_parts(Viewer& v, const ScriptCommand& c, std::string&) {
   return true;
 }
 
+// `status-time off`: the status line's frame time held where it is, so that two pictures of the
+// window taken frames apart can be compared whole.
+bool run_status_time(Viewer& v, const ScriptCommand& c, std::string&) {
+  v.state().status_ms_live = c.args[0] == "on";
+  return true;
+}
+
 bool run_dump_windows(Viewer& v, const ScriptCommand& c, std::string& error) {
   return write_json(c.args[0], v.windows_json(), "the windows' rectangles", error);
 }
@@ -319,6 +326,7 @@ constexpr ScriptVerb verbs[] = {
     {"display-copy", "display-copy on|off", check_on_off, run_display_copy, true},
     {"display-direct", "display-direct on|off", check_on_off, run_display_direct, true},
     {"present-parts", "present-parts on|off", check_on_off, run_present_parts, true},
+    {"status-time", "status-time on|off", check_on_off, run_status_time, true},
     {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, run_solvers, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, run_wait_solver_rows, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, run_dump_solvers, true},

@@ -756,20 +756,19 @@ void Viewer::take_screenshots(const Layout& l) {
   screenshots_.clear();
 }
 
-// Clears to the background the window's pixels that nothing paints whole this frame: the status
-// line's strip (its window may be translucent), the panel's rectangle unless the cache copies or
-// keeps it there, and the view unless its panes tile it. On the software rasteriser a clear
-// costs per pixel (a whole 1280x720 window's about 2 ms), so what is painted anyway is not
-// cleared first. Nothing reads the window's depth but the local models, which clear their pane's.
-void Viewer::clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_painted, glm::vec4 background) {
+// Clears to the background the window's pixels that nothing paints whole this frame: the panel's
+// rectangles (the status line's window may be translucent) unless the cache copies or keeps them
+// there, and the view unless its panes tile it. On the software rasteriser a clear costs per
+// pixel (a whole 1280x720 window's about 2 ms), so what is painted anyway is not cleared first.
+// Nothing reads the window's depth but the local models, which clear their pane's.
+void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
+                             glm::vec4 background) {
   long tiled = 0;
   for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
   const bool view_tiled = !l.view.empty() && tiled == long(l.view.pixels.x) * l.view.pixels.y;
-  const FramebufferRect unpainted[] = {
-      {0, 0, l.framebuffer.x, l.view.gl_origin.y},  // the status line's strip
-      panel_painted ? FramebufferRect{} : panel,
-      view_tiled ? FramebufferRect{}
-                 : FramebufferRect{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
+  std::vector<FramebufferRect> unpainted;
+  if (!panel_painted) unpainted.assign(panel.begin(), panel.end());
+  if (!view_tiled) unpainted.push_back({l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y});
   glClearColor(background.r, background.g, background.b, background.a);
   glEnable(GL_SCISSOR_TEST);
   for (const FramebufferRect& r : unpainted)
@@ -838,9 +837,11 @@ void Viewer::frame() {
   const double panel_building =
       1000.0 * std::chrono::duration<double>(FrameClock::now() - panel_building_start).count();
 
-  // Where the window keeps its back buffer, a panel that has not changed stays there: the frame
-  // draws and shows only the rest of the window (the view and the status line).
-  const FramebufferRect panel{0, l.view.gl_origin.y, l.view.gl_origin.x, l.view.pixels.y};
+  // The panel cache's rectangles: the panel left of the view, the status line under both. Where
+  // the window keeps its back buffer, a panel that has not changed stays there: the frame draws
+  // and shows only the rest of the window, the view.
+  const FramebufferRect panel[] = {{0, l.view.gl_origin.y, l.view.gl_origin.x, l.view.pixels.y},
+                                   {0, 0, l.framebuffer.x, l.view.gl_origin.y}};
   const bool window_kept = window_.keeps_back_buffer() && state_.present_parts;
   const bool panel_kept = window_takes_blits_ && panel_cache_.prepare(*ImGui::GetDrawData(), panel, window_kept);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -855,8 +856,7 @@ void Viewer::frame() {
   take_screenshots(l);
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
-  const FramebufferRect rest[] = {{panel.width, 0, l.framebuffer.x - panel.width, l.framebuffer.y},
-                                  {0, 0, panel.width, panel.y}};
+  const FramebufferRect rest[] = {{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
   if (panel_kept && !show_whole_window_) window_.present(rest);
   else window_.present();
   show_whole_window_ = false;
@@ -899,6 +899,7 @@ bool Viewer::needs_frames() const {
 
 int Viewer::loop() {
   auto last = std::chrono::steady_clock::now();
+  auto status_refreshed = last;
   while (!window_.should_close() && !quit_) {
     if (needs_frames()) {
       window_.poll();
@@ -927,6 +928,10 @@ int Viewer::loop() {
     const double seconds = std::chrono::duration<double>(now - last).count();
     last = now;
     state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
+    if (state_.status_ms_live && now - status_refreshed >= std::chrono::milliseconds(500)) {
+      state_.status_ms = state_.frame_ms;
+      status_refreshed = now;
+    }
     if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
       if (script_) {
         fmt::print(stderr, "luz: {}\n", error);

@@ -86,8 +86,12 @@ struct ViewerState {
   bool back_to_scene_camera = false;
   float ui_scale_request = 0.0f;   // the Scene section's UI scale slider (0: none)
 
-  // For the status line.
+  // The frame's time, smoothed over about ten frames; the status line shows it as it was at its
+  // last refresh, twice a second (readable, and a status line that stays the same from frame to
+  // frame stays in the panel cache instead of being drawn and shown again on every frame).
   double frame_ms = 0.0;
+  double status_ms = 0.0;
+  bool status_ms_live = true;  // false: the status line's figure held (pictures to compare)
   // Where a frame's time goes, in ms, timed on one frame in eight and smoothed: the models'
   // pictures (into their float targets), their exposure to the window, the panel's ImGui pass
   // (building and drawing), and presenting the frame (glfwSwapBuffers).

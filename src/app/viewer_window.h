@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -133,7 +134,8 @@ private:
   double finish_phase(FrameClock::time_point& start) const;
   void smooth(double& ms, double sample) const;
   void draw_picture(const Layout& l);
-  void clear_unpainted(const Layout& l, FramebufferRect panel, bool panel_painted, glm::vec4 background);
+  void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
+                       glm::vec4 background);
   void draw_windows(const Layout& l);
   void take_screenshots(const Layout& l);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
