@@ -22,7 +22,7 @@ namespace {
 constexpr float kPi = std::numbers::pi_v<float>;
 
 // GCC's and Clang's vector types: their operations compile to SSE instructions in the baseline
-// clone of a LUZ_VECTOR_CLONES function and to AVX ones in its AVX2 clone.
+// clone of a LUZ_VECTOR_CLONES function and to AVX ones in its AVX2 and AVX-512 clones.
 using Float4 = float __attribute__((vector_size(16)));
 using Float8 = float __attribute__((vector_size(32)));
 

@@ -3,8 +3,8 @@
 // recursion (whitted.cpp) calls them for one hit at a time; the wavefront's lanes (hit_lanes.h)
 // call them in loops over many hits, which the compiler turns into vector instructions. Written
 // once, so the two renderers cannot drift apart: the same operations in the same order give the
-// same bits (no fused multiply-adds: the tracer is built for baseline x86-64, and the lanes'
-// AVX2 clones, vector_clones.h, leave FMA out).
+// same bits (no fused multiply-adds: the tracer is built with -ffp-contract=off, so neither the
+// baseline nor the lanes' AVX2 and AVX-512 clones, vector_clones.h, fuse a*b+c).
 #include <algorithm>
 #include <bit>
 #include <cmath>

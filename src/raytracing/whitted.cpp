@@ -250,7 +250,8 @@ PrimaryRays::PrimaryRays(const Camera& camera, int width, int height) {
 }
 
 // Directions computed in blocks of three arrays, which the compiler vectorises, then copied into
-// the rays. Inlined into each clone of its callers, so that the loops vectorise for AVX2 there.
+// the rays. Inlined into each clone of its callers, so that the loops vectorise for each one's
+// vector width there.
 template <typename PointOf>
 [[gnu::always_inline]] inline void PrimaryRays::through_points(std::span<Ray> rays, PointOf point_of) const {
   constexpr size_t block = 64;
