@@ -1,6 +1,7 @@
 #include "app/overlays.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <fmt/format.h>
@@ -94,18 +95,27 @@ void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGu
   draw->PopClipRect();
 }
 
-void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height) {
+std::string status_line_text(const ViewerState& state, const std::string& model) {
   const Scene& scene = *state.scene;
+  const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
+  const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
+  const char* format = tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s");
+  const auto print = [&](char* to, size_t size) {
+    return std::snprintf(to, size, format, model.c_str(), state.status_ms, scene.triangle_count(), int(lights),
+                         scene.area_lights.size(), camera.c_str(), state.note.c_str());
+  };
+  std::string text(size_t(std::max(print(nullptr, 0), 0)), '\0');
+  print(text.data(), text.size() + 1);
+  return text;
+}
+
+void draw_status_line(const std::string& text, float top, float width, float height) {
   const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   begin_frame_window("status", glm::vec2(0.0f, top), glm::vec2(width, height), fixed, Edge::top);
-  const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
-  const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
-  ImGui::Text(tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s"), model.c_str(),
-              state.status_ms, scene.triangle_count(), int(lights), scene.area_lights.size(), camera.c_str(),
-              state.note.c_str());
+  ImGui::TextUnformatted(text.c_str());
   ImGui::End();
 }
 

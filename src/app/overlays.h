@@ -57,9 +57,11 @@ void end_hint(WindowCorners& corners);
 enum class Edge { top, right };
 void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGuiWindowFlags flags, Edge edge);
 
-// Model, its state, frame time, triangles, lights, camera and the latest message, in one line
-// at `top` (the status line; wrapped to a second line when it does not fit).
-void draw_status_line(const ViewerState& state, const std::string& model, float top, float width, float height);
+// The status line's text: model, its state, frame time (`state.status_ms`), triangles, lights,
+// camera and the latest message.
+std::string status_line_text(const ViewerState& state, const std::string& model);
+// `text` in one line at `top` (the status line; wrapped to a second line when it does not fit).
+void draw_status_line(const std::string& text, float top, float width, float height);
 
 // The shortcut table (shortcuts.h), the models' keys and the mouse gestures, in a window of at
 // most `max` window units centred on `centre`, scrolled when the list is longer; its close

@@ -253,8 +253,8 @@ bool run_present_parts(Viewer& v, const ScriptCommand& c, std::string&) {
   return true;
 }
 
-// `status-time off`: the status line's frame time held where it is, so that two pictures of the
-// window taken frames apart can be compared whole.
+// `status-time off`: the status line's frame time and figures held where they are, so that two
+// pictures of the window taken frames apart can be compared whole.
 bool run_status_time(Viewer& v, const ScriptCommand& c, std::string&) {
   v.state().status_ms_live = c.args[0] == "on";
   return true;

@@ -704,7 +704,7 @@ void Viewer::draw_windows(const Layout& l) {
     if (panes_.size() > 1 && i == active_pane_) pane = "[" + pane + "]";
     model += (i == 0 ? "" : " | ") + pane;
   }
-  draw_status_line(state_, model, l.window.y - l.status, l.window.x, l.status);
+  draw_status_line(status_shown(status_line_text(state_, model)), l.window.y - l.status, l.window.x, l.status);
   if (panes_.size() > 1)
     for (size_t i = 0; i < panes_.size(); ++i) draw_pane_label(pane_label(panes_[i]->name, l.panes[i]), i == active_pane_);
 
@@ -729,6 +729,23 @@ void Viewer::draw_windows(const Layout& l) {
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
+}
+
+// The status line's text: `text` at once when it differs from the shown one in more than its
+// digits (a key's message, another model or camera, a trace that ends), else at the next
+// refresh, twice a second (the frame time, a trace's progress, radiosity's shots): readable, and
+// a status line that stays the same from frame to frame stays in the panel cache instead of being
+// drawn and shown again on every frame. `status-time off` holds the figures.
+const std::string& Viewer::status_shown(const std::string& text) {
+  const auto without_digits = [](std::string s) {
+    std::erase_if(s, [](char c) { return c >= '0' && c <= '9'; });
+    return s;
+  };
+  const FrameClock::time_point now = FrameClock::now();
+  const bool due = state_.status_ms_live && now - status_refreshed_ >= std::chrono::milliseconds(500);
+  if (due) status_refreshed_ = now;
+  if (due || without_digits(text) != without_digits(status_shown_)) status_shown_ = text;
+  return status_shown_;
 }
 
 std::vector<const gl::Framebuffer*> Viewer::pane_pictures() const {
@@ -899,7 +916,6 @@ bool Viewer::needs_frames() const {
 
 int Viewer::loop() {
   auto last = std::chrono::steady_clock::now();
-  auto status_refreshed = last;
   while (!window_.should_close() && !quit_) {
     if (needs_frames()) {
       window_.poll();
@@ -928,10 +944,7 @@ int Viewer::loop() {
     const double seconds = std::chrono::duration<double>(now - last).count();
     last = now;
     state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
-    if (state_.status_ms_live && now - status_refreshed >= std::chrono::milliseconds(500)) {
-      state_.status_ms = state_.frame_ms;
-      status_refreshed = now;
-    }
+    if (state_.status_ms_live) state_.status_ms = state_.frame_ms;
     if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
       if (script_) {
         fmt::print(stderr, "luz: {}\n", error);

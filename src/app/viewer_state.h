@@ -86,12 +86,11 @@ struct ViewerState {
   bool back_to_scene_camera = false;
   float ui_scale_request = 0.0f;   // the Scene section's UI scale slider (0: none)
 
-  // The frame's time, smoothed over about ten frames; the status line shows it as it was at its
-  // last refresh, twice a second (readable, and a status line that stays the same from frame to
-  // frame stays in the panel cache instead of being drawn and shown again on every frame).
+  // The frame's time, smoothed over about ten frames, and the figure the status line takes
+  // (Viewer::status_shown refreshes its figures twice a second).
   double frame_ms = 0.0;
   double status_ms = 0.0;
-  bool status_ms_live = true;  // false: the status line's figure held (pictures to compare)
+  bool status_ms_live = true;  // false: the status line's figures held (pictures to compare)
   // Where a frame's time goes, in ms, timed on one frame in eight and smoothed: the models'
   // pictures (into their float targets), their exposure to the window, the panel's ImGui pass
   // (building and drawing), and presenting the frame (glfwSwapBuffers).

@@ -137,6 +137,7 @@ private:
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
+  const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
@@ -199,6 +200,9 @@ private:
 
   std::optional<std::chrono::steady_clock::time_point> idle_until_;
   double idle_cpu_start_ = 0.0, idle_wall_ = 1.0, idle_cpu_fraction_ = -1.0;
+
+  std::string status_shown_;                // the status line's text as it stands
+  FrameClock::time_point status_refreshed_;  // when its figures were last brought up to date
 };
 
 }  // namespace luz::app
