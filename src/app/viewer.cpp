@@ -47,6 +47,9 @@ constexpr int default_height = 760;
 constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
+
+// A viewport's pixels in the window's framebuffer.
+FramebufferRect framebuffer_rect(const Viewport& v) { return {v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y}; }
 constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
 constexpr glm::vec4 background{0.06f, 0.06f, 0.07f, 1.0f};  // the window where nothing is drawn
 const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -783,16 +786,15 @@ void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> p
   long tiled = 0;
   for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
   const bool view_tiled = !l.view.empty() && tiled == long(l.view.pixels.x) * l.view.pixels.y;
-  std::vector<FramebufferRect> unpainted;
-  if (!panel_painted) unpainted.assign(panel.begin(), panel.end());
-  if (!view_tiled) unpainted.push_back({l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y});
   glClearColor(background.r, background.g, background.b, background.a);
   glEnable(GL_SCISSOR_TEST);
-  for (const FramebufferRect& r : unpainted)
-    if (!r.empty()) {
-      glScissor(r.x, r.y, r.width, r.height);
-      glClear(GL_COLOR_BUFFER_BIT);
-    }
+  const auto clear = [](const FramebufferRect& r) {
+    if (r.empty()) return;
+    glScissor(r.x, r.y, r.width, r.height);
+    glClear(GL_COLOR_BUFFER_BIT);
+  };
+  if (!panel_painted) std::for_each(panel.begin(), panel.end(), clear);
+  if (!view_tiled) clear(framebuffer_rect(l.view));
   glDisable(GL_SCISSOR_TEST);
 }
 
@@ -873,7 +875,7 @@ void Viewer::frame() {
   take_screenshots(l);
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
-  const FramebufferRect rest[] = {{l.view.gl_origin.x, l.view.gl_origin.y, l.view.pixels.x, l.view.pixels.y}};
+  const FramebufferRect rest[] = {framebuffer_rect(l.view)};
   if (panel_kept && !show_whole_window_) window_.present(rest);
   else window_.present();
   show_whole_window_ = false;

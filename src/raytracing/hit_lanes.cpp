@@ -405,16 +405,10 @@ LUZ_VECTOR_CLONES
 void HitLanes::unlit_colors(std::span<Rgb> local) const {
   const DiffuseSource* diffuse = shading_->diffuse_source();
   if (!diffuse) {
-    // An emitter shows Le on its front. (Where all lanes hit one mesh, its terms once.)
-    if (one_mesh_) {
-      const LaneMesh& m = meshes_[size_t(mesh_[0])];
-      const Rgb ambient = m.ambient, emission = m.emission;
-      for (size_t k = 0; k < count_; ++k)
-        local[ray_[k]] = ambient + select(front_[k] != 0, emission, Rgb(0.0f));
-      return;
-    }
+    // An emitter shows Le on its front. Where all lanes hit one mesh, its terms are read once
+    // (the loop-invariant choice of lane lets the compiler take them out of the loop).
     for (size_t k = 0; k < count_; ++k) {
-      const LaneMesh& m = meshes_[size_t(mesh_[k])];
+      const LaneMesh& m = meshes_[size_t(mesh_[one_mesh_ ? 0 : k])];
       local[ray_[k]] = m.ambient + select(front_[k] != 0, m.emission, Rgb(0.0f));
     }
     return;
