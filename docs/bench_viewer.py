@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The viewer's frame against `luz bench local`'s, on the same machine in the same minutes. A
-measurement, never part of the build or the tests; needs xvfb-run (setup.sh installs it):
+measurement, never part of the build or the tests; needs Xvfb (setup.sh installs it):
 
     python3 docs/bench_viewer.py [--luz build/luz] [--rounds 5] [--scene cornell_box]
                                  [--window 1280x720] [--models flat phong]
@@ -11,6 +11,10 @@ the state seven times, 30 frames apart (`frame_ms` is smoothed over about ten fr
 round's figure is the median dump, printed with its phases). Rounds interleave the two, so a
 machine whose speed drifts slows both alike; the ratio is taken round by round and its median
 reported, with the load average (uptime) seen around the rounds.
+
+Each viewer runs on an Xvfb of its own, whose CPU time (/proc) from the first dump to the last,
+divided by the frames between them, is the X server's share of every frame: presenting copies the
+picture into the server, which makes the copy on the same processors as the drawing.
 
 The bench draws 1280x720 pictures. In a 1280x720 window the panel takes the left part of it and
 the picture is smaller; `--window 1720x752` gives the picture itself 1280x720 at the default UI
@@ -23,9 +27,11 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DUMPS = 7
+DUMP_FRAMES = 30  # frames between dumps
 
 
 def load_average():
@@ -49,25 +55,66 @@ def bench_medians(luz, scene, models):
     return medians
 
 
+def cpu_seconds(pid):
+    """User and system CPU time of process pid so far."""
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()  # after the command's name, which may hold spaces
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def start_xvfb():
+    """An Xvfb on a free display: the process and its DISPLAY."""
+    read_end, write_end = os.pipe()
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1920x1080x24",
+                             "-nolisten", "tcp"], pass_fds=(write_end,),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    with os.fdopen(read_end) as f:
+        number = f.readline().strip()
+    if not number:
+        xvfb.kill()
+        raise RuntimeError("Xvfb did not start")
+    return xvfb, f":{number}"
+
+
 def viewer_frame(luz, scene_path, model, window, folder):
-    """The median of the dumps' frame_ms, and that dump's phases."""
+    """The median of the dumps' frame_ms, that dump's phases, and the X server's ms of CPU a frame."""
     lines = [f"model {model}", "wait 60"]
     for i in range(DUMPS):
-        lines += [f"dump-state state{i}.json", "wait 30"]
+        lines += [f"dump-state state{i}.json", f"wait {DUMP_FRAMES}"]
     lines.append("quit")
     script = os.path.join(folder, "frames.txt")
     with open(script, "w") as f:
         f.write("\n".join(lines) + "\n")
-    subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", luz, "--script", script,
-                    "--size", window, scene_path],
-                   check=True, cwd=folder, capture_output=True, text=True, timeout=600)
+    dumps = [os.path.join(folder, f"state{i}.json") for i in range(DUMPS)]
+    for dump in dumps:
+        if os.path.exists(dump):
+            os.remove(dump)
+    xvfb, display = start_xvfb()
+    try:
+        viewer = subprocess.Popen([luz, "--script", script, "--size", window, scene_path], cwd=folder,
+                                  env=dict(os.environ, DISPLAY=display),
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        # The server's CPU time when the first dump and the last appear (polled every 2 ms).
+        server = []
+        for dump in (dumps[0], dumps[-1]):
+            while not os.path.exists(dump) and viewer.poll() is None:
+                time.sleep(0.002)
+            server.append(cpu_seconds(xvfb.pid))
+        _, errors = viewer.communicate(timeout=600)
+        if viewer.returncode != 0:
+            raise RuntimeError(f"the viewer failed ({viewer.returncode}):\n{errors}")
+    finally:
+        xvfb.terminate()
+        xvfb.wait()
+    server_ms = 1000.0 * (server[1] - server[0]) / (DUMP_FRAMES * (DUMPS - 1))
     states = []
-    for i in range(DUMPS):
-        with open(os.path.join(folder, f"state{i}.json")) as f:
+    for dump in dumps:
+        with open(dump) as f:
             states.append(json.load(f))
     states.sort(key=lambda s: s["frame_ms"])
     median = states[DUMPS // 2]
-    return median["frame_ms"], median["frame_phases_ms"]
+    return median["frame_ms"], median["frame_phases_ms"], server_ms
 
 
 def main():
@@ -86,17 +133,17 @@ def main():
     ratios = {m: [] for m in args.models}
     loads = [load_average()]
     print(f"{args.scene}, window {args.window}, bench 1280x720; ms per frame (viewer phases: models,"
-          " panel, present)")
+          " panel, present; the X server's CPU)")
     with tempfile.TemporaryDirectory() as folder:
         for r in range(args.rounds):
             bench = bench_medians(args.luz, args.scene, args.models)
             for model in args.models:
-                frame, phases = viewer_frame(args.luz, scene_path, model, args.window, folder)
+                frame, phases, server = viewer_frame(args.luz, scene_path, model, args.window, folder)
                 ratio = frame / bench[model]
                 ratios[model].append(ratio)
                 print(f"round {r + 1} {model:7} bench {bench[model]:6.2f}  viewer {frame:6.2f}"
                       f" ({phases.get('models', 0):.2f}, {phases.get('panel', 0):.2f},"
-                      f" {phases.get('present', 0):.2f})  viewer / bench {ratio:.2f}", flush=True)
+                      f" {phases.get('present', 0):.2f}; {server:.2f})  viewer / bench {ratio:.2f}", flush=True)
             loads.append(load_average())
     print(f"load average {min(loads):.1f}-{max(loads):.1f}")
     for model in args.models:
