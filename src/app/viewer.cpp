@@ -30,7 +30,6 @@
 #include "app/i18n.h"
 #include "app/overlays.h"
 #include "app/panel.h"
-#include "app/i18n.h"
 #include "app/panes.h"
 #include "app/render_grid.h"
 #include "app/ui_glyphs.h"
