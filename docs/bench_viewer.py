@@ -23,6 +23,7 @@ scale (`dump-windows` tells the picture's rectangle).
 import argparse
 import json
 import os
+import shutil
 import statistics
 import subprocess
 import sys
@@ -126,6 +127,8 @@ def main():
     parser.add_argument("--models", nargs="+", default=["flat", "phong"],
                         choices=["flat", "gouraud", "phong"])
     args = parser.parse_args()
+    if not shutil.which("Xvfb"):
+        sys.exit("bench_viewer.py: needs Xvfb (the xvfb package, which setup.sh installs)")
     scene_path = os.path.join(ROOT, "scenes", f"{args.scene}.gltf")
     if not os.path.exists(scene_path):
         sys.exit(f"bench_viewer.py: no shipped scene {args.scene} ({scene_path})")
