@@ -93,18 +93,20 @@ def viewer_frame(luz, scene_path, model, window, folder):
             os.remove(dump)
     xvfb, display = start_xvfb()
     try:
-        viewer = subprocess.Popen([luz, "--script", script, "--size", window, scene_path], cwd=folder,
-                                  env=dict(os.environ, DISPLAY=display),
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        # The server's CPU time when the first dump and the last appear (polled every 2 ms).
-        server = []
-        for dump in (dumps[0], dumps[-1]):
-            while not os.path.exists(dump) and viewer.poll() is None:
-                time.sleep(0.002)
-            server.append(cpu_seconds(xvfb.pid))
-        _, errors = viewer.communicate(timeout=600)
-        if viewer.returncode != 0:
-            raise RuntimeError(f"the viewer failed ({viewer.returncode}):\n{errors}")
+        # Its messages to a file, not a pipe: nothing reads a pipe while the dumps are awaited.
+        with tempfile.TemporaryFile(mode="w+") as errors:
+            viewer = subprocess.Popen([luz, "--script", script, "--size", window, scene_path], cwd=folder,
+                                      env=dict(os.environ, DISPLAY=display),
+                                      stdout=subprocess.DEVNULL, stderr=errors)
+            # The server's CPU time when the first dump and the last appear (polled every 2 ms).
+            server = []
+            for dump in (dumps[0], dumps[-1]):
+                while not os.path.exists(dump) and viewer.poll() is None:
+                    time.sleep(0.002)
+                server.append(cpu_seconds(xvfb.pid))
+            if viewer.wait(timeout=600) != 0:
+                errors.seek(0)
+                raise RuntimeError(f"the viewer failed ({viewer.returncode}):\n{errors.read()}")
     finally:
         xvfb.terminate()
         xvfb.wait()
