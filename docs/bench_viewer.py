@@ -64,10 +64,12 @@ def cpu_seconds(pid):
 
 
 def start_xvfb():
-    """An Xvfb on a free display: the process and its DISPLAY."""
+    """An Xvfb on a free display: the process and its DISPLAY. -noreset: a server resets when its
+    last client leaves, and `luz` checks for a display (a connection it closes) before it opens its
+    window, whose connection could fall into the reset."""
     read_end, write_end = os.pipe()
     xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1920x1080x24",
-                             "-nolisten", "tcp"], pass_fds=(write_end,),
+                             "-nolisten", "tcp", "-noreset"], pass_fds=(write_end,),
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     os.close(write_end)
     with os.fdopen(read_end) as f:
