@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -46,12 +47,24 @@ constexpr int default_height = 760;
 constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
-
-// A viewport's pixels in the window's framebuffer.
-FramebufferRect framebuffer_rect(const Viewport& v) { return {v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y}; }
 constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
 constexpr glm::vec4 background{0.06f, 0.06f, 0.07f, 1.0f};  // the window where nothing is drawn
 const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// Whether a and b are the same text once their digits are left out.
+bool same_but_digits(std::string_view a, std::string_view b) {
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  size_t i = 0, j = 0;
+  for (;; ++i, ++j) {
+    while (i < a.size() && digit(a[i])) ++i;
+    while (j < b.size() && digit(b[j])) ++j;
+    if (i == a.size() || j == b.size()) return i == a.size() && j == b.size();
+    if (a[i] != b[j]) return false;
+  }
+}
+
+// A viewport's pixels in the window's framebuffer.
+FramebufferRect framebuffer_rect(const Viewport& v) { return {v.gl_origin.x, v.gl_origin.y, v.pixels.x, v.pixels.y}; }
 
 Viewer& viewer_of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
 
@@ -739,14 +752,10 @@ void Viewer::draw_windows(const Layout& l) {
 // a status line that stays the same from frame to frame stays in the panel cache instead of being
 // drawn and shown again on every frame. `status-time off` holds the figures.
 const std::string& Viewer::status_shown(const std::string& text) {
-  const auto without_digits = [](std::string s) {
-    std::erase_if(s, [](char c) { return c >= '0' && c <= '9'; });
-    return s;
-  };
   const FrameClock::time_point now = FrameClock::now();
   const bool due = state_.status_ms_live && now - status_refreshed_ >= std::chrono::milliseconds(500);
   if (due) status_refreshed_ = now;
-  if (due || without_digits(text) != without_digits(status_shown_)) status_shown_ = text;
+  if (due || !same_but_digits(text, status_shown_)) status_shown_ = text;
   return status_shown_;
 }
 
