@@ -217,6 +217,57 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
 }
 
 // ---- [lights] -----------------------------------------------------------------------------------
+// Whitted::light_samples, light by light: the punctual lights, then each emissive triangle's
+// samples, so that each lane meets its lights in the recursion's order.
+void HitLanes::light_samples(LaneLights& out) {
+  // With a single light the samples come lane by lane already: straight into `out`.
+  const bool one = light_passes_ == 1;
+  const size_t first = out.size;
+  LaneLights& made = one ? out : by_light_;
+  by_light_.size = 0;
+  for (size_t i = 0; i < scene_->lights.size(); ++i) {
+    if (!scene_->lights[i].enabled) continue;
+    toward_light(scene_->lights[i]);
+    add_light(made);
+  }
+  area_light_samples(made);
+  if (!one) {
+    sort_by_lane(by_light_, out);
+    return;
+  }
+  for (size_t j = first; j < out.size; ++j) out.hit[j] = ray_[out.hit[j]];  // lane -> queue
+}
+
+void HitLanes::area_light_samples(LaneLights& out) {
+  if (scene_->area_lights.empty()) return;
+  const int samples = std::max(1, options_->light_samples);
+  if (samples > 1)
+    for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
+  for (const AreaLight& area : scene_->area_lights) {
+    area_points_.resize(size_t(samples));
+    if (samples == 1) {
+      // The centroid, for every lane: exactly the rasteriser's light.
+      for (size_t k = 0; k < count_; ++k) area_points_[0].set(k, area.centroid);
+    } else {
+      // N-rooks points on the emitter, each lane's from its own generator (scalar: the
+      // permutation). A lane on the emitter itself draws none, as in the recursion.
+      const Mesh& mesh = scene_->meshes[size_t(area.mesh)];
+      const size_t t = size_t(area.triangle);
+      const glm::vec3 &a = mesh.positions[mesh.indices[3 * t]], &b = mesh.positions[mesh.indices[3 * t + 1]],
+                      &c = mesh.positions[mesh.indices[3 * t + 2]];
+      for (size_t k = 0; k < count_; ++k) {
+        if (mesh_[k] == area.mesh && triangle_[k] == area.triangle) continue;
+        triangle_samples(a, b, c, samples, random_[k], triangle_points_);
+        for (int j = 0; j < samples; ++j) area_points_[size_t(j)].set(k, triangle_points_[size_t(j)]);
+      }
+    }
+    for (int j = 0; j < samples; ++j) {
+      toward_area_sample(area, samples, area_points_[size_t(j)]);
+      add_light(out);
+    }
+  }
+}
+
 // A punctual light: IL = I * f_att(d) * spot / pi, or E_perp / pi for a directional one.
 LUZ_VECTOR_CLONES
 void HitLanes::toward_light(const Light& light) {
@@ -325,58 +376,6 @@ void HitLanes::add_light(LaneLights& out) {
     m += lit_[k] ? 1 : 0;
   }
   out.size = m;
-}
-
-// Whitted::light_samples, light by light: the punctual lights, then each emissive triangle's
-// samples, so that each lane meets its lights in the recursion's order. (After the lane functions
-// it calls: Clang refuses a use of a target_clones function before its definition.)
-void HitLanes::light_samples(LaneLights& out) {
-  // With a single light the samples come lane by lane already: straight into `out`.
-  const bool one = light_passes_ == 1;
-  const size_t first = out.size;
-  LaneLights& made = one ? out : by_light_;
-  by_light_.size = 0;
-  for (size_t i = 0; i < scene_->lights.size(); ++i) {
-    if (!scene_->lights[i].enabled) continue;
-    toward_light(scene_->lights[i]);
-    add_light(made);
-  }
-  area_light_samples(made);
-  if (!one) {
-    sort_by_lane(by_light_, out);
-    return;
-  }
-  for (size_t j = first; j < out.size; ++j) out.hit[j] = ray_[out.hit[j]];  // lane -> queue
-}
-
-void HitLanes::area_light_samples(LaneLights& out) {
-  if (scene_->area_lights.empty()) return;
-  const int samples = std::max(1, options_->light_samples);
-  if (samples > 1)
-    for (size_t k = 0; k < count_; ++k) random_[k] = Random(seed_[k]);
-  for (const AreaLight& area : scene_->area_lights) {
-    area_points_.resize(size_t(samples));
-    if (samples == 1) {
-      // The centroid, for every lane: exactly the rasteriser's light.
-      for (size_t k = 0; k < count_; ++k) area_points_[0].set(k, area.centroid);
-    } else {
-      // N-rooks points on the emitter, each lane's from its own generator (scalar: the
-      // permutation). A lane on the emitter itself draws none, as in the recursion.
-      const Mesh& mesh = scene_->meshes[size_t(area.mesh)];
-      const size_t t = size_t(area.triangle);
-      const glm::vec3 &a = mesh.positions[mesh.indices[3 * t]], &b = mesh.positions[mesh.indices[3 * t + 1]],
-                      &c = mesh.positions[mesh.indices[3 * t + 2]];
-      for (size_t k = 0; k < count_; ++k) {
-        if (mesh_[k] == area.mesh && triangle_[k] == area.triangle) continue;
-        triangle_samples(a, b, c, samples, random_[k], triangle_points_);
-        for (int j = 0; j < samples; ++j) area_points_[size_t(j)].set(k, triangle_points_[size_t(j)]);
-      }
-    }
-    for (int j = 0; j < samples; ++j) {
-      toward_area_sample(area, samples, area_points_[size_t(j)]);
-      add_light(out);
-    }
-  }
 }
 
 // The samples lane by lane, each lane's in the order of its lights, as the recursion makes them.
