@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <span>
@@ -20,13 +19,12 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
+#include "app/bench_scenes.h"
 #include "app/bench_table.h"
 #include "app/render_command.h"
-#include "app/resources.h"
 #include "app/i18n.h"
 #include "app/options_tables.h"
 #include "core/error.h"
-#include "io/gltf_loader.h"
 #include "raytracing/renderer.h"
 #include "raytracing/sampling.h"
 
@@ -48,11 +46,6 @@ std::string cpu_model() {
   return tr("unknown CPU");
 }
 
-std::filesystem::path scene_path(const std::string& name) {
-  if (name.find('/') == std::string::npos && name.find('.') == std::string::npos)
-    return scene_dir() / (name + ".gltf");
-  return name;
-}
 
 // Slide 24's ray kinds as the rows under a scene name them, indexed by RayKind.
 constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
@@ -145,6 +138,7 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
 
 int run_bench_whitted(const WhittedBenchSettings& settings) {
   try {
+    const std::vector<BenchScene> scenes = load_bench_scenes(settings.scenes);
     fmt::print("{}\n", trf("luz bench whitted: {}x{}, depth {}, {} spp, best of {}; {} threads on {}",
                             settings.width, settings.height, settings.depth, settings.spp,
                             settings.repeats, tbb::info::default_concurrency(), cpu_model()));
@@ -159,8 +153,7 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
                             {.header = tr("ratio"), .width = 6}});
     fmt::print("{}\n", trf("renderer: {}", find_row(whitted_rows(), "renderer")->choices[size_t(settings.renderer)]));
     fmt::print("{}", table.header());
-    for (const std::string& name : settings.scenes) {
-      const io::LoadedScene loaded = io::load_gltf(scene_path(name));
+    for (const auto& [name, loaded] : scenes) {
       const Scene& scene = loaded.scene;
       const Camera& camera = scene.cameras.front();
       rt::WhittedOptions options;

@@ -10,16 +10,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/bench_scenes.h"
 #include "app/bench_table.h"
 #include "app/render_command.h"
-#include "app/resources.h"
 #include "app/i18n.h"
 #include "core/error.h"
 #include "gl/framebuffer.h"
@@ -27,7 +26,6 @@
 #include "gl/mesh_buffers.h"
 #include "gl/offscreen_context.h"
 #include "gl/shader.h"
-#include "io/gltf_loader.h"
 #include "local/local_renderer.h"
 
 namespace luz::app {
@@ -35,12 +33,6 @@ namespace luz::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::filesystem::path scene_path(const std::string& name) {
-  if (name.find('/') == std::string::npos && name.find('.') == std::string::npos)
-    return scene_dir() / (name + ".gltf");
-  return name;
-}
 
 std::optional<Shading> shading_named(const std::string& name) {
   for (Shading s : {Shading::flat, Shading::gouraud, Shading::phong})
@@ -161,6 +153,7 @@ int run_bench_local(const LocalBenchSettings& settings) {
       if (!options_for(Shading::phong, effect))
         throw Error(ErrorKind::usage, trf("--effects: unknown effect \"{}\"", effect));
 
+    const std::vector<BenchScene> scenes = load_bench_scenes(settings.scenes);
     gl::OffscreenContext context;
     fmt::print("{}\n", trf("luz bench local: {}x{}, {} frames a row (best / median ms), orbiting 1 degree "
                             "a frame; {}", settings.width, settings.height, settings.frames,
@@ -179,8 +172,7 @@ int run_bench_local(const LocalBenchSettings& settings) {
     for (const std::string& effect : settings.effects) table.fit(2, effect_label(effect));
     fmt::print("{}", table.header());
     gl::Framebuffer target(settings.width, settings.height);
-    for (const std::string& name : settings.scenes) {
-      const io::LoadedScene loaded = io::load_gltf(scene_path(name));
+    for (const auto& [name, loaded] : scenes) {
       const Scene& scene = loaded.scene;
       const Camera& camera = scene.cameras.front();
       const glm::vec3 centre = scene.bounds().empty() ? glm::vec3(0.0f) : scene.bounds().centre();
