@@ -167,7 +167,8 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   // What the light terms and the secondary rays read of each material: kd (x COLOR_0 x the
   // texture), ks and the exponent, kr, kt and the index of refraction. Where every lane hit the
   // same mesh of uniform kd (most chunks of a first generation), its factors for all lanes at
-  // once.
+  // once, and only those a later step reads: ks and the exponent for a shiny material, kr, kt and
+  // the index for one that reflects or transmits (a matte wall's chunk fills kd alone).
   bool one_mesh = n > 0;
   for (size_t k = 0; k < n; ++k) one_mesh &= mesh_[k] == mesh_[0];
   one_mesh_ = one_mesh;
@@ -179,12 +180,16 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
       std::fill_n(lanes.z, n, v.z);
     };
     fill(kd_, m.kd);
-    fill(ks_, m.ks);
-    fill(kr_, m.kr);
-    fill(kt_, m.kt);
-    std::fill_n(shininess_, n, m.shininess);
-    std::fill_n(shiny_, n, m.shiny);
-    std::fill_n(ior_, n, m.ior);
+    if (m.shiny) {
+      fill(ks_, m.ks);
+      std::fill_n(shininess_, n, m.shininess);
+      std::fill_n(shiny_, n, m.shiny);
+    }
+    if (m.reflective || m.transmissive) {
+      fill(kr_, m.kr);
+      fill(kt_, m.kt);
+      std::fill_n(ior_, n, m.ior);
+    }
     any_shiny_ = m.shiny != 0;
     any_reflective_ = m.reflective;
     any_transmissive_ = m.transmissive;
@@ -340,8 +345,6 @@ void HitLanes::add_light(LaneLights& out) {
       const float power = cos_power(cos_alpha(N_[k], L_[k], -d_[k], blinn), shininess_[k]);
       highlight_[k] = (shiny_[k] & lit_[k]) != 0 ? power : 0.0f;
     }
-  } else {
-    std::fill(highlight_, highlight_ + n, 0.0f);
   }
 
   // The terms of every lane, then their shadow rays; those that count appended in lane order.
@@ -352,16 +355,24 @@ void HitLanes::add_light(LaneLights& out) {
     out.hit.resize(out.shadow.size());
     out.term.resize(out.shadow.size());
   }
-  for (size_t k = 0; k < n; ++k) {
+  // A lane's term: its diffuse part, then its specular one where some lane is shiny (else load()
+  // left ks and the highlight unset: a matte chunk adds no zeros).
+  const auto terms = [&](size_t k, auto specular) __attribute__((always_inline)) {
     const float cos_theta = glm::dot(N_[k], L_[k]);
     const Rgb IL = IL_[k];
     const Rgb I_D = IL * kd_[k] * cos_theta;  // in the hybrid radiosity has it already
-    const Rgb I_S = IL * ks_[k] * highlight_[k];
     Rgb t(0.0f);
     t += select(diffuse, I_D, Rgb(0.0f));
-    t += select(shiny_[k] != 0, I_S, Rgb(0.0f));
+    if constexpr (specular) {
+      const Rgb I_S = IL * ks_[k] * highlight_[k];
+      t += select(shiny_[k] != 0, I_S, Rgb(0.0f));
+    }
     term_.set(k, t);
-  }
+  };
+  if (any_shiny_)
+    for (size_t k = 0; k < n; ++k) terms(k, std::true_type{});
+  else
+    for (size_t k = 0; k < n; ++k) terms(k, std::false_type{});
   for (size_t k = 0; k < n; ++k) {
     lit_[k] = lit_[k] & positive(term_[k]);
     const Ray shadow = shadow_ray(position_[k], geometric_[k], L_[k], distance_[k]);
@@ -427,6 +438,7 @@ void HitLanes::secondary_rays(SpawnLanes& out) const {
   // gathering the mirrors' lanes first. A chunk where no lane reflects or transmits computes
   // nothing.
   out.any = any_reflective_ || any_transmissive_;
+  out.any_transmits = any_transmissive_;
   if (!out.any) return;
   const size_t n = count_;
   // "si o es reflexivo": R := rayo de reflexión, where it leaves, which way.

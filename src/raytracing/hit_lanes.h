@@ -53,9 +53,10 @@ struct LaneLights {
 };
 
 // The rays spawned ("Trazar(R, d+1) * kr", "Trazar(T, d+1) * kt") by each lane, when its flag is
-// set: entry k is lane k's. Nothing is set when no lane spawns a ray (`any` false).
+// set: entry k is lane k's. Nothing is set when no lane spawns a ray (`any` false), nothing of
+// the transmitted rays when no lane transmits (`any_transmits` false).
 struct SpawnLanes {
-  bool any = false;
+  bool any = false, any_transmits = false;
   Vec3Lanes reflected_origin, reflected_direction, kr;
   Vec3Lanes transmitted_origin, transmitted_direction, kt;
   int32_t reflects[kLanes], transmits[kLanes];

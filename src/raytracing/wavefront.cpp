@@ -2,6 +2,7 @@
 #include "raytracing/wavefront.h"
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 #include "raytracing/sampling.h"
@@ -25,13 +26,18 @@ struct RayQueue {
   size_t size() const { return size_; }
   std::span<const Ray> generation() const { return {rays.data(), size_}; }
   void clear() { size_ = 0; }
-  void push(const Ray& ray, uint32_t sample, const Rgb& throughput, uint64_t seed) {
-    if (size_ == rays.size()) grow(2 * size_ + 256);
+  // Room for n more rays, for put(): a loop that may add a ray for each of n items checks it once.
+  void reserve_more(size_t n) {
+    if (size_ + n > rays.size()) grow(2 * (size_ + n));
+  }
+  // Writes a ray after the last and adds it to the queue where `keep` holds: a loop adding rays
+  // by a flag that varies at random (a mirror's lanes among walls) takes no branch on it.
+  void put(const Ray& ray, uint32_t sample, const Rgb& throughput, uint64_t seed, bool keep) {
     rays[size_] = ray;
     samples[size_] = sample;
     throughputs[size_] = throughput;
     seeds[size_] = seed;
-    ++size_;
+    size_ += keep ? 1 : 0;
   }
   // Room for a first generation of n rays, for the caller to write their rays and seeds.
   void start(size_t n) {
@@ -65,13 +71,26 @@ namespace {
 struct Scratch {
   RayQueue queue, reflected, transmitted;  // this generation; the next one's two kinds
   std::vector<Hit> hits;
-  std::vector<uint32_t> found;  // the queue indices of a chunk's hits, one a lane
+  std::vector<uint32_t> found;  // the queue indices of the generation's hits
   HitLanes lanes;
   LaneLights lights;   // the generation's light samples, hit by hit
   BlockedFlags blocked;
   std::vector<Rgb> local;  // each hit's local colour
   SpawnLanes spawned;
 };
+
+// The queue indices of the first n hits that found a surface, in order, in `found`'s storage.
+// Each index is written and kept where its ray hit: no branch, which on a generation of mirrored
+// rays that hit or miss at random would be mispredicted at every other ray.
+std::span<const uint32_t> found_hits(std::span<const Hit> hits, size_t n, std::vector<uint32_t>& found) {
+  if (found.size() < n) found.resize(n);
+  size_t m = 0;
+  for (size_t q = 0; q < n; ++q) {
+    found[m] = uint32_t(q);
+    m += hits[q].found() ? 1 : 0;
+  }
+  return {found.data(), m};
+}
 
 // The reflected and transmitted rays of the lanes' hits, weighted by their parents' throughput,
 // into the next generation's two queues; with their seeds where shading reads them (`seeded`).
@@ -80,17 +99,25 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool first, const 
                 SpawnLanes& spawned, RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
   if (!spawned.any) return;
-  for (size_t k = 0; k < lanes.size(); ++k) {
+  // Each lane's parent: its sample, throughput and seed.
+  const auto parent = [&](size_t k) {
     const uint32_t q = lanes.ray(k);
-    const uint32_t sample = first ? q : queue.samples[q];
-    const Rgb throughput = first ? weight : queue.throughputs[q];
-    const uint64_t seed = queue.seeds[q];
-    if (spawned.reflects[k])
-      reflected.push(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, sample,
-                     throughput * spawned.kr[k], seeded ? branch_seed(seed, RayKind::reflected) : 0);
-    if (spawned.transmits[k])
-      transmitted.push(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]}, sample,
-                       throughput * spawned.kt[k], seeded ? branch_seed(seed, RayKind::transmitted) : 0);
+    return std::tuple(first ? q : queue.samples[q], first ? weight : queue.throughputs[q], queue.seeds[q]);
+  };
+  reflected.reserve_more(lanes.size());
+  for (size_t k = 0; k < lanes.size(); ++k) {
+    const auto [sample, throughput, seed] = parent(k);
+    reflected.put(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, sample,
+                  throughput * spawned.kr[k], seeded ? branch_seed(seed, RayKind::reflected) : 0,
+                  spawned.reflects[k] != 0);
+  }
+  if (!spawned.any_transmits) return;
+  transmitted.reserve_more(lanes.size());
+  for (size_t k = 0; k < lanes.size(); ++k) {
+    const auto [sample, throughput, seed] = parent(k);
+    transmitted.put(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]}, sample,
+                    throughput * spawned.kt[k], seeded ? branch_seed(seed, RayKind::transmitted) : 0,
+                    spawned.transmits[k] != 0);
   }
 }
 
@@ -151,7 +178,8 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
 
     // 2. "calcular la normal", every hit's light samples and the local colour without them, and
     // its reflected and transmitted rays, weighted once more, into the next generation: kLanes
-    // rays of the queue at a time, in the queue's order.
+    // hits at a time, in the queue's order (the rays that hit nothing left out first, so that
+    // every batch but the last fills its lanes).
     scratch.reflected.clear();
     scratch.transmitted.clear();
     scratch.local.resize(n);
@@ -159,11 +187,10 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
     lights.size = 0;
     const bool spawn = depth < max_depth_of(options_);
     const bool seeded = shading_.draws_random_numbers();
-    for (size_t start = 0; start < n; start += kLanes) {
-      scratch.found.clear();
-      for (size_t q = start; q < std::min(n, start + kLanes); ++q)
-        if (scratch.hits[q].found()) scratch.found.push_back(uint32_t(q));
-      lanes.load(scratch.found, rays, scratch.hits, queue.seeds);
+    const std::span<const uint32_t> found = found_hits(scratch.hits, n, scratch.found);
+    for (size_t start = 0; start < found.size(); start += kLanes) {
+      lanes.load(found.subspan(start, std::min(kLanes, found.size() - start)), rays, scratch.hits,
+                 queue.seeds);
       lanes.light_samples(lights);
       lanes.unlit_colors(scratch.local);
       if (spawn)
