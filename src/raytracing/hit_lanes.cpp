@@ -4,6 +4,7 @@
 #include "raytracing/hit_lanes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -21,6 +22,13 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
+// k at k: each lane's own index.
+constexpr std::array<uint32_t, kLanes> kLaneIndices = [] {
+  std::array<uint32_t, kLanes> indices{};
+  for (size_t k = 0; k < kLanes; ++k) indices[k] = uint32_t(k);
+  return indices;
+}();
+
 // GCC's and Clang's vector types: their operations compile to SSE instructions in the baseline
 // clone of a LUZ_VECTOR_CLONES function and to AVX ones in its AVX2 and AVX-512 clones.
 using Float4 = float __attribute__((vector_size(16)));
@@ -33,7 +41,7 @@ Float4 load_row(const std::byte* row) {
 }
 
 // Eight rows of four floats, lying anywhere in memory, into four arrays of eight lanes:
-// x[k] = row k's first float, y[k] its second, z[k] its third, w[k] its fourth (where w is
+// x[k] = row k's first float, y[k] its second, z[k] its third, w[k] its fourth (z and w where
 // given); row k starts at rows[k] + offset bytes. A transpose in registers: eight 16-byte loads,
 // twelve shuffles and four 32-byte stores, where copying float by float takes 32 loads and 32
 // stores, and leaves eight-lane loops reading values stored one at a time (which stalls them:
@@ -58,7 +66,7 @@ Float4 load_row(const std::byte* row) {
   const Float8 ws = __builtin_shufflevector(zw01, zw23, 2, 3, 10, 11, 6, 7, 14, 15);
   std::memcpy(x, &xs, sizeof xs);
   std::memcpy(y, &ys, sizeof ys);
-  std::memcpy(z, &zs, sizeof zs);
+  if (z) std::memcpy(z, &zs, sizeof zs);
   if (w) std::memcpy(w, &ws, sizeof ws);
 }
 
@@ -71,14 +79,14 @@ static_assert(offsetof(Ray, tfar) == offsetof(Ray, direction) + 12);
 
 std::vector<float> triangle_corners(const Mesh& mesh) {
   std::vector<float> corners;
-  corners.reserve(mesh.indices.size() * 6 + 1);
+  corners.reserve(mesh.indices.size() * 6 + 2);
   for (size_t t = 0; 3 * t + 2 < mesh.indices.size(); ++t)
     for (const std::vector<glm::vec3>* attribute : {&mesh.positions, &mesh.normals})
       for (size_t c = 0; c < 3; ++c) {
         const glm::vec3& v = (*attribute)[mesh.indices[3 * t + c]];
         corners.insert(corners.end(), {v.x, v.y, v.z});
       }
-  corners.push_back(0.0f);
+  corners.insert(corners.end(), {0.0f, 0.0f});
   return corners;
 }
 
@@ -146,14 +154,17 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
   }
   // Each hit's mesh, triangle and barycentrics, its ray's direction, and its triangle's corners
   // and vertex normals, 8 lanes at a time.
-  Vec3Lanes* const triangle[6] = {&p0_, &p1_, &p2_, &n0_, &n1_, &n2_};
   for (size_t k = 0; k < n; k += 8) {
     transpose_rows(hit_rows + k, 0, mesh_ + k, triangle_ + k, u_ + k, v_ + k);
     transpose_rows(direction_rows + k, 0, d_.x + k, d_.y + k, d_.z + k, nullptr);
-    for (size_t a = 0; a < 6; ++a) {
-      Vec3Lanes& to = *triangle[a];
-      transpose_rows(triangle_rows + k, 12 * a, to.x + k, to.y + k, to.z + k, nullptr);
-    }
+    // The triangle's 18 floats in five rows of four: p0 p1.x, p1.yz p2.xy, p2.z n0, n1 n2.x,
+    // n2.yz (and two floats past it, dropped).
+    const std::byte* const* rows = triangle_rows + k;
+    transpose_rows(rows, 0, p0_.x + k, p0_.y + k, p0_.z + k, p1_.x + k);
+    transpose_rows(rows, 16, p1_.y + k, p1_.z + k, p2_.x + k, p2_.y + k);
+    transpose_rows(rows, 32, p2_.z + k, n0_.x + k, n0_.y + k, n0_.z + k);
+    transpose_rows(rows, 48, n1_.x + k, n1_.y + k, n1_.z + k, n2_.x + k);
+    transpose_rows(rows, 64, n2_.y + k, n2_.z + k, nullptr, nullptr);
   }
   // "calcular la normal", every lane at once.
   for (size_t k = 0; k < n; ++k) {
@@ -225,25 +236,22 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
 // Whitted::light_samples, light by light: the punctual lights, then each emissive triangle's
 // samples, so that each lane meets its lights in the recursion's order.
 void HitLanes::light_samples(LaneLights& out) {
-  // With a single light the samples come lane by lane already: straight into `out`.
+  // With a single light the samples come lane by lane already: straight into `out`, named by
+  // their rays in the queue. Else by their lanes, for the sort.
   const bool one = light_passes_ == 1;
-  const size_t first = out.size;
   LaneLights& made = one ? out : by_light_;
+  const uint32_t* hit_ids = one ? ray_ : kLaneIndices.data();
   by_light_.size = 0;
   for (size_t i = 0; i < scene_->lights.size(); ++i) {
     if (!scene_->lights[i].enabled) continue;
     toward_light(scene_->lights[i]);
-    add_light(made);
+    add_light(made, hit_ids);
   }
-  area_light_samples(made);
-  if (!one) {
-    sort_by_lane(by_light_, out);
-    return;
-  }
-  for (size_t j = first; j < out.size; ++j) out.hit[j] = ray_[out.hit[j]];  // lane -> queue
+  area_light_samples(made, hit_ids);
+  if (!one) sort_by_lane(by_light_, out);
 }
 
-void HitLanes::area_light_samples(LaneLights& out) {
+void HitLanes::area_light_samples(LaneLights& out, const uint32_t* hit_ids) {
   if (scene_->area_lights.empty()) return;
   const int samples = std::max(1, options_->light_samples);
   if (samples > 1)
@@ -268,7 +276,7 @@ void HitLanes::area_light_samples(LaneLights& out) {
     }
     for (int j = 0; j < samples; ++j) {
       toward_area_sample(area, samples, area_points_[size_t(j)]);
-      add_light(out);
+      add_light(out, hit_ids);
     }
   }
 }
@@ -329,7 +337,7 @@ void HitLanes::toward_area_sample(const AreaLight& area, int samples, const Vec3
 }
 
 LUZ_VECTOR_CLONES
-void HitLanes::add_light(LaneLights& out) {
+void HitLanes::add_light(LaneLights& out, const uint32_t* hit_ids) {
   const size_t n = count_;
   const bool diffuse = options_->terms.diffuse && !shading_->diffuse_source();
   const bool blinn = options_->terms.blinn;
@@ -382,7 +390,7 @@ void HitLanes::add_light(LaneLights& out) {
   size_t m = first;
   for (size_t k = 0; k < n; ++k) {
     out.shadow[m] = Ray{origin_[k], L_[k], tfar_[k]};
-    out.hit[m] = uint32_t(k);
+    out.hit[m] = hit_ids[k];
     out.term[m] = term_[k];
     m += lit_[k] ? 1 : 0;
   }

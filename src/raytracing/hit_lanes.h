@@ -63,9 +63,10 @@ struct SpawnLanes {
 };
 
 // Each triangle of a mesh as one piece: its corners and vertex normals side by side, p0 p1 p2
-// n0 n1 n2 (18 floats a triangle), and one float more at the end. The lanes fetch a hit's triangle
-// from one place instead of through its indices from six, in 16-byte rows that they transpose
-// into their arrays (HitLanes::load), the last row of the last triangle reaching into that float.
+// n0 n1 n2 (18 floats a triangle), and two floats more at the end. The lanes fetch a hit's triangle
+// from one place instead of through its indices from six, in five 16-byte rows that they
+// transpose into their arrays (HitLanes::load), the last row of the last triangle reaching into
+// those two floats.
 // Geometry only: built once per scene, not per render.
 std::vector<float> triangle_corners(const Mesh& mesh);
 
@@ -119,14 +120,16 @@ public:
   uint32_t ray(size_t lane) const { return ray_[lane]; }  // the lane's place in the queue
 
 private:
-  // The emissive triangles' samples, after the punctual lights', appended to `out`.
-  void area_light_samples(LaneLights& out);
+  // The emissive triangles' samples, after the punctual lights', appended to `out`, lane k's
+  // named by hit_ids[k] (add_light).
+  void area_light_samples(LaneLights& out, const uint32_t* hit_ids);
   // Fills L, distance, IL and lit for one punctual light or one area-light sample point per lane.
   void toward_light(const Light& light);
   void toward_area_sample(const AreaLight& area, int samples, const Vec3Lanes& points);
   // Whitted::add_light for every lane toward the light in L, distance, IL, lit: the terms, the
-  // shadow rays, and those that count appended to `out`.
-  void add_light(LaneLights& out);
+  // shadow rays, and those that count appended to `out`, each naming its hit by hit_ids[k] (the
+  // lane's ray in the queue, or the lane itself for sort_by_lane).
+  void add_light(LaneLights& out, const uint32_t* hit_ids);
   void sort_by_lane(const LaneLights& in, LaneLights& out) const;
 
   const Scene* scene_ = nullptr;
