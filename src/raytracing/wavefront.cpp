@@ -79,13 +79,13 @@ struct Scratch {
   SpawnLanes spawned;
 };
 
-// The queue indices of the first n hits that found a surface, in order, in `found`'s storage.
-// Each index is written and kept where its ray hit: no branch, which on a generation of mirrored
-// rays that hit or miss at random would be mispredicted at every other ray.
-std::span<const uint32_t> found_hits(std::span<const Hit> hits, size_t n, std::vector<uint32_t>& found) {
-  if (found.size() < n) found.resize(n);
+// The indices of the hits that found a surface, in order, in `found`'s storage. Each index is
+// written and kept where its ray hit: no branch, which on a generation of mirrored rays that hit
+// or miss at random would be mispredicted at every other ray.
+std::span<const uint32_t> found_hits(std::span<const Hit> hits, std::vector<uint32_t>& found) {
+  if (found.size() < hits.size()) found.resize(hits.size());
   size_t m = 0;
-  for (size_t q = 0; q < n; ++q) {
+  for (size_t q = 0; q < hits.size(); ++q) {
     found[m] = uint32_t(q);
     m += hits[q].found() ? 1 : 0;
   }
@@ -187,7 +187,7 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
     lights.size = 0;
     const bool spawn = depth < max_depth_of(options_);
     const bool seeded = shading_.draws_random_numbers();
-    const std::span<const uint32_t> found = found_hits(scratch.hits, n, scratch.found);
+    const std::span<const uint32_t> found = found_hits(hits, scratch.found);
     for (size_t start = 0; start < found.size(); start += kLanes) {
       lanes.load(found.subspan(start, std::min(kLanes, found.size() - start)), rays, scratch.hits,
                  queue.seeds);
