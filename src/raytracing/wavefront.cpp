@@ -2,7 +2,6 @@
 #include "raytracing/wavefront.h"
 
 #include <algorithm>
-#include <tuple>
 #include <utility>
 
 #include "raytracing/sampling.h"
@@ -99,26 +98,25 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool first, const 
                 SpawnLanes& spawned, RayQueue& reflected, RayQueue& transmitted) {
   lanes.secondary_rays(spawned);
   if (!spawned.any) return;
-  // Each lane's parent: its sample, throughput and seed.
-  const auto parent = [&](size_t k) {
-    const uint32_t q = lanes.ray(k);
-    return std::tuple(first ? q : queue.samples[q], first ? weight : queue.throughputs[q], queue.seeds[q]);
+  // The rays of one kind: lane k's leaves origin[k] along direction[k], its parent's throughput x
+  // factor[k], where keep[k] is set.
+  const auto spawn = [&](RayQueue& to, RayKind kind, const Vec3Lanes& origin, const Vec3Lanes& direction,
+                         const Vec3Lanes& factor, const int32_t* keep) {
+    to.reserve_more(lanes.size());
+    for (size_t k = 0; k < lanes.size(); ++k) {
+      const uint32_t q = lanes.ray(k);
+      const uint32_t sample = first ? q : queue.samples[q];
+      const Rgb throughput = first ? weight : queue.throughputs[q];
+      const uint64_t seed = queue.seeds[q];
+      to.put(Ray{origin[k], direction[k]}, sample, throughput * factor[k], seeded ? branch_seed(seed, kind) : 0,
+             keep[k] != 0);
+    }
   };
-  reflected.reserve_more(lanes.size());
-  for (size_t k = 0; k < lanes.size(); ++k) {
-    const auto [sample, throughput, seed] = parent(k);
-    reflected.put(Ray{spawned.reflected_origin[k], spawned.reflected_direction[k]}, sample,
-                  throughput * spawned.kr[k], seeded ? branch_seed(seed, RayKind::reflected) : 0,
-                  spawned.reflects[k] != 0);
-  }
-  if (!spawned.any_transmits) return;
-  transmitted.reserve_more(lanes.size());
-  for (size_t k = 0; k < lanes.size(); ++k) {
-    const auto [sample, throughput, seed] = parent(k);
-    transmitted.put(Ray{spawned.transmitted_origin[k], spawned.transmitted_direction[k]}, sample,
-                    throughput * spawned.kt[k], seeded ? branch_seed(seed, RayKind::transmitted) : 0,
-                    spawned.transmits[k] != 0);
-  }
+  spawn(reflected, RayKind::reflected, spawned.reflected_origin, spawned.reflected_direction, spawned.kr,
+        spawned.reflects);
+  if (spawned.any_transmits)
+    spawn(transmitted, RayKind::transmitted, spawned.transmitted_origin, spawned.transmitted_direction,
+          spawned.kt, spawned.transmits);
 }
 
 Scratch& scratch_of_this_thread() {
