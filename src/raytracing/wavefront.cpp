@@ -25,19 +25,29 @@ struct RayQueue {
   size_t size() const { return size_; }
   std::span<const Ray> generation() const { return {rays.data(), size_}; }
   void clear() { size_ = 0; }
-  // Room for n more rays, for put(): a loop that may add a ray for each of n items checks it once.
-  void reserve_more(size_t n) {
+  // Up to n rays more, written after the last through pointers a loop keeps in registers (through
+  // the vectors, the compiler would reload them and the size after every store), each kept where
+  // its flag holds: no branch on a flag that varies at random (a mirror's lanes among walls).
+  // appended() makes the kept ones the queue's.
+  struct Appender {
+    Ray* rays;
+    uint32_t* samples;
+    Rgb* throughputs;
+    uint64_t* seeds;
+    size_t size;
+    void put(const Ray& ray, uint32_t sample, const Rgb& throughput, uint64_t seed, bool keep) {
+      rays[size] = ray;
+      samples[size] = sample;
+      throughputs[size] = throughput;
+      seeds[size] = seed;
+      size += keep ? 1 : 0;
+    }
+  };
+  Appender appender(size_t n) {
     if (size_ + n > rays.size()) grow(2 * (size_ + n));
+    return {rays.data(), samples.data(), throughputs.data(), seeds.data(), size_};
   }
-  // Writes a ray after the last and adds it to the queue where `keep` holds: a loop adding rays
-  // by a flag that varies at random (a mirror's lanes among walls) takes no branch on it.
-  void put(const Ray& ray, uint32_t sample, const Rgb& throughput, uint64_t seed, bool keep) {
-    rays[size_] = ray;
-    samples[size_] = sample;
-    throughputs[size_] = throughput;
-    seeds[size_] = seed;
-    size_ += keep ? 1 : 0;
-  }
+  void appended(const Appender& appender) { size_ = appender.size; }
   // Room for a first generation of n rays, for the caller to write their rays and seeds.
   void start(size_t n) {
     if (n > rays.size()) grow(n);
@@ -102,15 +112,16 @@ void spawn_rays(const HitLanes& lanes, const RayQueue& queue, bool first, const 
   // factor[k], where keep[k] is set.
   const auto spawn = [&](RayQueue& to, RayKind kind, const Vec3Lanes& origin, const Vec3Lanes& direction,
                          const Vec3Lanes& factor, const int32_t* keep) {
-    to.reserve_more(lanes.size());
+    RayQueue::Appender out = to.appender(lanes.size());
     for (size_t k = 0; k < lanes.size(); ++k) {
       const uint32_t q = lanes.ray(k);
       const uint32_t sample = first ? q : queue.samples[q];
       const Rgb throughput = first ? weight : queue.throughputs[q];
       const uint64_t seed = queue.seeds[q];
-      to.put(Ray{origin[k], direction[k]}, sample, throughput * factor[k], seeded ? branch_seed(seed, kind) : 0,
-             keep[k] != 0);
+      out.put(Ray{origin[k], direction[k]}, sample, throughput * factor[k], seeded ? branch_seed(seed, kind) : 0,
+              keep[k] != 0);
     }
+    to.appended(out);
   };
   spawn(reflected, RayKind::reflected, spawned.reflected_origin, spawned.reflected_direction, spawned.kr,
         spawned.reflects);
