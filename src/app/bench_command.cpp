@@ -46,7 +46,6 @@ std::string cpu_model() {
   return tr("unknown CPU");
 }
 
-
 // Slide 24's ray kinds as the rows under a scene name them, indexed by RayKind.
 constexpr const char* kKindLabels[rt::kRayKinds] = {N_("primary"), N_("shadow"), N_("reflected"),
                                                     N_("transmitted")};

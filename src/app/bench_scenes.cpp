@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "app/i18n.h"
 #include "app/resources.h"
 #include "core/error.h"
@@ -22,9 +25,7 @@ std::string shipped_scenes() {
   for (const auto& entry : std::filesystem::directory_iterator(scene_dir(), error))
     if (entry.path().extension() == ".gltf") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
-  return list;
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 }  // namespace

@@ -198,8 +198,7 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
     const bool seeded = shading_.draws_random_numbers();
     const std::span<const uint32_t> found = found_hits(hits, scratch.found);
     for (size_t start = 0; start < found.size(); start += kLanes) {
-      lanes.load(found.subspan(start, std::min(kLanes, found.size() - start)), rays, scratch.hits,
-                 queue.seeds);
+      lanes.load(found.subspan(start, std::min(kLanes, found.size() - start)), rays, hits, queue.seeds);
       lanes.light_samples(lights);
       lanes.unlit_colors(scratch.local);
       if (spawn)
@@ -223,7 +222,7 @@ void Wavefront::trace(const Rgb& weight, std::span<Rgb> radiance) {
     for (size_t j = 0; j < lights.size; ++j)
       if (!blocked || !blocked[j]) scratch.local[lights.hit[j]] += lights.term[j];
     const auto local = [&](size_t q) {
-      return scratch.hits[q].found() ? scratch.local[q] : scene_.background;
+      return hits[q].found() ? scratch.local[q] : scene_.background;
     };
     if (depth == 1) {
       for (size_t q = 0; q < n; ++q) radiance[q] = weight * local(q);
