@@ -284,6 +284,22 @@ TEST(Triangles, ZeroAreaDroppedWithOneWarningGivingTheCount) {
   EXPECT_NE(warnings[0].find("dropped 2 "), std::string::npos) << warnings[0];
 }
 
+TEST(Triangles, AMeshDrawnTwiceWarnsOnce) {
+  Primitive p;
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  p.indices = {0, 1, 2, 0, 0, 2};  // the second triangle has a repeated corner
+  GltfBuilder b;
+  const int mesh = b.mesh({p}, "slivers");
+  b.node({{"mesh", mesh}});
+  b.node({{"mesh", mesh}, {"translation", {3, 0, 0}}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_EQ(loaded.scene.triangle_count(), 2u);
+  const std::vector<std::string> warnings = other_warnings(loaded);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("dropped 1 "), std::string::npos) << warnings[0];
+}
+
 TEST(Glb, LoadsLikeGltf) {
   GltfBuilder b = one_triangle(diffuse(0.5, 0.25, 0.125));
   b.doc["nodes"][0]["translation"] = {1, 2, 3};

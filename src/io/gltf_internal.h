@@ -1,6 +1,7 @@
 #pragma once
 // What the parts of the glTF loader share (gltf_loader.cpp, gltf_geometry.cpp,
 // gltf_materials.cpp). Private to src/io: only these files include tiny_gltf.h.
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -41,7 +42,11 @@ struct Context {
   [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
     throw Error(kind, one_line(file + ": " + problem));
   }
-  void warn(const std::string& problem) const { warnings.push_back(one_line(file + ": " + problem)); }
+  // A mesh drawn by several nodes is read once per node: its problem is told once.
+  void warn(const std::string& problem) const {
+    std::string line = one_line(file + ": " + problem);
+    if (std::find(warnings.begin(), warnings.end(), line) == warnings.end()) warnings.push_back(std::move(line));
+  }
 
   // Throws index_out_of_range unless 0 <= index < size; `what` names the referring element,
   // e.g. `node 3 "lamp": mesh` -> `node 3 "lamp": mesh 7 is out of range (5 meshes)`.
