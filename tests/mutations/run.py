@@ -13,6 +13,9 @@ programs named, runs them, and reports
                   entry, do not count it either way)
   does not build  the mutant does not compile (a broken entry, not a caught bug)
 
+A viewer test program (luz_viewer_test in tests/CMakeLists.txt) reads what its scripted viewer
+saved: its script runs first, through ctest, and a script that fails catches the mutant too.
+
 Usage: tests/mutations/run.py [--only NAME[,NAME...]] [--full] [--keep-going]
   --only  run these mutations only
   --full  run the whole ctest suite per mutation instead of the named test programs (slow)
@@ -23,6 +26,7 @@ import argparse
 import datetime
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -105,6 +109,14 @@ def copy_tree(scratch):
     return tree
 
 
+def viewer_scripts():
+    """Viewer test programs and the ctest test that runs their scripted viewer before them
+    (tests/CMakeLists.txt's luz_viewer_test): a mutant is caught there too when its viewer fails."""
+    text = (REPO / "tests" / "CMakeLists.txt").read_text()
+    return {m.group(1): f"viewer_{pathlib.Path(m.group(2)).stem}_script"
+            for m in re.finditer(r"^luz_viewer_test\((\w+)\s+(\S+)", text, re.M)}
+
+
 def run(command, cwd, log, timeout=None, env=None):
     with open(log, "a") as out:
         out.write(f"\n$ {' '.join(map(str, command))}\n")
@@ -115,6 +127,16 @@ def run(command, cwd, log, timeout=None, env=None):
         except subprocess.TimeoutExpired:
             out.write(f"\n(timed out after {timeout} s)\n")
             return "timeout"
+
+
+def run_program(program, build, log, timeout, env, scripts, flags=()):
+    """A test program's exit status, after its scripted viewer's where it has one."""
+    if program in scripts:
+        code = run(["ctest", "--test-dir", str(build), "-R", f"^{scripts[program]}$", "--output-on-failure"],
+                   build, log, timeout, env)
+        if code != 0:
+            return code
+    return run([str(build / "tests" / program), *flags], build / "tests", log, timeout, env)
 
 
 def main():
@@ -170,9 +192,10 @@ def main():
     if run(["nice", "ninja", "-j", jobs, *baseline], build, log, env=env) != 0:
         sys.exit(f"the unmutated tree does not build: see {log}")
     limit = {}
+    scripts = viewer_scripts()
     for program in baseline:
         t0 = time.time()
-        if run([str(build / "tests" / program)], build / "tests", log, None, env) != 0:
+        if run_program(program, build, log, None, env, scripts) != 0:
             sys.exit(f"{program} fails on the unmutated tree: see {log}")
         limit[program] = TIME_LIMIT_FACTOR * (time.time() - t0) + TIME_LIMIT_SLACK
         print(f"  {program}: {time.time() - t0:.0f} s, time limit {limit[program]:.0f} s", flush=True)
@@ -204,8 +227,8 @@ def main():
             else:
                 status = "SURVIVED"
                 for program in m.tests:
-                    code = run([str(build / "tests" / program), "--gtest_brief=1", "--gtest_fail_fast"],
-                               build / "tests", log, limit[program], env)
+                    code = run_program(program, build, log, limit[program], env, scripts,
+                                       ("--gtest_brief=1", "--gtest_fail_fast"))
                     if code != 0:
                         status = f"caught by {program}" + (" (timeout)" if code == "timeout" else "")
                         break
