@@ -32,6 +32,28 @@ TEST(ImageCompare, TenPercentBrighterIsTenPercentRelativeError) {
   EXPECT_EQ(heatmap_range(compare_images(Image(8, 4, Rgb(0.515f)), Image(8, 4, Rgb(0.5f)))), 0.05f);
 }
 
+// Too bright here and too dark there do not cancel: the mean is of the errors' sizes.
+TEST(ImageCompare, ErrorsOfBothSignsAddUp) {
+  Image b(8, 4, Rgb(0.5f)), a(8, 4, Rgb(0.55f));
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y) a.at(x, y) = Rgb(0.45f);
+  const ImageComparison c = compare_images(a, b);
+  EXPECT_NEAR(c.mean_relative_error, 0.1, 1e-6);
+  EXPECT_NEAR(c.mean_error.g, 0.0, 1e-6);  // the signed mean does cancel
+  EXPECT_NEAR(c.mean_absolute_error.g, 0.05, 1e-6);
+}
+
+// The relative error is of luminance (Rec. 709: Y = 0.2126 R + 0.7152 G + 0.0722 B): blue light
+// added to a red pixel weighs a third of what red added to a blue one weighs against its Y.
+TEST(ImageCompare, RelativeErrorIsOfRec709Luminance) {
+  EXPECT_FLOAT_EQ(rec709_luminance(Rgb(1.0f, 0.0f, 0.0f)), 0.2126f);
+  EXPECT_FLOAT_EQ(rec709_luminance(Rgb(0.0f, 1.0f, 0.0f)), 0.7152f);
+  EXPECT_FLOAT_EQ(rec709_luminance(Rgb(0.0f, 0.0f, 1.0f)), 0.0722f);
+  const Image red(2, 2, Rgb(1.0f, 0.0f, 0.0f));
+  const Image red_and_blue(2, 2, Rgb(1.0f, 0.0f, 0.5f));
+  EXPECT_NEAR(compare_images(red_and_blue, red).mean_relative_error, 0.0722 * 0.5 / 0.2126, 1e-6);
+}
+
 TEST(ImageCompare, MaskingEmittersLeavesOutTheBrightPixelAndItsNeighbours) {
   Image b(10, 10, Rgb(0.5f)), a(10, 10, Rgb(0.5f));
   b.at(5, 5) = Rgb(40.0f);
