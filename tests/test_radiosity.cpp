@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -677,6 +678,28 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
     EXPECT_EQ(background, 0) << "patch size " << size;
     EXPECT_GT(highlighted, 0) << "patch size " << size;
   }
+}
+
+// Radiosity leaves a patch on its front side only: seen from behind, the Cornell box's back
+// wall is black (not its radiosity, not the background), where from inside it is lit.
+TEST(RadiosityRenderer, APatchSeenFromBehindIsBlack) {
+  io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
+  loaded.scene.background = Rgb(0.0f, 0.0f, 100.0f);  // unmistakable
+  const Scene& scene = loaded.scene;
+  PatchMesh mesh = PatchMesh::build(scene, 0.1f);
+  RadiosityOptions options;
+  options.hemicube_res = 64;
+  options.max_shots = 5;
+  ProgressiveSolver solver(scene, mesh, options);
+  while (solver.step()) {}
+  RadiosityRenderer renderer(scene, mesh);
+  renderer.update(RadianceField::of(solver), options);
+  Camera behind = scene.cameras.front();  // inside looking at the back wall (+z)
+  behind.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.278f, 0.273f, 1.4f));  // looking -z at it
+  const Rgb inside = renderer.render(scene.cameras.front(), 64, 64, options).at(32, 32);
+  const Rgb outside = renderer.render(behind, 64, 64, options).at(32, 32);
+  EXPECT_GT(inside.g, 0.01f) << "the back wall is lit from inside";
+  EXPECT_EQ(outside, Rgb(0.0f)) << "its back, seen from outside";
 }
 
 // Supersampling is a box filter: 16 pictures shifted on a 4 x 4 grid over the pixel average to
