@@ -401,6 +401,14 @@ TEST(WhittedTracer, RayTreeSumsToTheRenderedPixel) {
         if (child.parent == n.id && child.kind != RayKind::shadow) expected += child.weight * child.radiance;
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(n.radiance[c], expected[c], 1e-5f + 1e-5f * expected[c]);
     }
+    // A node's share of the pixel: its radiance times the product of the weights on the path
+    // from its primary ray down to it, its own included.
+    for (const RayTreeNode& n : tree.nodes) {
+      Rgb path(1.0f);
+      for (int k = n.id; k >= 0; k = tree.nodes[size_t(k)].parent) path *= tree.nodes[size_t(k)].weight;
+      const Rgb share = path * n.radiance;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(n.contribution[c], share[c], 1e-6f + 1e-5f * share[c]) << n.id;
+    }
   }
 }
 
