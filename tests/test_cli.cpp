@@ -198,6 +198,26 @@ fs::path cornell_with_two_cameras(const test::ScratchDir& dir) {
   return path;
 }
 
+// Without --size the picture is 600 pixels high at the camera's aspect ratio, 4:3 where the file
+// gives none.
+TEST(Cli, WithoutSizeThePictureHasTheCamerasAspect) {
+  test::ScratchDir dir;
+  std::ifstream in(cornell());
+  nlohmann::json doc = nlohmann::json::parse(in);
+  fs::copy_file(test::scene_dir() / "cornell_box.bin", dir / "cornell_box.bin");
+  for (const auto& [aspect, width] : {std::pair{2.0, 1200}, std::pair{0.0, 800}}) {
+    if (aspect > 0.0) doc["cameras"][0]["perspective"]["aspectRatio"] = aspect;
+    else doc["cameras"][0]["perspective"].erase("aspectRatio");
+    const fs::path scene = dir / "wide.gltf", out = dir / "wide.png";
+    std::ofstream(scene) << doc.dump();
+    const auto result = run_luz({"render", scene.string(), "--model", "flat", "--out", out.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Image image = io::read_image(out);
+    EXPECT_EQ(image.width, width) << "aspect " << aspect;
+    EXPECT_EQ(image.height, 600) << "aspect " << aspect;
+  }
+}
+
 TEST(Cli, CameraByIndex) {
   test::ScratchDir dir;
   const std::string scene = cornell_with_two_cameras(dir).string();
