@@ -155,9 +155,11 @@ TEST(LocalEffects, ExponentialFogIsTheClosedFormBlendTowardTheFogColour) {
 }
 
 // ---- Blocking of the sources by occlusion --------------------------------------------------------
-// Two occluders over the floor: a square floating at z = 0.5 and a wall standing on the floor
-// (where peter panning would show: its shadow must start at its foot). A floor point is in shadow
-// when the segment from it to the light (or toward a directional light) crosses an occluder.
+// Three occluders over the floor: a square floating at z = 0.5, a wall standing on the floor
+// (where peter panning would show: its shadow must start at its foot), and a small low square
+// whose shadow falls near the picture's edge (a map that covered only the middle of the scene
+// would miss it). A floor point is in shadow when the segment from it to the light (or
+// toward a directional light) crosses an occluder.
 struct Quad {
   glm::vec3 centre, u, v;  // half-axes, orthogonal
   bool hit(const glm::vec3& a, const glm::vec3& b) const {
@@ -201,9 +203,11 @@ TEST_P(Shadow, FloorIsAmbientOnlyInTheShadowAndUntouchedOutside) {
       {{0.3f, 0.4f, 0.5f}, {0.2f, 0.0f, 0.0f}, {0.0f, 0.2f, 0.0f}},    // floating, facing up
       {{0.3f, -0.35f, 0.3f}, {0.0f, 0.3f, 0.0f}, {0.0f, 0.0f, 0.3f}},   // a wall on the floor, between
                                                                         // the light and the camera
+      {{0.65f, 0.82f, 0.25f}, {0.1f, 0.0f, 0.0f}, {0.0f, 0.1f, 0.0f}},  // low, near an edge
   };
   scene.meshes.push_back(quad_mesh("floating square", occluders[0], 1));
   scene.meshes.push_back(quad_mesh("standing wall", occluders[1], 1));
+  scene.meshes.push_back(quad_mesh("corner square", occluders[2], 1));
 
   auto blocked = [&](const glm::vec3& P, const glm::vec3& towards) {
     return std::any_of(std::begin(occluders), std::end(occluders), [&](const Quad& q) { return q.hit(P, towards); });
