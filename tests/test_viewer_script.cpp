@@ -167,6 +167,51 @@ TEST(ViewerOrbit, ADragOf160UnitsTurnsTheViewBy40Degrees) {
   EXPECT_NEAR(degrees, 40.0f, 0.05f);
 }
 
+// Dragging right turns the scene right: the eye goes left around the target, which stays put.
+TEST(ViewerOrbit, ADragToTheRightTakesTheEyeLeftAroundTheTarget) {
+  Camera start;
+  start.to_world = glm::mat4(1.0f);
+  OrbitCamera orbit;
+  orbit.start_from(start, glm::vec3(0.0f, 0.0f, -5.0f));
+  orbit.orbit(160.0f, 0.0f);
+  const Camera view = orbit.camera();
+  EXPECT_LT(view.position().x, -1.0f);
+  EXPECT_NEAR(glm::length(view.position() - glm::vec3(0.0f, 0.0f, -5.0f)), 5.0f, 1e-4f);
+  EXPECT_NEAR(glm::length(orbit.target() - glm::vec3(0.0f, 0.0f, -5.0f)), 0.0f, 1e-5f);
+}
+
+// A pan keeps the point under the mouse under it: the target moves on the screen by as many
+// pixels as the mouse did (dx to the right, dy down, as the window counts), at any distance.
+TEST(ViewerOrbit, APanMovesTheTargetWithTheMouse) {
+  Camera start;
+  start.to_world = glm::mat4(1.0f);
+  start.yfov = 0.8f;
+  for (const float distance : {2.0f, 7.0f}) {
+    OrbitCamera orbit;
+    orbit.start_from(start, glm::vec3(0.0f, 0.0f, -distance));
+    const glm::vec3 point = orbit.target();
+    orbit.pan(30.0f, 12.0f, 600.0f);
+    const Camera view = orbit.camera();
+    const glm::vec3 seen = glm::vec3(view.view() * glm::vec4(point, 1.0f));  // camera space
+    const float pixels_per_metre = 600.0f / (2.0f * -seen.z * std::tan(0.5f * start.yfov));
+    EXPECT_NEAR(seen.x * pixels_per_metre, 30.0f, 1e-2f) << distance;
+    EXPECT_NEAR(seen.y * pixels_per_metre, -12.0f, 1e-2f) << distance;
+  }
+}
+
+// The wheel scales the distance to the target by 0.9 a step: forward comes closer, and a step
+// back undoes it.
+TEST(ViewerOrbit, TheWheelZoomsByATenthAStep) {
+  Camera start;
+  start.to_world = glm::mat4(1.0f);
+  OrbitCamera orbit;
+  orbit.start_from(start, glm::vec3(0.0f, 0.0f, -5.0f));
+  orbit.zoom(2.0f);
+  EXPECT_NEAR(orbit.distance(), 5.0f * 0.81f, 1e-4f);
+  orbit.zoom(-2.0f);
+  EXPECT_NEAR(orbit.distance(), 5.0f, 1e-4f);
+}
+
 // The keys that are characters on every layout ('+', '-') are bound by the character; the
 // digits show the registry's models.
 TEST(ViewerShortcuts, PlusAndMinusAreCharactersAndTheDigitsShowTheModels) {
