@@ -1,9 +1,9 @@
 #pragma once
 // What the parts of the glTF loader share (gltf_loader.cpp, gltf_geometry.cpp,
 // gltf_materials.cpp). Private to src/io: only these files include tiny_gltf.h.
-#include <algorithm>
 #include <map>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -38,6 +38,7 @@ struct Context {
   // Encoded bytes of every image tinygltf handed to our image loader, by image index. An image
   // that is absent here could not be read (tinygltf only warned).
   std::map<int, std::vector<unsigned char>> image_bytes;
+  mutable std::unordered_set<std::string> told;  // the warnings given so far
 
   [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
     throw Error(kind, one_line(file + ": " + problem));
@@ -45,7 +46,7 @@ struct Context {
   // A mesh drawn by several nodes is read once per node: its problem is told once.
   void warn(const std::string& problem) const {
     std::string line = one_line(file + ": " + problem);
-    if (std::find(warnings.begin(), warnings.end(), line) == warnings.end()) warnings.push_back(std::move(line));
+    if (told.insert(line).second) warnings.push_back(std::move(line));
   }
 
   // Throws index_out_of_range unless 0 <= index < size; `what` names the referring element,

@@ -557,7 +557,7 @@ LoadedScene load_gltf(const fs::path& path) {
 
   LoadedScene loaded;
   tinygltf::Model model;
-  Context ctx{source.file, model, loaded.warnings, {}};
+  Context ctx{source.file, model, loaded.warnings, {}, {}};
 
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(&keep_image_bytes, &ctx.image_bytes);
