@@ -4,6 +4,7 @@
 // Area-to-area factors integrate the point-to-polygon factor over the receiver with the
 // three-point rule on a grid of small triangles, F_AB = (1/A_A) sum_i A_i F(i -> B); at 64 x 64
 // cells per side the quadrature is far below the 0.5% asked of it (Howell's values to 4 digits).
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -11,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "radiosity/element_form_factor.h"
 #include "radiosity/polygon_form_factor.h"
 #include "radiosity_scenes.h"
 
@@ -72,6 +74,37 @@ TEST(ContourIntegral, PointUnderADiscMatchesHowellB13) {
     const double F = point_to_polygon_form_factor({0, 0, 0}, {0, 1, 0}, disc);
     EXPECT_NEAR(F, howell_b13(1.0, h), 1e-5 * howell_b13(1.0, h)) << h;
   }
+}
+
+// An element next to the shooting patch, sharing an edge with it at a right angle, where the
+// integrand grows as log(distance) toward the edge: the solver's factor (element_form_factor.h,
+// 48 points there) is within 0.3% of the same integral on 1024 sub-triangles (0.05% measured);
+// three points are 0.75% off.
+TEST(ElementFormFactor, AnElementBesideThePatchIsIntegratedOverItsArea) {
+  // The patch: a right triangle in the wall x = 0, facing +x; the element: a thin triangle on the
+  // floor y = 0, facing up, along the edge they share from (0, 0, 0) to (0, 0, 1).
+  ShootingPatch shooter;
+  shooter.corners[0] = {0, 0, 0};
+  shooter.corners[1] = {0, 1, 0};
+  shooter.corners[2] = {0, 0, 1};
+  shooter.normal = {1, 0, 0};
+  shooter.centre = (shooter.corners[0] + shooter.corners[1] + shooter.corners[2]) / 3.0f;
+  shooter.area = 0.5f;
+  for (const glm::vec3& c : shooter.corners)
+    shooter.radius = std::max(shooter.radius, glm::length(c - shooter.centre));
+  PatchMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {0, 0, 1}, {0.2f, 0, 0.5f}};
+  const Patch element = make_element(mesh.vertices, 0, 1, 2);
+  ASSERT_GT(element.normal.y, 0.99f);
+  ASSERT_TRUE(near_the_patch(element, shooter));
+  const std::vector<glm::vec3> patch(std::begin(shooter.corners), std::end(shooter.corners));
+  const double reference = triangle_to_polygon_form_factor(mesh.vertices[0], mesh.vertices[1], mesh.vertices[2],
+                                                           element.normal, patch, 5);
+  const double F = element_to_patch_form_factor(mesh, element, shooter);
+  printf("element beside the patch: %.6f, 1024 sub-triangles %.6f (%+.3f%%)\n", F, reference,
+         100.0 * (F - reference) / reference);
+  EXPECT_GT(reference, 0.0);
+  EXPECT_NEAR(F, reference, 0.003 * reference);
 }
 
 // The solver's single-precision integral (its own atan) agrees with the double one, which the
