@@ -29,7 +29,7 @@ std::vector<uint8_t> display_codes(const std::vector<float>& radiance, float sca
   const gl::RenderTarget output(n, 1, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, "RGBA8"});
   glBindFramebuffer(GL_FRAMEBUFFER, output.fbo);
   glViewport(0, 0, n, 1);
-  // As the viewer draws the pass; the tests before this one in the program leave them on.
+  // As the viewer draws the pass; the tests before this one in the program may leave them on.
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
