@@ -43,8 +43,8 @@ TEST(ImageCompare, ErrorsOfBothSignsAddUp) {
   EXPECT_NEAR(c.mean_absolute_error.g, 0.05, 1e-6);
 }
 
-// The relative error is of luminance (Rec. 709: Y = 0.2126 R + 0.7152 G + 0.0722 B): blue light
-// added to a red pixel weighs a third of what red added to a blue one weighs against its Y.
+// The relative error is of luminance (Rec. 709: Y = 0.2126 R + 0.7152 G + 0.0722 B): blue added
+// to a red pixel counts by blue's weight over red's, 0.5 x 0.0722 / 0.2126 = 17%.
 TEST(ImageCompare, RelativeErrorIsOfRec709Luminance) {
   EXPECT_FLOAT_EQ(rec709_luminance(Rgb(1.0f, 0.0f, 0.0f)), 0.2126f);
   EXPECT_FLOAT_EQ(rec709_luminance(Rgb(0.0f, 1.0f, 0.0f)), 0.7152f);

@@ -207,7 +207,7 @@ TEST_P(Shadow, FloorIsAmbientOnlyInTheShadowAndUntouchedOutside) {
   };
   scene.meshes.push_back(quad_mesh("floating square", occluders[0], 1));
   scene.meshes.push_back(quad_mesh("standing wall", occluders[1], 1));
-  scene.meshes.push_back(quad_mesh("corner square", occluders[2], 1));
+  scene.meshes.push_back(quad_mesh("low square", occluders[2], 1));
 
   auto blocked = [&](const glm::vec3& P, const glm::vec3& towards) {
     return std::any_of(std::begin(occluders), std::end(occluders), [&](const Quad& q) { return q.hit(P, towards); });

@@ -694,8 +694,10 @@ TEST(RadiosityRenderer, APatchSeenFromBehindIsBlack) {
   while (solver.step()) {}
   RadiosityRenderer renderer(scene, mesh);
   renderer.update(RadianceField::of(solver), options);
-  Camera behind = scene.cameras.front();  // inside looking at the back wall (+z)
-  behind.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.278f, 0.273f, 1.4f));  // looking -z at it
+  // The scene's camera looks at the back wall from inside (+z); this one, with its field of view,
+  // from behind the wall (-z).
+  Camera behind = scene.cameras.front();
+  behind.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.278f, 0.273f, 1.4f));
   const Rgb inside = renderer.render(scene.cameras.front(), 64, 64, options).at(32, 32);
   const Rgb outside = renderer.render(behind, 64, 64, options).at(32, 32);
   EXPECT_GT(inside.g, 0.01f) << "the back wall is lit from inside";
