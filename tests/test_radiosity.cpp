@@ -182,6 +182,18 @@ TEST(Hemicube, RowsInAClosedBoxSumToOne) {
   }
 }
 
+// A patch sees nothing of the plane it lies in (F = 0 between coplanar patches): on a lone floor
+// cut into patches every row is empty, the neighbours along its edges included.
+TEST(Hemicube, APatchSeesNothingOfItsOwnPlane) {
+  Scene scene;
+  const int grey = add_material(scene, 0.5f);
+  add_quad(scene, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, grey, "floor");
+  Fixture f(scene, 0.25f, 128);
+  ASSERT_GT(f.mesh.size(), 8u);
+  for (size_t i = 0; i < f.mesh.size(); ++i)
+    EXPECT_TRUE(f.hemicube->row(i, 0.3f * float(i)).empty()) << "patch " << i;
+}
+
 TEST(Hemicube, ReciprocityBetweenUnequalSquares) {
   Scene scene;
   const int grey = add_material(scene, 0.5f);
