@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ TEST(RadiosityCli, HelpListsTheFlags) {
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"radiosity", "--shots", "--converge", "--patch-size", "--hemicube-res",
                            "--ambient-estimate", "--csv", "--form-factors", "--visibility-rays",
-                           "--pixel-samples", "--meshing", "--refine-threshold", "--refine-levels"})
+                           "--pixel-samples", "--meshing", "--refine-threshold", "--refine-levels", "--time"})
     EXPECT_TRUE(contains(help.output, flag)) << flag;
 }
 
@@ -34,7 +35,8 @@ TEST(RadiosityCli, RadiosityFlagsWithAnotherModelAreUsageErrors) {
                                              {"--patch-size", "0.1"}, {"--hemicube-res", "64"},
                                              {"--ambient-estimate"}, {"--csv", "x.csv"},
                                              {"--visibility-rays", "8"}, {"--pixel-samples", "4"},
-                                             {"--meshing", "uniform"}, {"--refine-threshold", "0.2"}}) {
+                                             {"--meshing", "uniform"}, {"--refine-threshold", "0.2"},
+                                             {"--time", "1"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "phong", "--out",
                                      (dir / "a.png").string()};
     args.insert(args.end(), flag.begin(), flag.end());
@@ -57,7 +59,8 @@ TEST(RadiosityCli, BadValuesAreUsageErrors) {
                                              {"--pixel-samples", "3"}, {"--pixel-samples", "0"},
                                              {"--form-factors", "raytraced"}, {"--meshing", "fine"},
                                              {"--refine-threshold", "0"}, {"--refine-threshold", "-1"},
-                                             {"--refine-levels", "0"}, {"--refine-levels", "13"}}) {
+                                             {"--refine-levels", "0"}, {"--refine-levels", "13"},
+                                             {"--time", "0"}, {"--time", "-1"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
     args.insert(args.end(), bad.begin(), bad.end());
     EXPECT_EQ(run_luz(args).exit_code, 2) << bad[0] << " " << bad[1];
@@ -92,6 +95,49 @@ TEST(RadiosityCli, CsvHoldsOneRowPerShot) {
   EXPECT_EQ(rows, 41) << "shot 0 (nothing shot yet) and 40 shots";
   EXPECT_GT(previous_fraction, 0.0);
   EXPECT_LT(previous_fraction, 0.9) << "40 shots move most of the lamp's power";
+}
+
+// The last row of a --csv history: shots and seconds of solving.
+std::pair<int, double> last_shot(const std::filesystem::path& csv_path) {
+  std::ifstream csv(csv_path);
+  std::string line, last;
+  while (std::getline(csv, line)) last = line;
+  std::istringstream fields(last);
+  int shot = -1;
+  double power = 0, fraction = 0, seconds = 0;
+  char comma = 0;
+  fields >> shot >> comma >> power >> comma >> fraction >> comma >> seconds;
+  return {shot, seconds};
+}
+
+// --time bounds the solve of a big scene: the shooting stops at the first shot past it (3000
+// shots here take about 18 s), says so, and the picture is written.
+TEST(RadiosityCli, TimeStopsTheShootingAndSaysSo) {
+  test::ScratchDir dir;
+  for (const char* model : {"radiosity", "hybrid"}) {
+    const auto out = dir / (std::string(model) + ".png");
+    const auto csv = dir / (std::string(model) + ".csv");
+    const auto timed = run_luz({"render", cornell(), "--model", model, "--out", out.string(), "--size", "32x32",
+                                "--patch-size", "0.2", "--hemicube-res", "64", "--shots", "3000", "--time", "0.5",
+                                "--csv", csv.string()});
+    ASSERT_EQ(timed.exit_code, 0) << model << ": " << timed.output;
+    EXPECT_TRUE(contains(timed.output, "stopped by --time 0.5")) << timed.output;
+    EXPECT_TRUE(std::filesystem::exists(out)) << model;
+    const auto [shots, seconds] = last_shot(csv);
+    EXPECT_GT(shots, 0) << model;
+    EXPECT_LT(shots, 3000) << model;
+    EXPECT_GE(seconds, 0.5) << model;
+    EXPECT_LT(seconds, 3.0) << model << ": one shot past the time, not many";
+  }
+  // Stopped by --shots 1 in a shot that also outlasts the time (a 512-pixel hemicube takes
+  // milliseconds): the solver's own rule is what stopped it.
+  const auto counted = run_luz({"render", cornell(), "--model", "radiosity", "--out", (dir / "c.png").string(),
+                                "--size", "32x32", "--form-factors", "hemicube", "--hemicube-res", "512",
+                                "--shots", "1", "--time", "0.001", "--csv", (dir / "c.csv").string()});
+  ASSERT_EQ(counted.exit_code, 0) << counted.output;
+  EXPECT_TRUE(contains(counted.output, " 1 shots")) << counted.output;
+  EXPECT_GE(last_shot(dir / "c.csv").second, 0.001) << "the shot outlasted the time";
+  EXPECT_FALSE(contains(counted.output, "stopped by --time")) << counted.output;
 }
 
 // A mesh beyond the element budget is refused from its count, naming the numbers, before any

@@ -26,10 +26,10 @@ namespace {
 // models; the hybrid takes the tracer's and the solver's, but not radiosity's display switches.
 constexpr const char* local_flags[] = {"terms", "local"};
 constexpr const char* whitted_flags[] = {"terms", "whitted", "sampling"};
-constexpr const char* radiosity_flags[] = {"terms", "radiosity", "radiosity-display"};
-constexpr const char* hybrid_flags[] = {"terms", "whitted", "sampling", "radiosity"};
+constexpr const char* radiosity_flags[] = {"terms", "radiosity", "radiosity-display", "time"};
+constexpr const char* hybrid_flags[] = {"terms", "whitted", "sampling", "radiosity", "time"};
 // The path tracer solves slide 14's equation: the lecture's term switches do not apply to it.
-constexpr const char* path_flags[] = {"sampling", "path"};
+constexpr const char* path_flags[] = {"sampling", "path", "time"};
 
 template <Shading shading>
 Rendered render_shaded(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -20,18 +21,22 @@
 namespace luz::app {
 namespace {
 
-// 0 .. 1: shots against --shots, else the unshot fraction on a log scale down to --converge.
-double progress_of(const ProgressiveSolver& solver, const RadiosityOptions& options) {
+// 0 .. 1: shots against --shots, else the unshot fraction on a log scale down to --converge;
+// with --time, the share of it used if that is further along.
+double progress_of(const ProgressiveSolver& solver, const RadiosityOptions& options, double seconds,
+                   std::optional<double> limit) {
   double progress = 0.0;
   if (options.max_shots > 0) progress = double(solver.shots()) / double(options.max_shots);
   if (options.converge > 0.0f && solver.unshot_fraction() > 0.0)
     progress = std::max(progress, std::log(solver.unshot_fraction()) / std::log(double(options.converge)));
+  if (limit) progress = std::max(progress, seconds / *limit);
   return std::clamp(progress, 0.0, 1.0);
 }
 
-void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& options) {
+void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& options, double seconds,
+                   std::optional<double> limit) {
   constexpr int width = 30;
-  const int filled = int(std::lround(progress_of(solver, options) * width));
+  const int filled = int(std::lround(progress_of(solver, options, seconds, limit) * width));
   // xgettext:no-c-format
   fmt::print(stderr, "\r{}", trf("radiosity [{}{}] shot {}, unshot {:.3f}% of the emitted power ",
                                  std::string(size_t(filled), '#'), std::string(size_t(width - filled), '-'),
@@ -61,15 +66,22 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   for (const std::string& warning : solver.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 
   const bool bar = !settings.quiet && isatty(fileno(stderr));
-  auto last_draw = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto last_draw = start;
+  // A shot that starts finishes, so the time may run over by one shot; the first always runs.
+  bool out_of_time = false;
   while (solver.step()) {
-    if (bar && std::chrono::steady_clock::now() - last_draw > std::chrono::milliseconds(100)) {
-      draw_progress(solver, options);
-      last_draw = std::chrono::steady_clock::now();
+    if (bar && Clock::now() - last_draw > std::chrono::milliseconds(100)) {
+      draw_progress(solver, options, seconds(), settings.seconds);
+      last_draw = Clock::now();
     }
+    out_of_time = settings.seconds && seconds() >= *settings.seconds && !solver.done();
+    if (out_of_time) break;
   }
   if (bar) {
-    draw_progress(solver, options);
+    draw_progress(solver, options, seconds(), settings.seconds);
     fmt::print(stderr, "\n");
   }
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
@@ -79,6 +91,8 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
                            "unshot {:.3f}% of the emitted power, {:.2f} s solving", mesh.shooters.size(),
                            mesh.max_edge, mesh.size(), options.hemicube_res, solver.shots(),
                            100.0 * solver.unshot_fraction(), solver.history().back().seconds));
+  if (!settings.quiet && out_of_time)
+    fmt::print("{}\n", trf("radiosity: stopped by --time {:g} before --converge or --shots", *settings.seconds));
 }
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,

@@ -24,6 +24,8 @@ struct RenderSettings {
   LocalOptions local;
   RadiosityOptions radiosity;
   std::string csv;               // radiosity: the residual history, one row per shot
+  // --time: the path tracer's passes, or radiosity's shooting, stop when it is up.
+  std::optional<double> seconds;
   bool quiet = false;
   // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`)
   // and the pixel whose ray tree is written beside the image.

@@ -114,6 +114,10 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       tr("whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"))});
 
   for (CLI::Option* option : add_path_flags(render, settings.path)) flags.grouped.push_back({"path", option});
+  flags.grouped.push_back({"time", render.add_option("--time", settings.seconds,
+      tr("path: render passes of one sample per pixel until SECONDS are up (with --spp: at most that "
+         "many samples); radiosity/hybrid: stop shooting when SECONDS of solving are up, if --shots or "
+         "--converge has not stopped it first"))->check(CLI::Range(0.001, 1e7))});
 
   add_rows(render, radiosity_rows(), settings.radiosity, flags);
   flags.grouped.push_back({"radiosity", render.add_option("--csv", settings.csv,

@@ -24,10 +24,6 @@ std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
       render.add_option("--seed", flags.seed,
                         tr("path: seed of the random numbers (the same seed gives the same picture)"))
           ->capture_default_str(),
-      render.add_option("--time", flags.seconds,
-                        tr("path: render passes of one sample per pixel until SECONDS are up "
-                           "(with --spp: at most that many samples)"))
-          ->check(CLI::Range(0.001, 1e7)),
       render.add_option("--error-out", flags.error_out,
                         tr("path: write the per-pixel standard error of the mean to this .exr")),
   };
@@ -120,7 +116,7 @@ Rendered render_path_model(const Scene& scene, const Camera& camera, int width, 
   const bool spp_given = given(settings, "--spp");
   if (spp_given) options.spp = settings.whitted.spp;
   if (given(settings, "--depth")) options.max_depth = settings.whitted.max_depth;
-  const PathResult path = render_path(scene, camera, width, height, options, settings.path.seconds,
+  const PathResult path = render_path(scene, camera, width, height, options, settings.seconds,
                                       spp_given, !settings.quiet && isatty(STDERR_FILENO));
   if (!settings.path.error_out.empty())
     io::write_image(path.standard_error, settings.path.error_out, 0.0f);

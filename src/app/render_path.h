@@ -21,11 +21,10 @@ struct Rendered;
 // The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
 struct PathFlags {
   uint32_t seed = 0;
-  std::optional<double> seconds;  // --time: passes of one sample per pixel until it is up
-  std::string error_out;          // --error-out FILE.exr: the standard error per pixel
+  std::string error_out;  // --error-out FILE.exr: the standard error per pixel
 };
 
-// Declares --seed, --time and --error-out on `render`; returns them so that the command can
+// Declares --seed and --error-out on `render`; returns them so that the command can
 // tell which were given (a usage error with another model).
 std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags);
 
