@@ -300,6 +300,45 @@ TEST(Triangles, AMeshDrawnTwiceWarnsOnce) {
   EXPECT_NE(warnings[0].find("dropped 1 "), std::string::npos) << warnings[0];
 }
 
+// A CAD export drops slivers in hundreds of meshes: one warning with the total, the count of
+// meshes and the three that dropped most, largest first; a mesh drawn twice counts once.
+TEST(Triangles, ZeroAreaInManyMeshesIsOneWarning) {
+  GltfBuilder b;
+  for (int m = 0; m < 5; ++m) {
+    Primitive p;
+    p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    p.indices = {0, 1, 2};
+    for (int k = 0; k <= (m + 2) % 5; ++k) p.indices.insert(p.indices.end(), {0, 0, 2});  // 3 1 2 ... slivers
+    const int mesh = b.mesh({p}, std::string(1, char('a' + m)));
+    b.node({{"mesh", mesh}});
+    if (m == 0) b.node({{"mesh", mesh}, {"translation", {3, 0, 0}}});
+  }
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_EQ(loaded.scene.triangle_count(), 6u);
+  const std::vector<std::string> warnings = other_warnings(loaded);
+  ASSERT_EQ(warnings.size(), 1u);
+  // Mesh m drops (m + 2) % 5 + 1 slivers: 3, 4, 5, 1, 2.
+  EXPECT_NE(warnings[0].find("dropped 15 zero-area triangles in 5 meshes, most in mesh 2 \"c\" (5), "
+                             "mesh 1 \"b\" (4), mesh 0 \"a\" (3)"),
+            std::string::npos) << warnings[0];
+}
+
+TEST(Triangles, ZeroAreaInTwoMeshesNamesBoth) {
+  GltfBuilder b;
+  for (int m = 0; m < 2; ++m) {
+    Primitive p;
+    p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    p.indices = {0, 1, 2, 0, 0, 2};
+    b.node({{"mesh", b.mesh({p}, std::string(1, char('a' + m)))}});
+  }
+  ScratchDir dir;
+  const std::vector<std::string> warnings = other_warnings(io::load_gltf(b.write_gltf(dir)));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("dropped 2 zero-area triangles in 2 meshes: mesh 0 \"a\" (1), mesh 1 \"b\" (1)"),
+            std::string::npos) << warnings[0];
+}
+
 TEST(Glb, LoadsLikeGltf) {
   GltfBuilder b = one_triangle(diffuse(0.5, 0.25, 0.125));
   b.doc["nodes"][0]["translation"] = {1, 2, 3};
@@ -1220,6 +1259,19 @@ TEST(Error, NoTrianglesNamesTheSkippedMeshes) {
   const std::string message = expect_error(b.write_gltf(dir), ErrorKind::no_triangles);
   EXPECT_NE(message.find("mesh 0 \"dots\""), std::string::npos) << message;
   EXPECT_NE(message.find("mode 0"), std::string::npos) << message;
+}
+
+TEST(Error, NoTrianglesSaysTheyHadNoArea) {
+  GltfBuilder b;
+  for (int m = 0; m < 2; ++m) {
+    Primitive p;
+    p.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};  // collinear
+    p.indices = {0, 1, 2};
+    b.node({{"mesh", b.mesh({p}, std::string(1, char('a' + m)))}});
+  }
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::no_triangles);
+  EXPECT_NE(message.find("dropped 2 zero-area triangles in 2 meshes"), std::string::npos) << message;
 }
 
 }  // namespace

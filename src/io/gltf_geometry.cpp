@@ -4,11 +4,13 @@
 //           an accessor fits its bufferView nor that a bufferView fits its buffer.
 // [SECTION] Primitives: triangles only, flattened by the node's world matrix, flat normals when
 //           the file has none, zero-area triangles dropped.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -460,9 +462,32 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     }
     if (!mesh.indices.empty()) scene.meshes.push_back(std::move(mesh));
   }
-  if (dropped > 0)
-    ctx.warn(dropped == 1 ? trf("{}: dropped 1 zero-area triangle", mesh_name)
-                          : trf("{}: dropped {} zero-area triangles", mesh_name, dropped));
+  if (dropped > 0) ctx.zero_area[mesh_index] = {mesh_name, dropped};
+}
+
+void warn_zero_area(const Context& ctx) {
+  if (ctx.zero_area.empty()) return;
+  if (ctx.zero_area.size() == 1) {
+    const auto& [name, dropped] = ctx.zero_area.begin()->second;
+    ctx.warn(dropped == 1 ? trf("{}: dropped 1 zero-area triangle", name)
+                          : trf("{}: dropped {} zero-area triangles", name, dropped));
+    return;
+  }
+  std::vector<std::pair<std::string, size_t>> meshes;
+  size_t total = 0;
+  for (const auto& [index, mesh] : ctx.zero_area) {
+    meshes.push_back(mesh);
+    total += mesh.second;
+  }
+  std::stable_sort(meshes.begin(), meshes.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  constexpr size_t kNamed = 3;
+  const size_t named = std::min(kNamed, meshes.size());
+  std::string list;
+  for (size_t i = 0; i < named; ++i)
+    list += fmt::format("{}{} ({})", i == 0 ? "" : ", ", meshes[i].first, meshes[i].second);
+  ctx.warn(meshes.size() > kNamed
+               ? trf("dropped {} zero-area triangles in {} meshes, most in {}", total, meshes.size(), list)
+               : trf("dropped {} zero-area triangles in {} meshes: {}", total, meshes.size(), list));
 }
 
 }  // namespace luz::io::gltf

@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -39,6 +40,9 @@ struct Context {
   // that is absent here could not be read (tinygltf only warned).
   std::map<int, std::vector<unsigned char>> image_bytes;
   mutable std::unordered_set<std::string> told;  // the warnings given so far
+  // Zero-area triangles dropped, by mesh index: the mesh's name and the count. Told in one
+  // warning when the file is read (CAD exports drop some in hundreds of meshes).
+  mutable std::map<int, std::pair<std::string, size_t>> zero_area;
 
   [[noreturn]] void fail(ErrorKind kind, const std::string& problem) const {
     throw Error(kind, one_line(file + ": " + problem));
@@ -77,6 +81,9 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions,
 // without a material get.
 void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_world,
                        int default_material, Scene& scene);
+// The zero-area triangles the meshes dropped, as one warning: the mesh and its count when one
+// mesh dropped some, else the total, the number of meshes and the three that dropped most.
+void warn_zero_area(const Context& ctx);
 
 // gltf_lights_cameras.cpp: the node's perspective camera (orthographic ones are skipped with a
 // warning) and its KHR_lights_punctual light, if any; `node_what` names the node in messages.

@@ -557,7 +557,7 @@ LoadedScene load_gltf(const fs::path& path) {
 
   LoadedScene loaded;
   tinygltf::Model model;
-  Context ctx{source.file, model, loaded.warnings, {}, {}};
+  Context ctx{source.file, model, loaded.warnings, {}, {}, {}};
 
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(&keep_image_bytes, &ctx.image_bytes);
@@ -592,11 +592,12 @@ LoadedScene load_gltf(const fs::path& path) {
   gltf::add_materials(ctx, scene);
   const int default_material = int(scene.materials.size());
   walk_nodes(ctx, default_material, scene);
+  gltf::warn_zero_area(ctx);
   if (scene.triangle_count() == 0) {
     // The meshes' own warnings (primitives of another mode, all triangles degenerate) say why.
     std::string why;
     for (const std::string& warning : loaded.warnings)
-      if (warning.rfind(source.file + ": mesh ", 0) == 0)
+      if (warning.rfind(source.file + ": mesh ", 0) == 0 || warning.rfind(source.file + ": dropped ", 0) == 0)
         why += "; " + warning.substr(source.file.size() + 2);
     source.fail(ErrorKind::no_triangles, tr("no triangles to draw in the default scene") + why);
   }
