@@ -187,6 +187,16 @@ TEST_F(ViewerRadiosity, ConvergedItIsWhatLuzRenderMakes) {
   test::expect_same_picture(codes(out), viewer);
 }
 
+// The status line names the mesh as it was built: its patches (the shooters) and elements.
+TEST_F(ViewerRadiosity, TheStatusLineCountsPatchesAndElements) {
+  const nlohmann::json start = json_of(file("start.json"));
+  ASSERT_LT(start["patches"].get<size_t>(), start["elements"].get<size_t>());
+  EXPECT_EQ(json_of(file("start-state.json"))["note"].get<std::string>(),
+            "radiosity: " + std::to_string(start["patches"].get<size_t>()) + " patches of " +
+                std::to_string(start["elements"].get<size_t>()) + " elements, hemicube " +
+                std::to_string(start["hemicube_res"].get<int>()));
+}
+
 TEST_F(ViewerRadiosity, TheClickedPatchShowsSlide39sQuantities) {
   const Scene s = io::load_gltf(scene()).scene;
   for (const char* name : {"lamp.json", "wall.json"}) {

@@ -34,7 +34,9 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
     r.patch.reset();
     try {
       solution_ = std::make_unique<RadiosityView>(*state.scene, r.options);
-      state.note = trf("radiosity: {} patches, hemicube {}", solution_->mesh().size(), r.options.hemicube_res);
+      const PatchMesh& mesh = solution_->mesh();
+      state.note = trf("radiosity: {} patches of {} elements, hemicube {}", mesh.shooters.size(), mesh.size(),
+                       r.options.hemicube_res);
       for (const std::string& warning : solution_->solver().warnings()) viewer_.warn(warning);
     } catch (const Error& error) {
       state.note = error.what();
