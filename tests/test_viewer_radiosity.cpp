@@ -248,8 +248,14 @@ TEST_F(ViewerRadiosity, ThePanelPlotsTheUnshotPowerAndTheItemBufferIsShown) {
         }
   EXPECT_GT(double(differ) / double(pixels), 0.01) << differ << " of " << pixels;
 
-  // The item buffer's cross: many false colours, one per patch seen.
+  // The item buffer's cross: many false colours, one per patch seen. Paused, it is the last
+  // shooter's (running, it may be an earlier one's, and says so by its title).
   ASSERT_TRUE(state["item_view_shown"].get<bool>());
+  EXPECT_EQ(state["item_view_shooter"], state["shooter"]);
+  EXPECT_EQ(state["shooter"].get<std::string>().rfind("patch ", 0), 0u) << state["shooter"];
+  const nlohmann::json reset = json_of(file("reset.json"));
+  EXPECT_FALSE(reset["item_view_shown"].get<bool>());
+  EXPECT_EQ(reset["item_view_shooter"], "");
   const int ix0 = state["item_view_rect"][0], iy0 = state["item_view_rect"][1];
   const int ix1 = state["item_view_rect"][2], iy1 = state["item_view_rect"][3];
   ASSERT_GT(ix1 - ix0, 50);

@@ -302,7 +302,7 @@ void draw_item_buffer_window(ViewerState& state, float side) {
   ImGui::Begin(tr("item buffer (hemicube)"), &r.drive.show_item_buffer, flags);
   const RadiosityStatus& s = r.status;
   if (s.item_view_texture != 0) {
-    ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
+    ImGui::TextColored(shooter_colour, "%s", s.item_view_shooter.c_str());
     // The cross's texture is drawn bottom-up by GL: flip v so its top face's +b is up.
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(s.item_view_texture)), ImVec2(side, side),
                  ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));

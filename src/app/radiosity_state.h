@@ -62,6 +62,7 @@ struct RadiosityStatus {
   std::vector<float> plot;     // log10(unshot fraction) after shot 0, 1, 2, ...
   unsigned item_view_texture = 0;  // the unfolded hemicube in false colours (GL texture)
   int item_view_size = 0;          // its width = height, pixels
+  std::string item_view_shooter;   // the patch it was drawn for: the last shooter, or one before
   // Where the panel drew the plot and the window the item buffer, window coordinates (for the
   // tests' dump-radiosity); zero when not drawn.
   glm::vec2 plot_min{0.0f}, plot_max{0.0f};

@@ -124,15 +124,34 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
     shown_with_ = o;
   }
   // The overlay: the item buffer of the last patch that shot (lights shoot through their own cube).
-  if (drive.show_item_buffer && solver_.last_shooter() >= 0 && item_view_shot_ != solver_.shots()) {
-    if (o.form_factors == FormFactorMethod::rays) {  // rays draw no hemicube: draw it for the window
+  // With rays no hemicube is drawn for the shots: the window's is drawn over the whole scene for
+  // it alone, so while the solver runs it is redrawn at most a fifth of the time (on a scene of
+  // 100,000 patches it costs as much as a shot); paused, it shows the last shot at once.
+  if (drive.show_item_buffer && solver_.last_shooter() >= 0 && item_view_shot_ != solver_.shots() &&
+      (!drive.running || clock::now() >= item_view_due_)) {
+    const auto began = clock::now();
+    if (o.form_factors == FormFactorMethod::rays) {
       const ShootingPatch& p = solver_.mesh().shooters[size_t(solver_.last_shooter())];
       solver_.hemicube().row(p.centre, p.normal, p.clearance, 0.0f);
     }
     item_view_.update(solver_.hemicube());
     item_view_shot_ = solver_.shots();
+    item_view_shooter_ = solver_.last_shooter();
+    item_view_due_ = clock::now() + 4 * (clock::now() - began);
   }
   refresh_status(state);
+}
+
+std::string RadiosityView::shooter_name(int shooter, int shots) const {
+  if (shooter >= 0) {
+    const Patch& p = mesh_.patches[mesh_.members[mesh_.shooters[size_t(shooter)].first]];
+    return trf("patch {} ({})", shooter, scene_.meshes[size_t(p.mesh)].name);
+  }
+  if (shooter < -1 || (shooter == -1 && shots > 0)) {
+    const int k = -1 - shooter;
+    return trf("light {} ({})", k, scene_.lights[size_t(k)].name);
+  }
+  return {};
 }
 
 void RadiosityView::refresh_status(RadiosityState& state) const {
@@ -150,23 +169,16 @@ void RadiosityView::refresh_status(RadiosityState& state) const {
   s.shots_per_second = shots_per_second_;
   s.done = solver_.done();
   s.last_shooter = solver_.last_shooter();
-  if (s.last_shooter >= 0) {
-    const Patch& p = mesh_.patches[mesh_.members[mesh_.shooters[size_t(s.last_shooter)].first]];
-    s.shooter = trf("patch {} ({})", s.last_shooter, scene_.meshes[size_t(p.mesh)].name);
-  } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
-    const int k = -1 - s.last_shooter;
-    s.shooter = trf("light {} ({})", k, scene_.lights[size_t(k)].name);
-  } else {
-    s.shooter.clear();
-  }
+  s.shooter = shooter_name(s.last_shooter, s.shots);
   // Only new shots are appended: the history grows by a few entries a frame.
   const std::vector<ShotRecord>& history = solver_.history();
   if (s.plot.size() > history.size()) s.plot.clear();  // a reset
   for (size_t i = s.plot.size(); i < history.size(); ++i)
     s.plot.push_back(float(std::log10(std::max(history[i].fraction, 1e-12))));
-  const bool shows_item_buffer = s.last_shooter >= 0 && item_view_shot_ == s.shots;
+  const bool shows_item_buffer = s.last_shooter >= 0 && item_view_shot_ >= 0;
   s.item_view_texture = shows_item_buffer ? item_view_.texture() : 0;
   s.item_view_size = shows_item_buffer ? item_view_.size() : 0;
+  s.item_view_shooter = shows_item_buffer ? shooter_name(item_view_shooter_, item_view_shot_) : std::string();
 }
 
 // ---- [the heat map] ------------------------------------------------------------------------------
@@ -259,6 +271,7 @@ nlohmann::json to_json(const RadiosityState& state) {
           {"plot_points", s.plot.size()},
           {"plot_rect", {s.plot_min.x, s.plot_min.y, s.plot_max.x, s.plot_max.y}},
           {"item_view_shown", s.item_view_texture != 0},
+          {"item_view_shooter", s.item_view_shooter},
           {"item_view_rect", {s.item_view_min.x, s.item_view_min.y, s.item_view_max.x, s.item_view_max.y}},
           {"options", state.options.to_string()}};
 }

@@ -53,6 +53,8 @@ public:
 
 private:
   void refresh_status(RadiosityState& state) const;
+  // "patch 12 (floor)" for shooter 12, "light 0 (key)" for -1 - 0 once shot, "" before any shot.
+  std::string shooter_name(int shooter, int shots) const;
 
   const Scene& scene_;
   RadiosityOptions built_with_;
@@ -65,7 +67,9 @@ private:
   bool heat_map_shown_ = false;   // what the uploaded colours are ...
   float exposure_shown_ = 0.0f;
   RadiosityOptions shown_with_;   // ... and with which display switches
-  int item_view_shot_ = -1;       // the shot whose item buffer the overlay shows
+  int item_view_shot_ = -1;       // the shot whose item buffer the overlay shows ...
+  int item_view_shooter_ = -1;    // ... and its shooter
+  std::chrono::steady_clock::time_point item_view_due_;  // the overlay's next redraw while running
 
   std::chrono::steady_clock::time_point last_advance_ = std::chrono::steady_clock::now();
   double shots_per_second_ = 0.0;
