@@ -21,7 +21,9 @@
 namespace luz::test {
 
 // glTF component types.
+constexpr int kByte = 5120;
 constexpr int kUnsignedByte = 5121;
+constexpr int kShort = 5122;
 constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;

@@ -244,6 +244,69 @@ TEST(Accessor, ByteAndShortIndices) {
   EXPECT_EQ(scene.meshes[2].indices, (std::vector<uint32_t>{2, 1, 0, 0, 1, 2}));
 }
 
+// KHR_mesh_quantization (what gltfpack writes): POSITION as shorts scaled back by the node,
+// NORMAL as normalized bytes, TEXCOORD_0 as shorts, signed and not normalized; each padded to 4
+// bytes a vertex as the extension asks.
+GltfBuilder quantized_triangle() {
+  GltfBuilder b;
+  const std::vector<int16_t> positions = {0, 0, 0, 0, 1000, 0, 0, 0, 0, 1000, -1000, 0};  // x, y, z, pad
+  const std::vector<int8_t> normals = {0, 0, 127, 0, 0, 0, -128, 0, 90, 0, 90, 0};
+  const std::vector<int16_t> uvs = {0, 0, 2, -3, -4, 5};
+  json primitive;
+  primitive["attributes"]["POSITION"] = b.add_accessor(b.add_view(positions.data(), 24, 8), kShort, 3, "VEC3");
+  primitive["attributes"]["NORMAL"] = b.add_accessor(b.add_view(normals.data(), 12, 4), kByte, 3, "VEC3", 0, true);
+  primitive["attributes"]["TEXCOORD_0"] = b.add_accessor(b.add_view(uvs.data(), 12), kShort, 3, "VEC2");
+  b.doc["meshes"].push_back({{"primitives", json::array({primitive})}});
+  b.node({{"mesh", 0}, {"scale", {0.001, 0.001, 0.001}}});
+  b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  return b;
+}
+
+TEST(Quantization, IntegerAttributesAreReadAndScaledByTheNode) {
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(quantized_triangle().write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty());
+  const Mesh& mesh = loaded.scene.meshes.at(0);
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_VEC3(mesh.positions[0], 0, 0, 0);
+  EXPECT_VEC3(mesh.positions[1], 1, 0, 0);
+  EXPECT_VEC3(mesh.positions[2], 0, 1, -1);
+  // 127 -> 1 and -128 -> -1 (normalized signed bytes); (90, 0, 90) renormalized.
+  EXPECT_VEC3(mesh.normals[0], 0, 0, 1);
+  EXPECT_VEC3(mesh.normals[1], 0, 0, -1);
+  EXPECT_VEC3(mesh.normals[2], std::sqrt(0.5f), 0, std::sqrt(0.5f));
+  ASSERT_EQ(mesh.uvs.size(), 3u);
+  EXPECT_EQ(mesh.uvs[1], glm::vec2(2, -3));
+  EXPECT_EQ(mesh.uvs[2], glm::vec2(-4, 5));
+}
+
+TEST(Quantization, NormalizedSignedShortsAndBytesReachMinusOne) {
+  GltfBuilder b;
+  // POSITION as normalized shorts: -32768 and -32767 both -1, 32767 is 1.
+  const std::vector<int16_t> positions = {-32768, 0, 0, 0, 32767, 0, 0, 0, -32767, 32767, 0, 0};
+  json primitive;
+  primitive["attributes"]["POSITION"] = b.add_accessor(b.add_view(positions.data(), 24, 8), kShort, 3, "VEC3", 0, true);
+  b.doc["meshes"].push_back({{"primitives", json::array({primitive})}});
+  b.node({{"mesh", 0}});
+  b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  ScratchDir dir;
+  const Mesh mesh = io::load_gltf(b.write_gltf(dir)).scene.meshes.at(0);
+  EXPECT_VEC3(mesh.positions[0], -1, 0, 0);
+  EXPECT_VEC3(mesh.positions[1], 1, 0, 0);
+  EXPECT_VEC3(mesh.positions[2], -1, 1, 0);
+}
+
+TEST(Quantization, IntegerPositionsWithoutTheExtensionAreRefusedNamingIt) {
+  GltfBuilder b = quantized_triangle();
+  b.doc.erase("extensionsUsed");
+  b.doc.erase("extensionsRequired");
+  ScratchDir dir;
+  const std::string message = expect_error(b.write_gltf(dir), ErrorKind::bad_value);
+  EXPECT_NE(message.find("POSITION"), std::string::npos) << message;
+  EXPECT_NE(message.find("KHR_mesh_quantization"), std::string::npos) << message;
+}
+
 TEST(Texcoords, FloatAndNormalizedShorts) {
   Primitive p = triangle();
   p.uvs = {{0, 0}, {1, 0}, {0.25f, 0.5f}};

@@ -216,22 +216,49 @@ float read_component(const unsigned char* p, int component_type, bool normalized
       std::memcpy(&v, p, sizeof v);
       return normalized ? float(v) / 65535.0f : float(v);
     }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {  // signed: -128 and -127 both map to -1
+      int8_t v;
+      std::memcpy(&v, p, sizeof v);
+      return normalized ? std::max(float(v) / 127.0f, -1.0f) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t v;
+      std::memcpy(&v, p, sizeof v);
+      return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
+    }
     default: return 0.0f;  // callers only pass the types they accepted
   }
 }
 
-// Float VEC3 (POSITION, NORMAL), each component finite.
+bool is_small_integer(int component_type) {
+  return component_type == TINYGLTF_COMPONENT_TYPE_BYTE || component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+         component_type == TINYGLTF_COMPONENT_TYPE_SHORT || component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
+// KHR_mesh_quantization lets POSITION, NORMAL and TEXCOORD_0 hold 8- and 16-bit integers,
+// normalized or not; the nodes' transforms scale them back (gltfpack writes such files).
+bool quantized(const Context& ctx) {
+  const std::vector<std::string>& used = ctx.model.extensionsUsed;
+  return std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end();
+}
+
+// VEC3 (POSITION, NORMAL) of floats, or with KHR_mesh_quantization of small integers; each
+// component finite.
 std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::string& what) {
   const AccessorView view = view_accessor(ctx, index, what);
   require_type(ctx, index, view, TINYGLTF_TYPE_VEC3, "VEC3", what);
-  if (view.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)
+  if (is_small_integer(view.component_type) && !quantized(ctx))
+    ctx.fail(ErrorKind::bad_value, trf("{}: {} holds integers, which need the extension KHR_mesh_quantization",
+                                       what, view.name));
+  if (view.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !is_small_integer(view.component_type))
     ctx.fail(ErrorKind::bad_value, trf("{}: {} must hold floats", what, view.name));
   std::vector<glm::vec3> out(view.count, glm::vec3(0.0f));
   if (!view.first) return out;
+  const size_t size = component_size(view.component_type);
   for (size_t i = 0; i < view.count; ++i) {
     const unsigned char* p = view.element(i);
     for (int c = 0; c < 3; ++c) {
-      out[i][c] = read_component(p + 4 * c, view.component_type, false);
+      out[i][c] = read_component(p + size * size_t(c), view.component_type, view.normalized);
       if (!std::isfinite(out[i][c]))
         ctx.fail(ErrorKind::not_finite, trf("{}: element {} is {}", what, i, what_number_is(out[i][c])));
     }
@@ -239,13 +266,15 @@ std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::strin
   return out;
 }
 
-// TEXCOORD_0: float VEC2, or normalized unsigned byte / short as the glTF spec allows.
+// TEXCOORD_0: float VEC2, or normalized unsigned byte / short as the glTF spec allows, or with
+// KHR_mesh_quantization any small integers.
 std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::string& what) {
   const AccessorView view = view_accessor(ctx, index, what);
   require_type(ctx, index, view, TINYGLTF_TYPE_VEC2, "VEC2", what);
-  const bool integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                       view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
+  const bool unsigned_integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const bool core = view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (unsigned_integer && view.normalized);
+  if (!core && !(quantized(ctx) && is_small_integer(view.component_type)))
     ctx.fail(ErrorKind::bad_value,
              trf("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
   std::vector<glm::vec2> out(view.count, glm::vec2(0.0f));
@@ -253,7 +282,7 @@ std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::
   const size_t size = component_size(view.component_type);
   for (size_t i = 0; i < view.count; ++i) {
     for (int c = 0; c < 2; ++c) {
-      out[i][c] = read_component(view.element(i) + size * size_t(c), view.component_type, true);
+      out[i][c] = read_component(view.element(i) + size * size_t(c), view.component_type, view.normalized);
       if (!std::isfinite(out[i][c]))
         ctx.fail(ErrorKind::not_finite, trf("{}: element {} is {}", what, i, what_number_is(out[i][c])));
     }

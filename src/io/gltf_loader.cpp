@@ -250,7 +250,7 @@ void check_version(const Source& source, const nlohmann::json& doc) {
 // 3.12); one that is only in extensionsUsed is ignored with a warning (see load_gltf).
 constexpr const char* kImplementedExtensions[] = {
     "KHR_lights_punctual",         "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_transmission",  "KHR_texture_transform",
+    "KHR_materials_transmission",  "KHR_mesh_quantization",           "KHR_texture_transform",
 };
 
 bool is_implemented(const std::string& extension) {
