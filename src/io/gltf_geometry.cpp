@@ -194,12 +194,12 @@ void require_type(const Context& ctx, int index, const AccessorView& view, int t
     ctx.fail(ErrorKind::bad_value, trf("{}: {} must be {}", what, view.name, type_name));
 }
 
-// One component as a float; normalized integers map to [0, 1] (or [-1, 1]) as glTF defines.
 // What is wrong with a number an attribute may not hold, in the user's language.
 const char* what_number_is(float v) {
   return tr(std::isnan(v) ? N_("NaN") : std::isinf(v) ? N_("infinite") : N_("negative"));
 }
 
+// One component as a float; normalized integers map to [0, 1] (or [-1, 1]) as glTF defines.
 float read_component(const unsigned char* p, int component_type, bool normalized) {
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_FLOAT: {
