@@ -154,6 +154,30 @@ TEST(Normals, FromFileRenormalisedAndShared) {
   EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
 }
 
+// A zero normal cannot light its vertex: the primitive takes its faces' normals (its vertices
+// unshared, as without NORMAL) and says so once; the file's other primitives keep theirs.
+TEST(Normals, AZeroNormalGivesThePrimitiveItsFacesNormals) {
+  Primitive quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.normals = {{1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  Primitive fine = triangle();
+  fine.normals = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({quad, fine}, "bad")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  const std::vector<std::string> warnings = other_warnings(loaded);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("mesh 0 \"bad\" primitive 0: NORMAL 1 has no direction"), std::string::npos)
+      << warnings[0];
+  ASSERT_EQ(loaded.scene.meshes.size(), 2u);
+  const Mesh& faces = loaded.scene.meshes[0];
+  EXPECT_EQ(faces.positions.size(), 6u);  // three vertices a triangle
+  for (const glm::vec3& n : faces.normals) EXPECT_VEC3(n, 0, 0, 1);
+  EXPECT_VEC3(loaded.scene.meshes[1].normals[0], 1, 0, 0);
+}
+
 TEST(Normals, ByInverseTransposeOfTheNodeMatrix) {
   // Scale (2,1,1): normals go by diag(1/2, 1, 1). (1,1,0)/sqrt2 -> (0.5,1,0)/|.| = (1,2,0)/sqrt5.
   Primitive p = triangle();

@@ -33,8 +33,6 @@ struct Refusal {
   const char* reason;
 };
 const std::map<std::string, Refusal> kRefused = {
-    {"BoxBadNormals-glTF-Binary/BoxBadNormals.glb",
-     {"NORMAL 0 has no direction", "zero-length normals: lighting needs a direction"}},
     {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf",
      {"requires the glTF extension KHR_technique_webgl", "shaders in the file (a glTF 1.0 idea)"}},
     {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",

@@ -415,6 +415,18 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     same_count(normals.size(), "NORMAL");
     same_count(uvs.size(), "TEXCOORD_0");
     same_count(colors.size(), "COLOR_0");
+    // Normals to world space. One with no direction (zero, or crushed by the node's matrix)
+    // cannot light its vertex: the primitive is drawn with its faces' normals, as without NORMAL.
+    for (size_t i = 0; i < normals.size(); ++i) {
+      const glm::vec3 n = normal_matrix * normals[i];
+      const float length = glm::length(n);
+      if (!(length > 0.0f) || !std::isfinite(length)) {
+        ctx.warn(trf("{}: NORMAL {} has no direction; the faces' normals are used", where, i));
+        normals.clear();
+        break;
+      }
+      normals[i] = n / length;
+    }
     const bool has_normals = !normals.empty();
 
     std::vector<uint32_t> indices;
@@ -439,15 +451,6 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       if (!is_finite(positions[i]))
         ctx.fail(ErrorKind::not_finite,
                  trf("{}: vertex {} is not finite in world space", where, i));
-    }
-    if (has_normals) {
-      for (size_t i = 0; i < vertex_count; ++i) {
-        const glm::vec3 n = normal_matrix * normals[i];
-        const float length = glm::length(n);
-        if (!(length > 0.0f) || !std::isfinite(length))
-          ctx.fail(ErrorKind::bad_value, trf("{}: NORMAL {} has no direction", where, i));
-        normals[i] = n / length;
-      }
     }
 
     Mesh mesh;
