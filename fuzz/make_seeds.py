@@ -4,7 +4,7 @@ their target reads, so that libFuzzer's mutations start from inputs that reach d
 Small seeds keep each execution short: 10^6 of them fit in an hour.
 - fuzz/seeds/ (glTF loader, a few hundred bytes to 2 kB): accessors, sparse accessors, materials,
   textures with KHR_texture_transform, vertex colours, the three light types, cameras, node
-  transforms, GLB;
+  transforms, GLB, KHR_mesh_quantization's integer attributes;
 - fuzz/image_seeds/ (image decoder, under 1 kB): PNGs of every colour type the readers decode
   (grey, grey 16-bit, RGB, RGBA, palette) and, when Debian's cjpeg (libjpeg-turbo-progs) is on
   the PATH, baseline, greyscale and progressive JPEGs of a 2x2 picture.
@@ -161,11 +161,35 @@ def emissive_sparse():
     return doc
 
 
+def quantized():
+    """KHR_mesh_quantization as gltfpack writes it: shorts and bytes, padded to 4 bytes a vertex."""
+    doc = Doc()
+
+    def padded(values, fmt, stride, component, normalized):
+        data = b"".join(struct.pack(f"<3{fmt}", *v) + b"\0" * (stride - 3 * struct.calcsize(fmt)) for v in values)
+        view = doc.view(data)
+        doc.gltf["bufferViews"][view]["byteStride"] = stride
+        doc.gltf["accessors"].append({"bufferView": view, "componentType": component, "count": len(values),
+                                      "type": "VEC3", "normalized": normalized})
+        return len(doc.gltf["accessors"]) - 1
+
+    attributes = {"POSITION": padded([(0, 0, 0), (1000, 0, 0), (1000, 1000, 0), (0, 1000, 0)], "h", 8, 5122, False),
+                  "NORMAL": padded([(0, 0, 127)] * 3 + [(0, 0, -128)], "b", 4, 5120, True),
+                  "TEXCOORD_0": doc.accessor([(0, 0), (2, 0), (2, 2), (0, 2)], "VEC2", 5123)}
+    indices = doc.accessor([0, 1, 2, 0, 2, 3], "SCALAR", 5123)
+    doc.gltf["meshes"].append({"primitives": [{"attributes": attributes, "indices": indices}]})
+    doc.gltf["extensionsUsed"] = ["KHR_mesh_quantization"]
+    doc.gltf["extensionsRequired"] = ["KHR_mesh_quantization"]
+    doc.node({"mesh": 0, "scale": [0.001, 0.001, 0.001]})
+    return doc
+
+
 def main():
     OUT.mkdir(exist_ok=True)
     (OUT / "lit_textured.gltf").write_text(lit_textured().text())
     (OUT / "lit_textured.glb").write_bytes(lit_textured().glb())
     (OUT / "emissive_sparse.gltf").write_text(emissive_sparse().text())
+    (OUT / "quantized.glb").write_bytes(quantized().glb())
     write_image_seeds()
     for path in sorted(OUT.iterdir()) + sorted(IMAGE_OUT.iterdir()):
         print(f"{path}: {path.stat().st_size} bytes")
