@@ -117,7 +117,8 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   flags.grouped.push_back({"time", render.add_option("--time", settings.seconds,
       tr("path: render passes of one sample per pixel until SECONDS are up (with --spp: at most that "
          "many samples); radiosity/hybrid: stop shooting when SECONDS of solving are up, if --shots or "
-         "--converge has not stopped it first"))->check(CLI::Range(0.001, 1e7))});
+         "--converge has not stopped it first (0.001 .. 10000000)"))
+      ->type_name("SECONDS")->check(CLI::Range(0.001, 1e7).description(""))});
 
   add_rows(render, radiosity_rows(), settings.radiosity, flags);
   flags.grouped.push_back({"radiosity", render.add_option("--csv", settings.csv,
