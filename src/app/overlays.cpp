@@ -164,8 +164,12 @@ void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewpor
   const std::string title = (warnings.size() == 1 ? std::string(tr("1 warning")) : trf("{} warnings", warnings.size())) + "###warnings";
   ImGui::Begin(title.c_str(), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                                          ImGuiWindowFlags_NoFocusOnAppearing);
+  // BulletText does not wrap: a bullet, then the text on its line, wrapped at the window's width.
   ImGui::PushTextWrapPos(0.85f * viewport.size.x);
-  for (const std::string& w : warnings) ImGui::BulletText("%s", w.c_str());
+  for (const std::string& w : warnings) {
+    ImGui::Bullet();
+    ImGui::TextUnformatted(w.c_str());
+  }
   ImGui::PopTextWrapPos();
   ImGui::End();
   ImGui::PopStyleColor(2);
