@@ -1,6 +1,7 @@
 // The glTF loader against SCENES.md: one test per mapping rule, values worked by hand, and one
 // test per kind of bad input (its ErrorKind, and a message that names the file).
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -863,6 +864,25 @@ TEST(Error, GlbBinChunkShorterThanBufferIsTruncated) {
   b.doc["buffers"] = json::array({{{"byteLength", b.bin.size() + 64}}});
   ScratchDir dir;
   expect_error(b.write_glb(dir), ErrorKind::truncated_buffer);
+}
+
+// gltfpack writes such a file for a scene it empties: the message says what is wrong.
+TEST(Error, GlbWithAnEmptyBinChunkSaysSo) {
+  GltfBuilder b;
+  b.doc["buffers"] = json::array({{{"byteLength", 0}}});
+  ScratchDir dir;
+  const auto path = b.write_glb(dir);
+  std::ifstream in(path, std::ios::binary);
+  std::vector<unsigned char> glb((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const uint32_t empty_bin[2] = {0u, 0x004E4942u};  // length 0, "BIN\0"
+  glb.insert(glb.end(), reinterpret_cast<const unsigned char*>(empty_bin),
+             reinterpret_cast<const unsigned char*>(empty_bin) + 8);
+  const uint32_t total = uint32_t(glb.size());
+  std::memcpy(glb.data() + 8, &total, 4);
+  write_file(path, glb);
+  const std::string message = expect_error(path, ErrorKind::bad_value);
+  EXPECT_NE(message.find("BIN chunk is empty"), std::string::npos) << message;
 }
 
 TEST(Error, GlbCutShortIsTruncated) {

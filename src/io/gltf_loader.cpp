@@ -221,6 +221,11 @@ std::string json_text(const Source& source, const std::vector<unsigned char>& by
   if (json_length > bytes.size() - 20)
     source.fail(ErrorKind::truncated_buffer, trf("the GLB JSON chunk needs {} bytes, the "
                                                  "file has {}", json_length, bytes.size() - 20));
+  // A BIN chunk of no bytes is no buffer (a glTF buffer holds at least one byte); tinygltf
+  // refuses it in words that contradict themselves.
+  const size_t bin_at = 20 + json_length;
+  if (bytes.size() - bin_at >= 8 && u32(bin_at + 4) == 0x004E4942u /* "BIN\0" */ && u32(bin_at) == 0)
+    source.fail(ErrorKind::bad_value, tr("the GLB's BIN chunk is empty (a glTF buffer holds at least one byte)"));
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + long(json_length));
 }
 
