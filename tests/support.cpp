@@ -34,7 +34,10 @@ CommandResult run_luz(const std::vector<std::string>& args, const CommandOptions
   if (options.no_display) command += "env -u DISPLAY -u WAYLAND_DISPLAY ";
   command += options.locale + " ";
   command += shell_quote(luz_binary().string());
-  for (const std::string& arg : args) command += " " + shell_quote(arg);
+  for (const std::string& arg : args) {
+    command += ' ';  // appended apart: GCC 12 warns falsely (-Wrestrict) on " " + a temporary
+    command += shell_quote(arg);
+  }
   command += " 2>&1 </dev/null";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
