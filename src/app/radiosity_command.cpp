@@ -66,22 +66,21 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   for (const std::string& warning : solver.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 
   const bool bar = !settings.quiet && isatty(fileno(stderr));
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  auto last_draw = start;
+  // The solver's own clock: its history stamps every shot with the seconds since it started.
+  const auto solving = [&] { return solver.history().back().seconds; };
+  auto last_draw = std::chrono::steady_clock::now();
   // A shot that starts finishes, so the time may run over by one shot; the first always runs.
   bool out_of_time = false;
   while (solver.step()) {
-    if (bar && Clock::now() - last_draw > std::chrono::milliseconds(100)) {
-      draw_progress(solver, options, seconds(), settings.seconds);
-      last_draw = Clock::now();
+    if (bar && std::chrono::steady_clock::now() - last_draw > std::chrono::milliseconds(100)) {
+      draw_progress(solver, options, solving(), settings.seconds);
+      last_draw = std::chrono::steady_clock::now();
     }
-    out_of_time = settings.seconds && seconds() >= *settings.seconds && !solver.done();
+    out_of_time = settings.seconds && solving() >= *settings.seconds && !solver.done();
     if (out_of_time) break;
   }
   if (bar) {
-    draw_progress(solver, options, seconds(), settings.seconds);
+    draw_progress(solver, options, solving(), settings.seconds);
     fmt::print(stderr, "\n");
   }
   if (!settings.csv.empty()) write_csv(settings.csv, solver);
@@ -90,7 +89,7 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
     fmt::print("{}\n", trf("radiosity: {} patches (longest edge {:.3g} m) of {} elements, hemicube {}, {} shots, "
                            "unshot {:.3f}% of the emitted power, {:.2f} s solving", mesh.shooters.size(),
                            mesh.max_edge, mesh.size(), options.hemicube_res, solver.shots(),
-                           100.0 * solver.unshot_fraction(), solver.history().back().seconds));
+                           100.0 * solver.unshot_fraction(), solving()));
   if (!settings.quiet && out_of_time)
     fmt::print("{}\n", trf("radiosity: stopped by --time {:g} before --converge or --shots", *settings.seconds));
 }

@@ -235,6 +235,14 @@ bool is_small_integer(int component_type) {
          component_type == TINYGLTF_COMPONENT_TYPE_SHORT || component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 }
 
+// What core glTF allows TEXCOORD_0 and COLOR_0 to hold: floats, or normalized unsigned bytes or
+// shorts.
+bool float_or_normalized_unsigned(const AccessorView& view) {
+  const bool unsigned_integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  return view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (unsigned_integer && view.normalized);
+}
+
 // KHR_mesh_quantization lets POSITION, NORMAL and TEXCOORD_0 hold 8- and 16-bit integers,
 // normalized or not; the nodes' transforms scale them back (gltfpack writes such files).
 bool quantized(const Context& ctx) {
@@ -271,10 +279,7 @@ std::vector<glm::vec3> read_vec3(const Context& ctx, int index, const std::strin
 std::vector<glm::vec2> read_texcoords(const Context& ctx, int index, const std::string& what) {
   const AccessorView view = view_accessor(ctx, index, what);
   require_type(ctx, index, view, TINYGLTF_TYPE_VEC2, "VEC2", what);
-  const bool unsigned_integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  const bool core = view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (unsigned_integer && view.normalized);
-  if (!core && !(quantized(ctx) && is_small_integer(view.component_type)))
+  if (!float_or_normalized_unsigned(view) && !(quantized(ctx) && is_small_integer(view.component_type)))
     ctx.fail(ErrorKind::bad_value,
              trf("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
   std::vector<glm::vec2> out(view.count, glm::vec2(0.0f));
@@ -296,9 +301,7 @@ std::vector<Rgb> read_colors(const Context& ctx, int index, const std::string& w
   const int type = ctx.model.accessors[size_t(index)].type;
   if (type != TINYGLTF_TYPE_VEC3 && type != TINYGLTF_TYPE_VEC4)
     ctx.fail(ErrorKind::bad_value, trf("{}: {} must be VEC3 or VEC4", what, view.name));
-  const bool integer = view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                       view.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  if (!(view.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && view.normalized)))
+  if (!float_or_normalized_unsigned(view))
     ctx.fail(ErrorKind::bad_value,
              trf("{}: {} must hold floats or normalized unsigned bytes/shorts", what, view.name));
   std::vector<Rgb> out(view.count, Rgb(0.0f));
