@@ -137,7 +137,8 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
     item_view_.update(solver_.hemicube());
     item_view_shot_ = solver_.shots();
     item_view_shooter_ = solver_.last_shooter();
-    item_view_due_ = clock::now() + 4 * (clock::now() - began);
+    const auto drawn = clock::now();
+    item_view_due_ = drawn + 4 * (drawn - began);
   }
   refresh_status(state);
 }
