@@ -455,5 +455,129 @@ TEST(CliSpanish, TheTracersCountersSpeakSpanish) {
   EXPECT_FALSE(contains(result.output, "per ray")) << result.output;
 }
 
+// ---- --exposure auto, and pictures far off their exposure --------------------------------------
+
+// A triangle in z = 0 seen from +Z (the framing camera) under one point light at (0.3, 0.3, z) of
+// `candela`, as `generator` wrote it.
+std::string lit_triangle(const test::ScratchDir& dir, double candela, double z, const std::string& generator) {
+  const fs::path path = dir / "lamp.gltf";
+  std::ofstream(path) << nlohmann::json{
+      {"asset", {{"version", "2.0"}, {"generator", generator}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", {0, 1}}}}},
+      {"nodes", {{{"mesh", 0}}, {{"translation", {0.3, 0.3, z}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}}},
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", candela}}}}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+                      {"min", {0, 0, 0}}, {"max", {1, 1, 0}}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
+      {"buffers", {{{"byteLength", 36},
+                    {"uri", "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}}}}};
+  return path.string();
+}
+
+std::string fmt_ev(float ev) {
+  std::ostringstream text;
+  text << ev;
+  return text.str();
+}
+
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The "exposure ... EV" of the summary line, as a number.
+float printed_exposure(const std::string& output) {
+  std::smatch match;
+  if (!std::regex_search(output, match, std::regex(R"(exposure ([-+][0-9.]+) EV)"))) return NAN;
+  return std::stof(match[1]);
+}
+
+TEST(Cli, ABlenderLampReadAsWattsPerSteradianIsWarnedOfAndAutoFitsIt) {
+  test::ScratchDir dir;
+  // Blender's 100 W lamp 3 m away: 100 / 4 pi x 683 = 5435 cd.
+  const std::string scene = lit_triangle(dir, 5435.14, 3.0, "Khronos glTF Blender I/O v3.4.50");
+  const auto plain = run_luz({"render", scene, "--out", (dir / "plain.png").string(), "--size", "200x150"});
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_TRUE(contains(plain.output, "warning: " + (dir / "plain.png").string() +
+                                         ": at +0 EV the picture is over-exposed: 100% of its lit pixels are white"))
+      << plain.output;
+  EXPECT_TRUE(contains(plain.output, "Blender I/O v3.4.50 writes lights in candela")) << plain.output;
+  EXPECT_TRUE(contains(plain.output, "; --exposure auto fits it")) << plain.output;
+
+  const auto fitted = run_luz({"render", scene, "--out", (dir / "auto.png").string(), "--size", "200x150",
+                               "--exposure", "auto"});
+  EXPECT_EQ(fitted.exit_code, 0) << fitted.output;
+  EXPECT_FALSE(contains(fitted.output, "warning")) << fitted.output;
+  // The fit from the EXR's radiance, computed here: log2(0.18 / exp(mean log Y)) over lit pixels.
+  const auto exr = run_luz({"render", scene, "--out", (dir / "lamp.exr").string(), "--size", "200x150"});
+  ASSERT_EQ(exr.exit_code, 0) << exr.output;
+  EXPECT_FALSE(contains(exr.output, "over-exposed")) << "an EXR holds radiance: no exposure to warn of";
+  double log_sum = 0.0;
+  int lit = 0;
+  for (const Rgb& c : io::read_image(dir / "lamp.exr").pixels)
+    if (const double y = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; y > 0.0) log_sum += std::log(y), ++lit;
+  ASSERT_GT(lit, 1000);
+  const float ev = printed_exposure(fitted.output);
+  EXPECT_NEAR(ev, std::log2(0.18 / std::exp(log_sum / lit)), 0.05 + 1e-4) << fitted.output;
+  EXPECT_LT(ev, -8.0f);
+  // The PNG is the one --exposure writes with that number.
+  const auto typed = run_luz({"render", scene, "--out", (dir / "typed.png").string(), "--size", "200x150",
+                              "--exposure", fmt_ev(ev)});
+  ASSERT_EQ(typed.exit_code, 0) << typed.output;
+  EXPECT_EQ(file_bytes(dir / "auto.png"), file_bytes(dir / "typed.png"));
+  EXPECT_NE(file_bytes(dir / "auto.png"), file_bytes(dir / "plain.png"));
+
+  // Side by side: one exposure for the sheet.
+  const auto sheet = run_luz({"render", scene, "--out", (dir / "sheet.png").string(), "--size", "200x150",
+                              "--model", "phong,whitted", "--exposure", "auto"});
+  EXPECT_EQ(sheet.exit_code, 0) << sheet.output;
+  EXPECT_NEAR(printed_exposure(sheet.output), ev, 0.15) << sheet.output;
+  const auto unfitted_sheet = run_luz({"render", scene, "--out", (dir / "sheet.png").string(), "--size", "200x150",
+                                       "--model", "phong,whitted"});
+  EXPECT_TRUE(contains(unfitted_sheet.output, "over-exposed")) << unfitted_sheet.output;
+}
+
+TEST(Cli, TheExposureWarningNamesNoBlenderForOtherFilesNorForAGivenExposure) {
+  test::ScratchDir dir;
+  const std::string scene = lit_triangle(dir, 5435.14, 3.0, "some exporter");
+  const auto plain = run_luz({"render", scene, "--out", (dir / "x.png").string(), "--size", "100x75"});
+  EXPECT_TRUE(contains(plain.output, "over-exposed")) << plain.output;
+  EXPECT_FALSE(contains(plain.output, "candela")) << plain.output;
+  // An exposure given is what the user wants: no warning.
+  const auto given = run_luz({"render", scene, "--out", (dir / "x.png").string(), "--size", "100x75",
+                              "--exposure", "1.5"});
+  EXPECT_FALSE(contains(given.output, "warning")) << given.output;
+  EXPECT_EQ(printed_exposure(given.output), 1.5f) << given.output;
+  const auto bad = run_luz({"render", scene, "--out", (dir / "x.png").string(), "--exposure", "bright"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(contains(bad.output, "bright: expected a finite number or auto")) << bad.output;
+}
+
+TEST(Cli, ExposureAutoKeepsTheScenesWhenNothingIsLit) {
+  test::ScratchDir dir;
+  // The lamp behind the triangle: the camera sees its unlit side.
+  const std::string scene = lit_triangle(dir, 10.0, -3.0, "");
+  const auto dark = run_luz({"render", scene, "--out", (dir / "x.png").string(), "--size", "100x75",
+                             "--exposure", "auto"});
+  EXPECT_EQ(dark.exit_code, 0) << dark.output;
+  EXPECT_TRUE(contains(dark.output, "nothing in the picture is lit: --exposure auto keeps +0 EV")) << dark.output;
+  EXPECT_EQ(printed_exposure(dark.output), 0.0f);
+}
+
+// The shipped scenes are exposed as they were made: no model's picture is far off.
+TEST(Cli, NoShippedSceneIsFarOffItsExposure) {
+  test::ScratchDir dir;
+  for (const auto& entry : fs::directory_iterator(test::scene_dir())) {
+    if (entry.path().extension() != ".gltf") continue;
+    const auto r = run_luz({"render", entry.path().string(), "--out", (dir / "x.png").string(), "--size", "160x120",
+                            "--model", "flat,phong,whitted,path", "--spp", "4"});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_FALSE(contains(r.output, "exposed")) << entry.path() << ": " << r.output;
+  }
+}
+
 }  // namespace
 }  // namespace luz

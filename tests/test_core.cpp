@@ -2,11 +2,14 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <string>
 
 #include <glm/ext/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/camera.h"
+#include "core/exposure.h"
 #include "core/image.h"
 #include "core/light.h"
 #include "core/material.h"
@@ -148,4 +151,101 @@ TEST(Scene, FindCameraByNameOrIndex) {
 }
 
 }  // namespace
+// ---- The exposure fitted to a picture (core/exposure.h) ------------------------------------------
+
+// An image of one grey luminance y (R = G = B, so Rec. 709's Y is y) in its first `lit` pixels and
+// black after them.
+Image grey_picture(float y, int lit, int black = 0) {
+  Image image(lit + black, 1);
+  for (int x = 0; x < lit + black; ++x) image.at(x, 0) = Rgb(x < lit ? y : 0.0f);
+  return image;
+}
+
+TEST(Exposure, AUniformPictureIsShownAsMiddleGrey) {
+  // log2(0.18 / 0.045) = 2 exactly; log2(0.18 / 0.72) = -2.
+  EXPECT_FLOAT_EQ(*fitted_exposure(picture_key(grey_picture(0.045f, 10))), 2.0f);
+  EXPECT_FLOAT_EQ(*fitted_exposure(picture_key(grey_picture(0.72f, 10))), -2.0f);
+  EXPECT_NEAR(picture_key(grey_picture(0.72f, 10)).log_average, 0.72, 1e-6);
+}
+
+TEST(Exposure, TheKeyIsTheLogAverageNotTheMean) {
+  // Half at 0.01 and half at 1: the log-average is 0.1 (the arithmetic mean, 0.505, would give
+  // -1.5 EV), so the fit is log2(1.8) = 0.848 -> 0.8.
+  Image image = grey_picture(0.01f, 4);
+  for (int x = 0; x < 2; ++x) image.at(x, 0) = Rgb(1.0f);
+  EXPECT_NEAR(picture_key(image).log_average, 0.1, 1e-6);
+  EXPECT_FLOAT_EQ(*fitted_exposure(picture_key(image)), 0.8f);
+}
+
+TEST(Exposure, LuminanceWeighsTheChannelsAsRec709) {
+  Image green(1, 1);
+  green.at(0, 0) = Rgb(0.0f, 0.18f / 0.7152f, 0.0f);  // Y = 0.18: shown as it is
+  EXPECT_FLOAT_EQ(*fitted_exposure(picture_key(green)), 0.0f);
+}
+
+TEST(Exposure, OnlyLitPixelsCount) {
+  // Black pixels (a background, a shadow) and broken ones have no say.
+  Image image = grey_picture(0.045f, 3, 5);
+  image.at(5, 0) = Rgb(std::numeric_limits<float>::quiet_NaN());
+  image.at(6, 0) = Rgb(std::numeric_limits<float>::infinity());
+  image.at(7, 0) = Rgb(-1.0f);
+  EXPECT_EQ(picture_key(image).lit, 3u);
+  EXPECT_FLOAT_EQ(*fitted_exposure(picture_key(image)), 2.0f);
+  EXPECT_FALSE(fitted_exposure(picture_key(grey_picture(0.5f, 0, 4))).has_value());
+}
+
+TEST(Exposure, TheFitIsRoundedToATenthOfAnEv) {
+  // log2(0.18 / 0.1) = 0.848
+  const float fitted = *fitted_exposure(picture_key(grey_picture(0.1f, 1)));
+  EXPECT_FLOAT_EQ(fitted, 0.8f);
+  EXPECT_FALSE(std::signbit(*fitted_exposure(picture_key(grey_picture(0.18f, 1)))));  // +0, not -0
+}
+
+TEST(Exposure, APictureFarOffItsExposureIsNamedOverOrUnder) {
+  // A Blender lamp read as W/sr: radiance 175 everywhere, fitted log2(0.18 / 175) = -9.9 EV.
+  const Image bright = grey_picture(175.0f, 8, 2);
+  const std::string over = exposure_problem(bright, 0.0f, "hint");
+  EXPECT_EQ(over, "at +0 EV the picture is over-exposed: 100% of its lit pixels are white, and its mid-tones "
+                  "call for -9.9 EV (hint)");
+  EXPECT_EQ(exposure_problem(bright, -9.9f), "");
+  // Within kExposureTolerance (4 EV) of the fit: nothing to say.
+  EXPECT_EQ(exposure_problem(bright, -9.9f + 3.9f), "");
+  EXPECT_NE(exposure_problem(bright, -9.9f + 4.1f), "");
+  // Radiance 1e-4 at +0 EV shows as black (below the 8-bit code 0.5 of the sRGB curve) and calls
+  // for log2(0.18 / 1e-4) = +10.8 EV. No hint: it is about lights too bright.
+  EXPECT_EQ(exposure_problem(grey_picture(1e-4f, 4), 0.0f, "hint"),
+            "at +0 EV the picture is under-exposed: 100% of its lit pixels are black, and its mid-tones call "
+            "for +10.8 EV");
+  EXPECT_NE(exposure_problem(grey_picture(0.045f, 4), 2.0f - 4.1f), "");
+  EXPECT_EQ(exposure_problem(grey_picture(0.045f, 4), 2.0f - 3.9f), "");
+  EXPECT_EQ(exposure_problem(grey_picture(0.0f, 4), 0.0f), "");  // nothing lit
+}
+
+TEST(Exposure, TheSharesCountWhiteAndBlackPixels) {
+  // Three of four lit pixels clip at +0 EV (a channel >= 1), the fourth does not.
+  Image image = grey_picture(300.0f, 4);
+  image.at(3, 0) = Rgb(0.5f);
+  EXPECT_NE(exposure_problem(image, 0.0f).find("75% of its lit pixels are white"), std::string::npos);
+  Image dark = grey_picture(1e-5f, 4);
+  dark.at(0, 0) = Rgb(1e-2f);
+  EXPECT_NE(exposure_problem(dark, 0.0f).find("75% of its lit pixels are black"), std::string::npos);
+}
+
+TEST(Exposure, ThePhotometricHintIsForBlendersLights) {
+  Scene scene;
+  scene.generator = "Khronos glTF Blender I/O v3.4.50";
+  EXPECT_EQ(photometric_hint(scene), "");  // no light
+  scene.lights.push_back(Light{});
+  EXPECT_EQ(photometric_hint(scene),
+            "Khronos glTF Blender I/O v3.4.50 writes lights in candela, 683 times the W/sr Luz reads, unless its "
+            "Lighting Mode is Unitless");
+  scene.default_lights = true;  // Luz's own: in its units
+  EXPECT_EQ(photometric_hint(scene), "");
+  scene.default_lights = false;
+  scene.generator = "Khronos glTF Blender I/O";
+  EXPECT_NE(photometric_hint(scene), "");
+  scene.generator = "glTF-Transform v3";
+  EXPECT_EQ(photometric_hint(scene), "");
+}
+
 }  // namespace luz

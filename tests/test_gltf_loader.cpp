@@ -794,6 +794,22 @@ TEST(Scene, DefaultsAndPathAsGiven) {
   EXPECT_FLOAT_EQ(scene.exposure, 0.0f);
   EXPECT_TRUE(scene.area_lights.empty());
   EXPECT_EQ(scene.lights.size(), 2u);  // the default lights: the file has none
+  EXPECT_TRUE(scene.default_lights);
+  EXPECT_EQ(scene.generator, "");
+}
+
+// The program that wrote the file (asset.generator), and whether its lights are its own: what
+// the exposure warning's hint on photometric lights reads (core/exposure.h).
+TEST(Scene, TheGeneratorAndTheFilesOwnLights) {
+  GltfBuilder b = one_triangle();
+  b.doc["asset"]["generator"] = "Khronos glTF Blender I/O v3.4.50";
+  const int light = b.light({{"type", "point"}, {"intensity", 5435.0}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+  ScratchDir dir;
+  const Scene scene = io::load_gltf(b.write_gltf(dir)).scene;
+  EXPECT_EQ(scene.generator, "Khronos glTF Blender I/O v3.4.50");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_FALSE(scene.default_lights);
 }
 
 // ================================================================================================

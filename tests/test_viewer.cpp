@@ -42,6 +42,7 @@ using test::Codes;
 using test::codes;
 using test::json_of;
 using test::share_moved;
+using nlohmann::json;
 
 class ViewerRun : public ::testing::Test {
 protected:
@@ -263,6 +264,57 @@ TEST_F(ViewerRun, ABrokenFileShowsItsErrorAndKeepsThePreviousScene) {
   std::ifstream log(file("viewer.log"));
   const std::string text((std::istreambuf_iterator<char>(log)), {});
   EXPECT_NE(text.find("broken.gltf"), std::string::npos) << text;
+}
+
+// A file from Blender with its lights in candela (run_viewer_script.sh writes bright.gltf): the
+// first picture is white and a warning in the window says why and what to press; K fits the
+// exposure, which is then the log-average luminance of the picture's lit pixels shown as middle
+// grey (Reinhard et al. 2002), computed here from `luz render`'s EXR of the same view.
+TEST_F(ViewerRun, KFitsTheExposureOfAFileWhoseLightsAreInCandela) {
+  const json loaded = json_of(file("bright-loaded.json"));
+  EXPECT_EQ(loaded["exposure"].get<double>(), 0.0);
+  std::string warning;
+  for (const json& w : loaded["warnings"])
+    if (w.get<std::string>().find("over-exposed") != std::string::npos) warning = w.get<std::string>();
+  EXPECT_EQ(warning.rfind("bright.gltf: at +0 EV the picture is over-exposed: 100% of its lit pixels are white", 0), 0u)
+      << loaded["warnings"].dump();
+  EXPECT_NE(warning.find("Blender I/O v3.4.50 writes lights in candela"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("K fits the exposure"), std::string::npos) << warning;
+
+  const test::ScratchDir scratch;
+  const auto exr = scratch / "bright.exr";
+  const auto rendered = test::run_luz({"render", file("bright.gltf").string(), "--out", exr.string(), "--size", "400x300"});
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+  double log_sum = 0.0;
+  size_t lit = 0;
+  for (const Rgb& c : io::read_image(exr).pixels) {
+    const double y = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+    if (y > 0.0) log_sum += std::log(y), ++lit;
+  }
+  ASSERT_GT(lit, 1000u);
+  const double expected = std::log2(0.18 / std::exp(log_sum / double(lit)));
+  const json fitted = json_of(file("bright-fitted.json"));
+  EXPECT_LT(expected, -8.0);  // the lamp is 683 times too bright: about -9.4 EV off, light falloff aside
+  EXPECT_NEAR(fitted["exposure"].get<double>(), expected, 0.15);
+  // A script's (or a lesson's) `set exposure auto` fits it as K does.
+  EXPECT_EQ(json_of(file("bright-set-auto.json"))["exposure"], fitted["exposure"]);
+
+  // The triangle white at +0 EV, a grey at the fitted exposure.
+  const auto triangle_codes = [](const Codes& picture) {
+    std::vector<int> lit_codes;
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < picture.width; ++x)
+        if (picture.at(x, y, 1) > 0) lit_codes.push_back(picture.at(x, y, 1));
+    std::sort(lit_codes.begin(), lit_codes.end());
+    return lit_codes;
+  };
+  const std::vector<int> white = triangle_codes(codes(file("bright-loaded.png")));
+  const std::vector<int> grey = triangle_codes(codes(file("bright-fitted.png")));
+  ASSERT_GT(white.size(), 1000u);
+  ASSERT_GT(grey.size(), 1000u);
+  EXPECT_EQ(white[white.size() / 2], 255);
+  EXPECT_GT(grey[grey.size() / 2], 60);
+  EXPECT_LT(grey[grey.size() / 2], 200);
 }
 
 }  // namespace

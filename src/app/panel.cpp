@@ -283,8 +283,11 @@ void scene_header(ViewerState& state) {
   name_widget("ambient Ia");
   ImGui::ColorEdit3(tr("background"), &scene.background.r, hdr);
   name_widget("background");
-  ImGui::SliderFloat(tr("exposure (EV)"), &state.exposure, -6.0f, 6.0f, "%+.1f");
+  // Files from elsewhere may need -10 EV (Blender's lights in candela): core/exposure.h.
+  ImGui::SliderFloat(tr("exposure (EV)"), &state.exposure, -12.0f, 12.0f, "%+.1f");
   name_widget("exposure (EV)");
+  if (ImGui::Button(tr("fit the exposure [K]"))) state.exposure_fit = true;
+  name_widget("fit the exposure [K]");
   const Camera& current = scene.cameras[size_t(state.scene_camera)];
   const std::string preview = state.free_camera ? trf("(moved from {})", current.name) : current.name;
   const bool choosing = ImGui::BeginCombo(tr("camera"), preview.c_str());

@@ -13,6 +13,7 @@
 
 #include "app/i18n.h"
 #include "core/error.h"
+#include "core/exposure.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "app/model_registry.h"
@@ -106,6 +107,20 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
   return scene.cameras[size_t(index)];
 }
 
+float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture) {
+  if (settings.exposure) return *settings.exposure;
+  if (settings.exposure_auto) {
+    if (const std::optional<float> fitted = fitted_exposure(picture_key(picture))) return *fitted;
+    fmt::print(stderr, "{}\n", trf("warning: {}: nothing in the picture is lit: --exposure auto keeps {:+g} EV",
+                                   settings.out, scene.exposure));
+    return scene.exposure;
+  }
+  if (io::is_png_output(settings.out))
+    if (const std::string problem = exposure_problem(picture, scene.exposure, photometric_hint(scene)); !problem.empty())
+      fmt::print(stderr, "{}\n", trf("warning: {}: {}; --exposure auto fits it", settings.out, problem));
+  return scene.exposure;
+}
+
 int run_render(const RenderSettings& settings) {
   try {
     if (settings.local.fog.mode == FogMode::linear && !(settings.local.fog.far > settings.local.fog.near))
@@ -137,7 +152,7 @@ int run_render(const RenderSettings& settings) {
     const auto start = Clock::now();
     Rendered rendered = model->render(scene, camera, width, height, settings);
     const double model_seconds = seconds_since(start);
-    const float exposure = settings.exposure.value_or(scene.exposure);
+    const float exposure = chosen_exposure(settings, scene, rendered.image);
     const auto writing = Clock::now();
     try {
       io::write_image(rendered.image, settings.out, exposure);

@@ -21,6 +21,7 @@ struct RenderSettings {
   int height = 0;
   std::string camera;            // name or index; empty = the scene's first
   std::optional<float> exposure; // overrides the scene's
+  bool exposure_auto = false;    // --exposure auto: fitted to the picture (core/exposure.h)
   LocalOptions local;
   RadiosityOptions radiosity;
   std::string csv;               // radiosity: the residual history, one row per shot
@@ -53,6 +54,11 @@ bool parse_rgb(const std::string& text, Rgb& colour);
 // The camera --camera names (by name or index), else the scene's first; a usage error naming the
 // scene's cameras when there is none of that name.
 const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene);
+
+// The PNG's exposure: --exposure's number, the picture's fitted one with --exposure auto, else
+// the scene's. Where no number was given, a picture far off the exposure it gets is warned of on
+// stderr, with the way out.
+float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture);
 
 // Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
 // any message to stderr.

@@ -79,10 +79,15 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   render.add_option_function<std::string>(
       "--exposure",
       [&settings](const std::string& text) {
-        if (!is_number(text)) throw CLI::ValidationError("--exposure", trf("{}: expected a finite number", text));
+        settings.exposure_auto = text == "auto";
+        if (settings.exposure_auto) return;
+        if (!is_number(text))
+          throw CLI::ValidationError("--exposure", trf("{}: expected a finite number or auto", text));
         settings.exposure = std::stof(text);
       },
-      tr("Exposure in EV for PNG output (default: the scene's)"));
+      tr("Exposure in EV for PNG output, or auto: the picture's log-average luminance shown as middle grey "
+         "(default: the scene's)"))
+      ->type_name("EV|auto");
   render.add_flag("-q,--quiet", settings.quiet, tr("Print nothing on success"));
   render.add_option_function<std::string>(
       "--gl", [](const std::string& name) { gl::set_default_backend(*gl::parse_backend(name)); },

@@ -130,18 +130,23 @@ int run_render_grid(const RenderSettings& settings) {
       height = kDefaultPaneHeight;
       width = std::max(1, int(std::lround(float(height) * (camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f))));
     }
-    const float exposure = settings.exposure.value_or(scene.exposure);
     const GridLayout layout = grid_layout(models.size());
 
     const auto start = std::chrono::steady_clock::now();
+    std::vector<Image> panes;
+    for (const ModelEntry* entry : entries) panes.push_back(render_pane(scene, camera, width, height, *entry, settings));
     Image sheet(layout.columns * width, layout.rows * height);
-    for (size_t i = 0; i < models.size(); ++i) {
-      Image image = render_pane(scene, camera, width, height, *entries[i], settings);
-      draw_label(image, font, model_label(models[i]), exposure);
-      const int left = int(i) % layout.columns * width, top = int(i) / layout.columns * height;
-      for (int y = 0; y < height; ++y)
-        std::copy_n(&image.at(0, y), width, &sheet.at(left, top + y));
-    }
+    const auto assemble = [&] {
+      for (size_t i = 0; i < panes.size(); ++i) {
+        const int left = int(i) % layout.columns * width, top = int(i) / layout.columns * height;
+        for (int y = 0; y < height; ++y) std::copy_n(&panes[i].at(0, y), width, &sheet.at(left, top + y));
+      }
+    };
+    // One exposure for all the panes, so that they compare, chosen before the labels go on.
+    assemble();
+    const float exposure = chosen_exposure(settings, scene, sheet);
+    for (size_t i = 0; i < panes.size(); ++i) draw_label(panes[i], font, model_label(models[i]), exposure);
+    assemble();
     io::write_image(sheet, settings.out, exposure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet)

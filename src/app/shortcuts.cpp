@@ -50,6 +50,7 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_J, 0, 0, "J", Action::toggle_solvers, N_("slide 36: the system solved four ways, curves live (window)")},
     {0, 0, '+', "+", Action::exposure_up, N_("exposure +0.5 EV (any '+' key, the keypad's too)")},
     {0, 0, '-', "-", Action::exposure_down, N_("exposure -0.5 EV (any '-' key, the keypad's too)")},
+    {GLFW_KEY_K, 0, 0, "K", Action::exposure_fit, N_("exposure fitted to the picture: its mid-tones middle grey (the Key)")},
     {GLFW_KEY_EQUAL, GLFW_MOD_CONTROL, 0, N_("Ctrl+="), Action::ui_larger, N_("larger interface (a projector); Ctrl+- smaller")},
     {GLFW_KEY_MINUS, GLFW_MOD_CONTROL, 0, N_("Ctrl+-"), Action::ui_smaller, N_("smaller interface")},
     {GLFW_KEY_C, 0, 0, "C", Action::scene_camera, N_("back to the scene camera")},

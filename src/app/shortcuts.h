@@ -14,7 +14,7 @@ enum class Action {
   toggle_ambient, toggle_diffuse, toggle_specular, toggle_emission, toggle_textures, toggle_blinn,
   cycle_attenuation,
   cycle_fog, toggle_shadows, toggle_transparency, toggle_reflection_map,
-  exposure_up, exposure_down,
+  exposure_up, exposure_down, exposure_fit,
   ui_larger, ui_smaller,
   scene_camera, next_camera,
   reload, screenshot, screenshot_with_panel,

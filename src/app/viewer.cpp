@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -38,6 +39,7 @@
 #include "app/screenshot.h"
 #include "app/viewer_settings.h"
 #include "core/error.h"
+#include "core/exposure.h"
 
 namespace luz::app {
 namespace {
@@ -255,6 +257,7 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
     state_.free_camera = false;
   }
   if (!keep_view) state_.exposure = scene.exposure;
+  exposure_check_ = true;
   if (size_t(state_.selected_material) >= scene.materials.size()) state_.selected_material = -1;
   if (!state_.free_camera) to_scene_camera();
   rebuild_renderer();
@@ -529,6 +532,7 @@ void Viewer::apply(Action action) {
       state_.exposure += action == Action::exposure_up ? 0.5f : -0.5f;
       state_.note = trf("exposure {:+.1f} EV", state_.exposure);
       break;
+    case Action::exposure_fit: state_.exposure_fit = true; break;
     case Action::ui_larger: set_ui_scale(user_scale_ * ui_scale_step); break;
     case Action::ui_smaller: set_ui_scale(user_scale_ / ui_scale_step); break;
     case Action::scene_camera: to_scene_camera(); break;
@@ -649,8 +653,9 @@ void Viewer::draw_picture(const Layout& l) {
       std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
   double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
   copied_panes_ = direct_panes_ = 0;
+  const bool reading_exposure = state_.exposure_fit || exposure_check_;
   const bool radiance_wanted =
-      state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
+      reading_exposure || state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
       std::any_of(screenshots_.begin(), screenshots_.end(), [](const PendingScreenshot& s) { return !s.with_panel; });
   auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
@@ -706,6 +711,38 @@ void Viewer::draw_picture(const Layout& l) {
   }
   smooth(state_.frame_phases.models_ms, models_ms);
   smooth(state_.frame_phases.exposure_ms, exposure_ms);
+  if (reading_exposure) read_exposure();
+}
+
+// The active pane's radiance against the exposure: fitted to it when K (the panel, `set exposure
+// auto`) asked, and for a scene just loaded, a warning when the picture is far off (most often
+// a file whose lights are in photometric units).
+void Viewer::read_exposure() {
+  const bool fit = std::exchange(state_.exposure_fit, false);
+  const bool check = std::exchange(exposure_check_, false);
+  if (active_pane_ >= pictures_.size() || !pictures_[active_pane_]) return;
+  const Image picture = pictures_[active_pane_]->read();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (fit) {
+    const PictureKey key = picture_key(picture);
+    if (const std::optional<float> fitted = fitted_exposure(key)) {
+      state_.exposure = *fitted;
+      state_.note = trf("exposure {:+.1f} EV: the picture's log-average luminance, {:.3g}, shown as middle grey",
+                        *fitted, key.log_average);
+    } else {
+      state_.note = tr("exposure: nothing in the picture is lit to fit it to");
+    }
+    frames_to_draw_ = std::max(frames_to_draw_, 1);  // the picture again, at its new exposure
+  } else if (check) {
+    const Scene& scene = *state_.scene;
+    if (const std::string problem = exposure_problem(picture, state_.exposure, photometric_hint(scene));
+        !problem.empty()) {
+      const std::string warning = trf("{}: {}; K fits the exposure to the picture",
+                                      state_.scene_path.filename().string(), problem);
+      fmt::print(stderr, "{}\n", trf("warning: {}", warning));
+      warn(warning);
+    }
+  }
 }
 
 // The windows over the picture: the status line, the shown model's windows in the picture's

@@ -33,7 +33,8 @@ std::string all_names() {
 }  // namespace
 
 std::string check_setting(const std::string& name, const std::string& value) {
-  if (name == "exposure") return is_number(value) ? "" : "`set exposure EV` takes a finite number";
+  if (name == "exposure")
+    return is_number(value) || value == "auto" ? "" : "`set exposure EV` takes a finite number or auto";
   if (name == "ui-scale")
     return is_number(value) && std::stof(value) >= kMinUiScale && std::stof(value) <= kMaxUiScale
                ? "" : fmt::format("`set ui-scale S` takes {} .. {}", kMinUiScale, kMaxUiScale);
@@ -50,7 +51,8 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
     return false;
   }
   if (name == "exposure") {
-    state.exposure = std::stof(value);
+    if (value == "auto") state.exposure_fit = true;  // on the next picture (the viewer reads it)
+    else state.exposure = std::stof(value);
     return true;
   }
   for (const ViewerSetting& s : switches)

@@ -45,6 +45,7 @@ struct ViewerState {
   std::string model = "phong";          // a name of the registry (model_registry.h); the
                                         // panel's radio buttons set it, the viewer follows
   float exposure = 0.0f;                // EV, from the scene, then the panel's
+  bool exposure_fit = false;            // asked for: the exposure fitted to the next picture (core/exposure.h)
   bool present_parts = true;            // only the window's changed parts shown, where it keeps its back buffer
   bool display_copy = true;             // the local models' displayed values copied to the window
   bool display_direct = true;           // ...or drawn straight into it when no radiance is needed

@@ -139,6 +139,7 @@ private:
   void draw_windows(const Layout& l);
   const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
+  void read_exposure();
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
 
@@ -181,6 +182,7 @@ private:
   std::vector<PendingScreenshot> screenshots_;
   std::vector<std::string> warnings_;  // the scene's loader and renderer warnings, shown in the window
   bool show_warnings_ = false;
+  bool exposure_check_ = false;    // a scene came: its first picture is checked against the exposure
   bool quit_ = false;
   unsigned frame_number_ = 0;
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)

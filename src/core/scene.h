@@ -75,6 +75,8 @@ struct Scene {
   Rgb ambient{0.0f};                 // I_a
   Rgb background{0.0f};              // radiance of rays that hit nothing
   float exposure = 0.0f;             // EV of the scene's pictures
+  std::string generator;             // asset.generator: the program that wrote the file
+  bool default_lights = false;       // the file had no light: add_default_lights placed `lights`
 
   Bounds bounds() const;
   size_t triangle_count() const;

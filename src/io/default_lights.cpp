@@ -33,6 +33,7 @@ void add_default_lights(Scene& scene) {
 
   scene.lights.push_back(key);
   scene.lights.push_back(fill);
+  scene.default_lights = true;
 }
 
 }  // namespace luz::io

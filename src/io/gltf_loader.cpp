@@ -610,6 +610,7 @@ LoadedScene load_gltf(const fs::path& path) {
                   [&](const Mesh& m) { return m.material == default_material; }))
     scene.materials.push_back(Material{});  // "default": kd 0.8 grey (SCENES.md)
   read_scene_extras(ctx, scene);
+  scene.generator = ctx.model.asset.generator;
   if (scene.cameras.empty()) scene.cameras.push_back(Camera::framing(scene.bounds()));
   scene.find_area_lights();
   if (io::has_no_lights(scene)) {

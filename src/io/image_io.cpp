@@ -294,6 +294,8 @@ bool is_supported_output(const fs::path& path) {
   return ext == ".png" || ext == ".exr";
 }
 
+bool is_png_output(const fs::path& path) { return lower_extension(path) == ".png"; }
+
 void write_image(const Image& image, const fs::path& path, float exposure) {
   if (!is_supported_output(path))
     throw Error(ErrorKind::usage, trf("{}: output must be .png or .exr", path.string()));

@@ -36,5 +36,6 @@ std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
                                       const std::string& name, std::string& error);
 
 bool is_supported_output(const std::filesystem::path& path);  // .png or .exr
+bool is_png_output(const std::filesystem::path& path);        // the output an exposure changes
 
 }  // namespace luz::io

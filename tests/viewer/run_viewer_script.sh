@@ -23,6 +23,20 @@ cat > unlit.gltf <<'EOF'
  "bufferViews": [{"buffer": 0, "byteLength": 36}],
  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
 EOF
+# A scene as Blender's glTF exporter writes it in its default Lighting Mode: a 100 W lamp 3 m
+# over the triangle comes as 100 / 4 pi x 683 = 5435 candela, which Luz reads as W/sr.
+cat > bright.gltf <<'EOF'
+{"asset": {"version": "2.0", "generator": "Khronos glTF Blender I/O v3.4.50"}, "scene": 0,
+ "scenes": [{"nodes": [0, 1]}], "nodes": [{"mesh": 0},
+   {"translation": [0.3, 0.3, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+ "extensionsUsed": ["KHR_lights_punctual"],
+ "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5435.14}]}},
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+EOF
 # -noreset: by default an X server resets when its last client leaves, and `luz` first checks
 # that a display is there (a connection it closes) before opening its window (a second one); on
 # a loaded machine the second connection can fall into the reset and fail.

@@ -1,0 +1,71 @@
+#include "core/exposure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/i18n.h"
+#include "core/image_compare.h"
+
+namespace luz {
+
+PictureKey picture_key(const Image& picture) {
+  PictureKey key;
+  double log_sum = 0.0;
+  for (const Rgb& c : picture.pixels) {
+    const double y = rec709_luminance(c);
+    if (!(y > 0.0) || !std::isfinite(y)) continue;
+    log_sum += std::log(y);
+    ++key.lit;
+  }
+  if (key.lit > 0) key.log_average = std::exp(log_sum / double(key.lit));
+  return key;
+}
+
+std::optional<float> fitted_exposure(const PictureKey& key) {
+  if (key.lit == 0) return std::nullopt;
+  // + 0: a fit of -0.0 would print as "-0 EV".
+  return float(std::round(10.0 * std::log2(kMiddleGrey / key.log_average)) / 10.0) + 0.0f;
+}
+
+std::string exposure_problem(const Image& picture, float ev, const std::string& photometric_hint) {
+  const std::optional<float> fitted = fitted_exposure(picture_key(picture));
+  if (!fitted || std::abs(*fitted - ev) <= kExposureTolerance) return {};
+  // The PNG's white is radiance 1 after 2^ev; its black, the 8-bit code 0 of the sRGB curve's
+  // linear segment (12.92 x below 0.5 / 255).
+  const double scale = std::exp2(double(ev));
+  constexpr double kBlack = 0.5 / 255.0 / 12.92;
+  size_t lit = 0, white = 0, black = 0;
+  for (const Rgb& c : picture.pixels) {
+    const double y = rec709_luminance(c);
+    if (!(y > 0.0) || !std::isfinite(y)) continue;
+    ++lit;
+    const double brightest = std::max({double(c.r), double(c.g), double(c.b)}) * scale;
+    white += brightest >= 1.0;
+    black += brightest < kBlack;
+  }
+  const double percent = 100.0 / double(lit);
+  // The messages are fmt strings: "{:.0f}% of" is no printf directive.
+  std::string problem;
+  if (*fitted < ev)
+    // xgettext:no-c-format
+    problem = i18n::trf("at {:+g} EV the picture is over-exposed: {:.0f}% of its lit pixels are white, and its "
+                        "mid-tones call for {:+.1f} EV",
+                        ev, percent * double(white), *fitted);
+  else
+    // xgettext:no-c-format
+    problem = i18n::trf("at {:+g} EV the picture is under-exposed: {:.0f}% of its lit pixels are black, and its "
+                        "mid-tones call for {:+.1f} EV",
+                        ev, percent * double(black), *fitted);
+  if (*fitted < ev && !photometric_hint.empty()) problem += " (" + photometric_hint + ")";
+  return problem;
+}
+
+std::string photometric_hint(const Scene& scene) {
+  const bool punctual = !scene.lights.empty() && !scene.default_lights;
+  if (!punctual || scene.generator.find("Blender") == std::string::npos) return {};
+  return i18n::trf("{} writes lights in candela, 683 times the W/sr Luz reads, unless its Lighting Mode is "
+                   "Unitless",
+                   scene.generator);
+}
+
+}  // namespace luz

@@ -1,0 +1,48 @@
+#pragma once
+// An exposure read off the picture, as a camera's automatic exposure does. For scenes whose light
+// is far from the program's units: files from elsewhere, such as Blender's exports, whose lights
+// come in candela, 683 times the W/sr that Luz reads them as (SCENES.md "Lights").
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "core/image.h"
+#include "core/scene.h"
+
+namespace luz {
+
+// A picture's key (Reinhard, Stark, Shirley & Ferwerda 2002, "Photographic tone reproduction for
+// digital images", section 3.1) is the log-average luminance of its pixels, exp(mean(log Y)); a
+// scene of normal key is exposed so that it shows as middle grey.
+inline constexpr double kMiddleGrey = 0.18;
+
+// The pixels that see something lit (finite Rec. 709 luminance Y > 0); a black background or a
+// shadow has no logarithm and says nothing about the exposure.
+struct PictureKey {
+  size_t lit = 0;
+  double log_average = 0.0;  // exp(mean(log Y)) over the lit pixels; 0 when there are none
+};
+PictureKey picture_key(const Image& picture);
+
+// The exposure, in EV, that shows the lit pixels' log-average luminance as middle grey:
+// log2(0.18 / key), rounded to a tenth of an EV so that it can be typed back (--exposure, the
+// panel). None when nothing is lit.
+std::optional<float> fitted_exposure(const PictureKey& key);
+
+// How far `ev` is from the fitted exposure before the picture counts as badly exposed: 4 EV,
+// sixteen times too bright or too dark. A dim or a bright scene lit on purpose stays well inside.
+inline constexpr float kExposureTolerance = 4.0f;
+
+// A sentence on what is wrong with showing `picture` at `ev` (over-exposed: mostly white, or
+// under-exposed: mostly black, with the share of white pixels and the fitted exposure), or empty
+// when `ev` is within kExposureTolerance of the fitted one or nothing is lit. `photometric_hint`:
+// add that the file's lights may be photometric (its writer's name, e.g. Blender's exporter).
+std::string exposure_problem(const Image& picture, float ev, const std::string& photometric_hint = {});
+
+// That hint for a scene whose punctual lights are likely photometric: those of Blender's glTF
+// exporter, whose default Lighting Mode ("Standard") writes a lamp of P watts as P / 4 pi x 683
+// candela (io_scene_gltf2, PBR_WATTS_TO_LUMENS), where its "Unitless" mode writes the P / 4 pi
+// W/sr Luz reads. Empty for any other scene.
+std::string photometric_hint(const Scene& scene);
+
+}  // namespace luz
