@@ -7,13 +7,19 @@
 #include "core/image_compare.h"
 
 namespace luz {
+namespace {
+
+// A pixel that sees light: a finite luminance above 0.
+bool lit(double y) { return y > 0.0 && std::isfinite(y); }
+
+}  // namespace
 
 PictureKey picture_key(const Image& picture) {
   PictureKey key;
   double log_sum = 0.0;
   for (const Rgb& c : picture.pixels) {
     const double y = rec709_luminance(c);
-    if (!(y > 0.0) || !std::isfinite(y)) continue;
+    if (!lit(y)) continue;
     log_sum += std::log(y);
     ++key.lit;
   }
@@ -34,16 +40,15 @@ std::string exposure_problem(const Image& picture, float ev, const std::string& 
   // linear segment (12.92 x below 0.5 / 255).
   const double scale = std::exp2(double(ev));
   constexpr double kBlack = 0.5 / 255.0 / 12.92;
-  size_t lit = 0, white = 0, black = 0;
+  size_t counted = 0, white = 0, black = 0;
   for (const Rgb& c : picture.pixels) {
-    const double y = rec709_luminance(c);
-    if (!(y > 0.0) || !std::isfinite(y)) continue;
-    ++lit;
+    if (!lit(rec709_luminance(c))) continue;
+    ++counted;
     const double brightest = std::max({double(c.r), double(c.g), double(c.b)}) * scale;
     white += brightest >= 1.0;
     black += brightest < kBlack;
   }
-  const double percent = 100.0 / double(lit);
+  const double percent = 100.0 / double(counted);
   // The messages are fmt strings: "{:.0f}% of" is no printf directive.
   std::string problem;
   if (*fitted < ev)
