@@ -2,11 +2,19 @@
 // A patch has radiosity only on its front side; its back shows black. With u_outline set, the
 // patch edges are drawn in one colour (the second, wireframe pass).
 in vec3 v_radiance;
+in vec2 v_uv;
 
 uniform bool u_outline;
 uniform vec3 u_outline_colour;
+// The solver gave the patch its kd texture's mean texel; the picture puts the texture's detail
+// back, texel / mean (radiosity/texture_detail.h).
+uniform bool u_textured;
+uniform sampler2D u_kd_texture;
+uniform vec3 u_inverse_mean;
 // A shooting patch to show in u_highlight_colour (the shooter): its elements are primitives
-// u_highlight_first .. + u_highlight_count of the draw (count 0 for none).
+// u_highlight_first .. + u_highlight_count of the elements (count 0 for none); this draw's first
+// is element u_first_primitive.
+uniform int u_first_primitive;
 uniform int u_highlight_first;
 uniform int u_highlight_count;
 uniform vec3 u_highlight_colour;
@@ -18,10 +26,11 @@ void main() {
     frag_radiance = vec4(u_outline_colour, 1.0);
     return;
   }
-  if (gl_PrimitiveID >= u_highlight_first &&
-      gl_PrimitiveID < u_highlight_first + u_highlight_count) {
+  int element = u_first_primitive + gl_PrimitiveID;
+  if (element >= u_highlight_first && element < u_highlight_first + u_highlight_count) {
     frag_radiance = vec4(u_highlight_colour, 1.0);
     return;
   }
-  frag_radiance = vec4(gl_FrontFacing ? v_radiance : vec3(0.0), 1.0);
+  vec3 detail = u_textured ? texture(u_kd_texture, v_uv).rgb * u_inverse_mean : vec3(1.0);
+  frag_radiance = vec4(gl_FrontFacing ? v_radiance * detail : vec3(0.0), 1.0);
 }

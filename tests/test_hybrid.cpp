@@ -13,14 +13,19 @@
 //   faces down), radiosity by the light the room sends back up.
 // - The mirror sphere's highlight is Whitted's, pixel for pixel, and slide 15's closed form.
 //
+// - A textured floor shows its texture in radiosity and in the hybrid alike: the solution, made
+//   with the texture's mean texel, times texel / mean (radiosity/texture_detail.h).
+//
 // One OSMesa context for the whole binary: the radiosity solves draw hemicubes.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -44,22 +49,26 @@ float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f *
 struct Pictures {
   Scene scene;
   PatchMesh mesh;
+  RadianceField field;  // the converged solution's
   Image radiosity, hybrid, whitted;
   std::vector<int> mesh_at;  // the mesh each pixel centre's primary ray hits (-1: none)
   std::unique_ptr<hybrid::RadiosityDiffuse> diffuse;
   std::unique_ptr<rt::WhittedRenderer> tracer, hybrid_tracer;  // Whitted's; with the diffuse source
 
-  Pictures(const std::string& name, const RadiosityOptions& options) {
-    scene = io::load_gltf(test::scene_dir() / (name + ".gltf")).scene;
+  Pictures(const std::string& name, const RadiosityOptions& options)
+      : Pictures(io::load_gltf(test::scene_dir() / (name + ".gltf")).scene, options) {}
+
+  Pictures(Scene loaded, const RadiosityOptions& options) : scene(std::move(loaded)) {
     mesh = PatchMesh::build(scene, options);
     ProgressiveSolver solver(scene, mesh, options);
     while (solver.step()) {}
     const Camera& camera = scene.cameras.front();
+    field = RadianceField::of(solver);
     RadiosityRenderer renderer(scene, mesh);
-    renderer.update(RadianceField::of(solver), options);
+    renderer.update(field, options);
     radiosity = renderer.render(camera, kSize, kSize, options);
 
-    diffuse = std::make_unique<hybrid::RadiosityDiffuse>(mesh, RadianceField::of(solver));
+    diffuse = std::make_unique<hybrid::RadiosityDiffuse>(scene, mesh, RadianceField::of(solver));
     tracer = std::make_unique<rt::WhittedRenderer>(scene);
     hybrid_tracer = std::make_unique<rt::WhittedRenderer>(scene);
     hybrid_tracer->set_diffuse_source(diffuse.get());
@@ -259,6 +268,70 @@ TEST_F(CornellSpheres, TheHighlightsAreWhittedsHighlights) {
   }
   // n = 300 turns a float rounding of cos(alpha) (1e-7) into 3e-5 of the highlight.
   EXPECT_NEAR(brightest, expected, 1e-3 * expected);
+}
+
+// A 2 m floor seen from above under a lamp. Textured: kd 1 and an 8 x 8 texture in four 4 x 4
+// blocks of 0.2 and 0.8 (mean 0.5), mapped once; plain: kd 0.5. The two have the same patches'
+// reflectance, so the same solution.
+Scene lamp_over_floor(bool textured) {
+  Scene scene;
+  Mesh floor;
+  floor.name = "floor";
+  floor.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+  floor.normals.assign(4, glm::vec3(0, 1, 0));
+  floor.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  floor.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
+  scene.meshes.push_back(floor);
+  Material material;
+  material.kd = Rgb(textured ? 1.0f : 0.5f);
+  if (textured) {
+    Texture blocks;
+    blocks.width = blocks.height = 8;
+    blocks.texels.assign(64, Rgb(0.0f));
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) blocks.texels[size_t(y * 8 + x)] = Rgb((x < 4) == (y < 4) ? 0.2f : 0.8f);
+    scene.textures.push_back(blocks);
+    material.kd_texture = 0;
+  }
+  scene.materials.push_back(material);
+  Light lamp;
+  lamp.position = {0.2f, 1.5f, 0.1f};
+  lamp.intensity = Rgb(3.0f);
+  scene.lights.push_back(lamp);
+  Camera camera;
+  camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0, 2.2f, 0)) *
+                    glm::rotate(glm::mat4(1.0f), -0.5f * std::numbers::pi_v<float>, glm::vec3(1, 0, 0));
+  camera.yfov = 0.8f;
+  scene.cameras.push_back(camera);
+  return scene;
+}
+
+TEST(Hybrid, ATexturedFloorShowsItsTextureInRadiosityAndTheHybridAlike) {
+  const RadiosityOptions options = coarse(0.25f, 0.01f);
+  const Pictures textured(lamp_over_floor(true), options), plain(lamp_over_floor(false), options);
+  // Radiosity: texel / mean = 0.4 or 1.6 times the plain picture, exactly inside the blocks and
+  // in between across their edges (where GL's linear filter blends a block with the next).
+  const auto pixels = textured.interior_pixels();
+  ASSERT_GT(pixels.size(), size_t(kSize * kSize / 2));
+  int dark = 0, light = 0, outside = 0;
+  for (const auto& [x, y] : pixels) {
+    const float ratio = luminance(textured.radiosity.at(x, y)) / luminance(plain.radiosity.at(x, y));
+    dark += std::abs(ratio - 0.4f) < 0.004f;
+    light += std::abs(ratio - 1.6f) < 0.016f;
+    outside += ratio < 0.4f * 0.99f || ratio > 1.6f * 1.01f;
+  }
+  EXPECT_GT(dark, int(pixels.size() / 5));
+  EXPECT_GT(light, int(pixels.size() / 5));
+  EXPECT_EQ(outside, 0);
+  // The hybrid's diffuse part is that picture, pixel for pixel.
+  expect_radiosity_shading(textured, pixels);
+  // The heat map's colours are no radiance: a renderer told so leaves the texture out.
+  RadiosityRenderer renderer(textured.scene, textured.mesh);
+  renderer.update(textured.field, options, false);
+  const Image untextured = renderer.render(textured.scene.cameras.front(), kSize, kSize, options);
+  for (const auto& [x, y] : pixels)
+    ASSERT_NEAR(luminance(untextured.at(x, y)), luminance(plain.radiosity.at(x, y)),
+                1e-4f + 1e-3f * luminance(plain.radiosity.at(x, y)));
 }
 
 }  // namespace

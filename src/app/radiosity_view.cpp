@@ -117,7 +117,7 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
       for (Rgb& c : field.patch) c *= undo;
       for (Rgb& c : field.vertex) c *= undo;
     }
-    renderer_.update(field, o);
+    renderer_.update(field, o, !heat_map);  // the heat map is no radiance for a texture to modulate
     colours_stale_ = false;
     heat_map_shown_ = heat_map;
     exposure_shown_ = exposure;

@@ -1,12 +1,31 @@
 #include "core/scene.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace luz {
+
+Rgb Texture::sample(glm::vec2 uv) const {
+  const float x = uv.x * float(width) - 0.5f, y = uv.y * float(height) - 0.5f;
+  const float fx = std::floor(x), fy = std::floor(y);
+  const float ax = x - fx, ay = y - fy;
+  const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
+  const int x0 = wrap(int(fx), width), x1 = wrap(int(fx) + 1, width);
+  const int y0 = wrap(int(fy), height), y1 = wrap(int(fy) + 1, height);
+  return (1 - ax) * (1 - ay) * texel(x0, y0) + ax * (1 - ay) * texel(x1, y0) + (1 - ax) * ay * texel(x0, y1) +
+         ax * ay * texel(x1, y1);
+}
+
+Rgb Texture::mean() const {
+  Rgb sum(0.0f);
+  for (const Rgb& t : texels) sum += t;
+  return sum / float(std::max<size_t>(1, texels.size()));
+}
 
 Rgb Mesh::colour_at(size_t triangle, const glm::vec2& barycentrics) const {
   if (colors.empty()) return Rgb(1.0f);

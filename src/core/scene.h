@@ -33,6 +33,10 @@ struct Texture {
   int height = 1;
   Pixels texels{Rgb(1.0f)};
   Rgb texel(int x, int y) const { return texels[size_t(y) * width + x]; }
+  // At uv: bilinear, repeating, texel centres at (i + 0.5) / width, what GL's linear filter does
+  // on the base level.
+  Rgb sample(glm::vec2 uv) const;
+  Rgb mean() const;  // of all its texels
 };
 
 // One glTF primitive, flattened to world space. Every vertex has a normal: the file's, or the

@@ -31,6 +31,7 @@
 #include "io/image_io.h"
 #include "gl/functions.h"
 #include "gl/mesh_buffers.h"
+#include "gl/scene_texture.h"
 #include "gl/shader.h"
 
 namespace luz {
@@ -88,25 +89,6 @@ std::vector<AreaLight> merge_area_lights(const std::vector<AreaLight>& lights, s
     merged.push_back(group);
   }
   return merged;
-}
-
-// ---- [textures] --------------------------------------------------------------------------------
-// A baseColorTexture: texels are already linear (sRGB-decoded by the loader), so they go up as
-// float RGB, not as an sRGB format that GL would decode a second time. Trilinear, repeating.
-GLuint upload_texture(const Texture& texture) {
-  GLuint id = 0;
-  glGenTextures(1, &id);
-  glBindTexture(GL_TEXTURE_2D, id);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, texture.width, texture.height, 0, GL_RGB, GL_FLOAT,
-               texture.texels.data());  // row 0 = the top = glTF's v = 0, as GL's t = 0
-  glGenerateMipmap(GL_TEXTURE_2D);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return id;
 }
 
 bool any(const Rgb& c) { return c.r > 0.0f || c.g > 0.0f || c.b > 0.0f; }
@@ -290,7 +272,7 @@ LocalRenderer::LocalRenderer(const Scene& scene)
     impl_->centres.push_back(bounds.empty() ? glm::vec3(0.0f) : bounds.centre());
   }
   impl_->cubes.resize(scene.meshes.size());
-  for (const Texture& texture : scene.textures) impl_->textures.push_back(upload_texture(texture));
+  for (const Texture& texture : scene.textures) impl_->textures.push_back(gl::upload_texture(texture));
 
   if (scene.area_lights.size() > size_t(max_area_lights)) {
     impl_->area_lights = merge_area_lights(scene.area_lights, max_area_lights);

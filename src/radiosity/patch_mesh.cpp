@@ -27,12 +27,8 @@ namespace {
 // rho = kd; a kd texture modulates it by its mean texel (a patch has one reflectance).
 Rgb reflectance_of(const Scene& scene, const Material& material) {
   Rgb rho = material.kd;
-  if (material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size()) {
-    const Texture& texture = scene.textures[size_t(material.kd_texture)];
-    Rgb mean(0.0f);
-    for (const Rgb& texel : texture.texels) mean += texel;
-    rho *= mean / float(std::max<size_t>(1, texture.texels.size()));
-  }
+  if (material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
+    rho *= scene.textures[size_t(material.kd_texture)].mean();
   return rho;
 }
 

@@ -10,28 +10,59 @@
 #include "core/error.h"
 #include "gl/framebuffer.h"
 #include "gl/functions.h"
+#include "gl/scene_texture.h"
 #include "gl/shader.h"
 
 namespace luz {
 
+// The corners drawn with one kd texture, or none: consecutive elements of meshes that show the
+// same one (for a scene without textures, all of them).
+struct Run {
+  GLint first = 0;             // corners
+  GLsizei count = 0;
+  const Texture* texture = nullptr;
+  int mesh = 0;                // one of its meshes (they share the texture)
+};
+
 struct RadiosityRenderer::Impl {
   const Scene& scene;
   const PatchMesh& mesh;
+  TextureDetail detail;
   gl::Program program{{"radiosity.vert", "radiosity.frag"}};
-  GLuint vao = 0, positions = 0, colours = 0;
+  GLuint vao = 0, positions = 0, colours = 0, uvs = 0;
   GLsizei vertex_count = 0;
+  std::vector<Run> runs;
+  std::vector<GLuint> textures;  // per scene texture, uploaded when a run shows it (else 0)
+  bool texture_detail = true;    // the last update's colours are B/pi, which the texture modulates
   int revision = 0;  // of the mesh uploaded
   float far = 1.0f;
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
 
-  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m) {}
+  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m), detail(s), textures(s.textures.size(), 0) {}
   ~Impl() {
     if (vao) glDeleteVertexArrays(1, &vao);
     if (positions) glDeleteBuffers(1, &positions);
     if (colours) glDeleteBuffers(1, &colours);
+    if (uvs) glDeleteBuffers(1, &uvs);
+    for (GLuint t : textures)
+      if (t) glDeleteTextures(1, &t);
   }
 };
+
+namespace {
+
+// The barycentrics (b1, b2) of point p in the triangle a, b, c it lies in (or over).
+glm::vec2 barycentrics_of(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 e1 = b - a, e2 = c - a, w = p - a;
+  const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+  const float w1 = glm::dot(w, e1), w2 = glm::dot(w, e2);
+  const float denominator = d11 * d22 - d12 * d12;
+  if (!(denominator > 0.0f)) return glm::vec2(0.0f);
+  return glm::vec2(d22 * w1 - d12 * w2, d11 * w2 - d12 * w1) / denominator;
+}
+
+}  // namespace
 
 static const Scene& with_gl_loaded(const Scene& scene) {
   if (!glCreateProgram)
@@ -46,21 +77,48 @@ RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
   glGenVertexArrays(1, &s.vao);
   glGenBuffers(1, &s.positions);
   glGenBuffers(1, &s.colours);
+  glGenBuffers(1, &s.uvs);
   upload_elements();
 }
 
 // Non-indexed: three corners per element, so a flat picture can give each its own colour.
-// Drawn grouped by shooting patch (PatchMesh::members), so a patch is a range of primitives.
+// Drawn grouped by shooting patch (PatchMesh::members), so a patch is a range of primitives; the
+// patches of a mesh are consecutive (PatchMesh::build makes them mesh by mesh), so are its runs.
+// A textured mesh's corners carry their texture coordinates, interpolated from the source
+// triangle's at the corner.
 void RadiosityRenderer::upload_elements() {
   Impl& s = *impl_;
   const PatchMesh& mesh = s.mesh;
   std::vector<glm::vec3> corners;
+  std::vector<glm::vec2> corner_uvs;
   corners.reserve(3 * mesh.size());
+  corner_uvs.reserve(3 * mesh.size());
+  s.runs.clear();
   Bounds bounds;
-  for (const uint32_t e : mesh.members)
-    for (const uint32_t v : mesh.patches[e].vertices) {
+  for (const uint32_t e : mesh.members) {
+    const Patch& p = mesh.patches[e];
+    const Texture* texture = s.detail.texture_of(p.mesh);
+    if (s.runs.empty() || s.runs.back().texture != texture)
+      s.runs.push_back({GLint(corners.size()), 0, texture, p.mesh});
+    s.runs.back().count += 3;
+    const Mesh& source = s.scene.meshes[size_t(p.mesh)];
+    const size_t t = size_t(p.triangle);
+    for (const uint32_t v : p.vertices) {
       corners.push_back(mesh.vertices[v]);
       bounds.grow(mesh.vertices[v]);
+      glm::vec2 uv(0.0f);
+      if (texture) {
+        const glm::vec3 a = source.positions[source.indices[3 * t]], b = source.positions[source.indices[3 * t + 1]],
+                        c = source.positions[source.indices[3 * t + 2]];
+        uv = source.uv_at(t, barycentrics_of(mesh.vertices[v], a, b, c));
+      }
+      corner_uvs.push_back(uv);
+    }
+  }
+  for (const Run& run : s.runs)
+    if (run.texture) {
+      GLuint& id = s.textures[size_t(run.texture - s.scene.textures.data())];
+      if (!id) id = gl::upload_texture(*run.texture);
     }
   s.vertex_count = GLsizei(corners.size());
   s.corner_colours.assign(corners.size(), Rgb(0.0f));
@@ -77,6 +135,10 @@ void RadiosityRenderer::upload_elements() {
                s.corner_colours.data(), GL_DYNAMIC_DRAW);
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Rgb), nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, s.uvs);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corner_uvs.size() * sizeof(glm::vec2)), corner_uvs.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   s.far = bounds.empty() ? 1.0f : glm::length(bounds.extent());
@@ -84,8 +146,9 @@ void RadiosityRenderer::upload_elements() {
 
 RadiosityRenderer::~RadiosityRenderer() = default;
 
-void RadiosityRenderer::update(const RadianceField& field, const RadiosityOptions& options) {
+void RadiosityRenderer::update(const RadianceField& field, const RadiosityOptions& options, bool texture_detail) {
   Impl& s = *impl_;
+  s.texture_detail = texture_detail;
   if (s.revision != s.mesh.revision) upload_elements();  // adaptive subdivision cut elements
   for (size_t drawn = 0; drawn < s.mesh.size(); ++drawn) {
     const uint32_t e = s.mesh.members[drawn];
@@ -134,12 +197,25 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     glPolygonOffset(1.0f, 1.0f);
   }
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
+  s.program.set("u_kd_texture", 0);
+  glActiveTexture(GL_TEXTURE0);
+  for (const Run& run : s.runs) {
+    const bool textured = s.texture_detail && run.texture;
+    s.program.set("u_textured", textured);
+    if (textured) {
+      glBindTexture(GL_TEXTURE_2D, s.textures[size_t(run.texture - s.scene.textures.data())]);
+      s.program.set("u_inverse_mean", s.detail.inverse_mean(run.mesh));
+    }
+    s.program.set("u_first_primitive", int(run.first / 3));  // gl_PrimitiveID counts from the draw's first
+    glDrawArrays(GL_TRIANGLES, run.first, run.count);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
   if (options.outlines) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     s.program.set("u_outline", true);
     s.program.set("u_outline_colour", glm::vec3(0.02f));
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    s.program.set("u_first_primitive", 0);
     glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }

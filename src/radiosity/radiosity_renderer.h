@@ -11,6 +11,7 @@
 #include "core/scene.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_options.h"
+#include "radiosity/texture_detail.h"
 #include "radiosity/vertex_colours.h"
 
 namespace luz {
@@ -25,8 +26,10 @@ public:
   RadiosityRenderer& operator=(const RadiosityRenderer&) = delete;
 
   // New colours (after solver steps), and the elements again if adaptive subdivision changed
-  // them. Uses options.flat_patches to pick patch or vertex values.
-  void update(const RadianceField& field, const RadiosityOptions& options);
+  // them. Uses options.flat_patches to pick patch or vertex values. `texture_detail`: the
+  // colours are B/pi, which a mesh's kd texture modulates (texture_detail.h); false for colours
+  // that are no radiance (the viewer's heat map).
+  void update(const RadianceField& field, const RadiosityOptions& options, bool texture_detail = true);
 
   // Draws into the currently bound framebuffer of the given size. `highlight`: a shooting patch
   // (all its elements) drawn in a flat highlight colour (the solver's last shooter), -1 for none.

@@ -203,18 +203,9 @@ Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 ba
   // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
   const Rgb kd = o.kd * mesh.colour_at(size_t(triangle), barycentrics);
   if (!samples_texture(o, mesh)) return kd;
-  // Bilinear, repeating, texel centres at (i + 0.5) / width: what GL's linear filter does on the
-  // base level (the rasteriser's mipmaps only differ where a texel is smaller than a pixel).
-  const Texture& tex = scene_.textures[size_t(o.kd_texture)];
-  const float x = uv.x * float(tex.width) - 0.5f, y = uv.y * float(tex.height) - 0.5f;
-  const float fx = std::floor(x), fy = std::floor(y);
-  const float ax = x - fx, ay = y - fy;
-  const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
-  const int x0 = wrap(int(fx), tex.width), x1 = wrap(int(fx) + 1, tex.width);
-  const int y0 = wrap(int(fy), tex.height), y1 = wrap(int(fy) + 1, tex.height);
-  const Rgb texel = (1 - ax) * (1 - ay) * tex.texel(x0, y0) + ax * (1 - ay) * tex.texel(x1, y0) +
-                    (1 - ax) * ay * tex.texel(x0, y1) + ax * ay * tex.texel(x1, y1);
-  return kd * texel;
+  // GL's linear filter on the base level: the rasteriser's mipmaps only differ where a texel is
+  // smaller than a pixel.
+  return kd * scene_.textures[size_t(o.kd_texture)].sample(uv);
 }
 
 // ---- [surface] ----------------------------------------------------------------------------------

@@ -1,0 +1,35 @@
+#pragma once
+// A patch has one reflectance (slide 32's "retazos de radiosidad constante"): where kd is a
+// texture, the solver takes its mean texel (patch_mesh.cpp). The picture puts the texture's
+// detail back: a point shows B/pi x texel / mean texel, exact where the irradiance is constant
+// across the patch, the way radiosity systems map textures onto a solution computed with average
+// reflectances (Cohen & Wallace, "Radiosity and Realistic Image Synthesis", 1993). The radiosity
+// picture does it per fragment (radiosity_renderer.cpp) and the hybrid's diffuse part per hit.
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "core/color.h"
+#include "core/scene.h"
+
+namespace luz {
+
+class TextureDetail {
+public:
+  explicit TextureDetail(const Scene& scene);  // the scene must outlive it
+
+  // The kd texture of scene mesh `mesh` that shows on it, or nullptr: none, or the mesh has no
+  // TEXCOORD_0 to place it by.
+  const Texture* texture_of(int mesh) const;
+  // 1 / its mean texel, per channel (0 where the mean is 0: that channel is black throughout).
+  Rgb inverse_mean(int mesh) const;
+  // texel / mean texel at barycentrics (b1, b2) of triangle `triangle` of scene mesh `mesh`;
+  // 1 on a mesh without a texture.
+  Rgb at(int mesh, int triangle, glm::vec2 b) const;
+
+private:
+  const Scene& scene_;
+  std::vector<Rgb> inverse_means_;  // per scene texture
+};
+
+}  // namespace luz
