@@ -334,5 +334,37 @@ TEST(Hybrid, ATexturedFloorShowsItsTextureInRadiosityAndTheHybridAlike) {
                 1e-4f + 1e-3f * luminance(plain.radiosity.at(x, y)));
 }
 
+// The picture draws a textured mesh apart from the untextured ones; the shooter's highlight
+// still falls on the shooter's elements. A small untextured tile comes first, so the floor's
+// elements are drawn by a second call: its highlight must be where the plain scene, drawn in one
+// call, has it.
+TEST(Hybrid, TheShootersHighlightFindsItsPatchOnATexturedMesh) {
+  const auto with_tile = [](bool textured) {
+    Scene scene = lamp_over_floor(textured);
+    Mesh tile = scene.meshes.front();
+    tile.name = "tile";
+    tile.uvs.clear();
+    for (glm::vec3& p : tile.positions) p = 0.2f * p + glm::vec3(-0.7f, 0.01f, -0.7f);
+    scene.meshes.insert(scene.meshes.begin(), tile);
+    return scene;
+  };
+  const RadiosityOptions options = coarse(0.25f, 0.01f);
+  const auto highlighted = [&](const Scene& scene, std::vector<bool>& magenta) {
+    PatchMesh mesh = PatchMesh::build(scene, options);
+    RadiosityRenderer renderer(scene, mesh);
+    ProgressiveSolver solver(scene, mesh, options);
+    renderer.update(RadianceField::of(solver), options);
+    const int shooter = int(mesh.shooters.size()) - 3;  // on the floor, whose patches come last
+    ASSERT_EQ(mesh.patches[mesh.members[mesh.shooters[size_t(shooter)].first]].mesh, 1);
+    const Image image = renderer.render(scene.cameras.front(), kSize, kSize, options, shooter);
+    for (const Rgb& c : image.pixels) magenta.push_back(c.r > 3.0f && c.g < 0.5f && c.b > 3.0f);
+  };
+  std::vector<bool> textured, plain;
+  highlighted(with_tile(true), textured);
+  highlighted(with_tile(false), plain);
+  EXPECT_GT(std::count(plain.begin(), plain.end(), true), 20);
+  EXPECT_EQ(textured, plain);
+}
+
 }  // namespace
 }  // namespace luz
