@@ -14,28 +14,26 @@ mkdir -p "$out"
 cd "$out"
 # A scene the viewer must refuse while keeping the one it shows.
 printf '{ "asset": { "version": "2.0" }, "meshes": [ {' > broken.gltf
-# A scene that loads with a warning (it brings no light: the default lights, said in the window).
-cat > unlit.gltf <<'EOF'
-{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
- "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+# One triangle, (0, 0, 0), (1, 0, 0), (0, 1, 0), for the scenes below.
+triangle='"meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                 "min": [0, 0, 0], "max": [1, 1, 0]}],
  "bufferViews": [{"buffer": 0, "byteLength": 36}],
- "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]'
+# A scene that loads with a warning (it brings no light: the default lights, said in the window).
+cat > unlit.gltf <<EOF
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ $triangle}
 EOF
 # A scene as Blender's glTF exporter writes it in its default Lighting Mode: a 100 W lamp 3 m
 # over the triangle comes as 100 / 4 pi x 683 = 5435 candela, which Luz reads as W/sr.
-cat > bright.gltf <<'EOF'
+cat > bright.gltf <<EOF
 {"asset": {"version": "2.0", "generator": "Khronos glTF Blender I/O v3.4.50"}, "scene": 0,
  "scenes": [{"nodes": [0, 1]}], "nodes": [{"mesh": 0},
    {"translation": [0.3, 0.3, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
  "extensionsUsed": ["KHR_lights_punctual"],
  "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5435.14}]}},
- "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
- "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                "min": [0, 0, 0], "max": [1, 1, 0]}],
- "bufferViews": [{"buffer": 0, "byteLength": 36}],
- "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+ $triangle}
 EOF
 # -noreset: by default an X server resets when its last client leaves, and `luz` first checks
 # that a display is there (a connection it closes) before opening its window (a second one); on
