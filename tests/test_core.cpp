@@ -194,6 +194,20 @@ TEST(Exposure, OnlyLitPixelsCount) {
   EXPECT_FALSE(fitted_exposure(picture_key(grey_picture(0.5f, 0, 4))).has_value());
 }
 
+TEST(Exposure, ABigPictureIsReadOnAGridOfAbout65536Pixels) {
+  // 1024 x 1024: every 4th pixel of every 4th row. The left half at 0.01, the right at 1: the
+  // grid reads as many of each, so the key is still their log-average, 0.1.
+  Image big(1024, 1024);
+  for (int y = 0; y < 1024; ++y)
+    for (int x = 0; x < 1024; ++x) big.at(x, y) = Rgb(x < 512 ? 0.01f : 1.0f);
+  const PictureKey key = picture_key(big);
+  EXPECT_EQ(key.lit, 65536u);
+  EXPECT_NEAR(key.log_average, 0.1, 1e-6);
+  // Up to 2^16 pixels, every one is read.
+  EXPECT_EQ(picture_key(grey_picture(0.5f, 65536)).lit, 65536u);
+  EXPECT_EQ(picture_key(Image(300, 200, Rgb(0.5f))).lit, 60000u);
+}
+
 TEST(Exposure, TheFitIsRoundedToATenthOfAnEv) {
   // log2(0.18 / 0.1) = 0.848
   const float fitted = *fitted_exposure(picture_key(grey_picture(0.1f, 1)));

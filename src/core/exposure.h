@@ -17,9 +17,10 @@ namespace luz {
 inline constexpr double kMiddleGrey = 0.18;
 
 // The pixels that see something lit (finite Rec. 709 luminance Y > 0); a black background or a
-// shadow has no logarithm and says nothing about the exposure.
+// shadow has no logarithm and says nothing about the exposure. A picture of more than 2^16
+// pixels is read on a regular grid of about 2^16 of them (exposure.cpp).
 struct PictureKey {
-  size_t lit = 0;
+  size_t lit = 0;  // of the pixels read
   double log_average = 0.0;  // exp(mean(log Y)) over the lit pixels; 0 when there are none
 };
 PictureKey picture_key(const Image& picture);
