@@ -31,11 +31,13 @@ PictureKey picture_key(const Image& picture);
 std::optional<float> fitted_exposure(const PictureKey& key);
 
 // How far `ev` is from the fitted exposure before the picture counts as badly exposed: 4 EV,
-// sixteen times too bright or too dark. A dim or a bright scene lit on purpose stays well inside.
+// sixteen times too bright or too dark. The shipped scenes, dim rooms lit by one or two lamps,
+// are within 3.1 EV of their fits at the exposure they were made for.
 inline constexpr float kExposureTolerance = 4.0f;
 
-// A sentence on what is wrong with showing `picture` at `ev` (over-exposed: mostly white, or
-// under-exposed: mostly black, with the share of white pixels and the fitted exposure), or empty
+// A sentence on what is wrong with showing `picture` at `ev` (over-exposed, with the share of its
+// lit pixels that are white, or under-exposed, with the share that are black; and the fitted
+// exposure), or empty
 // when `ev` is within kExposureTolerance of the fitted one or nothing is lit. `photometric_hint`:
 // add that the file's lights may be photometric (its writer's name, e.g. Blender's exporter).
 std::string exposure_problem(const Image& picture, float ev, const std::string& photometric_hint = {});
