@@ -268,7 +268,7 @@ TEST_F(ViewerRun, ABrokenFileShowsItsErrorAndKeepsThePreviousScene) {
 
 // A file from Blender with its lights in candela (run_viewer_script.sh writes bright.gltf): the
 // first picture is white and a warning in the window says why and what to press; K fits the
-// exposure, which is then the log-average luminance of the picture's lit pixels shown as middle
+// exposure (and the warning goes), which is then the log-average luminance of the picture's lit pixels shown as middle
 // grey (Reinhard et al. 2002), computed here from `luz render`'s EXR of the same view.
 TEST_F(ViewerRun, KFitsTheExposureOfAFileWhoseLightsAreInCandela) {
   const json loaded = json_of(file("bright-loaded.json"));
@@ -296,6 +296,8 @@ TEST_F(ViewerRun, KFitsTheExposureOfAFileWhoseLightsAreInCandela) {
   const json fitted = json_of(file("bright-fitted.json"));
   EXPECT_LT(expected, -8.0);  // the lamp is 683 times too bright: about -9.4 EV off, light falloff aside
   EXPECT_NEAR(fitted["exposure"].get<double>(), expected, 0.15);
+  // The warning is answered: it leaves the window.
+  for (const json& w : fitted["warnings"]) EXPECT_EQ(w.get<std::string>().find("over-exposed"), std::string::npos) << w;
   // A script's (or a lesson's) `set exposure auto` fits it as K does.
   EXPECT_EQ(json_of(file("bright-set-auto.json"))["exposure"], fitted["exposure"]);
 

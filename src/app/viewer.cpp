@@ -727,6 +727,11 @@ void Viewer::read_exposure() {
     const PictureKey key = picture_key(picture);
     if (const std::optional<float> fitted = fitted_exposure(key)) {
       state_.exposure = *fitted;
+      // The load's warning about this exposure is answered: it goes (the window too, if it was the last).
+      if (const auto found = std::find(warnings_.begin(), warnings_.end(), exposure_warning_); found != warnings_.end()) {
+        warnings_.erase(found);
+        show_warnings_ = show_warnings_ && !warnings_.empty();
+      }
       state_.note = trf("exposure {:+.1f} EV: the picture's log-average luminance, {:.3g}, shown as middle grey",
                         *fitted, key.log_average);
     } else {
@@ -737,10 +742,10 @@ void Viewer::read_exposure() {
     const Scene& scene = *state_.scene;
     if (const std::string problem = exposure_problem(picture, state_.exposure, photometric_hint(scene));
         !problem.empty()) {
-      const std::string warning = trf("{}: {}; K fits the exposure to the picture",
-                                      state_.scene_path.filename().string(), problem);
-      fmt::print(stderr, "{}\n", trf("warning: {}", warning));
-      warn(warning);
+      exposure_warning_ = trf("{}: {}; K fits the exposure to the picture", state_.scene_path.filename().string(),
+                              problem);
+      fmt::print(stderr, "{}\n", trf("warning: {}", exposure_warning_));
+      warn(exposure_warning_);
     }
   }
 }

@@ -183,6 +183,7 @@ private:
   std::vector<std::string> warnings_;  // the scene's loader and renderer warnings, shown in the window
   bool show_warnings_ = false;
   bool exposure_check_ = false;    // a scene came: its first picture is checked against the exposure
+  std::string exposure_warning_;   // what that check found, in warnings_ until the exposure is fitted
   bool quit_ = false;
   unsigned frame_number_ = 0;
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
