@@ -334,6 +334,17 @@ TEST(Hybrid, ATexturedFloorShowsItsTextureInRadiosityAndTheHybridAlike) {
                 1e-4f + 1e-3f * luminance(plain.radiosity.at(x, y)));
 }
 
+// The patches' reflectance is kd times the mean texel of the texture the mesh shows; a mesh
+// without TEXCOORD_0 shows none (as in Whitted's model), so its patches take kd alone.
+TEST(Hybrid, APatchTakesTheMeanTexelOfTheTextureItsMeshShows) {
+  const RadiosityOptions options = coarse(0.5f, 0.01f);
+  const Scene textured = lamp_over_floor(true);
+  for (const Patch& p : PatchMesh::build(textured, options).patches) ASSERT_EQ(p.rho, Rgb(0.5f));
+  Scene unmapped = lamp_over_floor(true);
+  unmapped.meshes.front().uvs.clear();
+  for (const Patch& p : PatchMesh::build(unmapped, options).patches) ASSERT_EQ(p.rho, Rgb(1.0f));
+}
+
 // The picture draws a textured mesh apart from the untextured ones; the shooter's highlight
 // still falls on the shooter's elements. A small untextured tile comes first, so the floor's
 // elements are drawn by a second call: its highlight must be where the plain scene, drawn in one

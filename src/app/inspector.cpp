@@ -20,21 +20,6 @@ const Material& material_of(const Scene& scene, const Pick& pick) {
   return m >= 0 && size_t(m) < scene.materials.size() ? scene.materials[size_t(m)] : fallback;
 }
 
-// kd's texture at uv, bilinear and repeating like the GL sampler at its finest mip level (the
-// GPU also blends mip levels far away, so there the two differ slightly).
-Rgb sample_texture(const Texture& texture, glm::vec2 uv) {
-  const float x = uv.x * float(texture.width) - 0.5f, y = uv.y * float(texture.height) - 0.5f;
-  const float fx = std::floor(x), fy = std::floor(y);
-  const float tx = x - fx, ty = y - fy;
-  auto texel = [&](float px, float py) {
-    const int ix = ((int(px) % texture.width) + texture.width) % texture.width;
-    const int iy = ((int(py) % texture.height) + texture.height) % texture.height;
-    return texture.texel(ix, iy);
-  };
-  return (1 - tx) * (1 - ty) * texel(fx, fy) + tx * (1 - ty) * texel(fx + 1, fy) +
-         (1 - tx) * ty * texel(fx, fy + 1) + tx * ty * texel(fx + 1, fy + 1);
-}
-
 }  // namespace
 
 // ---- [evaluation, as each shading model does it] -----------------------------------------------
@@ -100,7 +85,9 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
     }
   }
   if (options.terms.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
-    reading.kd_texture = sample_texture(scene.textures[size_t(material.kd_texture)], uv);
+    // Bilinear at the finest mip level (the GPU also blends mip levels far away, so there the
+    // two differ slightly).
+    reading.kd_texture = scene.textures[size_t(material.kd_texture)].sample(uv);
   reading.vertex_colour = mesh.colour_at(size_t(pick.triangle), barycentric);
   // lighting.glsl write_fragment(): + kr Ir, then the fog at this pixel's distance.
   add_reflection_and_fog(reading.terms, material, options, lookups.reflection, reading.mirror,

@@ -19,19 +19,12 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "radiosity/texture_detail.h"
 
 namespace luz {
 namespace {
 
 // ---- [reflectance and emission] ----------------------------------------------------------------
-// rho = kd; a kd texture modulates it by its mean texel (a patch has one reflectance).
-Rgb reflectance_of(const Scene& scene, const Material& material) {
-  Rgb rho = material.kd;
-  if (material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
-    rho *= scene.textures[size_t(material.kd_texture)].mean();
-  return rho;
-}
-
 const Material& material_of(const Scene& scene, const Mesh& mesh) {
   static const Material fallback;
   return mesh.material >= 0 && size_t(mesh.material) < scene.materials.size()
@@ -216,10 +209,13 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   result.max_edge = max_edge;
   result.elements_per_edge = k;
   result.patches.reserve(size_t(elements));
+  // rho = kd; a kd texture the mesh shows multiplies it by its mean texel (a patch has one
+  // reflectance; the picture puts the texture's detail back, texture_detail.h).
+  const TextureDetail textures(scene);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
-    const Rgb rho = reflectance_of(scene, material);
+    const Rgb rho = material.kd * textures.mean(int(m));
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
     const float longest = longest_edge(mesh);
     const int patches_per_edge = int(subdivisions_for(longest, max_edge));

@@ -7,27 +7,38 @@ TextureDetail::TextureDetail(const Scene& scene) : scene_(scene) {
     const Rgb mean = texture.mean();
     Rgb inverse(0.0f);
     for (int c = 0; c < 3; ++c) inverse[c] = mean[c] > 0.0f ? 1.0f / mean[c] : 0.0f;
+    means_.push_back(mean);
     inverse_means_.push_back(inverse);
   }
 }
 
-const Texture* TextureDetail::texture_of(int mesh) const {
+int TextureDetail::index_of(int mesh) const {
   const Mesh& m = scene_.meshes[size_t(mesh)];
-  if (m.uvs.empty() || m.material < 0 || size_t(m.material) >= scene_.materials.size()) return nullptr;
+  if (m.uvs.empty() || m.material < 0 || size_t(m.material) >= scene_.materials.size()) return -1;
   const int texture = scene_.materials[size_t(m.material)].kd_texture;
-  return texture >= 0 && size_t(texture) < scene_.textures.size() ? &scene_.textures[size_t(texture)] : nullptr;
+  return texture >= 0 && size_t(texture) < scene_.textures.size() ? texture : -1;
+}
+
+const Texture* TextureDetail::texture_of(int mesh) const {
+  const int i = index_of(mesh);
+  return i >= 0 ? &scene_.textures[size_t(i)] : nullptr;
+}
+
+Rgb TextureDetail::mean(int mesh) const {
+  const int i = index_of(mesh);
+  return i >= 0 ? means_[size_t(i)] : Rgb(1.0f);
 }
 
 Rgb TextureDetail::inverse_mean(int mesh) const {
-  const Texture* texture = texture_of(mesh);
-  return texture ? inverse_means_[size_t(texture - scene_.textures.data())] : Rgb(1.0f);
+  const int i = index_of(mesh);
+  return i >= 0 ? inverse_means_[size_t(i)] : Rgb(1.0f);
 }
 
 Rgb TextureDetail::at(int mesh, int triangle, glm::vec2 b) const {
-  const Texture* texture = texture_of(mesh);
-  if (!texture) return Rgb(1.0f);
+  const int i = index_of(mesh);
+  if (i < 0) return Rgb(1.0f);
   const glm::vec2 uv = scene_.meshes[size_t(mesh)].uv_at(size_t(triangle), b);
-  return texture->sample(uv) * inverse_mean(mesh);
+  return scene_.textures[size_t(i)].sample(uv) * inverse_means_[size_t(i)];
 }
 
 }  // namespace luz
