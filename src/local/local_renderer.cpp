@@ -673,8 +673,15 @@ void LocalRenderer::Impl::draw(const Camera& camera, glm::ivec2 origin, glm::ive
   }
 
   // 3. The picture.
-  // The scissor keeps the clears inside the rectangle (all of an FBO, a pane of the window).
+  // The depth buffer is cleared whole: between draws it holds nothing anyone reads, and Mesa's
+  // software rasteriser fills a whole buffer at memory speed but clears a rectangle of it by
+  // drawing a quad (in a 1720x752 window, 0.25 ms for all of it against 0.9 ms for a 1280x720
+  // pane). The stencil goes with it, since depth alone in a packed depth-stencil buffer is a
+  // masked write, as slow as the quad.
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(drawn_into));
+  glDepthMask(GL_TRUE);
+  glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  // The scissor keeps the colour clears inside the rectangle (all of an FBO, a pane of the window).
   glViewport(origin.x, origin.y, size.x, size.y);
   glScissor(origin.x, origin.y, size.x, size.y);
   glEnable(GL_SCISSOR_TEST);
@@ -682,10 +689,7 @@ void LocalRenderer::Impl::draw(const Camera& camera, glm::ivec2 origin, glm::ive
   // glClearBuffer does not clamp, so a background radiance above 1 survives in a float target.
   const Rgb clear = options.fog.mode != FogMode::off ? options.fog.colour : s.scene.background;
   const float background[4] = {clear.r, clear.g, clear.b, 1.0f};
-  const float far_depth = 1.0f;
-  glDepthMask(GL_TRUE);
   glClearBufferfv(GL_COLOR, 0, background);
-  glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
   ScenePass pass;
   pass.display = s.drew_display = scale.has_value();
