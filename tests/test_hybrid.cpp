@@ -334,6 +334,26 @@ TEST(Hybrid, ATexturedFloorShowsItsTextureInRadiosityAndTheHybridAlike) {
                 1e-4f + 1e-3f * luminance(plain.radiosity.at(x, y)));
 }
 
+// Without textures (`--no-textures`, the viewer's T) the floor is its kd alone, in the solution
+// and in the picture: the same as the floor with the texture taken out of the scene.
+TEST(Hybrid, WithoutTexturesATexturedFloorIsItsKdAlone) {
+  RadiosityOptions options = coarse(0.25f, 0.01f);
+  Scene untextured = lamp_over_floor(true);
+  untextured.materials.front().kd_texture = -1;
+  untextured.textures.clear();
+  const Pictures expected(untextured, options);
+  options.textures = false;
+  const Pictures switched_off(lamp_over_floor(true), options);
+  EXPECT_FALSE(switched_off.mesh.textured);
+  for (const Patch& p : switched_off.mesh.patches) ASSERT_EQ(p.rho, Rgb(1.0f));
+  const auto pixels = switched_off.interior_pixels();
+  ASSERT_GT(pixels.size(), size_t(kSize * kSize / 2));
+  for (const auto& [x, y] : pixels) {
+    ASSERT_EQ(switched_off.radiosity.at(x, y), expected.radiosity.at(x, y)) << x << "," << y;
+    ASSERT_EQ(switched_off.hybrid.at(x, y), expected.hybrid.at(x, y)) << x << "," << y;
+  }
+}
+
 // The patches' reflectance is kd times the mean texel of the texture the mesh shows; a mesh
 // without TEXCOORD_0 shows none (as in Whitted's model), so its patches take kd alone.
 TEST(Hybrid, APatchTakesTheMeanTexelOfTheTextureItsMeshShows) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/image.h"
+#include "core/image_compare.h"
 #include "io/image_io.h"
 #include "support.h"
 
@@ -52,6 +53,51 @@ TEST(HybridCli, TheRadiosityPicturesDisplaySwitchesAreUsageErrors) {
                                "--out", (dir / "r.png").string()});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_TRUE(contains(result.output, "only with --model whitted, hybrid or path")) << result.output;
+}
+
+// The term switches go where the model has the term. Radiosity has no lights' terms to switch;
+// in the hybrid its solution holds the emitted light and stands for the ambient term, so those
+// two switches are usage errors there. Both take --no-textures: the patches then reflect kd alone.
+TEST(HybridCli, TheTermSwitchesAreTakenWhereTheModelHasTheTerm) {
+  test::ScratchDir dir;
+  const auto refused = [&](const char* model, const char* flag, const char* takers) {
+    const auto result = run_luz({"render", scene("cornell_box"), "--model", model, flag, "--out",
+                                 (dir / "refused.png").string()});
+    EXPECT_EQ(result.exit_code, 2) << model << " " << flag;
+    EXPECT_TRUE(contains(result.output, std::string(flag) + ": only with --model " + takers)) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "refused.png"));
+  };
+  for (const char* flag : {"--no-diffuse", "--no-specular", "--blinn"})
+    refused("radiosity", flag, "flat, gouraud, phong, whitted or hybrid");
+  for (const char* flag : {"--no-ambient", "--no-emission"}) {
+    refused("radiosity", flag, "flat, gouraud, phong or whitted");
+    refused("hybrid", flag, "flat, gouraud, phong or whitted");
+  }
+
+  const std::filesystem::path textured = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+  if (!std::filesystem::exists(textured)) GTEST_SKIP() << textured << " is absent (Debian package assimp-testmodels)";
+  for (const char* model : {"radiosity", "hybrid"}) {
+    const auto picture = [&](bool textures) {
+      const std::filesystem::path out = dir / (std::string(model) + (textures ? "-textured.exr" : "-plain.exr"));
+      std::vector<std::string> args = {"render", textured.string(), "--model", model, "--size", "48x48",
+                                       "--out", out.string(), "-q"};
+      args.insert(args.end(), kCoarse.begin(), kCoarse.end());
+      if (!textures) args.push_back("--no-textures");
+      const auto result = run_luz(args);
+      EXPECT_EQ(result.exit_code, 0) << result.output;
+      return io::read_image(out);
+    };
+    // The box is kd 1 with the texture's mean texel well below 1: without it, every lit pixel of
+    // the box is brighter, and none shows the texture's dark print.
+    const Image with = picture(true), without = picture(false);
+    ASSERT_EQ(with.pixels.size(), without.pixels.size());
+    double sum_with = 0.0, sum_without = 0.0;
+    for (size_t i = 0; i < with.pixels.size(); ++i) {
+      sum_with += rec709_luminance(with.pixels[i]);
+      sum_without += rec709_luminance(without.pixels[i]);
+    }
+    EXPECT_GT(sum_without, 1.2 * sum_with) << model;
+  }
 }
 
 TEST(SolversCli, WritesTheCurvesOfTheFourMethodsAndTheirPlot) {

@@ -112,6 +112,26 @@ protected:
   static fs::path file(const std::string& name) { return run_dir / name; }
 };
 
+// T on textured.gltf: a square lit from above its middle, its texture's dark texel on the left
+// (u = 0.25 at x = -0.5 m) and its light one on the right (u = 0.75 at x = 0.5 m). The two points
+// get the same light, so the picture's ratio between them is the texels' (sRGB 64 against 224:
+// 0.07 in radiance) with the texture, and 1 without it, where the solution started over.
+TEST_F(ViewerRadiosity, TSwitchesTheTextureOffAndStartsTheSolutionOver) {
+  EXPECT_EQ(json_of(file("textured.json"))["shots"], 20);
+  EXPECT_EQ(json_of(file("untextured.json"))["shots"], 10) << "the solution started over";
+  const Camera camera = io::load_gltf(file("textured.gltf")).scene.cameras.at(0);
+  const auto at = [&](const Codes& c, float x) {  // the mean code about (x, 0, 0)
+    const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), 100.0f) * camera.view();
+    const glm::vec4 p = clip * glm::vec4(x, 0.0f, 0.0f, 1.0f);
+    const int px = int((p.x / p.w * 0.5f + 0.5f) * float(c.width)), py = int((0.5f - p.y / p.w * 0.5f) * float(c.height));
+    return mean_code(c, px - 3, py - 3, px + 4, py + 4);
+  };
+  const Codes textured = codes(file("textured.png")), untextured = codes(file("untextured.png"));
+  EXPECT_GT(at(textured, 0.5f) - at(textured, -0.5f), 100.0) << "the texture's two texels";
+  EXPECT_NEAR(at(untextured, 0.5f), at(untextured, -0.5f), 3.0) << "no texture";
+  EXPECT_GT(at(untextured, -0.5f), at(textured, -0.5f) + 50.0) << "kd 1 where the texture was dark";
+}
+
 TEST_F(ViewerRadiosity, WaitShotsPausesAtExactlyThatCount) {
   EXPECT_EQ(json_of(file("start.json"))["shots"], 0);
   const nlohmann::json early = json_of(file("early.json")), later = json_of(file("later.json"));

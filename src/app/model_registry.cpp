@@ -24,10 +24,12 @@ namespace {
 
 // The flag groups each model accepts (render_flags.h). Slide 19's switches belong to the local
 // models; the hybrid takes the tracer's and the solver's, but not radiosity's display switches.
-constexpr const char* local_flags[] = {"terms", "local"};
-constexpr const char* whitted_flags[] = {"terms", "whitted", "sampling"};
-constexpr const char* radiosity_flags[] = {"terms", "radiosity", "radiosity-display", "time"};
-constexpr const char* hybrid_flags[] = {"terms", "whitted", "sampling", "radiosity", "time"};
+// Radiosity has no lights' terms to switch, only the texture its patches' reflectance reads; in
+// the hybrid its solution is the diffuse part, holding the emitted light, with no ambient term.
+constexpr const char* local_flags[] = {"terms", "ambient-emission", "textures", "local"};
+constexpr const char* whitted_flags[] = {"terms", "ambient-emission", "textures", "whitted", "sampling"};
+constexpr const char* radiosity_flags[] = {"textures", "radiosity", "radiosity-display", "time"};
+constexpr const char* hybrid_flags[] = {"terms", "textures", "whitted", "sampling", "radiosity", "time"};
 // The path tracer solves slide 14's equation: the lecture's term switches do not apply to it.
 constexpr const char* path_flags[] = {"sampling", "path", "time"};
 

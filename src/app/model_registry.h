@@ -35,8 +35,8 @@ struct ModelEntry {
   int key;             // the digit that shows it (1 .. 9)
   const char* help;    // F1's line and --help's
   // The flag groups of `luz render` it takes: each options table row names its group
-  // (options_tables.h: "terms", "local", "whitted", "sampling", "path", "radiosity",
-  // "radiosity-display"); a flag of
+  // (options_tables.h: "terms", "ambient-emission", "textures", "local", "whitted", "sampling",
+  // "path", "radiosity", "radiosity-display", "time"); a flag of
   // another group is a usage error naming the models that take it.
   std::span<const char* const> flag_groups;
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.

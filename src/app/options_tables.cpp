@@ -30,16 +30,18 @@ bool even(double v) { return std::fmod(v, 2.0) == 0.0; }
 bool square(double v) { return rt::is_square(int(v)); }
 
 const LocalRow local_table[] = {
-    // The terms of I = I_A + I_D + I_S (+ Le): every model takes their switches.
-    {"ambient", "--no-ambient", "terms", OptionKind::on_off, N_("Switch off the ambient term I_A = Ia*ka"), 0, 1,
+    // The terms of I = I_A + I_D + I_S (+ Le), in three groups by the models that have them
+    // (model_registry.cpp): the lights' terms, the ambient and emitted terms that radiosity's
+    // solution replaces in the hybrid, and the kd texture.
+    {"ambient", "--no-ambient", "ambient-emission", OptionKind::on_off, N_("Switch off the ambient term I_A = Ia*ka"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.ambient)},
     {"diffuse", "--no-diffuse", "terms", OptionKind::on_off, N_("Switch off the diffuse term I_D = IL*kd*cos(theta)"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.diffuse)},
     {"specular", "--no-specular", "terms", OptionKind::on_off,
      N_("Switch off the specular term I_S = IL*ks*cos^n(alpha)"), 0, 1, LUZ_FIELD(LocalOptions, terms.specular)},
-    {"emission", "--no-emission", "terms", OptionKind::on_off,
+    {"emission", "--no-emission", "ambient-emission", OptionKind::on_off,
      N_("Do not show the emitted radiance Le of emissive surfaces"), 0, 1, LUZ_FIELD(LocalOptions, terms.emission)},
-    {"textures", "--no-textures", "terms", OptionKind::on_off, N_("Ignore baseColorTexture"), 0, 1,
+    {"textures", "--no-textures", "textures", OptionKind::on_off, N_("Ignore baseColorTexture"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.textures)},
     {"blinn", "--blinn", "terms", OptionKind::on_off, N_("Blinn's half vector N.H instead of Phong's R.V"), 0, 1,
      LUZ_FIELD(LocalOptions, terms.blinn)},

@@ -60,6 +60,12 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
 
 }  // namespace
 
+RadiosityOptions radiosity_options(const RenderSettings& settings) {
+  RadiosityOptions options = settings.radiosity;
+  options.textures = settings.local.terms.textures;
+  return options;
+}
+
 void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& settings) {
   const RadiosityOptions& options = solver.options();
   const PatchMesh& mesh = solver.mesh();
@@ -96,7 +102,7 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings) {
-  const RadiosityOptions& options = settings.radiosity;
+  const RadiosityOptions options = radiosity_options(settings);
   PatchMesh mesh = PatchMesh::build(scene, options);
   ProgressiveSolver solver(scene, mesh, options);
   run_radiosity_solver(solver, settings);

@@ -9,6 +9,9 @@
 
 namespace luz::app {
 
+// The solver's options: the radiosity flags', with the kd textures as `--no-textures` leaves them.
+RadiosityOptions radiosity_options(const RenderSettings& settings);
+
 // Needs a current GL context. Shows a progress bar on stderr when it is a terminal (unless
 // settings.quiet), writes settings.csv when given. Throws luz::Error.
 // Steps `solver` to its stopping rule with that progress bar, then writes settings.csv and the

@@ -15,6 +15,7 @@
 #include "app/panel.h"
 #include "core/error.h"
 #include "gl/functions.h"
+#include "radiosity/texture_detail.h"
 
 namespace luz::app {
 
@@ -27,6 +28,11 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
                                    Display display) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
+  // The kd texture follows T, as in every model. It is the patches' reflectance, so switching
+  // it starts the solution over, where the scene shows a texture at all.
+  r.options.textures = state.local.terms.textures;
+  if (solution_ && solution_->mesh().textured != r.options.textures && TextureDetail::any_shown(*state.scene))
+    r.remesh = true;
   if (!solution_ || r.remesh) {
     r.remesh = false;
     drop();  // the old solver's GL objects go before the new ones are made

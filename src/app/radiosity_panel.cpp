@@ -239,7 +239,7 @@ void heat_map_legend() {
   dim_text(tr("black: nothing left to shoot"));
 }
 
-void display_settings(RadiosityState& r) {
+void display_settings(RadiosityState& r, bool& textures) {
   RadiosityOptions& o = r.options;
   RadiosityDrive& d = r.drive;
   int flat = o.flat_patches ? 1 : 0;
@@ -253,6 +253,10 @@ void display_settings(RadiosityState& r) {
   name_widget("patch outlines");
   ImGui::SameLine();
   ImGui::TextDisabled(tr("[L]: flat + outlines"));
+  ImGui::Checkbox(tr("kd texture [T]"), &textures);
+  name_widget("kd texture [T]");
+  ImGui::SameLine();
+  ImGui::TextDisabled(tr("(ρ: the solution starts over)"));
   ImGui::Checkbox(tr("ambient estimate ρ·ambient  [Shift+A]"), &o.ambient_estimate);
   name_widget("ambient estimate ρ·ambient  [Shift+A]");
   ImGui::Checkbox(tr("heat map of unshot power  [U]"), &d.heat_map);
@@ -282,7 +286,7 @@ void radiosity_section(ViewerState& state) {
     ImGui::TreePop();
   }
   if (ImGui::TreeNodeEx(tr("display"), ImGuiTreeNodeFlags_DefaultOpen)) {
-    display_settings(r);
+    display_settings(r, state.local.terms.textures);
     ImGui::TreePop();
   }
   // Slide 36 beside slide 39: why shooting shows a usable picture first.

@@ -15,11 +15,12 @@ Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int 
                             const RenderSettings& settings) {
   check_square_spp(settings);  // before the solve, not after it
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
-  PatchMesh mesh = PatchMesh::build(scene, settings.radiosity);
+  const RadiosityOptions options = radiosity_options(settings);
+  PatchMesh mesh = PatchMesh::build(scene, options);
   std::optional<hybrid::RadiosityDiffuse> diffuse;
   {
     gl::OffscreenContext context;  // the hemicubes draw through GL; released before tracing
-    ProgressiveSolver solver(scene, mesh, settings.radiosity);
+    ProgressiveSolver solver(scene, mesh, options);
     run_radiosity_solver(solver, settings);
     diffuse.emplace(scene, mesh, RadianceField::of(solver));
   }

@@ -6,7 +6,7 @@
 namespace luz::hybrid {
 
 RadiosityDiffuse::RadiosityDiffuse(const Scene& scene, const PatchMesh& mesh, RadianceField field)
-    : mesh_(mesh), field_(std::move(field)), detail_(scene) {
+    : mesh_(mesh), field_(std::move(field)), detail_(scene, mesh.textured) {
   assert(field_.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
 }
 

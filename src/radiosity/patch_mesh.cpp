@@ -193,7 +193,7 @@ double PatchMesh::element_count(const Scene& scene, float max_edge, int elements
   return total;
 }
 
-PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_edge) {
+PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_edge, bool textures) {
   const int k = elements_per_edge;
   if (k < 1 || k > kMaxElementsPerEdge)
     throw Error(ErrorKind::bad_value, i18n::trf("radiosity: {} elements per patch edge, expected "
@@ -208,14 +208,15 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   PatchMesh result;
   result.max_edge = max_edge;
   result.elements_per_edge = k;
+  result.textured = textures;
   result.patches.reserve(size_t(elements));
   // rho = kd; a kd texture the mesh shows multiplies it by its mean texel (a patch has one
   // reflectance; the picture puts the texture's detail back, texture_detail.h).
-  const TextureDetail textures(scene);
+  const TextureDetail detail(scene, textures);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
-    const Rgb rho = material.kd * textures.mean(int(m));
+    const Rgb rho = material.kd * detail.mean(int(m));
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
     const float longest = longest_edge(mesh);
     const int patches_per_edge = int(subdivisions_for(longest, max_edge));
@@ -305,7 +306,7 @@ PatchMesh PatchMesh::build(const Scene& scene, const RadiosityOptions& options) 
   return build(scene, options.patch_size > 0.0f
                           ? options.patch_size
                           : patch_size_for(scene, size_t(std::max(1, options.target_patches))),
-               options.elements_per_edge);
+               options.elements_per_edge, options.textures);
 }
 
 float PatchMesh::patch_size_for(const Scene& scene, size_t target) {

@@ -73,10 +73,10 @@ class PatchMesh {
 public:
   PatchMesh() = default;
   // Splits every triangle so that no patch edge is longer than `max_edge` metres, and every
-  // patch into elements_per_edge^2 elements. Throws luz::Error (bad_value) before allocating
-  // anything if the mesh would have more than kMaxElements elements, and (not_finite) if a
-  // triangle's edge is not a finite length.
-  static PatchMesh build(const Scene& scene, float max_edge, int elements_per_edge = 1);
+  // patch into elements_per_edge^2 elements; `textures`: see `textured`. Throws luz::Error
+  // (bad_value) before allocating anything if the mesh would have more than kMaxElements
+  // elements, and (not_finite) if a triangle's edge is not a finite length.
+  static PatchMesh build(const Scene& scene, float max_edge, int elements_per_edge = 1, bool textures = true);
   // The patch size at which subdivision adds about `target` patches to the scene's triangles.
   static float patch_size_for(const Scene& scene, size_t target);
   // With options.patch_size, or else the size for options.target_patches.
@@ -91,6 +91,9 @@ public:
   std::vector<uint32_t> shooter_of;  // per element, its shooting patch
   float max_edge = 0.0f;             // of a shooting patch
   int elements_per_edge = 1;
+  // Whether the reflectances read the kd textures (RadiosityOptions::textures): the picture
+  // shows their detail only then.
+  bool textured = true;
   int revision = 0;                  // changes whenever the elements change after build()
 
   size_t size() const { return patches.size(); }

@@ -31,7 +31,7 @@ std::string RadiosityOptions::to_string() const {
     mesh += fmt::format(", adaptive ({:g}, {} cuts)", refine_threshold, refine_levels);
   const std::string stop = max_shots > 0 ? fmt::format("{} shots", max_shots)
                                          : fmt::format("until unshot < {:.3g}", converge);
-  return fmt::format("RadiosityOptions [{}, hemicube {}{}{}{}, {} form factors, {}{}{}{}{}]", mesh,
+  return fmt::format("RadiosityOptions [{}, hemicube {}{}{}{}, {} form factors, {}{}{}{}{}{}]", mesh,
                      hemicube_res, random_rotation ? " rotated" : "",
                      hemicube_passes == HemicubePasses::one ? " in one pass" : "",
                      hemicube_sums == HemicubeSums::gpu ? " summed on the GPU" : "",
@@ -41,7 +41,7 @@ std::string RadiosityOptions::to_string() const {
                      stop,
                      overshoot != 1.0f ? fmt::format(", overshoot {:g}", overshoot) : "",
                      ambient_estimate ? ", ambient estimate" : "", flat_patches ? ", flat" : "",
-                     outlines ? ", outlines" : "");
+                     outlines ? ", outlines" : "", textures ? "" : ", no textures");
 }
 
 void RadiosityOptions::validate() const {

@@ -39,6 +39,10 @@ struct RadiosityOptions {
   Meshing meshing = Meshing::adaptive;
   float refine_threshold = 0.15f;
   int refine_levels = 4;
+  // A patch's reflectance rho = kd, times the mean texel of the kd texture its mesh shows, whose
+  // detail the picture puts back (texture_detail.h). false: kd alone and no detail, as
+  // `--no-textures` (the viewer's T) leaves every model without the texture.
+  bool textures = true;
 
   // ---- Form factors: the hemicube (slide 37) ----
   int hemicube_res = 128;       // pixels across the top face (64 .. 1024, even)

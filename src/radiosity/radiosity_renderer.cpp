@@ -39,7 +39,7 @@ struct RadiosityRenderer::Impl {
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
 
-  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m), detail(s), textures(s.textures.size(), 0) {}
+  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m), detail(s, m.textured), textures(s.textures.size(), 0) {}
   ~Impl() {
     if (vao) glDeleteVertexArrays(1, &vao);
     if (positions) glDeleteBuffers(1, &positions);

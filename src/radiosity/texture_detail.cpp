@@ -1,8 +1,21 @@
 #include "radiosity/texture_detail.h"
 
 namespace luz {
+namespace {
 
-TextureDetail::TextureDetail(const Scene& scene) : scene_(scene) {
+// The index in scene.textures of the kd texture mesh `mesh` shows, or -1: none, or the mesh has
+// no TEXCOORD_0 to place it by.
+int shown_texture(const Scene& scene, int mesh) {
+  const Mesh& m = scene.meshes[size_t(mesh)];
+  if (m.uvs.empty() || m.material < 0 || size_t(m.material) >= scene.materials.size()) return -1;
+  const int texture = scene.materials[size_t(m.material)].kd_texture;
+  return texture >= 0 && size_t(texture) < scene.textures.size() ? texture : -1;
+}
+
+}  // namespace
+
+TextureDetail::TextureDetail(const Scene& scene, bool textures) : scene_(scene), textures_(textures) {
+  if (!textures) return;
   for (const Texture& texture : scene.textures) {
     const Rgb mean = texture.mean();
     Rgb inverse(0.0f);
@@ -12,12 +25,13 @@ TextureDetail::TextureDetail(const Scene& scene) : scene_(scene) {
   }
 }
 
-int TextureDetail::index_of(int mesh) const {
-  const Mesh& m = scene_.meshes[size_t(mesh)];
-  if (m.uvs.empty() || m.material < 0 || size_t(m.material) >= scene_.materials.size()) return -1;
-  const int texture = scene_.materials[size_t(m.material)].kd_texture;
-  return texture >= 0 && size_t(texture) < scene_.textures.size() ? texture : -1;
+bool TextureDetail::any_shown(const Scene& scene) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    if (shown_texture(scene, int(m)) >= 0) return true;
+  return false;
 }
+
+int TextureDetail::index_of(int mesh) const { return textures_ ? shown_texture(scene_, mesh) : -1; }
 
 const Texture* TextureDetail::texture_of(int mesh) const {
   const int i = index_of(mesh);

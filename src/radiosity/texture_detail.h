@@ -16,7 +16,10 @@ namespace luz {
 
 class TextureDetail {
 public:
-  explicit TextureDetail(const Scene& scene);  // the scene must outlive it
+  // The scene must outlive it. `textures` false: no mesh shows a texture (`--no-textures`).
+  explicit TextureDetail(const Scene& scene, bool textures = true);
+  // Whether any mesh of `scene` shows a kd texture: whether `textures` changes anything.
+  static bool any_shown(const Scene& scene);
 
   // The kd texture of scene mesh `mesh` that shows on it, or nullptr: none, or the mesh has no
   // TEXCOORD_0 to place it by.
@@ -35,6 +38,7 @@ private:
   int index_of(int mesh) const;
 
   const Scene& scene_;
+  bool textures_;
   std::vector<Rgb> means_, inverse_means_;  // per scene texture, each read once
 };
 

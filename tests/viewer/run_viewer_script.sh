@@ -35,6 +35,24 @@ cat > bright.gltf <<EOF
  "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5435.14}]}},
  $triangle}
 EOF
+# A 2 m square seen from above under a lamp, its kd a texture of two texels: dark (sRGB 64) on
+# the left, light (sRGB 224) on the right.
+cat > textured.gltf <<EOF
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+ "nodes": [{"mesh": 0}, {"translation": [0, 1.5, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+   {"camera": 0, "translation": [0, 2.5, 0], "rotation": [-0.70710678, 0, 0, 0.70710678]}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.9, "znear": 0.05}}],
+ "extensionsUsed": ["KHR_lights_punctual"],
+ "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 3}]}},
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
+ "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0, "roughnessFactor": 1}}],
+ "textures": [{"source": 0}],
+ "images": [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAIAAAB7QOjdAAAAD0lEQVR4nGNwcHB48OABAAkHA2GyJNoYAAAAAElFTkSuQmCC"}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
+               {"bufferView": 1, "componentType": 5126, "count": 6, "type": "VEC2"}],
+ "bufferViews": [{"buffer": 0, "byteLength": 72}, {"buffer": 0, "byteOffset": 72, "byteLength": 48}],
+ "buffers": [{"byteLength": 120, "uri": "data:application/octet-stream;base64,AACAvwAAAAAAAIC/AACAvwAAAAAAAIA/AACAPwAAAAAAAIA/AACAvwAAAAAAAIC/AACAPwAAAAAAAIA/AACAPwAAAAAAAIC/AAAAAAAAAAAAAAAAAACAPwAAgD8AAIA/AAAAAAAAAAAAAIA/AACAPwAAgD8AAAAA"}]}
+EOF
 # -noreset: by default an X server resets when its last client leaves, and `luz` first checks
 # that a display is there (a connection it closes) before opening its window (a second one); on
 # a loaded machine the second connection can fall into the reset and fail.
