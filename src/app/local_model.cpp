@@ -73,13 +73,14 @@ void LocalModel::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
 
 // The inspector, when shown, reads the radiance GL drew at its pixel, and a transparent mesh
 // blends over radiance: both need the picture.
-bool LocalModel::draw_into_window(const Camera& camera, const Viewport& viewport) {
+bool LocalModel::draw_into_window(const Camera& camera, const Viewport& viewport, bool window_unseen) {
   ViewerState& state = viewer_.state();
   LocalRenderer& renderer = viewer_.local_renderer();
   state.local.shading = shading_;
   if ((viewer_.inspection().pick && state.show_inspector) || renderer.blends(state.local)) return false;
   gl::bind_window_for_display();
-  renderer.draw_display(camera, viewport.gl_origin, viewport.pixels, state.local, std::exp2(state.exposure));
+  renderer.draw_display(camera, viewport.gl_origin, viewport.pixels, state.local, std::exp2(state.exposure),
+                        window_unseen);
   gl::bind_window();
   drew_display_ = false;
   reading_.reset();

@@ -18,7 +18,7 @@ public:
   void scene_changed() override { reading_.reset(); }
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   bool drew_display() const override { return drew_display_; }
-  bool draw_into_window(const Camera& camera, const Viewport& viewport) override;
+  bool draw_into_window(const Camera& camera, const Viewport& viewport, bool window_unseen) override;
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void panel() override;
   void windows(const Viewport& viewport, WindowCorners& corners) override;

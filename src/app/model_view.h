@@ -103,7 +103,11 @@ public:
   // (gl::bind_window_for_display) instead of a picture: the viewer asks on the frames that need
   // no radiance (no heat map, no screenshot of the picture). False, having drawn nothing, where
   // the view cannot; then draw() runs.
-  virtual bool draw_into_window(const Camera& /*camera*/, const Viewport& /*viewport*/) { return false; }
+  // `window_unseen`: nothing of the window outside `viewport` is shown this frame, so the view may
+  // clear all of it (LocalRenderer::draw_display's clear_everywhere).
+  virtual bool draw_into_window(const Camera& /*camera*/, const Viewport& /*viewport*/, bool /*window_unseen*/) {
+    return false;
+  }
   // A left click (no drag) on a pixel of the picture.
   virtual void click(const Camera& /*camera*/, const Viewport& /*viewport*/, glm::ivec2 /*pixel*/) {}
   virtual void panel() = 0;

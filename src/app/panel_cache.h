@@ -9,8 +9,9 @@
 // rectangles are copied into the window (glBlitFramebuffer). What is drawn is the same either
 // way: `enabled = false` draws every list every frame, to compare. Where the window keeps its
 // back buffer from frame to frame (gl::WindowContext::keeps_back_buffer: the software
-// rasteriser), the panel copied in on one frame is still there on the next: while it stays the
-// cache's, nothing is drawn over its rectangles and the window need not show them again.
+// rasteriser) and shows a part of it, the panel shown on one frame is still on the screen on the
+// next: while it stays the cache's, the window need not draw or show its rectangles again (the
+// view may even clear them in the back buffer, Viewer::frame).
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -40,10 +41,10 @@ bool split_lists(const ImDrawData& frame, std::span<const FramebufferRect> panel
 class PanelCache {
 public:
   // Before anything of the frame is drawn: which of `frame`'s lists come from the cache, whose
-  // pixels are the `panel` rectangles (the empty ones left out). Returns true when the window's
-  // panel rectangles may be left as the last frame left them: `window_kept` (the back buffer
-  // still holds the last frame), the cache's panel was copied into the window and is still this
-  // frame's, and no other list reaches into it.
+  // pixels are the `panel` rectangles (the empty ones left out). Returns true when the frame
+  // need neither draw nor show the panel rectangles: `window_kept` (the window shows a part of
+  // its back buffer, and nothing this frame reads or shows the rest), the cache's panel was
+  // copied into the window and is still this frame's, and no other list reaches into it.
   bool prepare(ImDrawData& frame, std::span<const FramebufferRect> panel, bool window_kept);
 
   // Draws the prepared frame into the window's framebuffer (bound, window-sized,

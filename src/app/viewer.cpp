@@ -666,7 +666,7 @@ void Viewer::draw_picture(const Layout& l) {
       picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y, window_takes_blits_);
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
-    if (!radiance_wanted && pane_view.draw_into_window(camera, v)) {
+    if (!radiance_wanted && pane_view.draw_into_window(camera, v, view_alone_shown_ && panes_.size() == 1)) {
       if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
       ++direct_panes_;
       models_ms += finish_phase(phase_start);
@@ -907,12 +907,17 @@ void Viewer::frame() {
       1000.0 * std::chrono::duration<double>(FrameClock::now() - panel_building_start).count();
 
   // The panel cache's rectangles: the panel left of the view, the status line under both. Where
-  // the window keeps its back buffer, a panel that has not changed stays there: the frame draws
-  // and shows only the rest of the window, the view.
+  // the window keeps what it shows, a panel that has not changed stays on the screen: the frame
+  // draws and shows only the view. The back buffer's panel may then be wiped (a view may clear
+  // the whole window, see draw_into_window), so a frame that shows the whole window (an expose)
+  // or saves it with the panel copies the panel in again.
   const FramebufferRect panel[] = {{0, l.view.gl_origin.y, l.view.gl_origin.x, l.view.pixels.y},
                                    {0, 0, l.framebuffer.x, l.view.gl_origin.y}};
-  const bool window_kept = window_.keeps_back_buffer() && state_.present_parts;
+  const bool window_read = std::any_of(screenshots_.begin(), screenshots_.end(),
+                                       [](const PendingScreenshot& s) { return s.with_panel; });
+  const bool window_kept = window_.keeps_back_buffer() && state_.present_parts && !show_whole_window_ && !window_read;
   const bool panel_kept = window_takes_blits_ && panel_cache_.prepare(*ImGui::GetDrawData(), panel, window_kept);
+  view_alone_shown_ = panel_kept;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   clear_unpainted(l, panel, window_takes_blits_ && panel_cache_.paints_panel(), background);
@@ -926,7 +931,7 @@ void Viewer::frame() {
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
   const FramebufferRect rest[] = {framebuffer_rect(l.view)};
-  if (panel_kept && !show_whole_window_) window_.present(rest);
+  if (panel_kept) window_.present(rest);
   else window_.present();
   show_whole_window_ = false;
   smooth(phases.present_ms, finish_phase(phase_start));

@@ -189,6 +189,7 @@ private:
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
   bool show_whole_window_ = true;  // the next frame shows every pixel, kept or not (an expose)
+  bool view_alone_shown_ = false;  // this frame shows the view only: the rest of the window is kept
   Layout last_layout_;
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a

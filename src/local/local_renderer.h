@@ -50,8 +50,11 @@ public:
   // corner is `origin` (GL's pixels) and nothing outside it: the viewer draws what its window
   // shows straight into it, with the window's back buffer as draw buffer 1 and no draw buffer 0
   // (gl::bind_window_for_display). Only for options that do not blend (blends()).
+  // `clear_everywhere`: nothing outside the rectangle is shown this frame, so the background may
+  // be cleared over the whole framebuffer, which Mesa's software rasteriser does at memory speed
+  // (a rectangle it clears by drawing a quad, 4-5 times slower per pixel).
   void draw_display(const Camera& camera, glm::ivec2 origin, glm::ivec2 size, const LocalOptions& options,
-                    float display_scale);
+                    float display_scale, bool clear_everywhere = false);
 
   // Renders into a float framebuffer and reads back linear radiance (row 0 at the top).
   Image render(const Camera& camera, int width, int height, const LocalOptions& options);
