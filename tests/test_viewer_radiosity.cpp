@@ -132,6 +132,22 @@ TEST_F(ViewerRadiosity, TSwitchesTheTextureOffAndStartsTheSolutionOver) {
   EXPECT_GT(at(untextured, -0.5f), at(textured, -0.5f) + 50.0) << "kd 1 where the texture was dark";
 }
 
+// Before its first shot radiosity shows the emitters alone, white against black: a scene opened in
+// radiosity has its exposure checked once a shot has brought light, so the Cornell box's lamp
+// alone does not make it look over-exposed. bright.gltf (a Blender-style lamp in candela) does
+// get the warning, after its lamp's shot.
+TEST_F(ViewerRadiosity, TheExposureIsCheckedOnceAShotHasBroughtLight) {
+  const auto exposure_warnings = [](const nlohmann::json& state) {
+    int n = 0;
+    for (const auto& w : state["warnings"]) n += w.get<std::string>().find("over-exposed") != std::string::npos;
+    return n;
+  };
+  EXPECT_EQ(exposure_warnings(json_of(file("start-state.json"))), 0) << "at shot 0";
+  EXPECT_EQ(exposure_warnings(json_of(file("later-state.json"))), 0) << "after 300 shots";
+  EXPECT_EQ(exposure_warnings(json_of(file("bright-before.json"))), 0) << "bright.gltf before its lamp's shot";
+  EXPECT_EQ(exposure_warnings(json_of(file("bright-after.json"))), 1) << "bright.gltf after it";
+}
+
 TEST_F(ViewerRadiosity, WaitShotsPausesAtExactlyThatCount) {
   EXPECT_EQ(json_of(file("start.json"))["shots"], 0);
   const nlohmann::json early = json_of(file("early.json")), later = json_of(file("later.json"));

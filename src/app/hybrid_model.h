@@ -21,6 +21,7 @@ public:
   bool hybrid() const override { return true; }
   bool animating() const override { return TracedModel::animating() || radiosity_.animating(); }
   bool busy() const override { return TracedModel::busy() || radiosity_.busy(); }
+  bool shows_the_light() const override { return radiosity_.shows_the_light(); }
 
 protected:
   void draw_untraced(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;

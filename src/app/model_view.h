@@ -120,6 +120,9 @@ public:
   virtual bool busy() const { return false; }
   // Something is running (a trace, the solver): the viewer keeps drawing frames for it.
   virtual bool animating() const { return false; }
+  // Whether the picture holds the scene's light: radiosity's does not before its first shot, when
+  // only the emitters show. A scene's exposure is checked against the first picture that does.
+  virtual bool shows_the_light() const { return true; }
 };
 
 }  // namespace luz::app

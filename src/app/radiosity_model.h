@@ -27,6 +27,7 @@ public:
   bool act(Action action) override;
   bool busy() const override;
   bool animating() const override;
+  bool shows_the_light() const override { return solution_ && solution_->solver().shots() > 0; }
 
   // What model 5 displays, and what the hybrid reads (B/pi only: no heat map, no shooter).
   struct Display {

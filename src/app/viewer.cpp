@@ -653,7 +653,8 @@ void Viewer::draw_picture(const Layout& l) {
       std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
   double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
   copied_panes_ = direct_panes_ = 0;
-  const bool reading_exposure = state_.exposure_fit || exposure_check_;
+  const bool checking_exposure = exposure_check_ && view(model_->name).shows_the_light();
+  const bool reading_exposure = state_.exposure_fit || checking_exposure;
   const bool radiance_wanted =
       reading_exposure || state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
       std::any_of(screenshots_.begin(), screenshots_.end(), [](const PendingScreenshot& s) { return !s.with_panel; });
@@ -711,15 +712,15 @@ void Viewer::draw_picture(const Layout& l) {
   }
   smooth(state_.frame_phases.models_ms, models_ms);
   smooth(state_.frame_phases.exposure_ms, exposure_ms);
-  if (reading_exposure) read_exposure();
+  if (reading_exposure) read_exposure(checking_exposure);
 }
 
 // The active pane's radiance against the exposure: fitted to it when K (the panel, `set exposure
-// auto`) asked, and for a scene just loaded, a warning when the picture is far off (most often
-// a file whose lights are in photometric units).
-void Viewer::read_exposure() {
+// auto`) asked, and when `check`, for a scene just loaded, a warning when the picture is far off
+// (most often a file whose lights are in photometric units).
+void Viewer::read_exposure(bool check) {
   const bool fit = std::exchange(state_.exposure_fit, false);
-  const bool check = std::exchange(exposure_check_, false);
+  if (check) exposure_check_ = false;
   if (active_pane_ >= pictures_.size() || !pictures_[active_pane_]) return;
   const Image picture = pictures_[active_pane_]->read();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

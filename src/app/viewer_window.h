@@ -139,7 +139,7 @@ private:
   void draw_windows(const Layout& l);
   const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
-  void read_exposure();
+  void read_exposure(bool check);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
 
