@@ -915,7 +915,7 @@ void Viewer::frame() {
   const FramebufferRect panel[] = {{0, l.view.gl_origin.y, l.view.gl_origin.x, l.view.pixels.y},
                                    {0, 0, l.framebuffer.x, l.view.gl_origin.y}};
   const bool window_read = std::any_of(screenshots_.begin(), screenshots_.end(),
-                                       [](const PendingScreenshot& s) { return s.with_panel && !s.shown; });
+                                       [](const PendingScreenshot& shot) { return shot.with_panel && !shot.shown; });
   const bool window_kept = window_.keeps_back_buffer() && state_.present_parts && !show_whole_window_ && !window_read;
   const bool panel_kept = window_takes_blits_ && panel_cache_.prepare(*ImGui::GetDrawData(), panel, window_kept);
   view_alone_shown_ = panel_kept;
