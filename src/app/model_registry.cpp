@@ -100,7 +100,8 @@ std::string models_accepting(std::string_view group) {
       if (group == g) names.push_back(m.name);
   std::string text;
   for (size_t i = 0; i < names.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    // TRANSLATORS: joins the last two names of a list of models: "flat, gouraud or phong".
+    text += (i == 0 ? "" : i + 1 == names.size() ? tr(" or ") : ", ") + names[i];
   return text;
 }
 
