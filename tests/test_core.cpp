@@ -118,6 +118,22 @@ TEST(Camera, FramingSeesTheWholeBoundingBox) {
       }
 }
 
+// One rule for every model: a mesh shows its material's kd texture when the texture exists and
+// the mesh has TEXCOORD_0 to place it by.
+TEST(Scene, AMeshShowsItsTextureOnlyWithTextureCoordinates) {
+  Scene scene;
+  scene.textures.resize(2);
+  Mesh mapped, unmapped;
+  mapped.uvs = {{0, 0}, {1, 0}, {0, 1}};
+  Material material;
+  EXPECT_EQ(scene.shown_texture(mapped, material), -1) << "no texture";
+  material.kd_texture = 1;
+  EXPECT_EQ(scene.shown_texture(mapped, material), 1);
+  EXPECT_EQ(scene.shown_texture(unmapped, material), -1) << "no TEXCOORD_0";
+  material.kd_texture = 2;
+  EXPECT_EQ(scene.shown_texture(mapped, material), -1) << "no such texture";
+}
+
 TEST(Scene, AreaLightsAreTheEmissiveTriangles) {
   Scene scene;
   scene.materials = {Material{}, Material{}};

@@ -68,7 +68,7 @@ struct Pictures {
     renderer.update(field, options);
     radiosity = renderer.render(camera, kSize, kSize, options);
 
-    diffuse = std::make_unique<hybrid::RadiosityDiffuse>(scene, mesh, RadianceField::of(solver));
+    diffuse = std::make_unique<hybrid::RadiosityDiffuse>(mesh, RadianceField::of(solver));
     tracer = std::make_unique<rt::WhittedRenderer>(scene);
     hybrid_tracer = std::make_unique<rt::WhittedRenderer>(scene);
     hybrid_tracer->set_diffuse_source(diffuse.get());
@@ -344,7 +344,7 @@ TEST(Hybrid, WithoutTexturesATexturedFloorIsItsKdAlone) {
   const Pictures expected(untextured, options);
   options.textures = false;
   const Pictures switched_off(lamp_over_floor(true), options);
-  EXPECT_FALSE(switched_off.mesh.textured);
+  EXPECT_FALSE(switched_off.mesh.detail.textures());
   for (const Patch& p : switched_off.mesh.patches) ASSERT_EQ(p.rho, Rgb(1.0f));
   const auto pixels = switched_off.interior_pixels();
   ASSERT_GT(pixels.size(), size_t(kSize * kSize / 2));

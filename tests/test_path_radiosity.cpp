@@ -44,7 +44,7 @@ TEST(PathVsRadiosity, CornellBoxMeshMeansAgreeWithinTheDiscretisationError) {
   PatchMesh mesh = PatchMesh::build(scene, radiosity);
   ProgressiveSolver solver(scene, mesh, radiosity);
   while (solver.step()) {}
-  const hybrid::RadiosityDiffuse diffuse(scene, mesh, RadianceField::of(solver));
+  const hybrid::RadiosityDiffuse diffuse(mesh, RadianceField::of(solver));
   rt::WhittedRenderer tracer(scene);
   tracer.set_diffuse_source(&diffuse);
   rt::WhittedOptions hybrid_options;

@@ -48,8 +48,7 @@ std::optional<rt::WhittedOptions> HybridModel::options_for_trace(std::string& wh
   if (viewer_.state().radiosity.drive.running) return std::nullopt;  // the hint says it waits
   if (progress().phase != TracePhase::tracing || !diffuse_) {
     if (diffuse_) diffuse_->update(RadianceField::of(solution->solver()));
-    else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(*viewer_.state().scene, solution->mesh(),
-                                                                RadianceField::of(solution->solver()));
+    else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(solution->mesh(), RadianceField::of(solution->solver()));
     set_diffuse_source(diffuse_.get());
   }
   return current_options();

@@ -84,7 +84,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       break;
     }
   }
-  if (options.terms.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < scene.textures.size())
+  if (options.terms.textures && scene.shown_texture(mesh, material) >= 0)
     // Bilinear at the finest mip level (the GPU also blends mip levels far away, so there the
     // two differ slightly).
     reading.kd_texture = scene.textures[size_t(material.kd_texture)].sample(uv);

@@ -31,7 +31,7 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
   // The kd texture follows T, as in every model. It is the patches' reflectance, so switching
   // it starts the solution over, where the scene shows a texture at all.
   r.options.textures = state.local.terms.textures;
-  if (solution_ && solution_->mesh().textured != r.options.textures && TextureDetail::any_shown(*state.scene))
+  if (solution_ && solution_->mesh().detail.textures() != r.options.textures && TextureDetail::any_shown(*state.scene))
     r.remesh = true;
   if (!solution_ || r.remesh) {
     r.remesh = false;

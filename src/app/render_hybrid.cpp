@@ -22,7 +22,7 @@ Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int 
     gl::OffscreenContext context;  // the hemicubes draw through GL; released before tracing
     ProgressiveSolver solver(scene, mesh, options);
     run_radiosity_solver(solver, settings);
-    diffuse.emplace(scene, mesh, RadianceField::of(solver));
+    diffuse.emplace(mesh, RadianceField::of(solver));
   }
   // The view-dependent part: rays, with the diffuse part of every hit read from radiosity.
   return render_whitted(scene, camera, width, height, settings, &*diffuse);

@@ -644,7 +644,7 @@ nlohmann::json Viewer::windows_json() const {
 // no radiance (no heat map, no screenshot of the picture) a view may draw what the window shows
 // straight into it (ModelView::draw_into_window: the local models, but for the inspector and
 // transparency), which saves the copy and the float picture's writes. One camera for all.
-void Viewer::draw_picture(const Layout& l) {
+void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
   if (l.view.empty()) return;
   const Camera camera = current_camera();
   pictures_.resize(panes_.size());
@@ -667,7 +667,7 @@ void Viewer::draw_picture(const Layout& l) {
       picture = std::make_unique<gl::Framebuffer>(v.pixels.x, v.pixels.y, window_takes_blits_);
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
-    if (!radiance_wanted && pane_view.draw_into_window(camera, v, view_alone_shown_ && panes_.size() == 1)) {
+    if (!radiance_wanted && pane_view.draw_into_window(camera, v, view_alone_shown && panes_.size() == 1)) {
       if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
       ++direct_panes_;
       models_ms += finish_phase(phase_start);
@@ -918,12 +918,11 @@ void Viewer::frame() {
                                        [](const PendingScreenshot& shot) { return shot.with_panel && !shot.shown; });
   const bool window_kept = window_.keeps_back_buffer() && state_.present_parts && !show_whole_window_ && !window_read;
   const bool panel_kept = window_takes_blits_ && panel_cache_.prepare(*ImGui::GetDrawData(), panel, window_kept);
-  view_alone_shown_ = panel_kept;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   clear_unpainted(l, panel, window_takes_blits_ && panel_cache_.paints_panel(), background);
   ViewerState::FramePhases& phases = state_.frame_phases;
-  draw_picture(l);
+  draw_picture(l, panel_kept);  // the view alone shown where the panel is kept
   auto phase_start = FrameClock::now();
   glViewport(0, 0, l.framebuffer.x, l.framebuffer.y);
   if (window_takes_blits_) panel_cache_.draw(background);

@@ -133,7 +133,8 @@ private:
   using FrameClock = std::chrono::steady_clock;
   double finish_phase(FrameClock::time_point& start) const;
   void smooth(double& ms, double sample) const;
-  void draw_picture(const Layout& l);
+  // `view_alone_shown`: nothing of the window but the view is shown this frame (its panel is kept).
+  void draw_picture(const Layout& l, bool view_alone_shown);
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
@@ -189,7 +190,6 @@ private:
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
   bool show_whole_window_ = true;  // the next frame shows every pixel, kept or not (an expose)
-  bool view_alone_shown_ = false;  // this frame shows the view only: the rest of the window is kept
   Layout last_layout_;
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a

@@ -27,6 +27,11 @@ Rgb Texture::mean() const {
   return sum / float(std::max<size_t>(1, texels.size()));
 }
 
+int Scene::shown_texture(const Mesh& mesh, const Material& material) const {
+  const int t = material.kd_texture;
+  return t >= 0 && size_t(t) < textures.size() && !mesh.uvs.empty() ? t : -1;
+}
+
 Rgb Mesh::colour_at(size_t triangle, const glm::vec2& barycentrics) const {
   if (colors.empty()) return Rgb(1.0f);
   const float u = barycentrics.x, v = barycentrics.y;

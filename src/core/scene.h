@@ -88,6 +88,9 @@ struct Scene {
   void find_area_lights();
   // The camera called `name_or_index` (a name, or its index in node order); -1 when none.
   int find_camera(const std::string& name_or_index) const;
+  // The index in `textures` of the kd texture `mesh` shows with `material`, or -1: none, or the
+  // mesh has no TEXCOORD_0 to place it by. Every model shows a texture by this rule.
+  int shown_texture(const Mesh& mesh, const Material& material) const;
   std::string to_string() const;
 };
 

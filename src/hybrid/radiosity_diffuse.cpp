@@ -5,8 +5,8 @@
 
 namespace luz::hybrid {
 
-RadiosityDiffuse::RadiosityDiffuse(const Scene& scene, const PatchMesh& mesh, RadianceField field)
-    : mesh_(mesh), field_(std::move(field)), detail_(scene, mesh.textured) {
+RadiosityDiffuse::RadiosityDiffuse(const PatchMesh& mesh, RadianceField field)
+    : mesh_(mesh), field_(std::move(field)) {
   assert(field_.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
 }
 
@@ -18,7 +18,7 @@ void RadiosityDiffuse::update(RadianceField field) {
 Rgb RadiosityDiffuse::diffuse_radiance(int mesh, int triangle, glm::vec2 barycentrics) const {
   // B/pi at the hit, Gouraud-interpolated from the patch's vertices (nodal averages), with the
   // texture's detail, as the radiosity picture shows that point.
-  return field_.at(mesh_, mesh, triangle, barycentrics) * detail_.at(mesh, triangle, barycentrics);
+  return field_.at(mesh_, mesh, triangle, barycentrics) * mesh_.detail.at(mesh, triangle, barycentrics);
 }
 
 }  // namespace luz::hybrid

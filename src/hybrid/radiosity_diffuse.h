@@ -6,12 +6,12 @@
 // on triangle t of scene mesh m at barycentrics b, the radiance B/pi interpolated across the
 // patch mesh exactly as the radiosity picture's Gouraud shading interpolates it
 // (RadianceField::at), times the kd texture's detail there as that picture shows it
-// (TextureDetail). Everything else of a hit comes from rays (see rt::Whitted::color).
+// (PatchMesh::detail). Everything else of a hit comes from rays (see rt::Whitted::color).
 //
 //   PatchMesh mesh = PatchMesh::build(scene, radiosity_options);     // needs GL from here ...
 //   ProgressiveSolver solver(scene, mesh, radiosity_options);
 //   while (solver.step()) {}                      // or the viewer's solution, converged or not
-//   RadiosityDiffuse diffuse(scene, mesh, RadianceField::of(solver));  // ... to here; no GL below
+//   RadiosityDiffuse diffuse(mesh, RadianceField::of(solver));      // ... to here; no GL below
 //   WhittedRenderer tracer(scene);
 //   tracer.set_diffuse_source(&diffuse);
 //   Image image = tracer.render(camera, w, h, whitted_options, ...);
@@ -21,7 +21,6 @@
 // Whitted's, so the viewer's tiles, progress, cancel and ray-tree inspection work for the hybrid
 // unchanged.
 #include "radiosity/patch_mesh.h"
-#include "radiosity/texture_detail.h"
 #include "radiosity/vertex_colours.h"
 #include "raytracing/diffuse_source.h"
 
@@ -29,8 +28,9 @@ namespace luz::hybrid {
 
 class RadiosityDiffuse final : public rt::DiffuseSource {
 public:
-  // `scene` and `mesh` must outlive this object; `mesh` is the mesh `field` was computed on.
-  RadiosityDiffuse(const Scene& scene, const PatchMesh& mesh, RadianceField field);
+  // `mesh` (and the scene it was built from) must outlive this object and be the mesh `field`
+  // was computed on.
+  RadiosityDiffuse(const PatchMesh& mesh, RadianceField field);
 
   // A newer solution (the viewer after more shots). Not while a render reads this object.
   void update(RadianceField field);
@@ -41,7 +41,6 @@ public:
 private:
   const PatchMesh& mesh_;
   RadianceField field_;
-  TextureDetail detail_;
 };
 
 }  // namespace luz::hybrid

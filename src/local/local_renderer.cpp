@@ -240,9 +240,10 @@ struct LocalRenderer::Impl {
 
   void set_pass(gl::Program& p, const ScenePass& pass, const LocalOptions& options, bool shadows);
   void set_lights(gl::Program& p, bool shadows);
-  void set_material(gl::Program& p, const Material& material, const LocalOptions& options);
-  bool is_textured(const Material& material, const LocalOptions& options) const {
-    return options.terms.textures && material.kd_texture >= 0 && size_t(material.kd_texture) < textures.size();
+  // `textured`: is_textured() of the mesh drawn with it.
+  void set_material(gl::Program& p, const Material& material, bool textured);
+  bool is_textured(size_t mesh, const LocalOptions& options) const {
+    return options.terms.textures && scene.shown_texture(scene.meshes[mesh], material_of(mesh)) >= 0;
   }
   void set_shadow_view(gl::Program& p, const std::string& at, const ShadowView* view);
   float far_plane(const glm::vec3& eye) const;
@@ -383,14 +384,12 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
   return programs.emplace(std::move(key), std::move(variant)).first->second;
 }
 
-void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
-                                       const LocalOptions& options) {
+void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material, bool textured) {
   p.set("u_ka", glm::vec3(material.ka));
   p.set("u_kd", glm::vec3(material.kd));
   p.set("u_ks", glm::vec3(material.ks));
   p.set("u_shininess", material.shininess);
   p.set("u_emission", glm::vec3(material.emission));
-  const bool textured = is_textured(material, options);
   glActiveTexture(GL_TEXTURE0 + kd_unit);
   glBindTexture(GL_TEXTURE_2D, textured ? textures[size_t(material.kd_texture)] : 0);
   p.set("u_kr", glm::vec3(material.kr));
@@ -458,7 +457,7 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   auto draw_mesh = [&](size_t m, bool transparent) {
     const Material& material = material_of(m);
     Switches switches = common;
-    switches.kd_texture = is_textured(material, options);
+    switches.kd_texture = is_textured(m, options);
     switches.reflection = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
     switches.transparent = transparent;
     switches.display = pass.display && !transparent;
@@ -469,7 +468,7 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
       set_pass(p, pass, options, shadows);
       variant.pass = pass_number;
     }
-    set_material(p, material, options);
+    set_material(p, material, switches.kd_texture);
     glActiveTexture(GL_TEXTURE0 + reflection_unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, switches.reflection ? cubes[m].texture : 0);
     meshes[m].draw();

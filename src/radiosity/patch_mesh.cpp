@@ -208,15 +208,14 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   PatchMesh result;
   result.max_edge = max_edge;
   result.elements_per_edge = k;
-  result.textured = textures;
+  result.detail = TextureDetail(scene, textures);
   result.patches.reserve(size_t(elements));
   // rho = kd; a kd texture the mesh shows multiplies it by its mean texel (a patch has one
   // reflectance; the picture puts the texture's detail back, texture_detail.h).
-  const TextureDetail detail(scene, textures);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
-    const Rgb rho = material.kd * detail.mean(int(m));
+    const Rgb rho = material.kd * result.detail.mean(int(m));
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
     const float longest = longest_edge(mesh);
     const int patches_per_edge = int(subdivisions_for(longest, max_edge));

@@ -38,6 +38,7 @@
 #include "core/color.h"
 #include "core/scene.h"
 #include "radiosity/radiosity_options.h"
+#include "radiosity/texture_detail.h"
 
 namespace luz {
 
@@ -73,7 +74,7 @@ class PatchMesh {
 public:
   PatchMesh() = default;
   // Splits every triangle so that no patch edge is longer than `max_edge` metres, and every
-  // patch into elements_per_edge^2 elements; `textures`: see `textured`. Throws luz::Error
+  // patch into elements_per_edge^2 elements; `textures`: see `detail`. Throws luz::Error
   // (bad_value) before allocating anything if the mesh would have more than kMaxElements
   // elements, and (not_finite) if a triangle's edge is not a finite length.
   static PatchMesh build(const Scene& scene, float max_edge, int elements_per_edge = 1, bool textures = true);
@@ -91,9 +92,9 @@ public:
   std::vector<uint32_t> shooter_of;  // per element, its shooting patch
   float max_edge = 0.0f;             // of a shooting patch
   int elements_per_edge = 1;
-  // Whether the reflectances read the kd textures (RadiosityOptions::textures): the picture
-  // shows their detail only then.
-  bool textured = true;
+  // The kd textures the reflectances were made with (none with RadiosityOptions::textures
+  // false): the picture and the hybrid show the same detail.
+  TextureDetail detail;
   int revision = 0;                  // changes whenever the elements change after build()
 
   size_t size() const { return patches.size(); }

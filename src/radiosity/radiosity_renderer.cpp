@@ -27,7 +27,6 @@ struct Run {
 struct RadiosityRenderer::Impl {
   const Scene& scene;
   const PatchMesh& mesh;
-  TextureDetail detail;
   gl::Program program{{"radiosity.vert", "radiosity.frag"}};
   GLuint vao = 0, positions = 0, colours = 0, uvs = 0;
   GLsizei vertex_count = 0;
@@ -39,7 +38,7 @@ struct RadiosityRenderer::Impl {
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
 
-  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m), detail(s, m.textured), textures(s.textures.size(), 0) {}
+  Impl(const Scene& s, const PatchMesh& m) : scene(s), mesh(m), textures(s.textures.size(), 0) {}
   ~Impl() {
     if (vao) glDeleteVertexArrays(1, &vao);
     if (positions) glDeleteBuffers(1, &positions);
@@ -97,7 +96,7 @@ void RadiosityRenderer::upload_elements() {
   Bounds bounds;
   for (const uint32_t e : mesh.members) {
     const Patch& p = mesh.patches[e];
-    const Texture* texture = s.detail.texture_of(p.mesh);
+    const Texture* texture = s.mesh.detail.texture_of(p.mesh);
     if (s.runs.empty() || s.runs.back().texture != texture)
       s.runs.push_back({GLint(corners.size()), 0, texture, p.mesh});
     s.runs.back().count += 3;
@@ -204,7 +203,7 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     s.program.set("u_textured", textured);
     if (textured) {
       glBindTexture(GL_TEXTURE_2D, s.textures[size_t(run.texture - s.scene.textures.data())]);
-      s.program.set("u_inverse_mean", s.detail.inverse_mean(run.mesh));
+      s.program.set("u_inverse_mean", s.mesh.detail.inverse_mean(run.mesh));
     }
     s.program.set("u_first_primitive", int(run.first / 3));  // gl_PrimitiveID counts from the draw's first
     glDrawArrays(GL_TRIANGLES, run.first, run.count);

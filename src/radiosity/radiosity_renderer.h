@@ -11,7 +11,6 @@
 #include "core/scene.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_options.h"
-#include "radiosity/texture_detail.h"
 #include "radiosity/vertex_colours.h"
 
 namespace luz {

@@ -3,18 +3,17 @@
 namespace luz {
 namespace {
 
-// The index in scene.textures of the kd texture mesh `mesh` shows, or -1: none, or the mesh has
-// no TEXCOORD_0 to place it by.
+// The index in scene.textures of the kd texture scene mesh `mesh` shows, or -1 (a mesh without
+// a material of the scene's has the default one, which has no texture).
 int shown_texture(const Scene& scene, int mesh) {
   const Mesh& m = scene.meshes[size_t(mesh)];
-  if (m.uvs.empty() || m.material < 0 || size_t(m.material) >= scene.materials.size()) return -1;
-  const int texture = scene.materials[size_t(m.material)].kd_texture;
-  return texture >= 0 && size_t(texture) < scene.textures.size() ? texture : -1;
+  if (m.material < 0 || size_t(m.material) >= scene.materials.size()) return -1;
+  return scene.shown_texture(m, scene.materials[size_t(m.material)]);
 }
 
 }  // namespace
 
-TextureDetail::TextureDetail(const Scene& scene, bool textures) : scene_(scene), textures_(textures) {
+TextureDetail::TextureDetail(const Scene& scene, bool textures) : scene_(&scene), textures_(textures) {
   if (!textures) return;
   for (const Texture& texture : scene.textures) {
     const Rgb mean = texture.mean();
@@ -31,11 +30,11 @@ bool TextureDetail::any_shown(const Scene& scene) {
   return false;
 }
 
-int TextureDetail::index_of(int mesh) const { return textures_ ? shown_texture(scene_, mesh) : -1; }
+int TextureDetail::index_of(int mesh) const { return textures_ ? shown_texture(*scene_, mesh) : -1; }
 
 const Texture* TextureDetail::texture_of(int mesh) const {
   const int i = index_of(mesh);
-  return i >= 0 ? &scene_.textures[size_t(i)] : nullptr;
+  return i >= 0 ? &scene_->textures[size_t(i)] : nullptr;
 }
 
 Rgb TextureDetail::mean(int mesh) const {
@@ -51,8 +50,8 @@ Rgb TextureDetail::inverse_mean(int mesh) const {
 Rgb TextureDetail::at(int mesh, int triangle, glm::vec2 b) const {
   const int i = index_of(mesh);
   if (i < 0) return Rgb(1.0f);
-  const glm::vec2 uv = scene_.meshes[size_t(mesh)].uv_at(size_t(triangle), b);
-  return scene_.textures[size_t(i)].sample(uv) * inverse_means_[size_t(i)];
+  const glm::vec2 uv = scene_->meshes[size_t(mesh)].uv_at(size_t(triangle), b);
+  return scene_->textures[size_t(i)].sample(uv) * inverse_means_[size_t(i)];
 }
 
 }  // namespace luz

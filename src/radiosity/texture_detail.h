@@ -4,7 +4,8 @@
 // detail back: a point shows B/pi x texel / mean texel, exact where the irradiance is constant
 // across the patch, the way radiosity systems map textures onto a solution computed with average
 // reflectances (Cohen & Wallace, "Radiosity and Realistic Image Synthesis", 1993). The radiosity
-// picture does it per fragment (radiosity_renderer.cpp) and the hybrid's diffuse part per hit.
+// picture does it per fragment (radiosity_renderer.cpp) and the hybrid's diffuse part per hit,
+// both from the one the mesh was built with (PatchMesh::detail).
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -16,8 +17,10 @@ namespace luz {
 
 class TextureDetail {
 public:
+  TextureDetail() = default;  // no texture anywhere
   // The scene must outlive it. `textures` false: no mesh shows a texture (`--no-textures`).
   explicit TextureDetail(const Scene& scene, bool textures = true);
+  bool textures() const { return textures_; }
   // Whether any mesh of `scene` shows a kd texture: whether `textures` changes anything.
   static bool any_shown(const Scene& scene);
 
@@ -37,8 +40,8 @@ private:
   // The index in Scene::textures of texture_of(mesh), or -1.
   int index_of(int mesh) const;
 
-  const Scene& scene_;
-  bool textures_;
+  const Scene* scene_ = nullptr;
+  bool textures_ = false;
   std::vector<Rgb> means_, inverse_means_;  // per scene texture, each read once
 };
 

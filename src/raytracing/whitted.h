@@ -171,8 +171,7 @@ public:
 private:
   // Whether kd_at multiplies kd by o's base colour texture on `mesh`.
   bool samples_texture(const Material& o, const Mesh& mesh) const {
-    return options_.terms.textures && o.kd_texture >= 0 && size_t(o.kd_texture) < scene_.textures.size() &&
-           !mesh.uvs.empty();
+    return options_.terms.textures && scene_.shown_texture(mesh, o) >= 0;
   }
   // The hit's light samples: the streamed ones when trace() was given them for this hit, else
   // sampled here. The one lookup of the streamed answers, so that color() has a single path.
