@@ -92,7 +92,9 @@ void command(const CLI::Formatter& format, const CLI::App& app, const std::strin
 std::string man_page(const CLI::App& app) {
   const auto format = std::dynamic_pointer_cast<CLI::Formatter>(app.get_formatter());
   if (!format) return {};
-  std::string out = fmt::format(".TH LUZ 1 \"\" \"luz {}\" \"{}\"\n", version(), tr("User commands"));
+  // UTF-8 (the lecture's title, the Spanish page): the first line tells man's preconv.
+  std::string out = ".\\\" -*- coding: UTF-8 -*-\n";
+  out += fmt::format(".TH LUZ 1 \"\" \"luz {}\" \"{}\"\n", version(), tr("User commands"));
   out += fmt::format(".SH \"{}\"\n", tr("NAME"));
   out += "luz \\- " + roff(tr("interactive lab for realistic image synthesis"));
   out += fmt::format(".SH \"{}\"\n", tr("SYNOPSIS"));

@@ -70,7 +70,7 @@ done
 for page in man1/luz.1 es/man1/luz.1; do
   file=$prefix/share/man/$page
   [ -f "$file" ] || fail "share/man/$page is not installed"
-  groff -man -Tutf8 -ww -z "$file" >"$scratch/groff.log" 2>&1 || { cat "$scratch/groff.log"; fail "groff reads $page with errors"; }
+  groff -k -man -Tutf8 -ww -z "$file" >"$scratch/groff.log" 2>&1 || { cat "$scratch/groff.log"; fail "groff reads $page with errors"; }
   [ ! -s "$scratch/groff.log" ] || { cat "$scratch/groff.log"; fail "groff warns on $page"; }
 done
 page=$prefix/share/man/man1/luz.1
@@ -88,6 +88,7 @@ done <"$scratch/flags"
 # --- cpack -G DEB: the same files, its dependencies, and a luz that runs unpacked ------------
 "$cpack" -G DEB -B "$scratch/deb" --config "$build/CPackConfig.cmake" >"$scratch/cpack.log" 2>&1 ||
   { cat "$scratch/cpack.log"; fail "cpack -G DEB"; }
+if grep -q 'Warning' "$scratch/cpack.log"; then cat "$scratch/cpack.log"; fail "cpack -G DEB warns"; fi
 deb=$(ls "$scratch"/deb/luz_*.deb)
 dpkg-deb --field "$deb" Depends >"$scratch/depends"
 for package in libc6 libstdc++6 libembree3-3 libtbb12 libosmesa6 fonts-dejavu-core; do
