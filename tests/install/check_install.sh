@@ -30,6 +30,11 @@ for file in scenes/cornell_box.gltf scenes/cornell_box.bin shaders/phong.frag le
   [ -f "$prefix/share/luz/$file" ] || fail "share/luz/$file is not installed"
 done
 
+# Built from a Git clone, luz --version names the commit (a tarball has no description).
+if [ -e "$source/.git" ] && command -v git >/dev/null; then
+  "$build/luz" --version | head -n1 | grep -q "^luz $version (git [^)]*)\$" ||
+    fail "luz --version of a clone's build has no Git description: $("$build/luz" --version | head -n1)"
+fi
 # The reference picture, by the build tree's luz, before the trees are hidden.
 mkdir -p "$scratch/elsewhere"
 "$build/luz" render "$source/scenes/cornell_box.gltf" --model phong --size 64x48 -q --out "$scratch/build_tree.png"
