@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "app/i18n.h"
+#include "app/radiosity_solution.h"
 #include "core/error.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
@@ -103,6 +104,13 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings) {
   const RadiosityOptions options = radiosity_options(settings);
+  if (const RadiositySolution* shared = settings.radiosity_solution.get()) {
+    RadiosityRenderer renderer(scene, shared->mesh);
+    // The heat map is no radiance for a texture to modulate.
+    if (shared->heat_map) renderer.update(*shared->heat_map, options, false);
+    else renderer.update(shared->radiance, options);
+    return renderer.render(camera, width, height, options);
+  }
   PatchMesh mesh = PatchMesh::build(scene, options);
   ProgressiveSolver solver(scene, mesh, options);
   run_radiosity_solver(solver, settings);

@@ -1,5 +1,6 @@
 #pragma once
 // `luz render`: one picture of a scene, headless through OSMesa.
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -12,6 +13,8 @@
 #include "raytracing/whitted_options.h"
 
 namespace luz::app {
+
+struct RadiositySolution;
 
 struct RenderSettings {
   std::string scene;
@@ -41,6 +44,9 @@ struct RenderSettings {
     std::string group;
   };
   std::vector<GivenFlag> given_flags;
+  // A radiosity solution already solved for this scene and these flags (radiosity_solution.h):
+  // the radiosity and hybrid pictures show it instead of solving again. Empty: each solves.
+  std::shared_ptr<const RadiositySolution> radiosity_solution;
 };
 
 // Parses "WxH"; false when malformed or out of range.

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "app/radiosity_command.h"
+#include "app/radiosity_solution.h"
 #include "gl/offscreen_context.h"
 #include "hybrid/radiosity_diffuse.h"
 #include "radiosity/patch_mesh.h"
@@ -15,6 +16,10 @@ Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int 
                             const RenderSettings& settings) {
   check_square_spp(settings);  // before the solve, not after it
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
+  if (const RadiositySolution* shared = settings.radiosity_solution.get()) {
+    const hybrid::RadiosityDiffuse diffuse(shared->mesh, shared->radiance);
+    return render_whitted(scene, camera, width, height, settings, &diffuse);
+  }
   const RadiosityOptions options = radiosity_options(settings);
   PatchMesh mesh = PatchMesh::build(scene, options);
   std::optional<hybrid::RadiosityDiffuse> diffuse;
