@@ -132,6 +132,7 @@ int write_handout(const HandoutSettings& settings, const Lesson& lesson, StepRan
       const Camera& camera = chosen_camera(picture.settings, scene);
       picture.settings.width = settings.width;
       picture.settings.height = settings.height;
+      picture.settings.seconds = settings.seconds;
       if (picture.shows_radiosity()) {
         picture.radiosity.exposure = picture.settings.exposure.value_or(scene.exposure);
         picture.settings.radiosity_solution = solve_radiosity(scene, picture.settings, picture.radiosity);
@@ -171,6 +172,10 @@ void add_handout_flags(CLI::App& lesson, HandoutSettings& settings) {
       },
       tr("Each step's picture WxH (panes share it; default: luz render's size)"));
   lesson.add_option("--steps", settings.steps, tr("Only steps A to B (from 1), e.g. --steps 1-4"));
+  lesson.add_option("--time", settings.seconds,
+                    tr("Seconds each step's radiosity solve or path tracing may take at most (the stopping rule "
+                       "may end it sooner)"))
+      ->check(CLI::PositiveNumber)->capture_default_str();
   lesson.add_flag("-q,--quiet", settings.quiet, tr("Print nothing on success"));
 }
 

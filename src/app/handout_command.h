@@ -14,6 +14,9 @@ struct HandoutSettings {
   std::string png_dir;   // --png-dir
   int width = 0, height = 0;  // --size: each step's picture (0: luz render's default)
   std::string steps;     // --steps A-B (from 1); empty: all
+  // --time: each step's radiosity solve and path tracing stop when it is up, as the class moves
+  // on while the solver runs (a 5 cm mesh converges in minutes, not seconds).
+  double seconds = 20.0;
   bool quiet = false;
 };
 
