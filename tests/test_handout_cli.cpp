@@ -175,6 +175,10 @@ TEST(HandoutCli, BadLessonAndUnwritablePathsExitOneWithoutAFile) {
   const auto png = run_luz({"lesson", lesson.string(), "--png-dir", (dir / "lesson.json" / "pictures").string()});
   EXPECT_EQ(png.exit_code, 1) << png.output;
   EXPECT_TRUE(contains(png.output, "pictures")) << png.output;
+  // The PDF's temporary, opened before the folder failed, goes too.
+  const auto both = run_luz({"lesson", lesson.string(), "--handout", (dir / "h.pdf").string(), "--png-dir",
+                             (dir / "lesson.json" / "pictures").string()});
+  EXPECT_EQ(both.exit_code, 1) << both.output;
   expect_nothing_written(dir);
 }
 

@@ -1,11 +1,16 @@
 #include "app/handout_command.h"
 
+#include <array>
 #include <charconv>
+#include <csignal>
+#include <cstring>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -44,35 +49,67 @@ StepRange parse_steps(const std::string& text, size_t steps) {
   return range;
 }
 
+// While the temporary outputs exist, SIGINT and SIGTERM remove them before the process ends as it
+// would have (the previous disposition restored, the signal raised again), as io::write_image
+// does for its own temporary. The handler only calls async-signal-safe functions (unlink, rmdir,
+// sigaction, raise) on paths laid out before it is installed.
+std::vector<std::array<char, 4096>> g_temporaries;  // files, then the folder last
+struct sigaction g_previous_int, g_previous_term;
+
+extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  for (const auto& path : g_temporaries) {
+    unlink(path.data());
+    rmdir(path.data());
+  }
+  sigaction(SIGINT, &g_previous_int, nullptr);
+  sigaction(SIGTERM, &g_previous_term, nullptr);
+  raise(signal_number);
+}
+
+class TemporariesGuard {
+public:
+  explicit TemporariesGuard(const std::vector<fs::path>& paths) {
+    for (const fs::path& path : paths) {
+      const std::string name = path.string();
+      if (name.size() >= 4096) continue;
+      std::array<char, 4096>& slot = g_temporaries.emplace_back();
+      std::memcpy(slot.data(), name.c_str(), name.size() + 1);
+    }
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_reraise;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &g_previous_int);
+    sigaction(SIGTERM, &action, &g_previous_term);
+  }
+  ~TemporariesGuard() {
+    sigaction(SIGINT, &g_previous_int, nullptr);
+    sigaction(SIGTERM, &g_previous_term, nullptr);
+    g_temporaries.clear();
+  }
+  TemporariesGuard(const TemporariesGuard&) = delete;
+  TemporariesGuard& operator=(const TemporariesGuard&) = delete;
+};
+
+std::string png_name(size_t number) { return fmt::format("step-{:02}.png", number); }
+
 // The outputs are written beside their final names and renamed when every step is done; on
 // any failure the temporary ones go.
 class Outputs {
 public:
-  Outputs(const HandoutSettings& settings, const std::string& lesson_title) : settings_(settings) {
-    if (!settings.pdf.empty()) {
-      pdf_partial_ = settings.pdf + ".partial";
-      pdf_.emplace(pdf_partial_, lesson_title);
-    }
-    if (!settings.png_dir.empty()) {
-      fs::path folder = fs::path(settings.png_dir).lexically_normal();
-      if (!folder.has_filename()) folder = folder.parent_path();  // "pictures/"
-      png_partial_ = folder.string() + ".partial";
-      std::error_code error;
-      fs::remove_all(png_partial_, error);
-      if (!fs::create_directories(png_partial_, error) || error)
-        throw Error(ErrorKind::output, trf("{}: cannot be written", settings.png_dir));
+  Outputs(const HandoutSettings& settings, const std::string& lesson_title, StepRange range) : settings_(settings) {
+    try {
+      open(lesson_title, range);
+    } catch (...) {
+      remove_temporaries();  // the destructor does not run for an object never made
+      throw;
     }
   }
-  ~Outputs() {
-    std::error_code ignored;
-    if (!pdf_partial_.empty()) fs::remove(pdf_partial_, ignored);
-    if (!png_partial_.empty()) fs::remove_all(png_partial_, ignored);
-  }
+  ~Outputs() { remove_temporaries(); }
 
   void add(size_t number, const HandoutStep& step, const Image& picture, float exposure) {
     if (pdf_) pdf_->add(step, picture, exposure);
     if (!png_partial_.empty()) {
-      const std::string name = fmt::format("step-{:02}.png", number);
+      const std::string name = png_name(number);
       io::write_image(picture, png_partial_ / name, exposure);
       pngs_.push_back(name);
     }
@@ -97,6 +134,35 @@ public:
   }
 
 private:
+  void open(const std::string& lesson_title, StepRange range) {
+    const HandoutSettings& settings = settings_;
+    if (!settings.pdf.empty()) {
+      pdf_partial_ = settings.pdf + ".partial";
+      pdf_.emplace(pdf_partial_, lesson_title);
+    }
+    if (!settings.png_dir.empty()) {
+      fs::path folder = fs::path(settings.png_dir).lexically_normal();
+      if (!folder.has_filename()) folder = folder.parent_path();  // "pictures/"
+      png_partial_ = folder.string() + ".partial";
+      std::error_code error;
+      fs::remove_all(png_partial_, error);
+      if (!fs::create_directories(png_partial_, error) || error)
+        throw Error(ErrorKind::output, trf("{}: cannot be written", settings.png_dir));
+    }
+    std::vector<fs::path> temporaries;
+    if (!pdf_partial_.empty()) temporaries.push_back(pdf_partial_);
+    if (!png_partial_.empty()) {
+      for (size_t number = range.first; number <= range.last; ++number) temporaries.push_back(png_partial_ / png_name(number));
+      temporaries.push_back(png_partial_);
+    }
+    guard_.emplace(temporaries);
+  }
+  void remove_temporaries() {
+    pdf_.reset();  // Cairo writes what it holds when the surface goes: before the file is removed
+    std::error_code ignored;
+    if (!pdf_partial_.empty()) fs::remove(pdf_partial_, ignored);
+    if (!png_partial_.empty()) fs::remove_all(png_partial_, ignored);
+  }
   static void move(const fs::path& from, const fs::path& to) {
     std::error_code error;
     fs::rename(from, to, error);
@@ -106,13 +172,14 @@ private:
   fs::path pdf_partial_, png_partial_;
   std::optional<HandoutPdf> pdf_;
   std::vector<std::string> pngs_;
+  std::optional<TemporariesGuard> guard_;  // last: gone first
 };
 
 int write_handout(const HandoutSettings& settings, const Lesson& lesson, StepRange range) {
   try {
     const std::vector<StepPicture> pictures = step_pictures(lesson);
     const i18n::Language language = i18n::language();
-    Outputs outputs(settings, lesson.title.in(language));
+    Outputs outputs(settings, lesson.title.in(language), range);
 
     const auto start = std::chrono::steady_clock::now();
     std::string loaded_path;
