@@ -115,6 +115,23 @@ TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeDecoding) {
   EXPECT_TRUE(one_line_naming(run.output, "huge.jpg: header: 62978 x 31234 pixels is beyond the limit")) << run.output;
 }
 
+// A JPEG Huffman table holds at most 256 codes (ITU T.81, B.2.4.2): one whose counts add up to more
+// is refused before the decoder builds it (stb_image would write past the table: a fuzzed file),
+// whether it comes before the frame header or after it.
+TEST(Robustness, JpegHuffmanTableOfMoreThan256CodesIsRefused) {
+  std::vector<unsigned char> table = {0xff, 0xc4, 0x01, 0x3f, 0x00, 255, 45};  // 2 + 17 + 300 bytes
+  table.resize(table.size() + 14, 0);
+  table.resize(table.size() + 300, 7);
+  const std::vector<unsigned char> jpeg = jpeg_claiming(16, 16);
+  for (const size_t at : {size_t(8), jpeg.size() - 2}) {  // after APP0; after SOF0
+    std::vector<unsigned char> bad = jpeg;
+    bad.insert(bad.begin() + std::ptrdiff_t(at), table.begin(), table.end());
+    std::string error;
+    EXPECT_FALSE(io::decode_texture(bad, "huffman", error));
+    EXPECT_EQ(error, "not a readable JPEG image: a Huffman table of 300 codes (at most 256)") << at;
+  }
+}
+
 TEST(Robustness, CorruptPngSaysSoInOneLineWithoutLibpngsOwn) {
   ScratchDir dir;
   std::vector<unsigned char> png = png_rgb8(4, 4, std::vector<unsigned char>(48, 7));

@@ -91,6 +91,30 @@ std::string png_chunk_problem(std::span<const unsigned char> bytes) {
   return tr("the file is cut short");
 }
 
+// stb_image 2.27 builds a JPEG Huffman table (DHT, ITU T.81 B.2.4.2) from its 16 counts of codes
+// without checking that they add up to at most 256, the symbols a table holds: more writes past
+// the table (a fuzzed 470-byte file). Every FF C4 in the bytes is read as the DHT segment it would
+// start, wherever stb_image might look for one, even inside another segment's data (where a
+// valid file may hold those two bytes: it would be refused if the table they start looked bad).
+std::string jpeg_huffman_problem(std::span<const unsigned char> bytes) {
+  for (size_t at = 0; at + 4 <= bytes.size(); ++at) {
+    if (bytes[at] != 0xff || bytes[at + 1] != 0xc4) continue;
+    // Tables follow while the segment's length says bytes remain, read as stb_image reads them:
+    // class and id, 16 counts, the symbols; zeros past the end of the bytes.
+    auto byte = [&](size_t i) { return i < bytes.size() ? bytes[i] : 0; };
+    int64_t remaining = int64_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    remaining -= 2;
+    for (size_t table = at + 4; remaining > 0;) {
+      size_t symbols = 0;
+      for (size_t length = 0; length < 16; ++length) symbols += byte(table + 1 + length);
+      if (symbols > 256) return trf("a Huffman table of {} codes (at most 256)", symbols);
+      table += 17 + symbols;
+      remaining -= int64_t(17 + symbols);
+    }
+  }
+  return {};
+}
+
 // stb_image 2.27 decodes a Radiance scanline's run-length code (Ward, "Real Pixels", Graphics
 // Gems II: per channel, a byte n > 128 then one value for a run of n - 128, else n values as they
 // are) in a loop that only ends when the scanline is full: a count of 0 never fills it, and past
@@ -134,6 +158,12 @@ std::optional<Image> decode_with_stb(std::span<const unsigned char> bytes, Image
   if (bytes.size() > size_t(std::numeric_limits<int>::max())) {  // stb_image counts bytes in an int
     error = unreadable(format, tr("larger than 2 GB"));
     return std::nullopt;
+  }
+  if (format == ImageFormat::jpeg) {  // before stbi_info, which builds the tables before the frame header
+    if (const std::string problem = jpeg_huffman_problem(bytes); !problem.empty()) {
+      error = unreadable(format, problem);
+      return std::nullopt;
+    }
   }
   // The size the header claims, read without decoding (stb_image stops before it allocates).
   int width = 0, height = 0, channels = 0;
