@@ -3,7 +3,14 @@
 // stb_image's implementation is compiled here, for these three formats and from memory only:
 // static, so that its symbols stay in this file (libstb, which ImGui brings along for
 // stb_truetype, exports its own), and instrumented with the rest of Luz under the sanitizers and
-// the fuzzer. Its failure reason is thread-local (STBI_THREAD_LOCAL under C++11).
+// the fuzzer. Its failure reason is thread-local (STBI_THREAD_LOCAL under C++11). Its memory
+// comes zeroed: a JPEG scan may name a Huffman table no DHT segment defined, which stb_image 2.27
+// then reads as it found it in memory (a fuzzed file: an index past the table's end); zeroed, such
+// a table decodes every code as symbol 0, within its arrays.
+#include <cstdlib>
+#define STBI_MALLOC(size) std::calloc(1, size)
+#define STBI_REALLOC(pointer, size) std::realloc(pointer, size)
+#define STBI_FREE(pointer) std::free(pointer)
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
