@@ -122,6 +122,20 @@ TEST(HandoutCli, TheShippedLessonsFirstStepsInSpanish) {
   }
 }
 
+// A radiosity step showing the heat map of the unshot power has the map's fixed scale under it.
+TEST(HandoutCli, HeatMapStepStatesItsScale) {
+  if (!have("pdftotext")) GTEST_SKIP() << "pdftotext (poppler-utils) is not installed";
+  test::ScratchDir dir;
+  const fs::path lesson = write_lesson(
+      dir.path, R"("model": "radiosity", "radiosity": {"heat-map": true}, "actions": ["reset-solver", {"shots": 2}])");
+  const auto run = run_luz({"lesson", lesson.string(), "--handout", (dir / "h.pdf").string(), "--size", "64x36"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string text = pdf_text(dir / "h.pdf");
+  EXPECT_TRUE(contains(text, "mean emitted exitance (fixed scale)")) << text;
+  EXPECT_TRUE(contains(text, "0.001")) << text;  // the ramp's first decade
+  EXPECT_TRUE(contains(text, "black: nothing left to shoot")) << text;
+}
+
 TEST(HandoutCli, PngDirHoldsOnePicturePerStepAtTheSize) {
   test::ScratchDir dir;
   const fs::path lesson = write_lesson(dir.path);

@@ -206,7 +206,8 @@ int write_handout(const HandoutSettings& settings, const Lesson& lesson, StepRan
       }
       const Sheet sheet = render_sheet(picture.settings, scene, camera, picture.models);
       const HandoutStep page{trf("Slide {} · step {} of {}", step.slide, number, lesson.steps.size()),
-                             step.title.in(language), step.text.in(language)};
+                             step.title.in(language), step.text.in(language),
+                             picture.radiosity.heat_map && picture.models == std::vector<std::string>{"radiosity"}};
       outputs.add(number, page, sheet.image, sheet.exposure);
     }
     const int pages = outputs.finish();

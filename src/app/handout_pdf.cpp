@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/i18n.h"
+#include "app/radiosity_view.h"
 #include "core/error.h"
 
 namespace luz::app {
@@ -90,6 +91,38 @@ void HandoutPdf::footer() {
   cairo_show_text(cr, page.c_str());
 }
 
+// The heat map's fixed scale, as the panel shows it: the ramp with its decades, in units of the
+// scene's mean emitted exitance. Returns where the legend ends.
+double HandoutPdf::heat_map_legend(double y) {
+  cairo_t* cr = cairo_->cr;
+  const double width = kPageWidth - 2 * kMargin, bar = 8.0;
+  font(cr, 8.0, false);
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  cairo_move_to(cr, kMargin, y + 8.0);
+  cairo_show_text(cr, tr("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):"));
+  y += 11.0;
+  const int steps = 64;
+  const double decades = std::log10(kHeatMapHighest / kHeatMapLowest);
+  for (int i = 0; i < steps; ++i) {
+    const Rgb c = heat_colour(kHeatMapLowest * std::pow(10.0, decades * (i + 0.5) / steps));
+    cairo_set_source_rgb(cr, srgb_encode(c.r), srgb_encode(c.g), srgb_encode(c.b));
+    cairo_rectangle(cr, kMargin + width * i / steps, y, width / steps + 0.5, bar);
+    cairo_fill(cr);
+  }
+  y += bar + 9.0;
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  for (int k = 0; k <= int(decades); ++k) {
+    const std::string label = fmt::format("{:g}", kHeatMapLowest * std::pow(10.0, k));
+    const double w = text_width(cr, label);
+    cairo_move_to(cr, kMargin + std::clamp(width * k / decades - 0.5 * w, 0.0, width - w), y);
+    cairo_show_text(cr, label.c_str());
+  }
+  const std::string black = tr("black: nothing left to shoot");
+  cairo_move_to(cr, kMargin + width - text_width(cr, black), y + 11.0);
+  cairo_show_text(cr, black.c_str());
+  return y + 18.0;
+}
+
 void HandoutPdf::add(const HandoutStep& step, const Image& picture, float exposure) {
   cairo_t* cr = cairo_->cr;
   const double width = kPageWidth - 2 * kMargin;
@@ -134,6 +167,7 @@ void HandoutPdf::add(const HandoutStep& step, const Image& picture, float exposu
   cairo_restore(cr);
   cairo_surface_destroy(image);
   y += shown_height + 8.0;
+  if (step.heat_map) y = heat_map_legend(y);
 
   // The text below, smaller where it would run past the slot.
   const double bottom = kMargin + (on_page_ + 1) * kSlotHeight - 8.0;

@@ -15,6 +15,7 @@ struct HandoutStep {
   std::string heading;  // "Diapositiva 17 · paso 3 de 59"
   std::string title;
   std::string text;
+  bool heat_map = false;  // the picture is radiosity's heat map: its fixed scale goes under it
 };
 
 class HandoutPdf {
@@ -35,6 +36,7 @@ public:
 private:
   struct Cairo;
   void footer();
+  double heat_map_legend(double y);
   std::unique_ptr<Cairo> cairo_;
   std::filesystem::path path_;
   std::string lesson_title_;

@@ -68,7 +68,6 @@ std::vector<StepPicture> step_pictures(const Lesson& lesson) {
     StepPicture picture;
     RadiosityOptions radiosity;
     std::string mesh;
-    picture.radiosity.heat_map = false;
     for (const ScriptCommand& c : step.commands) {
       const auto& a = c.args;
       std::string error;
