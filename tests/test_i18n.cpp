@@ -12,11 +12,11 @@
 
 #include <imgui.h>
 
-#include "app/command_language.h"
-#include "app/i18n.h"
-#include "app/label_text.h"
-#include "app/shortcuts.h"
-#include "app/ui_glyphs.h"
+#include "app/cli/command_language.h"
+#include "app/common/i18n.h"
+#include "app/common/label_text.h"
+#include "app/viewer/shortcuts.h"
+#include "app/viewer/ui_glyphs.h"
 #include "core/error.h"
 #include "support.h"
 

@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/model_registry.h"
-#include "app/render_command.h"
+#include "app/common/model_registry.h"
+#include "app/cli/render_command.h"
 #include "core/error.h"
 #include "core/scene.h"
 #include "io/gltf_loader.h"

@@ -12,11 +12,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/model_registry.h"
-#include "app/orbit_camera.h"
-#include "app/script.h"
-#include "app/shortcuts.h"
-#include "app/widget_registry.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/orbit_camera.h"
+#include "app/script/script.h"
+#include "app/viewer/shortcuts.h"
+#include "app/viewer/widget_registry.h"
 #include "core/error.h"
 #include "support.h"
 
