@@ -2,11 +2,14 @@
 """Holds src/app's #include lines to the layers of tests/layers/layers.txt.
 
 Usage: check_layers.py LAYERS.txt APP_DIR
-Prints every include that crosses an edge the file does not list, and exits 1 when there is one.
+Prints every include that crosses an edge the file does not list, and every folder that holds
+more than MAX_FILES files, and exits 1 when there is one.
 """
 import pathlib
 import re
 import sys
+
+MAX_FILES = 40  # a folder a reader takes in at a glance
 
 
 def unit_of(relative: pathlib.PurePosixPath) -> str:
@@ -66,6 +69,10 @@ def main() -> int:
                 target = unit_of(pathlib.PurePosixPath(header[len("app/"):]))
                 if target != unit and target not in allowed[unit]:
                     problems.append(f"{relative}:{number}: {unit} may not include {header} ({target})")
+    for folder in sorted({app, *(p for p in app.rglob("*") if p.is_dir())}):
+        count = sum(1 for p in folder.iterdir() if p.is_file())
+        if count > MAX_FILES:
+            problems.append(f"{folder.relative_to(app.parent)}/: {count} files (at most {MAX_FILES})")
     for problem in problems:
         print(problem)
     return 1 if problems else 0
