@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/cli/bench/bench_command.h"
-#include "app/common/resources.h"
+#include "core/resources.h"
 #include "app/common/i18n.h"
 #include "core/error.h"
 #include "gl/functions.h"
