@@ -14,6 +14,7 @@
 #include "app/model_registry.h"
 #include "app/render_grid.h"
 #include "app/script.h"
+#include "app/traced_model.h"
 #include "app/viewer_window.h"
 #include "app/widget_registry.h"
 #include "core/error.h"
@@ -205,6 +206,11 @@ bool run_dump_panes(Viewer& viewer, const ScriptCommand& c, std::string& error) 
                      {"camera", {{"position", {eye.x, eye.y, eye.z}},
                                  {"forward", {forward.x, forward.y, forward.z}},
                                  {"yfov", camera.yfov}}}});
+    // A traced pane's trace: raster (not asked for), tracing or done.
+    if (const auto* traced = dynamic_cast<const TracedModel*>(&viewer.view(models[i]->name))) {
+      const TracePhase phase = traced->progress().phase;
+      panes.back()["trace"] = phase == TracePhase::raster ? "raster" : phase == TracePhase::tracing ? "tracing" : "done";
+    }
   }
   const nlohmann::json j = {{"active", viewer.active_pane()}, {"panes", panes}};
   std::ofstream out(c.args[0]);

@@ -64,9 +64,14 @@ std::string check_wait_until(const ScriptCommand& c) {
 }
 
 bool condition_holds(Viewer& v, const std::string& condition) {
-  if (condition == "trace-done") {
-    const auto* traced = dynamic_cast<const TracedModel*>(&v.shown());
-    return traced && traced->progress().phase == TracePhase::done;
+  if (condition == "trace-done") {  // every traced pane (`trace` traces them all)
+    bool traced_pane = false;
+    for (ModelView* pane : v.pane_views())
+      if (const auto* traced = dynamic_cast<const TracedModel*>(pane)) {
+        if (traced->progress().phase != TracePhase::done) return false;
+        traced_pane = true;
+      }
+    return traced_pane;
   }
   const RadiosityStatus& r = v.state().radiosity.status;  // the solution models 5 and 6 show
   return condition == "radiosity-done" && r.built && r.done;
