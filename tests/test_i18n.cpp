@@ -83,6 +83,12 @@ TEST(MoReader, ReadsWhatMsgfmtWritesInEitherByteOrder) {
     ASSERT_NE(c.find("one shot"), nullptr);  // a plural keeps its singular pair
     EXPECT_EQ(*c.find("one shot"), "un disparo");
     EXPECT_EQ(c.size(), 3u);
+    // and its forms, chosen by "plural=(n != 1)"
+    ASSERT_NE(c.find_plural("one shot", 1), nullptr);
+    EXPECT_EQ(*c.find_plural("one shot", 1), "un disparo");
+    EXPECT_EQ(*c.find_plural("one shot", 2), "{} disparos");
+    EXPECT_EQ(*c.find_plural("one shot", 0), "{} disparos");
+    EXPECT_EQ(c.find_plural("diffuse reflection", 2), nullptr);  // not a plural entry
   }
 }
 
@@ -143,6 +149,20 @@ TEST(Catalogues, SwitchAtRunTimeAndUseTheLecturesTerms) {
   EXPECT_EQ(app::tr(unknown), unknown);
 }
 
+// Counts take the language's plural form: "1 luz", "2 luces" (gettext's ngettext), never "1 luces".
+TEST(Catalogues, CountsTakeThePluralForm) {
+  i18n::set_language(Language::es);
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 1, 1), "1 luz");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 2, 2), "2 luces");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 0, 0), "0 luces");
+  EXPECT_EQ(app::trnf("ray tree of pixel ({}, {}): {} ray", "ray tree of pixel ({}, {}): {} rays", 1, 3, 4, 1),
+            "árbol de rayos del píxel (3, 4): 1 rayo");
+  i18n::set_language(Language::en);
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 1, 1), "1 light");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 3, 3), "3 lights");
+  EXPECT_EQ(app::trnf("a count no catalogue has", "{} counts no catalogue has", 2, 2), "2 counts no catalogue has");
+}
+
 // CLI11 writes its usage errors in English: each of its shapes comes back in the current
 // language with the names and values it quotes; a message of ours passes untouched.
 TEST(Catalogues, CliElevenUsageErrorsAreTranslatedKeepingTheirPieces) {
@@ -191,6 +211,8 @@ TEST(Catalogues, EveryTranslationTakesItsIdsArguments) {
     const Catalogue& c = i18n::catalogue(language);
     EXPECT_GT(c.size(), 100u) << i18n::language_name(language);
     for (const auto& [id, text] : c.entries()) EXPECT_EQ(fields(id), fields(text)) << id << " -> " << text;
+    for (const auto& [id, forms] : c.plurals())
+      for (const std::string& form : forms) EXPECT_EQ(fields(id), fields(form)) << id << " -> " << form;
   }
 }
 

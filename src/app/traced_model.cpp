@@ -126,7 +126,8 @@ void TracedModel::click(const Camera& camera, const Viewport& viewport, glm::ive
   if (!tree.nodes.empty() && tree.nodes[0].hit)
     for (const Mesh& mesh : state.scene->meshes)
       if (mesh.name == tree.nodes[0].mesh) state.selected_material = mesh.material;
-  state.note = trf("ray tree of pixel ({}, {}): {} rays", pixel.x, pixel.y, tree.nodes.size());
+  state.note = trnf("ray tree of pixel ({}, {}): {} ray", "ray tree of pixel ({}, {}): {} rays", tree.nodes.size(),
+                    pixel.x, pixel.y, tree.nodes.size());
 }
 
 bool TracedModel::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why) {

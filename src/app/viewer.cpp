@@ -514,14 +514,14 @@ void Viewer::apply(Action action) {
     case Action::toggle_textures: toggle(o.terms.textures, N_("kd texture")); break;
     case Action::toggle_blinn:
       o.terms.blinn = !o.terms.blinn;
-      state_.note = o.terms.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
+      state_.note = o.terms.blinn ? tr("Blinn's N·H") : tr("Phong's R·V");
       break;
     case Action::cycle_attenuation: {
       std::vector<Light>& lights = state_.scene->lights;
       const bool all_classroom = std::all_of(lights.begin(), lights.end(),
                                              [](const Light& l) { return l.attenuation.classroom; });
       for (Light& light : lights) light.attenuation.classroom = !all_classroom;
-      state_.note = all_classroom ? "f_att = 1/d^2" : "f_att = 1/(c0 + c1 d + c2 d^2)";
+      state_.note = all_classroom ? "f_att = 1/d²" : "f_att = 1/(c0 + c1·d + c2·d²)";
       break;
     }
     case Action::cycle_fog:
