@@ -324,13 +324,16 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
                                                                                          "radiosity: budget (ms)", 0.0, 1000.0, true)))}));
 }
 
+// What a step may ask of its models: solving needs radiosity or the hybrid shown, tracing a
+// traced model shown or in one of its panes (`trace` traces every traced pane).
 void actions(const Reader& r, const json& step, const std::string& at, int line, const std::string& model,
-             std::vector<ScriptCommand>& out) {
+             const std::vector<std::string>& panes, std::vector<ScriptCommand>& out) {
   if (!step.contains("actions")) return;
   const json& list = step["actions"];
   if (!list.is_array()) r.fail(at + "/actions", tr("actions must be a list"));
   const bool solves = model == "radiosity" || model == "hybrid";
-  const bool traces = model == "whitted" || model == "hybrid";
+  const auto traced = [](const std::string& m) { return m == "whitted" || m == "hybrid"; };
+  const bool traces = traced(model) || std::any_of(panes.begin(), panes.end(), traced);
   auto need = [&](bool ok, const std::string& pointer, const std::string& action, const char* models) {
     if (!ok) r.fail(pointer, trf("action \"{}\" needs the model {} (this step shows {})", action, models, model));
   };
@@ -429,7 +432,7 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
       out.panes.push_back(r.one_of(panes[i], fmt::format("{}/panes/{}", at, i), tr("a pane's model"), all_models()));
   }
   c.push_back(command(line, "panes", {out.panes.empty() ? out.model : fmt::format("{}", fmt::join(out.panes, ","))}));
-  actions(r, step, at, line, out.model, c);
+  actions(r, step, at, line, out.model, out.panes, c);
   return out;
 }
 

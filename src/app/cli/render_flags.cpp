@@ -72,7 +72,7 @@ std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
 
 RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   RenderFlags flags;
-  render.add_option("SCENE", settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
+  render.add_option(tr("SCENE"), settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
   render.add_option("--model", settings.model, tr("Illumination model, or 2 or 4 of them side by side (flat,phong)"))
       ->check(CLI::Validator([](std::string& text) { return model_option_problem(text); },
                              fmt::format("{{{}}}[,...]", model_names(","))))

@@ -13,6 +13,24 @@
 
 namespace luz::app {
 
+std::optional<WaitLength> parse_wait(const std::string& text) {
+  if (is_int(text)) {
+    if (std::stoi(text) < 0) return std::nullopt;
+    return WaitLength{std::stoi(text), std::nullopt};
+  }
+  if (text.ends_with("ms")) {
+    const std::string number = text.substr(0, text.size() - 2);
+    if (!is_int(number) || std::stoi(number) < 0) return std::nullopt;
+    return WaitLength{0, std::chrono::milliseconds(std::stoi(number))};
+  }
+  if (text.ends_with("s")) {
+    const std::string number = text.substr(0, text.size() - 1);
+    if (!is_number(number) || std::stof(number) < 0.0f || std::stof(number) > 3600.0f) return std::nullopt;
+    return WaitLength{0, std::chrono::milliseconds(std::lround(1000.0 * std::stod(number)))};
+  }
+  return std::nullopt;
+}
+
 std::string check_count(const ScriptCommand& c, size_t low, size_t high) {
   if (c.args.size() >= low && c.args.size() <= high) return "";
   if (low == high) return fmt::format("`{}` takes {} argument{}", c.verb, low, low == 1 ? "" : "s");
@@ -93,6 +111,10 @@ bool ScriptRunner::step(ScriptTarget& target, std::string& error) {
     --waiting_;
     return true;
   }
+  if (wait_until_) {
+    if (now_() < *wait_until_) return true;
+    wait_until_.reset();
+  }
   if (target.busy()) return true;
   if (until_) {
     if (!target.holds(until_->args[0])) {
@@ -106,7 +128,12 @@ bool ScriptRunner::step(ScriptTarget& target, std::string& error) {
   while (next_ < script_.commands.size()) {
     const ScriptCommand& command = script_.commands[next_++];
     if (command.verb == "wait") {
-      waiting_ = std::stoi(command.args[0]);
+      const WaitLength length = *parse_wait(command.args[0]);  // checked when the script was read
+      if (length.time) {
+        wait_until_ = now_() + *length.time;
+        return true;
+      }
+      waiting_ = length.frames;
       if (waiting_ > 0) --waiting_;  // this frame is the first of them
       return true;
     }

@@ -16,8 +16,10 @@
 //                                 in view
 //   drag X0 Y0 X1 Y1 [right]      drag with the left (orbit) or right (pan) button
 //   scroll STEPS                  the mouse wheel over the picture (zoom)
-//   wait N                        let N frames pass
-//   wait-until CONDITION FRAMES   let frames pass until trace-done (the traced model shown has
+//   wait N | wait 2s | wait 500ms  let N frames pass, or that much time (seconds or
+//                                 milliseconds: a tour paced to talk over; the window draws only
+//                                 what changes meanwhile)
+//   wait-until CONDITION FRAMES   let frames pass until trace-done (every traced pane shown has
 //                                 finished its trace) or radiosity-done (the solver has reached
 //                                 its stopping rule, unasked: a wait-shots runs it); the script
 //                                 fails when that takes more than FRAMES frames
@@ -71,7 +73,10 @@
 // Blank lines are ignored, and so is everything from a word starting with #; a word in double
 // quotes may hold spaces (type "0.5"). Paths are relative to the working folder. The whole file is checked
 // before the window opens: a bad line is an error naming FILE:LINE.
+#include <chrono>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -113,6 +118,13 @@ const ScriptVerb* find_verb(std::string_view name);
 std::string check_count(const ScriptCommand& command, size_t low, size_t high);
 std::string check_json_file(const ScriptCommand& command);
 
+// How long a `wait` lasts: frames ("30") or time ("2s", "1.5s", "500ms").
+struct WaitLength {
+  int frames = 0;
+  std::optional<std::chrono::milliseconds> time;
+};
+std::optional<WaitLength> parse_wait(const std::string& text);
+
 // Throws luz::Error (kind usage) "FILE:LINE: what is wrong".
 Script parse_script(const std::filesystem::path& file);
 Script parse_script_text(const std::string& text, const std::filesystem::path& name);
@@ -136,16 +148,23 @@ public:
 // once.
 class ScriptRunner {
 public:
-  explicit ScriptRunner(Script script) : script_(std::move(script)) {}
+  using Clock = std::chrono::steady_clock;
+  // `now` tells the time for the waits in seconds (a test's own clock).
+  explicit ScriptRunner(Script script, std::function<Clock::time_point()> now = Clock::now)
+      : script_(std::move(script)), now_(std::move(now)) {}
   // Runs the commands of this frame. False on the first failing command, `error` holding
   // "FILE:LINE: ...".
   bool step(ScriptTarget& target, std::string& error);
-  bool finished() const { return next_ >= script_.commands.size() && waiting_ == 0; }
+  bool finished() const { return next_ >= script_.commands.size() && waiting_ == 0 && !wait_until_; }
+  // While a `wait 2s` runs: when it ends (the viewer sleeps until then unless something moves).
+  std::optional<Clock::time_point> waiting_until() const { return wait_until_; }
 
 private:
   Script script_;
+  std::function<Clock::time_point()> now_;
   size_t next_ = 0;
   int waiting_ = 0;
+  std::optional<Clock::time_point> wait_until_;
   const ScriptCommand* until_ = nullptr;  // the `wait-until` waiting
   int until_frames_left_ = 0;
 };

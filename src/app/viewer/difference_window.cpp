@@ -120,7 +120,7 @@ void difference_windows(const ViewerState& state, const Viewport& viewport, Wind
   }
   const DifferenceFigures& f = d.figures;
   if (!compact) {
-    ImGui::TextWrapped("%s", trf("{} against the path tracer ({} spp)", f.model, f.reference_spp).c_str());
+    ImGui::TextWrapped("%s", trf("{} against the path tracer ({} spp)", tr(f.model.c_str()), f.reference_spp).c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("%s", tr("(Y(model) - Y(reference)) / Y(reference), lit pixels"));
     ImGui::PopStyleColor();

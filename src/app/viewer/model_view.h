@@ -146,6 +146,9 @@ public:
   virtual void emitters_changed() {}
   // Whether a script's `wait-until` condition of this model holds (trace-done).
   virtual bool holds(std::string_view /*condition*/) const { return false; }
+  // A traced view's trace: "raster" (not asked for), "tracing" or "done"; nullptr for a view
+  // that does not trace.
+  virtual const char* trace_state() const { return nullptr; }
   // The inspector's values at the clicked point, where the view inspects (the local models).
   virtual const InspectorReading* inspector_reading() const { return nullptr; }
   // The reference's picture of `camera` at `size` pixels, where this view is a reference model

@@ -99,14 +99,11 @@ std::string status_line_text(const ViewerState& state, const std::string& model)
   const Scene& scene = *state.scene;
   const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
   const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
-  const char* format = tr("%s  |  %.1f ms  |  %zu triangles  |  %d lights, %zu emitters  |  %s  |  %s");
-  const auto print = [&](char* to, size_t size) {
-    return std::snprintf(to, size, format, model.c_str(), state.status_ms, scene.triangle_count(), int(lights),
-                         scene.area_lights.size(), camera.c_str(), state.note.c_str());
-  };
-  std::string text(size_t(std::max(print(nullptr, 0), 0)), '\0');
-  print(text.data(), text.size() + 1);
-  return text;
+  const size_t triangles = scene.triangle_count(), emitters = scene.area_lights.size();
+  return fmt::format("{}  |  {:.1f} ms  |  {}  |  {}, {}  |  {}  |  {}", model, state.status_ms,
+                     trnf("{} triangle", "{} triangles", triangles, triangles),
+                     trnf("{} light", "{} lights", size_t(lights), lights),
+                     trnf("{} emitter", "{} emitters", emitters, emitters), camera, state.note);
 }
 
 void draw_status_line(const std::string& text, float top, float width, float height) {

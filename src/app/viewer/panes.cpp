@@ -205,6 +205,8 @@ bool run_dump_panes(Viewer& viewer, const ScriptCommand& c, std::string& error) 
                      {"camera", {{"position", {eye.x, eye.y, eye.z}},
                                  {"forward", {forward.x, forward.y, forward.z}},
                                  {"yfov", camera.yfov}}}});
+    // A traced pane's trace: raster (not asked for), tracing or done.
+    if (const char* trace = viewer.view(models[i]->name).trace_state()) panes.back()["trace"] = trace;
   }
   const nlohmann::json j = {{"active", viewer.active_pane()}, {"panes", panes}};
   std::ofstream out(c.args[0]);

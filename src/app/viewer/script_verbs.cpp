@@ -60,7 +60,7 @@ std::string check_number(const ScriptCommand& c) {
 
 std::string check_wait(const ScriptCommand& c) {
   if (auto e = check_count(c, 1, 1); !e.empty()) return e;
-  return is_int(c.args[0]) && std::stoi(c.args[0]) >= 0 ? "" : "`wait N` takes a number of frames";
+  return parse_wait(c.args[0]) ? "" : "`wait` takes frames (30), seconds (2s) or milliseconds (500ms)";
 }
 
 std::string check_screenshot(const ScriptCommand& c) {
@@ -205,7 +205,8 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
                       {"show_help", s.show_help}, {"free_camera", s.free_camera},
                       {"language", i18n::language_name(i18n::language())}, {"settings", settings_json(s)},
-                      {"frame_ms", s.frame_ms},
+                      {"frame_ms", s.frame_ms}, {"status_line", v.status_line()}, {"frames_drawn", v.frames_drawn()},
+                      {"asking_to_quit", v.asking_to_quit()},
                       {"frame_phases_ms", {{"models", s.frame_phases.models_ms},
                                            {"exposure", s.frame_phases.exposure_ms},
                                            {"panel", s.frame_phases.panel_ms},
@@ -301,7 +302,7 @@ std::string check_lesson_verb(const ScriptCommand& c) { return lesson_verb_probl
 
 bool run_lesson_verb(Viewer& v, const ScriptCommand& c, std::string& error) { return v.classroom().run_verb(c, error); }
 
-// `wait N` is the runner's own (it counts frames); it never reaches the viewer.
+// `wait` is the runner's own (it counts frames or time); it never reaches the viewer.
 bool run_nothing(Viewer&, const ScriptCommand&, std::string&) { return true; }
 
 // The common verbs act on the whole Viewer, the one ViewerServices there is; a model's verbs
@@ -318,7 +319,7 @@ constexpr ScriptVerb verbs[] = {
     {"idle", "idle SECONDS", check_idle, on_viewer<run_idle>, true},
     {"drag", "drag X0 Y0 X1 Y1 [left|right]", check_drag, on_viewer<run_drag>, true},
     {"scroll", "scroll STEPS", check_number, on_viewer<run_scroll>, false},
-    {"wait", "wait N", check_wait, on_viewer<run_nothing>, true},
+    {"wait", "wait N|Ns|Nms", check_wait, on_viewer<run_nothing>, true},
     {"screenshot", "screenshot FILE.png [--with-panel|--shown]", check_screenshot, on_viewer<run_screenshot>, true},
     {"camera", "camera N|NAME", check_one, on_viewer<run_camera>, true},
     {"model", "model NAME", check_model, on_viewer<run_model>, false},

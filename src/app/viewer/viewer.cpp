@@ -375,6 +375,11 @@ void Viewer::on_key(int key, int mods) {
 }
 
 void Viewer::press_key(int key, int mods) {
+  if (asking_to_quit_) {  // the question takes the keys until it is answered
+    if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER || key == GLFW_KEY_Q) quit_ = true;
+    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_N) asking_to_quit_ = false;
+    return;
+  }
   const std::optional<Action> action = action_for(key, mods);
   if (!action) return;
   if (*action == Action::choose_model) {
@@ -390,6 +395,7 @@ void Viewer::on_char(unsigned codepoint) {
 }
 
 void Viewer::typed(unsigned codepoint) {
+  if (asking_to_quit_) return;  // its keys are pressed, not typed
   if (ImGui::GetIO().WantTextInput) {
     ImGui::GetIO().AddInputCharacter(codepoint);
     return;
@@ -507,14 +513,14 @@ void Viewer::apply(Action action) {
     case Action::toggle_textures: toggle(o.terms.textures, N_("kd texture")); break;
     case Action::toggle_blinn:
       o.terms.blinn = !o.terms.blinn;
-      state_.note = o.terms.blinn ? tr("Blinn's N.H") : tr("Phong's R.V");
+      state_.note = o.terms.blinn ? tr("Blinn's N·H") : tr("Phong's R·V");
       break;
     case Action::cycle_attenuation: {
       std::vector<Light>& lights = state_.scene->lights;
       const bool all_classroom = std::all_of(lights.begin(), lights.end(),
                                              [](const Light& l) { return l.attenuation.classroom; });
       for (Light& light : lights) light.attenuation.classroom = !all_classroom;
-      state_.note = all_classroom ? "f_att = 1/d^2" : "f_att = 1/(c0 + c1 d + c2 d^2)";
+      state_.note = all_classroom ? "f_att = 1/d²" : "f_att = 1/(c0 + c1·d + c2·d²)";
       break;
     }
     case Action::cycle_fog:
@@ -585,7 +591,12 @@ void Viewer::apply(Action action) {
       toggle(state_.radiosity.options.ambient_estimate, N_("radiosity ambient estimate"));
       break;
     case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
-    case Action::quit: quit_ = true; break;
+    case Action::quit:
+      // On a projector a stray Esc must not end the class: with a lesson open or work running,
+      // it asks first.
+      if (classroom_.has_lesson() || working()) asking_to_quit_ = true;
+      else quit_ = true;
+      break;
     case Action::lesson_next: classroom_.move(LessonMove::next); break;
     case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
   }
@@ -786,6 +797,31 @@ void Viewer::draw_windows(const Layout& l) {
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
+  draw_quit_question(l.view);
+}
+
+// Esc's question, in the picture's middle: Enter (or Q, or its button) quits, Esc (or N, or its
+// button) stays. The keys are press_key's; the popup is modal, so the mouse answers it or nothing.
+void Viewer::draw_quit_question(const Viewport& view) {
+  static constexpr const char* popup = "###quit";
+  if (asking_to_quit_ && !ImGui::IsPopupOpen(popup)) ImGui::OpenPopup(popup);
+  ImGui::SetNextWindowPos(ImVec2(view.centre().x, view.centre().y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  const std::string title = std::string(tr("Quit Luz?")) + popup;
+  if (!ImGui::BeginPopupModal(title.c_str(), nullptr,
+                              ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings))
+    return;
+  if (!asking_to_quit_) {
+    ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
+  }
+  if (const LessonPlayer* lesson = classroom_.player())
+    ImGui::TextUnformatted(trf("The lesson is at step {} of {}.", lesson->index() + 1, lesson->size()).c_str());
+  if (working()) ImGui::TextUnformatted(tr("A computation is still running."));
+  if (ImGui::Button(tr("Quit  [Enter]"))) quit_ = true;
+  ImGui::SameLine();
+  if (ImGui::Button(tr("Stay  [Esc]"))) asking_to_quit_ = false;
+  ImGui::EndPopup();
 }
 
 // The status line's text: `text` at once when it differs from the shown one in more than its
@@ -958,12 +994,18 @@ void Viewer::smooth(double& ms, double sample) const {
 // sleeps in glfwWaitEvents: an idle window costs no CPU.
 bool Viewer::needs_frames() const {
   if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty()) return true;
-  if (script_ && !script_->finished() && !idle_until_) return true;
+  if (script_ && !script_->finished() && !idle_until_ && !script_->waiting_until()) return true;
   if (classroom_.moving()) return true;
+  if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
+  return working();
+}
+
+// Work that changes what the window shows from frame to frame: a model running (a trace, the
+// solver), its reference refining, slide 36's methods stepping.
+bool Viewer::working() const {
   const SolversState& s = state_.solvers;
   if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
-  if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
-  if (state_.difference.on && state_.difference.refining) return true;  // its reference refines
+  if (state_.difference.on && state_.difference.refining) return true;
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) return true;
   return false;
@@ -972,10 +1014,13 @@ bool Viewer::needs_frames() const {
 int Viewer::loop() {
   auto last = std::chrono::steady_clock::now();
   while (!window_.should_close() && !quit_) {
+    // `idle` and a script's `wait 2s` sleep until their time is up, unless an event comes.
+    std::optional<std::chrono::steady_clock::time_point> wake = idle_until_;
+    if (script_ && !idle_until_) wake = script_->waiting_until();
     if (needs_frames()) {
       window_.poll();
-    } else if (idle_until_) {
-      const double left = std::chrono::duration<double>(*idle_until_ - std::chrono::steady_clock::now()).count();
+    } else if (wake) {
+      const double left = std::chrono::duration<double>(*wake - std::chrono::steady_clock::now()).count();
       if (left > 0.0) glfwWaitEventsTimeout(left);
     } else {
       glfwWaitEvents();
@@ -1015,8 +1060,14 @@ int Viewer::loop() {
       }
     }
     fly(float(std::min(seconds, 0.1)));
+    const bool worked = working();
     frame();
     if (frames_to_draw_ > 0) --frames_to_draw_;
+    // Work ends inside a frame (its last tiles uploaded, the solver at its stopping rule), after
+    // the panel and the status line were laid out with it still running: more frames show the
+    // end, else the window would keep "tracing 98%" until the next event. Two: ImGui sizes a
+    // window's scrollbar from the frame before's contents.
+    if (worked && !working()) frames_to_draw_ = std::max(frames_to_draw_, 2);
     if (!failure_.empty()) return 1;
   }
   return 0;

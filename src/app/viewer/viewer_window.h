@@ -95,7 +95,8 @@ public:
   void apply(Action action);
   void resize(int width, int height);
   void load(const std::filesystem::path& path);
-  void quit() { quit_ = true; }
+  void quit() { quit_ = true; }  // the script's `quit`: no question asked
+  bool asking_to_quit() const { return asking_to_quit_; }
   void set_ui_scale(float scale);   // the class's factor (--ui-scale), 0.5 .. 4
   float user_scale() const { return user_scale_; }
   // `idle SECONDS`: the script waits while the viewer sits idle, measuring the CPU it uses.
@@ -112,6 +113,8 @@ public:
   int copied_panes() const { return copied_panes_; }  // last frame's panes shown by a copy
   int direct_panes() const { return direct_panes_; }  // ...drawn straight into the window
   const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::string& status_line() const { return status_shown_; }  // as the last frame drew it
+  unsigned frames_drawn() const { return frame_number_; }
 
 private:
   void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
@@ -138,11 +141,13 @@ private:
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
+  void draw_quit_question(const Viewport& view);
   const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
   void read_exposure(bool check);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
+  bool working() const;
 
   gl::WindowContext window_;
   ViewerState state_;
@@ -186,6 +191,7 @@ private:
   bool exposure_check_ = false;    // a scene came: its first picture is checked against the exposure
   std::string exposure_warning_;   // what that check found, in warnings_ until the exposure is fitted
   bool quit_ = false;
+  bool asking_to_quit_ = false;    // Esc with a lesson open or work running: "Quit Luz?" shown
   unsigned frame_number_ = 0;
   bool timing_phases_ = false;     // this frame times its phases (ViewerState::frame_phases)
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again

@@ -64,8 +64,14 @@ std::string check_wait_until(const ScriptCommand& c) {
 }
 
 bool condition_holds(Viewer& v, const std::string& condition) {
-  if (condition == "trace-done") {
-    return v.shown().holds(condition);
+  if (condition == "trace-done") {  // every traced pane (`trace` traces them all)
+    bool traced_pane = false;
+    for (const ModelView* pane : v.pane_views())
+      if (pane->trace_state()) {
+        if (!pane->holds(condition)) return false;
+        traced_pane = true;
+      }
+    return traced_pane;
   }
   const RadiosityStatus& r = v.state().radiosity.status;  // the solution models 5 and 6 show
   return condition == "radiosity-done" && r.built && r.done;

@@ -28,6 +28,7 @@ void TracedModel::set_diffuse_source(const rt::DiffuseSource* source) {
 void TracedModel::scene_changed() {
   tracer_.reset();  // cancels a trace; the tree below belongs to the old scene too
   ray_tree_.reset();
+  picked_.reset();
   if (tree_drawing_) tree_drawing_->clear();
   progress_ = TraceProgress{};
 }
@@ -48,6 +49,7 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
   if (requests.clear_tree) {
     requests.clear_tree = false;
     ray_tree_.reset();
+    picked_.reset();
     if (tree_drawing_) tree_drawing_->clear();
   }
   if (requests.trace) cancel_trace();  // a fresh untraced picture under the new trace
@@ -82,6 +84,13 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
     glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     picture.bind();
   }
+  if (ray_tree_ && picked_ &&
+      (picked_->options != current_options() || picked_->scene != editable_values(*state.scene))) {
+    const PickedPixel picked = *picked_;
+    std::string why;
+    pick_tree(picked.camera, picked.size, picked.pixel, why);  // else again on the next frame
+    picture.bind();
+  }
   if (ray_tree_ && tree_drawing_)
     tree_drawing_->draw(camera, size.x, size.y, picture_far_plane(camera, *state.scene), std::exp2(state.exposure),
                         viewport.scale.y);
@@ -102,25 +111,34 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
 // Slide 24: the clicked pixel's ray tree, traced here on the GL thread (a few dozen rays), listed
 // in the panel and drawn over the picture until another click, X, or a new scene.
 void TracedModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
-  ViewerState& state = viewer_.state();
   viewer_.inspection().pick.reset();  // the local model's inspector is not Whitted's
   WhittedView& t = tracer();
   if (t.showing() && t.fingerprint() != fingerprint(camera, viewport.pixels))
     t.cancel();  // an edit not seen yet by the frame: the trace must not read the old scene
+  ViewerState& state = viewer_.state();
   std::string why;
-  const std::optional<rt::WhittedOptions> options = options_for_trace(why);
-  if (!options) {
+  if (!pick_tree(camera, viewport.pixels, pixel, why)) {
     state.note = why;
     return;
   }
-  rt::RayTree tree = t.trace_pixel(*state.scene, camera, viewport.pixels.x, viewport.pixels.y, pixel.x, pixel.y, *options);
-  if (!tree_drawing_) tree_drawing_ = std::make_unique<RayTreeDrawing>();
-  tree_drawing_->set(tree, *state.scene);
+  const rt::RayTree& tree = *ray_tree_;
   if (!tree.nodes.empty() && tree.nodes[0].hit)
     for (const Mesh& mesh : state.scene->meshes)
       if (mesh.name == tree.nodes[0].mesh) state.selected_material = mesh.material;
-  state.note = trf("ray tree of pixel ({}, {}): {} rays", pixel.x, pixel.y, tree.nodes.size());
+  state.note = trnf("ray tree of pixel ({}, {}): {} ray", "ray tree of pixel ({}, {}): {} rays", tree.nodes.size(),
+                    pixel.x, pixel.y, tree.nodes.size());
+}
+
+bool TracedModel::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why) {
+  const ViewerState& state = viewer_.state();
+  const std::optional<rt::WhittedOptions> options = options_for_trace(why);
+  if (!options) return false;
+  rt::RayTree tree = tracer().trace_pixel(*state.scene, camera, size.x, size.y, pixel.x, pixel.y, *options);
+  if (!tree_drawing_) tree_drawing_ = std::make_unique<RayTreeDrawing>();
+  tree_drawing_->set(tree, *state.scene);
   ray_tree_ = std::move(tree);
+  picked_ = PickedPixel{camera, size, pixel, current_options(), editable_values(*state.scene)};
+  return true;
 }
 
 bool TracedModel::act(Action action) {

@@ -31,7 +31,12 @@ public:
   ~TracedModel() override;  // cancels and joins the trace before what it reads goes
 
   void scene_changed() override;
-  void hidden() override { cancel_trace(); }
+  // A trace asked for and not started yet goes too: it would start by itself whenever the view
+  // is shown again (a lesson's step later).
+  void hidden() override {
+    cancel_trace();
+    requests = {};
+  }
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void windows(const Viewport& viewport, WindowCorners& corners) override;
@@ -56,6 +61,9 @@ public:
   bool holds(std::string_view condition) const override {
     return condition == "trace-done" && progress_.phase == TracePhase::done;
   }
+  const char* trace_state() const override {
+    return progress_.phase == TracePhase::raster ? "raster" : progress_.phase == TracePhase::tracing ? "tracing" : "done";
+  }
   const std::optional<rt::RayTree>& ray_tree() const { return ray_tree_; }
   virtual bool hybrid() const = 0;
 
@@ -79,10 +87,22 @@ protected:
 private:
   Fingerprint fingerprint(const Camera& camera, glm::ivec2 size) const;
   WhittedView& tracer();
+  // The pixel's ray tree, traced with the options and the scene as they are now; false (`why`
+  // saying why, or empty while the hybrid's solver runs) when no trace can start yet.
+  bool pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why);
 
   std::unique_ptr<WhittedView> tracer_;  // made when first needed (it builds Embree's BVH)
   std::unique_ptr<RayTreeDrawing> tree_drawing_;
   std::optional<rt::RayTree> ray_tree_;
+  // What the tree shown was traced from: a switch or an edit traces the same pixel's tree again,
+  // so that the list never shows shadow rays switched off or a depth no longer set.
+  struct PickedPixel {
+    Camera camera;
+    glm::ivec2 size{0}, pixel{0};
+    rt::WhittedOptions options;
+    std::vector<float> scene;
+  };
+  std::optional<PickedPixel> picked_;
   TraceProgress progress_;
   bool waiting_ = false;  // the script waits for the trace's end
 };
