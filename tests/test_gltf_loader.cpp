@@ -512,16 +512,48 @@ TEST(Material, ExtrasScalarIsGreyAndRgbIsRgb) {
 }
 
 TEST(Material, TransmissionAndIorExtensionsUnlessExtrasSayOtherwise) {
-  json m = diffuse(0.1, 0.1, 0.1);
-  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 0.7}}},
+  // base (0.5, 0.4, 0.2), metallic 0.5, transmission 0.75: the dielectric half (0.25, 0.2, 0.1)
+  // splits into kd = a quarter of it and kt = three quarters, tinted by the base colour.
+  json m = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.2, 1}}, {"metallicFactor", 0.5}}}};
+  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}}},
                      {"KHR_materials_ior", {{"ior", 2.4}}}};
   const Material glass = load_material(m);
-  EXPECT_VEC3(glass.kt, 0.7f, 0.7f, 0.7f);
+  EXPECT_VEC3(glass.kd, 0.0625f, 0.05f, 0.025f);
+  EXPECT_VEC3(glass.kt, 0.1875f, 0.15f, 0.075f);
   EXPECT_FLOAT_EQ(glass.ior, 2.4f);
   m["extras"] = {{"kt", 0.2}, {"ior", 1.1}};
   const Material overridden = load_material(m);
   EXPECT_VEC3(overridden.kt, 0.2f, 0.2f, 0.2f);
+  EXPECT_VEC3(overridden.kd, 0.0625f, 0.05f, 0.025f);  // still weighed by (1 - transmission)
   EXPECT_FLOAT_EQ(overridden.ior, 1.1f);
+}
+
+TEST(Material, BlendersDefaultGlassIsClearNotAGlowingWhiteBall) {
+  // What Blender 3.4 writes for its Glass BSDF: a white base, metallic 0, roughness 0,
+  // transmission 1. All of it is transmitted: kd = 0 (and ka with it), kt = 1, and kd + kr + kt
+  // stays within 1, so the scene loads without the energy warning.
+  json m = {{"name", "Glass"},
+            {"pbrMetallicRoughness",
+             {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.0}}},
+            {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                            {"KHR_materials_ior", {{"ior", 1.45}}}}}};
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(one_triangle(m).write_gltf(dir));
+  const Material& glass = loaded.scene.materials.at(0);
+  EXPECT_VEC3(glass.kd, 0, 0, 0);
+  EXPECT_VEC3(glass.ka, 0, 0, 0);
+  EXPECT_VEC3(glass.kt, 1, 1, 1);
+  EXPECT_VEC3(glass.kr, 0, 0, 0);
+  EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+}
+
+TEST(Error, TransmissionOutsideZeroOneIsBadValue) {
+  json m = diffuse(1, 1, 1);
+  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 1.5}}}};
+  ScratchDir dir;
+  const std::string message = expect_error(one_triangle(m).write_gltf(dir), ErrorKind::bad_value);
+  EXPECT_NE(message.find("transmissionFactor"), std::string::npos) << message;
 }
 
 TEST(Material, EmissionTimesStrengthMakesAreaLights) {
@@ -608,10 +640,86 @@ TEST(Texture, MissingFileGivesWhiteAndAWarningNamingTheUri) {
   ASSERT_EQ(warnings.size(), 1u) << ::testing::PrintToString(loaded.warnings);
   EXPECT_NE(warnings[0].find("scene.gltf"), std::string::npos);
   EXPECT_NE(warnings[0].find("nowhere.png"), std::string::npos);
-  const Texture& t = loaded.scene.textures.at(size_t(loaded.scene.materials[0].kd_texture));
-  EXPECT_EQ(t.width, 1);
-  EXPECT_EQ(t.height, 1);
-  EXPECT_VEC3(t.texel(0, 0), 1, 1, 1);
+  EXPECT_EQ(loaded.scene.materials[0].kd_texture, -1);  // the material without its texture
+  EXPECT_VEC3(loaded.scene.materials[0].kd, 1, 1, 1);
+  EXPECT_TRUE(loaded.scene.textures.empty());
+}
+
+// A scene in DIR/scene/ whose one triangle uses an image of URI `uri`, with green.png's pixel
+// beside the scene under `beside` (when not empty) and a red one at DIR/maps/x.png, outside.
+struct WindowsPathScene {
+  ScratchDir dir;
+  std::filesystem::path gltf;
+  io::LoadedScene loaded;
+  WindowsPathScene(const std::string& uri, const std::string& beside) {
+    GltfBuilder b;
+    b.doc["images"] = json::array({{{"uri", uri}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    json m = diffuse(1, 1, 1);
+    m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    Primitive p = triangle(b.material(m));
+    p.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    b.node({{"mesh", b.mesh({p})}});
+    gltf = b.write_gltf(dir, "scene/scene.gltf", /*embed_buffer=*/true);
+    std::filesystem::create_directories(dir / "maps");
+    write_file(dir / "maps" / "x.png", png_rgb8(1, 1, {255, 0, 0}));
+    if (!beside.empty()) {
+      std::filesystem::create_directories((dir / "scene" / beside).parent_path());
+      write_file(dir / "scene" / beside, png_rgb8(1, 1, {0, 255, 0}));
+    }
+    loaded = io::load_gltf(gltf);
+  }
+  // The texel the material shows: green from beside the scene; never red, from outside it.
+  glm::vec3 texel() const {
+    const int t = loaded.scene.materials.at(0).kd_texture;
+    return t < 0 ? glm::vec3(-1.0f) : glm::vec3(loaded.scene.textures.at(size_t(t)).texel(0, 0));
+  }
+};
+
+TEST(Texture, WindowsPathInsideTheFolderIsReadWithoutAWord) {
+  // assimp writes `.\SpiderTex.jpg`: the backslash is a folder separator.
+  for (const auto& [uri, file] : {std::pair<std::string, std::string>{".\\x.png", "x.png"},
+                                  {"maps\\x.png", "maps/x.png"},
+                                  {".\\maps%5Cx.png", "maps/x.png"}}) {
+    const WindowsPathScene s(uri, file);
+    SCOPED_TRACE(uri);
+    EXPECT_VEC3(s.texel(), 0, 1, 0);
+    EXPECT_TRUE(other_warnings(s.loaded).empty()) << uri << ::testing::PrintToString(s.loaded.warnings);
+  }
+}
+
+TEST(Texture, ImageOutsideTheFolderIsNotOpenedAndTheOneBesideTheSceneStandsIn) {
+  // The red image at ../maps/x.png exists and is never read; x.png beside the scene is.
+  for (const std::string uri : {"..\\maps\\x.png", "D:\\work\\x.png", "../maps/x.png",
+                                "file:///maps/x.png", "/maps/x.png"}) {
+    const WindowsPathScene s(uri, "x.png");
+    SCOPED_TRACE(uri);
+    EXPECT_VEC3(s.texel(), 0, 1, 0);
+    const std::vector<std::string> warnings = other_warnings(s.loaded);
+    ASSERT_EQ(warnings.size(), 1u) << uri << ::testing::PrintToString(s.loaded.warnings);
+    EXPECT_NE(warnings[0].find("scene.gltf: image 0 \"" + uri + "\""), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("\"x.png\" beside the scene"), std::string::npos) << warnings[0];
+  }
+}
+
+TEST(Texture, ImageOutsideTheFolderWithNoneBesideIsAWarningNeverARefusal) {
+  for (const std::string uri : {"..\\maps\\x.png", "D:\\work\\x.png", "../../etc/secret.png"}) {
+    const WindowsPathScene s(uri, "");
+    EXPECT_EQ(s.loaded.scene.materials.at(0).kd_texture, -1) << uri;
+    EXPECT_EQ(s.loaded.scene.triangle_count(), 1u);
+    const std::vector<std::string> warnings = other_warnings(s.loaded);
+    ASSERT_EQ(warnings.size(), 1u) << uri << ::testing::PrintToString(s.loaded.warnings);
+    EXPECT_NE(warnings[0].find("image 0 \"" + uri + "\""), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("without its texture"), std::string::npos) << warnings[0];
+  }
+}
+
+TEST(Gltf, BufferWithAWindowsPathInsideTheFolderLoads) {
+  GltfBuilder b = one_triangle();
+  ScratchDir dir;
+  write_file(dir / "data" / "scene.bin", b.bin);
+  b.doc["buffers"] = json::array({{{"uri", ".\\data\\scene.bin"}, {"byteLength", b.bin.size()}}});
+  EXPECT_EQ(io::load_gltf(b.write_gltf(dir, "win.gltf")).scene.triangle_count(), 1u);
 }
 
 TEST(Texture, UndecodableGivesWhiteAndAWarning) {
@@ -1089,12 +1197,19 @@ TEST(Error, FileSchemeUriIsOutsideTheFolder) {
   expect_error(b.write_gltf(dir, "file.gltf"), ErrorKind::uri_outside_folder);
 }
 
-TEST(Error, ImageUriOutsideTheFolder) {
-  // Even a texture, which would only warn when missing, is refused when it leaves the folder.
-  GltfBuilder b = one_triangle();
-  b.doc["images"] = json::array({{{"uri", "../../etc/secret.png"}}});
+TEST(Error, BufferWithAWindowsPathOutsideTheFolderIsRefusedNamingIt) {
+  // Unlike an image, a buffer has no stand-in: the scene is refused, naming the URI.
   ScratchDir dir;
-  expect_error(b.write_gltf(dir), ErrorKind::uri_outside_folder);
+  GltfBuilder b = one_triangle();
+  write_file(dir / "outside.bin", b.bin);
+  for (const std::string uri : {"..\\outside.bin", "D:\\work\\outside.bin"}) {
+    b.doc["buffers"] = json::array({{{"uri", uri}, {"byteLength", b.bin.size()}}});
+    const std::string message = expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::uri_outside_folder);
+    EXPECT_NE(message.find(uri), std::string::npos) << message;
+  }
+  b.doc["buffers"] = json::array({{{"uri", ".\\missing.bin"}, {"byteLength", b.bin.size()}}});
+  const std::string message = expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::file_missing);
+  EXPECT_NE(message.find(".\\missing.bin"), std::string::npos) << message;
 }
 
 TEST(Error, NoTriangles) {
