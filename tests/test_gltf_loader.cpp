@@ -208,20 +208,122 @@ TEST(Winding, FlippedWhenTheNodeMirrors) {
   EXPECT_VEC3(mesh.normals[0], 0, 0, 1);  // inverse transpose of diag(-1,1,1) keeps (0,0,1)
 }
 
-TEST(Primitive, NonTrianglesSkippedWithOneWarningNamingTheMesh) {
+TEST(Primitive, PointsAndLinesSkippedWithOneWarningNamingTheMeshAndTheModeInWords) {
   Primitive lines = triangle();
   lines.mode = 1;
-  Primitive strip = triangle();
-  strip.mode = 5;
+  Primitive points = triangle();
+  points.mode = 0;
+  Primitive more_lines = triangle();
+  more_lines.mode = 1;
   GltfBuilder b;
-  b.node({{"mesh", b.mesh({lines, triangle(), strip}, "wires")}});
+  b.node({{"mesh", b.mesh({lines, triangle(), points, more_lines}, "wires")}});
   ScratchDir dir;
   const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
   EXPECT_EQ(loaded.scene.triangle_count(), 1u);
-  int count = 0;
-  for (const std::string& w : loaded.warnings) count += w.find("\"wires\"") != std::string::npos;
-  EXPECT_EQ(count, 1);
-  EXPECT_NE(loaded.warnings.at(0).find("scene.gltf"), std::string::npos);
+  const std::vector<std::string> warnings = other_warnings(loaded);
+  ASSERT_EQ(warnings.size(), 1u) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(warnings[0], (dir / "scene.gltf").string() +
+                             ": mesh 0 \"wires\": skipped its lines (mode 1), points (mode 0); "
+                             "only triangles are drawn");
+}
+
+// The corners of every triangle of the scene's meshes, and whether each one faces +Z
+// (counter-clockwise seen from +Z, as glTF's front faces are).
+size_t triangles_facing_plus_z(const Scene& scene) {
+  size_t facing = 0;
+  for (const Mesh& mesh : scene.meshes)
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                      c = mesh.positions[mesh.indices[t + 2]];
+      facing += glm::cross(b - a, c - a).z > 0.0f;
+    }
+  return facing;
+}
+
+float total_area(const Scene& scene) {
+  float area = 0.0f;
+  for (const Mesh& mesh : scene.meshes)
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                      c = mesh.positions[mesh.indices[t + 2]];
+      area += 0.5f * glm::length(glm::cross(b - a, c - a));
+    }
+  return area;
+}
+
+TEST(Primitive, TriangleStripBecomesTrianglesWoundAlike) {
+  // A strip zig-zagging along x, as Mesh_PrimitiveMode_04 does: top, bottom, top, bottom, ...
+  // n vertices make n - 2 triangles, each of area 1/2, every one counter-clockwise from +Z
+  // (glTF: triangle i is (v_i, v_{i+1+i%2}, v_{i+2-i%2})).
+  Primitive strip;
+  strip.positions = {{0, 1, 0}, {0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {2, 1, 0}, {2, 0, 0}};
+  strip.mode = 5;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({strip}, "strip")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 4u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 4u);
+  EXPECT_NEAR(total_area(loaded.scene), 2.0f, kTol);
+}
+
+TEST(Primitive, IndexedStripsJoinedByRepeatedVerticesLoseOnlyTheJoins) {
+  // Two quads in one strip, joined the usual way (repeat the last vertex of one and the first of
+  // the next): 0 1 2 3 3 4 4 5 6 7. The four triangles that repeat a vertex are joins, not
+  // zero-area triangles of the model, and are not reported; the four real ones face +Z.
+  Primitive strip;
+  strip.positions = {{0, 1, 0}, {0, 0, 0}, {1, 1, 0}, {1, 0, 0},
+                     {5, 1, 0}, {5, 0, 0}, {6, 1, 0}, {6, 0, 0}};
+  strip.indices = {0, 1, 2, 3, 3, 4, 4, 5, 6, 7};
+  strip.mode = 5;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({strip}, "strips")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 4u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 4u);
+  EXPECT_NEAR(total_area(loaded.scene), 2.0f, kTol);
+}
+
+TEST(Primitive, TriangleFanBecomesTrianglesAroundItsFirstVertex) {
+  // A fan around the origin over a unit-radius half hexagon, counter-clockwise from +Z: n
+  // vertices make n - 2 triangles (glTF: triangle i is (v_{i+1}, v_{i+2}, v_0)), with normals
+  // from their faces.
+  Primitive fan;
+  fan.positions = {{0, 0, 0}};
+  for (int k = 0; k <= 3; ++k) {
+    const float angle = float(k) * std::numbers::pi_v<float> / 3.0f;
+    fan.positions.push_back({std::cos(angle), std::sin(angle), 0});
+  }
+  fan.indices = {0, 1, 2, 3, 4};
+  fan.mode = 6;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({fan}, "fan")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 3u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 3u);
+  EXPECT_NEAR(total_area(loaded.scene), 3.0f * std::sqrt(3.0f) / 4.0f, kTol);
+  EXPECT_VEC3(loaded.scene.meshes[0].normals[0], 0, 0, 1);
+}
+
+TEST(Primitive, KhronosPrimitiveModeSamplesAreOneSquareFacingTheViewer) {
+  // glTF-Asset-Generator's Mesh_PrimitiveMode: the same unit square facing +Z as a triangle
+  // list (06, 13), strip (04, 11) and fan (05, 12), without and with indices.
+  const std::filesystem::path folder =
+      "/usr/share/assimp/models/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode";
+  if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << folder << " is not installed";
+  for (const char* n : {"04", "05", "06", "11", "12", "13"}) {
+    SCOPED_TRACE(n);
+    const io::LoadedScene loaded =
+        io::load_gltf(folder / (std::string("Mesh_PrimitiveMode_") + n + ".gltf"));
+    EXPECT_EQ(loaded.scene.triangle_count(), 2u);
+    EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 2u);
+    EXPECT_NEAR(total_area(loaded.scene), 1.0f, kTol);
+  }
 }
 
 TEST(Primitive, NonIndexedMakesATriangleOfEveryThreeVertices) {

@@ -11,7 +11,7 @@
 // - glTF material i is Scene::materials[i]. The default material ("default", kd 0.8 grey) is
 //   appended after them only when some primitive has no material, so indices stay the file's.
 // - Unsupported but legal glTF (quantized positions, an extension the file requires) is refused
-//   as bad_value rather than drawn wrongly. Orthographic cameras and non-triangle primitives are skipped with
+//   as bad_value rather than drawn wrongly. Orthographic cameras, points and lines are skipped with
 //   a warning, as SCENES.md says.
 // - tinygltf 2.7 trusts the file in places (an image's bufferView is read without checking it
 //   fits its buffer, accessors are not checked at all), so those bounds are checked here, and
