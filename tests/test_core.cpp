@@ -6,6 +6,7 @@
 #include <string>
 
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/camera.h"
@@ -116,6 +117,32 @@ TEST(Camera, FramingSeesTheWholeBoundingBox) {
         EXPECT_LE(std::abs(p.y / p.w), 1.0f);
         EXPECT_GT(p.w, 0.0f);
       }
+}
+
+TEST(Camera, FramingSeesAFlatWideSceneFromAbove) {
+  // A ground plane 10 m wide and 0.1 m tall: seen from 45 degrees above the horizon (less the
+  // little height it has: 45 x (1 - 2 x 0.01) = 44.1), not edge-on, and still all in view. A box
+  // as tall as it is wide is framed from +Z as before.
+  Bounds ground;
+  ground.grow({-5, 0, -5});
+  ground.grow({5, 0.1f, 5});
+  const Camera camera = Camera::framing(ground);
+  EXPECT_NEAR(camera.forward().y, -std::sin(glm::radians(44.1f)), 1e-4f);
+  EXPECT_NEAR(camera.forward().x, 0.0f, 1e-6f);
+  const glm::mat4 clip = camera.projection(1.0f, 100.0f) * camera.view();
+  for (float x : {-5.0f, 5.0f})
+    for (float y : {0.0f, 0.1f})
+      for (float z : {-5.0f, 5.0f}) {
+        const glm::vec4 p = clip * glm::vec4(x, y, z, 1.0f);
+        EXPECT_LE(std::abs(p.x / p.w), 1.0f);
+        EXPECT_LE(std::abs(p.y / p.w), 1.0f);
+        EXPECT_GT(p.w, 0.0f);
+      }
+  Bounds box;
+  box.grow({-1, -1, -1});
+  box.grow({1, 1, 1});
+  EXPECT_NEAR(Camera::framing(box).forward().z, -1.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(Camera::framing_elevation(box), 0.0f);
 }
 
 // One rule for every model: a mesh shows its material's kd texture when the texture exists and
@@ -267,8 +294,8 @@ TEST(Exposure, ThePhotometricHintIsForBlendersLights) {
   EXPECT_EQ(photometric_hint(scene), "");  // no light
   scene.lights.push_back(Light{});
   EXPECT_EQ(photometric_hint(scene),
-            "Khronos glTF Blender I/O v3.4.50 writes lights in candela, 683 times the W/sr Luz reads, unless its "
-            "Lighting Mode is Unitless");
+            "Khronos glTF Blender I/O v3.4.50 writes lights in candela: in its Lighting Mode \"Standard\" 683 "
+            "times the W/sr Luz reads, in \"Raw\" its point and spot lights 4 pi times; \"Unitless\" writes W/sr");
   scene.default_lights = true;  // Luz's own: in its units
   EXPECT_EQ(photometric_hint(scene), "");
   scene.default_lights = false;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "core/error.h"
 #include "core/i18n.h"
@@ -43,11 +44,13 @@ bool any_warning_contains(const io::LoadedScene& loaded, const std::string& text
   return false;
 }
 
-// The warnings but the default lights' notice (these scenes have no light on purpose).
+// The warnings but the default lights' and the framing camera's notices (these scenes have no
+// light and no camera on purpose).
 std::vector<std::string> other_warnings(const io::LoadedScene& loaded) {
   std::vector<std::string> out;
   for (const std::string& w : loaded.warnings)
-    if (w.find(io::kDefaultLightsNotice) == std::string::npos) out.push_back(w);
+    if (w.find(io::kDefaultLightsNotice) == std::string::npos && w.find(io::kNoCameraNotice) == std::string::npos)
+      out.push_back(w);
   return out;
 }
 
@@ -968,6 +971,18 @@ TEST(Camera, OrthographicSkippedWithWarningAndFramingAdded) {
   EXPECT_EQ(loaded.scene.cameras[0].name, "framing");
 }
 
+TEST(Camera, NoCameraIsSaidWithTheExportersOption) {
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(one_triangle().write_gltf(dir));
+  EXPECT_TRUE(any_warning_contains(loaded, "scene.gltf: no camera in the scene"))
+      << ::testing::PrintToString(loaded.warnings);
+  EXPECT_TRUE(any_warning_contains(loaded, "\"Cameras\""));
+  GltfBuilder b = one_triangle();
+  b.node({{"camera", b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}})}});
+  ScratchDir dir2;
+  EXPECT_FALSE(any_warning_contains(io::load_gltf(b.write_gltf(dir2)), "no camera"));
+}
+
 TEST(Camera, FramingWhenNone) {
   ScratchDir dir;
   const Scene scene = io::load_gltf(one_triangle().write_gltf(dir)).scene;
@@ -1398,6 +1413,28 @@ TEST(DefaultLights, AddedOnlyWithoutLightsWithTheNotice) {
   ScratchDir dir3;
   const io::LoadedScene emitter = io::load_gltf(one_triangle(glowing).write_gltf(dir3));
   EXPECT_TRUE(emitter.scene.lights.empty());  // an emissive triangle is a light
+}
+
+TEST(DefaultLights, InsideARoomTheyGoInsideAndLightTheBackWall) {
+  // Outside the walls they would light nothing the camera sees. Inside: both in the room, and
+  // the key sees the back wall's centre from its front side.
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(closed_room().write_gltf(dir));
+  ASSERT_EQ(loaded.scene.lights.size(), 2u);
+  const Bounds room = loaded.scene.bounds();
+  for (const Light& light : loaded.scene.lights) {
+    SCOPED_TRACE(light.name);
+    EXPECT_TRUE(glm::all(glm::greaterThan(light.position, room.min)) &&
+                glm::all(glm::lessThan(light.position, room.max)));
+  }
+  const Light& key = loaded.scene.lights[0];
+  EXPECT_GT(key.position.z, -3.0f + 0.5f);  // in front of the back wall (z = -3), facing +Z
+  EXPECT_GT(key.position.y, 1.5f);          // above the camera: shadows fall below what it sees
+  // A white surface R from the key shows radiance 1: I = pi R^2, R half the room's diagonal.
+  const float R = 0.5f * glm::length(room.extent());
+  EXPECT_NEAR(key.intensity.r, std::numbers::pi_v<float> * R * R, 1e-3f * R * R);
+  // The notice says how to export lights from Blender.
+  EXPECT_TRUE(any_warning_contains(loaded, "\"Punctual Lights\"")) << ::testing::PrintToString(loaded.warnings);
 }
 
 TEST(DefaultLights, KeyLightGivesRadianceOneAtTheCentreFillNone) {

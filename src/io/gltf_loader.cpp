@@ -574,7 +574,10 @@ LoadedScene load_gltf(const fs::path& path) {
     scene.materials.push_back(Material{});  // "default": kd 0.8 grey (SCENES.md)
   read_scene_extras(ctx, scene);
   scene.generator = ctx.model.asset.generator;
-  if (scene.cameras.empty()) scene.cameras.push_back(Camera::framing(scene.bounds()));
+  if (scene.cameras.empty()) {
+    scene.cameras.push_back(Camera::framing(scene.bounds()));
+    ctx.warn(tr(kNoCameraNotice));
+  }
   scene.find_area_lights();
   if (io::has_no_lights(scene)) {
     io::add_default_lights(scene);

@@ -9,7 +9,8 @@
 //   kt  = extras.kt, else transmission x baseColor x (1 - metallicFactor), where transmission is
 //         KHR_materials_transmission.transmissionFactor, else 0
 //   eta = extras.ior, else KHR_materials_ior.ior, else 1.5
-//   Le  = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength
+//   Le  = emissiveFactor x emissiveTexture x KHR_materials_emissive_strength.emissiveStrength
+//         (texture: emission_texture)
 //
 // A base colour texture whose image is missing is left out with a warning (the material keeps its
 // colour); one whose image cannot be decoded becomes a 1x1 white texture with a warning. Either
@@ -139,6 +140,24 @@ float transmission_factor(const Context& ctx, const tinygltf::Material& source, 
   return t;
 }
 
+// The scene texture a material's texture reference `info` (named `slot` in messages) uses, or -1.
+template <typename TextureInfo>
+int scene_texture(const Context& ctx, const TextureInfo& info, const char* slot, const std::string& what,
+                  std::map<int, int>& textures, Scene& scene) {
+  const int t = info.index;
+  if (t == -1) return -1;
+  ctx.check_index(t, ctx.model.textures.size(), what + ": " + slot, "textures");
+  const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
+  if (texture.source == -1) {
+    ctx.warn(trf("{}: texture {} has no image; ignored", what, t));
+    return -1;
+  }
+  ctx.check_index(texture.source, ctx.model.images.size(), fmt::format("texture {}: source", t), "images");
+  if (info.texCoord != 0)
+    ctx.warn(trf("{}: {} uses TEXCOORD_{}; TEXCOORD_0 is read instead", what, slot, info.texCoord));
+  return texture_for_image(ctx, texture.source, textures, scene);
+}
+
 Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, Scene& scene) {
   const tinygltf::Material& source = ctx.model.materials[index];
   const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
@@ -216,20 +235,11 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   if (!(m.ior > 0.0f))
     ctx.fail(ErrorKind::bad_value, trf("{} {} is not positive", field("ior"), m.ior));
 
-  if (const int t = pbr.baseColorTexture.index; t != -1) {
-    ctx.check_index(t, ctx.model.textures.size(), field("baseColorTexture"), "textures");
-    const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
-    if (texture.source == -1) {
-      ctx.warn(trf("{}: texture {} has no image; ignored", what, t));
-    } else {
-      ctx.check_index(texture.source, ctx.model.images.size(),
-                      fmt::format("texture {}: source", t), "images");
-      if (pbr.baseColorTexture.texCoord != 0)
-        ctx.warn(trf("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
-                     what, pbr.baseColorTexture.texCoord));
-      m.kd_texture = texture_for_image(ctx, texture.source, textures, scene);
-    }
-  }
+  m.kd_texture = scene_texture(ctx, pbr.baseColorTexture, "baseColorTexture", what, textures, scene);
+  // Le = emissiveFactor x emissiveTexture x strength: the texture only scales what the factor
+  // gives (glTF's emissiveFactor defaults to black, so a texture alone emits nothing).
+  if (m.is_emissive())
+    m.emission_texture = scene_texture(ctx, source.emissiveTexture, "emissiveTexture", what, textures, scene);
   return m;
 }
 
