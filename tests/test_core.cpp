@@ -251,6 +251,20 @@ TEST(Exposure, ABigPictureIsReadOnAGridOfAbout65536Pixels) {
   EXPECT_EQ(picture_key(Image(300, 200, Rgb(0.5f))).lit, 60000u);
 }
 
+TEST(Exposure, APictureWithAlmostNoLightStopsAtSixteenEvAndSaysSo) {
+  // Radiance 1e-10 calls for log2(0.18 / 1e-10) = +30.7 EV: rounding noise shown as white blobs.
+  // The fit stops at +16 EV and the note says why; 0.045 (+2 EV) is an ordinary fit.
+  const PictureKey faint = picture_key(grey_picture(1e-10f, 10));
+  EXPECT_FLOAT_EQ(*fitted_exposure(faint), kMaxFittedExposure);
+  EXPECT_TRUE(almost_no_light(faint));
+  EXPECT_NE(almost_no_light_note(faint).find("+30.7 EV"), std::string::npos) << almost_no_light_note(faint);
+  const PictureKey ordinary = picture_key(grey_picture(0.045f, 10));
+  EXPECT_FALSE(almost_no_light(ordinary));
+  EXPECT_FLOAT_EQ(*fitted_exposure(ordinary), 2.0f);
+  // Just inside the bound: 0.18 / 2^16 is fitted, not bounded.
+  EXPECT_FALSE(almost_no_light(picture_key(grey_picture(0.18f / 65536.0f, 10))));
+}
+
 TEST(Exposure, TheFitIsRoundedToATenthOfAnEv) {
   // log2(0.18 / 0.1) = 0.848
   const float fitted = *fitted_exposure(picture_key(grey_picture(0.1f, 1)));
