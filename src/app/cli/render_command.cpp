@@ -109,7 +109,10 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
 float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture) {
   if (settings.exposure) return *settings.exposure;
   if (settings.exposure_auto) {
-    if (const std::optional<float> fitted = fitted_exposure(picture_key(picture))) return *fitted;
+    const PictureKey key = picture_key(picture);
+    if (almost_no_light(key))
+      fmt::print(stderr, "{}\n", trf("warning: {}: {}", settings.out, almost_no_light_note(key)));
+    if (const std::optional<float> fitted = fitted_exposure(key)) return *fitted;
     fmt::print(stderr, "{}\n", trf("warning: {}: nothing in the picture is lit: --exposure auto keeps {:+g} EV",
                                    settings.out, scene.exposure));
     return scene.exposure;

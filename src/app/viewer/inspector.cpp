@@ -76,9 +76,7 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       if (glm::dot(N, eye - middle) < 0.0f) N = -N;
       reading.terms = evaluate(middle, N);
       reading.normal = N;
-      reading.mirror = mirror(middle, N);  // flat.geom: once per triangle
-      if (!mesh.uvs.empty())
-        uv = (mesh.uvs[index[0]] + mesh.uvs[index[1]] + mesh.uvs[index[2]]) / 3.0f;
+      reading.mirror = mirror(middle, N);  // flat.geom: once per triangle (the texture per pixel)
       barycentric = glm::vec2(1.0f / 3.0f);  // flat.geom: COLOR_0 at the centroid
       reading.where = N_("flat: the formula once, at the triangle's centroid with its face normal");
       break;

@@ -743,8 +743,10 @@ void Viewer::read_exposure(bool check) {
         warnings_.erase(found);
         show_warnings_ = show_warnings_ && !warnings_.empty();
       }
-      state_.note = trf("exposure {:+.1f} EV: the picture's log-average luminance, {:.3g}, shown as middle grey",
-                        *fitted, key.log_average);
+      state_.note = almost_no_light(key)
+                        ? almost_no_light_note(key)
+                        : trf("exposure {:+.1f} EV: the picture's log-average luminance, {:.3g}, shown as middle grey",
+                              *fitted, key.log_average);
     } else {
       state_.note = tr("exposure: nothing in the picture is lit to fit it to");
     }
