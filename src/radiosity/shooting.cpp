@@ -47,6 +47,29 @@ double emitting_solid_angle(const Light& light) {
   return total;
 }
 
+bool is_zero(const Rgb& c) { return c.r <= 0.0f && c.g <= 0.0f && c.b <= 0.0f; }
+
+// The materials the scene's meshes show that reflect light, but none of it diffusely: radiosity
+// computes diffuse light only, so they are black in its picture. Most are glTF metals by
+// omission (metallicFactor is 1 where a file leaves it out, as Khronos's Box does), which the
+// other models show lit by their highlight; the message says so and what to change.
+std::vector<std::string> specular_only_warnings(const Scene& scene) {
+  std::vector<std::string> warnings;
+  std::vector<bool> shown(scene.materials.size(), false);
+  for (const Mesh& mesh : scene.meshes) shown.at(size_t(mesh.material)) = true;
+  for (size_t k = 0; k < scene.materials.size(); ++k) {
+    const Material& m = scene.materials[k];
+    if (!shown[k] || !is_zero(m.kd) || m.is_emissive()) continue;
+    if (is_zero(m.ks) && is_zero(m.kr) && is_zero(m.kt)) continue;
+    warnings.push_back(i18n::trf("radiosity: material \"{}\" reflects no light diffusely (kd = 0, all of "
+                                 "its reflection specular, as in a glTF metal: metallicFactor is 1 where "
+                                 "the file leaves it out); radiosity computes diffuse light only, so it "
+                                 "is black here, and the hybrid adds its highlights. For a diffuse surface "
+                                 "give it metallicFactor 0 (Blender: Metallic 0)", m.name));
+  }
+  return warnings;
+}
+
 }  // namespace
 
 // ---- [powers] ----------------------------------------------------------------------------------
@@ -59,6 +82,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, PatchMesh& mesh,
                                      const RadiosityOptions& options)
     : scene_(scene), mesh_(mesh), revision_(mesh.revision), options_(options), items_(mesh),
       hemicube_(mesh, items_, options.hemicube_res, options.hemicube_passes, options.hemicube_sums) {
+  warnings_ = specular_only_warnings(scene);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     const Light& light = scene.lights[k];
     if (!light.enabled) continue;
