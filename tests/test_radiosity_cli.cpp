@@ -210,7 +210,7 @@ TEST(RadiosityCli, AMetalByOmissionIsNamedAndADiffuseBoxUnderARotatedRootIsLit) 
   const auto said = run_luz({"render", metal.string(), "--model", "radiosity", "--out",
                              (dir / "metal.png").string(), "--size", "40x30"});
   ASSERT_EQ(said.exit_code, 0) << said.output;
-  EXPECT_TRUE(contains(said.output, "radiosity: material \"Red\" reflects no light diffusely")) << said.output;
+  EXPECT_TRUE(contains(said.output, "radiosity: material \"Red\" is a metal")) << said.output;
   EXPECT_TRUE(contains(said.output, "metallicFactor 0")) << said.output;
 
   const auto diffuse =
@@ -224,8 +224,43 @@ TEST(RadiosityCli, AMetalByOmissionIsNamedAndADiffuseBoxUnderARotatedRootIsLit) 
     ASSERT_EQ(result.exit_code, 0) << result.output;
     output += result.output;
   }
-  EXPECT_FALSE(contains(output, "reflects no light diffusely")) << output;
+  EXPECT_FALSE(contains(output, "is a metal")) << output;
   EXPECT_LT(compared(dir / "radiosity.exr", dir / "whitted.exr"), 0.03);
+}
+
+// A sun (a directional light, Blender's sun) lights radiosity and the hybrid as parallel light:
+// after its one shot (--shots 1: direct light only) radiosity's picture of a block on a floor,
+// sun from the side, is Whitted's direct light, shadow included, up to the mesh's resolution of
+// the shadow's edges.
+TEST(RadiosityCli, ASunLightsRadiosityAsWhittedsDirectLight) {
+  test::ScratchDir dir;
+  test::GltfBuilder b;
+  const int grey = b.material({{"name", "grey"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.6, 0.6, 0.6, 1.0}},
+                                                                           {"metallicFactor", 0.0}}}});
+  test::Primitive floor;
+  floor.positions = {{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}};
+  floor.indices = {0, 1, 2, 0, 2, 3};
+  floor.material = grey;
+  b.node({{"mesh", b.mesh({floor}, "floor")}});
+  b.node({{"mesh", b.mesh({box(grey)}, "block")}, {"translation", {0.0, 0.5, 0.0}}});
+  // The sun travels along the node's -Z: turned 50 degrees down from the horizontal, toward -X.
+  const int light = b.light({{"type", "directional"}, {"intensity", 3.0}, {"name", "sun"}});
+  b.node({{"rotation", {-0.2988, 0.6409, 0.2988, 0.6409}},  // -Z to (-0.64, -0.77, 0)
+          {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+  const int camera = b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.05}}}});
+  b.node({{"camera", camera}, {"translation", {0.0, 4.0, 4.0}}, {"rotation", {-0.3827, 0.0, 0.0, 0.9239}}});
+  const auto scene = b.write_gltf(dir, "sun.gltf");
+
+  const auto radiosity = run_luz({"render", scene.string(), "--model", "radiosity", "--shots", "1", "--out",
+                                  (dir / "radiosity.exr").string(), "--size", "96x72"});
+  ASSERT_EQ(radiosity.exit_code, 0) << radiosity.output;
+  EXPECT_FALSE(contains(radiosity.output, "not shot")) << radiosity.output;
+  const auto whitted = run_luz({"render", scene.string(), "--model", "whitted", "--spp", "16", "--out",
+                                (dir / "whitted.exr").string(), "--size", "96x72"});
+  ASSERT_EQ(whitted.exit_code, 0) << whitted.output;
+  const double error = compared(dir / "radiosity.exr", dir / "whitted.exr");
+  printf("sun: radiosity against Whitted, mean relative error %.4f\n", error);
+  EXPECT_LT(error, 0.05);
 }
 
 }  // namespace

@@ -83,9 +83,11 @@ Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<uint32_t>& senders, 
   // A light's shadow edge is where the cuts are: its rays are the most a ray estimate takes.
   for (size_t k = 0; k < next_light_; ++k) {
     const Light& light = scene_.lights[lights_[k]];
-    const double omega = rays_->element_solid_angle(light, j, kMaxVisibilityRays, options_.seed,
-                                                    kGatherShot, traced);
-    arrived += glm::dvec3(light_flux(light, element, float(omega))) / double(element.area);
+    const double value =
+        light.type == LightType::directional
+            ? rays_->element_sunlit_area(light, j, kMaxVisibilityRays, options_.seed, kGatherShot, traced)
+            : rays_->element_solid_angle(light, j, kMaxVisibilityRays, options_.seed, kGatherShot, traced);
+    arrived += glm::dvec3(light_flux(light, element, float(value))) / double(element.area);
   }
   return Rgb(arrived);
 }
