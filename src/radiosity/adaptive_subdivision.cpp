@@ -173,6 +173,7 @@ size_t ProgressiveSolver::refine() {
   patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   for (size_t e = 0; e < mesh_.size(); ++e)
     patch_unshot_[mesh_.shooter_of[e]] += glm::dvec3(unshot_[e]) * double(mesh_.patches[e].area);
+  mesh_.find_display_surfaces();
   revision_ = ++mesh_.revision;
   items_.upload(mesh_);
   ++refinement_passes_;
