@@ -13,6 +13,7 @@ packages=(
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev xvfb xauth fonts-dejavu-core gettext locales xdotool
   libegl-dev libegl-mesa0 assimp-testmodels
+  librsvg2-bin desktop-file-utils appstream dpkg-dev groff-base
 )
 
 missing=()

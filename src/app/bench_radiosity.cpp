@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "app/bench_command.h"
-#include "app/resources.h"
+#include "core/resources.h"
 #include "app/i18n.h"
 #include "core/error.h"
 #include "gl/functions.h"

@@ -7,7 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "app/i18n.h"
-#include "app/resources.h"
+#include "core/resources.h"
 #include "core/error.h"
 
 namespace luz::app {

@@ -18,6 +18,7 @@
 #include "app/radiosity_state.h"
 #include "app/render_command.h"
 #include "core/error.h"
+#include "core/resources.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
 #include "raytracing/sampling.h"
@@ -472,14 +473,7 @@ Lesson parse_lesson(const std::filesystem::path& file) {
   return parse_lesson_text(text.str(), file);
 }
 
-std::filesystem::path default_lesson() {
-  std::error_code error;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error)
-    for (const std::filesystem::path& folder : {exe.parent_path() / "lessons", exe.parent_path() / "../share/luz/lessons"})
-      if (std::filesystem::is_regular_file(folder / "sintesis.json", error)) return folder / "sintesis.json";
-  return std::filesystem::path(LUZ_LESSON_DIR) / "sintesis.json";
-}
+std::filesystem::path default_lesson() { return lesson_dir() / "sintesis.json"; }
 
 std::optional<std::string> lesson_verb_problem(const ScriptCommand& c) {
   const auto& a = c.args;

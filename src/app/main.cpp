@@ -16,6 +16,7 @@
 #include "app/compare_command.h"
 #include "app/i18n.h"
 #include "app/lesson.h"
+#include "app/man_page.h"
 #include "app/model_registry.h"
 #include "app/panes.h"
 #include "app/bench_local.h"
@@ -23,10 +24,11 @@
 #include "app/render_flags.h"
 #include "app/viewer_settings.h"
 #include "app/solvers_command.h"
-#include "app/resources.h"
 #include "app/script.h"
 #include "app/viewer.h"
 #include "core/error.h"
+#include "core/resources.h"
+#include "core/version.h"
 #include "gl/window_context.h"
 
 namespace {
@@ -64,7 +66,9 @@ int main(int argc, char** argv) {
                   "With no subcommand, opens the viewer on SCENE (default: the Cornell box that ships).")};
   luz::app::speak_the_language(app);
   app.require_subcommand(0, 1);
-  app.set_version_flag("--version", "luz " LUZ_VERSION, tr("Display program version information and exit"));
+  app.set_version_flag("--version", luz::version_text(), tr("Display program version information and exit"));
+  std::string man_page_file;  // the build writes luz.1 from the options declared here (hidden)
+  app.add_option("--man-page", man_page_file)->group("");
   app.footer(tr("Exit codes: 0 success, 1 bad input (the message names the file), 2 usage error."));
   const auto lang = [](const std::string& name) { luz::i18n::set_language(*luz::i18n::parse_language(name)); };
   app.add_option_function<std::string>("--lang", lang, tr("Language of the messages and labels: es or en "
@@ -204,11 +208,14 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);  // prints the message
     return 2;
   }
 
+  if (!man_page_file.empty()) return luz::app::write_man_page(app, man_page_file);
   if (render->parsed()) {
     luz::app::note_given_flags(render_flags, settings);
     return luz::app::run_render(settings);
@@ -229,7 +236,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (viewer.scene.empty()) viewer.scene = luz::app::default_scene().string();
+  if (viewer.scene.empty()) viewer.scene = luz::default_scene().string();
   if (!script_file.empty()) {  // a bad script is a usage error, found before any window opens
     try {
       viewer.script = luz::app::parse_script(script_file);  // it waits for the lesson's first step

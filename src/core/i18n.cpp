@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/resources.h"
 
 namespace luz::i18n {
 namespace fs = std::filesystem;
@@ -98,16 +99,6 @@ const std::string* Catalogue::find(std::string_view id) const {
 }
 
 // ---- the program's catalogues ------------------------------------------------------------
-
-fs::path locale_dir() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    for (const fs::path& candidate : {exe.parent_path() / "locale", exe.parent_path() / "../share/locale"})
-      if (fs::exists(candidate / "es/LC_MESSAGES/luz.mo", error)) return candidate;
-  }
-  return LUZ_LOCALE_DIR;
-}
 
 namespace {
 

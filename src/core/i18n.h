@@ -49,10 +49,6 @@ private:
   std::unordered_map<std::string, std::string> entries_;
 };
 
-// Where the compiled catalogues are: locale/ next to the binary (the build tree), else
-// ../share/locale beside it (an installed tree), else the build's configured folder.
-std::filesystem::path locale_dir();
-
 // The catalogue of a language as the program uses it (read once, kept for the whole run, so
 // the strings tr() returns stay valid). A missing or broken catalogue gives an empty one and a
 // message on stderr: the program then speaks English.

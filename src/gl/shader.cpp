@@ -2,7 +2,6 @@
 
 #include <fstream>
 #include <sstream>
-#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
@@ -10,21 +9,12 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "core/resources.h"
 
 namespace luz::gl {
 
 using i18n::tr;
 using i18n::trf;
-
-std::filesystem::path shader_dir() {
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const std::filesystem::path beside = exe.parent_path() / "shaders";
-    if (std::filesystem::is_directory(beside, ec)) return beside;
-  }
-  return LUZ_SHADER_DIR;
-}
 
 namespace {
 

@@ -17,13 +17,9 @@
 
 namespace luz::gl {
 
-// The folder holding the GLSL files: `shaders/` next to the running binary when it exists
-// (an installed or copied build), else the source tree's (LUZ_SHADER_DIR, set by CMake).
-std::filesystem::path shader_dir();
-
 class Program {
 public:
-  // `stages`: file names in shader_dir(), stage from the extension (.vert, .geom, .frag).
+  // `stages`: file names in luz::shader_dir() (core/resources.h), stage from the extension (.vert, .geom, .frag).
   // `shared`: files prepended to every stage after its #version line.
   // `defines`: lines ("#define NAME VALUE\n") put before the shared files in every stage, to
   // compile variants of one program.
