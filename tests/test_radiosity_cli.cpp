@@ -71,7 +71,8 @@ TEST(RadiosityCli, HelpListsTheFlags) {
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"radiosity", "--shots", "--converge", "--patch-size", "--hemicube-res",
                            "--ambient-estimate", "--csv", "--form-factors", "--visibility-rays",
-                           "--pixel-samples", "--meshing", "--refine-threshold", "--refine-levels", "--time"})
+                           "--pixel-samples", "--meshing", "--refine-threshold", "--refine-levels", "--refine-budget",
+                           "--time"})
     EXPECT_TRUE(contains(help.output, flag)) << flag;
 }
 
@@ -107,6 +108,7 @@ TEST(RadiosityCli, BadValuesAreUsageErrors) {
                                              {"--form-factors", "raytraced"}, {"--meshing", "fine"},
                                              {"--refine-threshold", "0"}, {"--refine-threshold", "-1"},
                                              {"--refine-levels", "0"}, {"--refine-levels", "13"},
+                                             {"--refine-budget", "-1"}, {"--refine-budget", "2000001"},
                                              {"--time", "0"}, {"--time", "-1"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
     args.insert(args.end(), bad.begin(), bad.end());

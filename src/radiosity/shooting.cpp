@@ -112,6 +112,7 @@ void ProgressiveSolver::reset() {
     items_.upload(mesh_);
     refinement_passes_ = 0;
   }
+  budget_reached_ = false;
   next_refinement_ = 0;
   radiosity_.assign(mesh_.size(), Rgb(0.0f));
   unshot_.assign(mesh_.size(), Rgb(0.0f));

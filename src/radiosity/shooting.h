@@ -197,6 +197,7 @@ private:
   int shots_ = 0;
   int last_shooter_ = -1;
   int refinement_passes_ = 0;
+  bool budget_reached_ = false;  // adaptive subdivision stopped at options_.refine_budget
   size_t next_refinement_ = 0;  // into kRefineAt
   std::mt19937 random_;
   std::vector<ShotRecord> history_;
