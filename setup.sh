@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 packages=(
   cmake ninja-build g++ pkg-config python3
   libgl-dev libx11-dev libosmesa6-dev libglfw3-dev libglm-dev
-  libtinygltf-dev libopenimageio-dev libdeflate-dev libimgui-dev libstb-dev
+  libtinygltf-dev libtinyexr-dev libdeflate-dev libimgui-dev libstb-dev libopenimageio-dev
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev xvfb xauth fonts-dejavu-core gettext locales xdotool
   libegl-dev libegl-mesa0 assimp-testmodels

@@ -1,12 +1,14 @@
 // Bad input never crashes: each case of a malformed file, a hostile size or an interrupted run
 // ends in exit 1 (exit 2 for a flag) with one clear line, and no renderer writes a non-finite
 // pixel. Also the two headless back ends, EGL and OSMesa, drawing the same picture.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <regex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <signal.h>
@@ -20,6 +22,7 @@
 #include "core/image.h"
 #include "gltf_fixture.h"
 #include "io/image_io.h"
+#include "oiio_images.h"
 #include "support.h"
 #include "viewer_support.h"
 
@@ -81,23 +84,23 @@ TEST(Robustness, PngClaimingMorePixelsThanItsBytesCanHoldIsRefused) {
   EXPECT_EQ(texture->width, 1024);
 }
 
-// A JPEG's frame header read by Luz before OpenImageIO opens it (its reader allocates for the
-// claimed size as it opens: 2 GB for a fuzzed 140-byte file). SOI, an APP0 segment to walk over,
-// then SOF0 with height and width, big-endian.
+// A JPEG's frame header, whose size is refused before anything is allocated for it (a fuzzed
+// 140-byte file once made a JPEG reader allocate 2 GB as it opened it). SOI, an APP0 segment to
+// walk over, then SOF0 of one component with height and width, big-endian.
 std::vector<unsigned char> jpeg_claiming(uint16_t width, uint16_t height) {
-  return {0xff, 0xd8, 0xff, 0xe0, 0x00, 0x04, 0x00, 0x00, 0xff, 0xc0, 0x00, 0x11, 0x08,
+  return {0xff, 0xd8, 0xff, 0xe0, 0x00, 0x04, 0x00, 0x00, 0xff, 0xc0, 0x00, 0x0b, 0x08,
           static_cast<unsigned char>(height >> 8), static_cast<unsigned char>(height & 0xff),
           static_cast<unsigned char>(width >> 8), static_cast<unsigned char>(width & 0xff), 0x01, 0x01, 0x11, 0x00,
           0xff, 0xd9};
 }
 
-TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeOpenImageIoOpensIt) {
+TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeDecoding) {
   std::string error;
   EXPECT_FALSE(io::decode_texture(jpeg_claiming(62978, 31234), "huge", error));
   EXPECT_EQ(error, "header: 62978 x 31234 pixels is beyond the limit of 16384 per side and 16777216 in all");
   EXPECT_FALSE(io::decode_texture(jpeg_claiming(4000, 4000), "liar", error));
   EXPECT_TRUE(error.starts_with("header: 4000 x 4000 pixels cannot come from 23 bytes")) << error;
-  // Garbage before the frame header (a segment's length that lies) is skipped, as libjpeg does.
+  // Garbage before the frame header (a segment's length that lies) is skipped, as decoders do.
   std::vector<unsigned char> resync = jpeg_claiming(62978, 31234);
   resync[5] = 0x02;  // APP0's length now ends inside it: two bytes of junk before SOF0
   EXPECT_FALSE(io::decode_texture(resync, "resync", error));
@@ -112,6 +115,23 @@ TEST(Robustness, JpegClaimingAHugeSizeIsRefusedBeforeOpenImageIoOpensIt) {
   EXPECT_TRUE(one_line_naming(run.output, "huge.jpg: header: 62978 x 31234 pixels is beyond the limit")) << run.output;
 }
 
+// A JPEG Huffman table holds at most 256 codes (ITU T.81, B.2.4.2): one whose counts add up to more
+// is refused before the decoder builds it (stb_image would write past the table: a fuzzed file),
+// whether it comes before the frame header or after it.
+TEST(Robustness, JpegHuffmanTableOfMoreThan256CodesIsRefused) {
+  std::vector<unsigned char> table = {0xff, 0xc4, 0x01, 0x3f, 0x00, 255, 45};  // 2 + 17 + 300 bytes
+  table.resize(table.size() + 14, 0);
+  table.resize(table.size() + 300, 7);
+  const std::vector<unsigned char> jpeg = jpeg_claiming(16, 16);
+  for (const size_t at : {size_t(8), jpeg.size() - 2}) {  // after APP0; after SOF0
+    std::vector<unsigned char> bad = jpeg;
+    bad.insert(bad.begin() + std::ptrdiff_t(at), table.begin(), table.end());
+    std::string error;
+    EXPECT_FALSE(io::decode_texture(bad, "huffman", error));
+    EXPECT_EQ(error, "not a readable JPEG image: a Huffman table of 300 codes (at most 256)") << at;
+  }
+}
+
 TEST(Robustness, CorruptPngSaysSoInOneLineWithoutLibpngsOwn) {
   ScratchDir dir;
   std::vector<unsigned char> png = png_rgb8(4, 4, std::vector<unsigned char>(48, 7));
@@ -123,6 +143,29 @@ TEST(Robustness, CorruptPngSaysSoInOneLineWithoutLibpngsOwn) {
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_EQ(run.output.find("libpng error"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("luz: " + (dir / "bad.png").string()), std::string::npos) << run.output;
+}
+
+// A file of each format Luz reads, cut short, as --environment: exit 1 and one line that names the
+// file, nothing written. Cut where no decoder can make a picture of what is left: PNG and OpenEXR
+// halfway (PNG needs its IEND chunk, OpenEXR the chunks its offsets point at), JPEG and Radiance
+// HDR inside their headers.
+TEST(Robustness, CutImageFilesEndInOneLineNamingTheFile) {
+  ScratchDir dir;
+  const std::vector<float> values(size_t(32) * 16 * 3, 0.5f);
+  for (const auto& [name, sample, keep] : {std::tuple{"cut.png", Sample::uint8, 0.5}, {"cut.exr", Sample::half, 0.5},
+                                           {"cut.jpg", Sample::uint8, 0.05}, {"cut.hdr", Sample::float32, 0.05}}) {
+    oiio_write(dir / name, 32, 16, {"R", "G", "B"}, sample, values);
+    std::ifstream in(dir / name, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), {});
+    bytes.resize(size_t(double(bytes.size()) * keep));
+    write_file(dir / name, bytes);
+    const CommandResult run = run_luz({"render", scene("whitted.gltf"), "--reflection-map", "--environment",
+                                       (dir / name).string(), "--size", "16x12", "--out", (dir / "out.png").string()});
+    EXPECT_EQ(run.exit_code, 1) << name << ": " << run.output;
+    EXPECT_NE(run.output.find("luz: " + (dir / name).string() + ": "), std::string::npos) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png")) << name;
+  }
 }
 
 TEST(Robustness, ImageWriterRefusesNonFinitePixels) {

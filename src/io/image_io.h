@@ -1,6 +1,6 @@
 #pragma once
-// Image files: PNG and OpenEXR written by Luz's own encoders (image_encoders.h), every image read
-// through OpenImageIO in a plugin opened on the first read (image_reader_plugin.h).
+// Image files: PNG and OpenEXR written by Luz's own encoders (image_encoders.h); PNG, JPEG,
+// Radiance HDR and OpenEXR read by stb_image and tinyexr in this process (image_decoders.h).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -25,13 +25,14 @@ inline constexpr int64_t kMaxImagePixels = int64_t(4096) * 4096;
 // (kind output).
 void write_image(const Image& image, const std::filesystem::path& path, float exposure);
 
-// Reads any image OpenImageIO knows as linear RGB: 8-bit files are sRGB-decoded, float files
-// taken as they are. Throws luz::Error (file_missing / bad_value; file_missing too when the
-// reader plugin cannot be loaded).
+// Reads a PNG, JPEG, Radiance HDR or OpenEXR file (told apart by their magic numbers, whatever
+// the file's name) as linear RGB: 8 and 16-bit files are sRGB-decoded, float files taken as they
+// are. Throws luz::Error (file_missing when the file is not there or cannot be read, bad_value
+// when it is not such an image, its header claims too large a size, or it does not decode).
 Image read_image(const std::filesystem::path& path);
 
-// Decodes an encoded image (PNG, JPEG, ... bytes as glTF embeds them) into a texture of linear
-// texels, sRGB-decoded; std::nullopt with `error` set when the bytes are not an image.
+// Decodes an encoded image (PNG or JPEG bytes, as glTF embeds them) into a texture of linear
+// texels, sRGB-decoded; std::nullopt with `error` set when the bytes are not such an image.
 std::optional<Texture> decode_texture(const std::vector<unsigned char>& bytes,
                                       const std::string& name, std::string& error);
 
