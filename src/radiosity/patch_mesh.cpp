@@ -216,6 +216,7 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
+    result.mesh_material.push_back(mesh.material);
     const Rgb rho = material.kd * result.detail.mean(int(m));
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
     // An emissive texture: each element shoots pi times the mean of Le over it (SCENES.md).
@@ -292,6 +293,7 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
       shooter.radius = std::max(shooter.radius, glm::length(corner - shooter.centre));
   }
   result.group_by_shooter();
+  result.find_display_surfaces();
   return result;
 }
 

@@ -115,7 +115,7 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
       // those of heat_colour() whatever the scene's exposure.
       const float undo = std::exp2(-exposure);
       for (Rgb& c : field.patch) c *= undo;
-      for (Rgb& c : field.vertex) c *= undo;
+      for (Rgb& c : field.corner) c *= undo;
     }
     renderer_.update(field, o, !heat_map);  // the heat map is no radiance for a texture to modulate
     colours_stale_ = false;
