@@ -99,9 +99,10 @@ def _material(m):
             return np.array(default, dtype=float)
         return np.array([value] * 3 if np.isscalar(value) else value, dtype=float)
 
-    kd = base * (1 - metallic)
+    transmission = ext.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0)
+    kd = base * (1 - metallic) * (1 - transmission)
     kr = rgb(extras.get("kr"), base if metallic >= 0.5 and roughness <= 0.05 else [0, 0, 0])
-    kt = rgb(extras.get("kt"), [ext.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0)] * 3)
+    kt = rgb(extras.get("kt"), base * (1 - metallic) * transmission)
     ior = extras.get("ior", ext.get("KHR_materials_ior", {}).get("ior", 1.5))
     le = np.array(m.get("emissiveFactor", [0, 0, 0]), dtype=float) * \
         ext.get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)

@@ -194,8 +194,17 @@ class GltfBuilder:
             extras["kt"] = num(kt) if isinstance(kt, (int, float)) else nums(kt)
         if ior is not None:
             extras["ior"] = num(ior)
+        base = list(kd)
+        transmission = None
+        if transmission_extension:
+            # glTF's glass: kd = base x (1 - t), kt = base x t (SCENES.md Materials). So that
+            # glTF viewers and Luz read the same kd and kt, base = kd + kt and t = kt / base
+            # (one t for all channels: kd grey, kt a number).
+            assert isinstance(kt, (int, float)) and kd[0] == kd[1] == kd[2], name
+            base = [kd[0] + kt] * 3
+            transmission = kt / base[0]
         mat = {"name": name,
-               "pbrMetallicRoughness": {"baseColorFactor": nums(list(kd) + [1.0]),
+               "pbrMetallicRoughness": {"baseColorFactor": nums(base + [1.0]),
                                         "metallicFactor": 0.0,
                                         "roughnessFactor": num(roughness)},
                "extras": extras}
@@ -207,9 +216,9 @@ class GltfBuilder:
                     "emissiveStrength": num(strength)}
                 self.extensions_used.add("KHR_materials_emissive_strength")
         if transmission_extension:
-            # The same kt and ior for glTF viewers that do not read Luz's extras.
+            # The same kd, kt and ior for glTF viewers that do not read Luz's extras.
             exts = mat.setdefault("extensions", {})
-            exts["KHR_materials_transmission"] = {"transmissionFactor": extras["kt"]}
+            exts["KHR_materials_transmission"] = {"transmissionFactor": num(transmission)}
             exts["KHR_materials_ior"] = {"ior": extras["ior"]}
             self.extensions_used.update(("KHR_materials_transmission", "KHR_materials_ior"))
         self.doc["materials"].append(mat)
@@ -942,7 +951,8 @@ def check_scene(path):
 
         def rgb(value):
             return [float(value)] * 3 if isinstance(value, (int, float)) else list(value)
-        kd = [c * (1.0 - metallic) for c in base]
+        transmission = exts.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0)
+        kd = [c * (1.0 - metallic) * (1.0 - transmission) for c in base]
         if "kr" in extras:
             kr = rgb(extras["kr"])
         elif metallic >= 0.5 and roughness <= 0.05:
@@ -952,7 +962,7 @@ def check_scene(path):
         if "kt" in extras:
             kt = rgb(extras["kt"])
         else:
-            kt = rgb(exts.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0))
+            kt = [c * (1.0 - metallic) * transmission for c in base]
         for ch in range(3):
             if kd[ch] + kr[ch] + kt[ch] > 1.0 + 1e-9:
                 problem(where, "kd + kr + kt = %g > 1 in channel %d"

@@ -1,7 +1,8 @@
 #version 330 core
-// Flat shading: one colour per triangle, the formula evaluated once at the triangle's centroid
-// with its face (geometric) normal and the uv of the centroid. A geometry shader sees the whole
-// triangle, which is what GL 3.3 offers for this.
+// Flat shading: the formula evaluated once per triangle, at its centroid with its face
+// (geometric) normal; the kd and emissive textures still modulate it per fragment, as
+// fixed-function GL_FLAT with a modulating texture did (SCENES.md Units), so uv is interpolated.
+// A geometry shader sees the whole triangle, which is what GL 3.3 offers for this.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
@@ -13,14 +14,14 @@ in vec3 v_colour[];
 flat out vec3 g_ambient;
 flat out vec3 g_diffuse;
 flat out vec3 g_specular;
-flat out vec2 g_uv;
+out vec2 g_uv;
 flat out vec3 g_colour;  // COLOR_0 at the centroid
 flat out vec3 g_mirror;
 out vec3 g_position;
 #if LUZ_DISPLAY_OUTPUT
-// Without fog the triangle's one colour is one displayed value too, so the sRGB curve runs once
-// per triangle instead of once per pixel: for the side that emits and the other (an emitter
-// shows its Le on one side only, which the fragment knows).
+// Without fog or a texture the triangle's one colour is one displayed value too, so the sRGB
+// curve runs once per triangle instead of once per pixel: for the side that emits and the other
+// (an emitter shows its Le on one side only, which the fragment knows).
 flat out vec3 g_displayed_front;
 flat out vec3 g_displayed_back;
 #endif
@@ -35,12 +36,12 @@ void main() {
   if (dot(N, u_eye - middle) < 0.0) N = -N;  // two-sided lighting: face the viewer
 
   Terms terms = local_model(middle, N);
-  vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;
+  vec2 uv = (v_uv[0] + v_uv[1] + v_uv[2]) / 3.0;  // for the displayed value of an untextured triangle
   vec3 colour = (v_colour[0] + v_colour[1] + v_colour[2]) / 3.0;
   vec3 mirror = mirror_direction(middle, N);
 #if LUZ_DISPLAY_OUTPUT
   vec3 displayed_front = vec3(0.0), displayed_back = vec3(0.0);
-  if (fog_mode == FOG_OFF) {
+  if (fog_mode == FOG_OFF && !has_kd_texture && !has_emission_texture) {
     kd_colour = colour;
     displayed_front = displayed(surface_radiance(terms, uv, true, mirror));
     displayed_back = displayed(surface_radiance(terms, uv, false, mirror));
@@ -52,7 +53,7 @@ void main() {
     g_ambient = terms.ambient;
     g_diffuse = terms.diffuse;
     g_specular = terms.specular;
-    g_uv = uv;
+    g_uv = v_uv[i];
     g_colour = colour;
     g_mirror = mirror;
     g_position = v_position[i];

@@ -92,6 +92,7 @@ uniform vec3 u_ks;
 uniform float u_shininess;  // n
 uniform vec3 u_emission;    // Le
 uniform sampler2D u_kd_texture;  // baseColorTexture, linear texels
+uniform sampler2D u_emission_texture;  // emissiveTexture, linear texels: multiplies Le
 uniform vec3 u_kr;
 uniform vec3 u_kt;
 
@@ -106,6 +107,7 @@ const bool specular_on = LUZ_SPECULAR_ON;      // I_S
 const bool emission_on = LUZ_EMISSION_ON;      // Le
 const bool blinn = LUZ_BLINN;                  // cos(alpha) = N.H instead of R.V
 const bool has_kd_texture = LUZ_KD_TEXTURE;    // this mesh's kd is textured (and textures are on)
+const bool has_emission_texture = LUZ_EMISSION_TEXTURE;  // this mesh's Le is textured
 // Slide 19's (LocalOptions' sub-structs, and the mesh's part in them).
 const bool shadows_on = LUZ_SHADOWS_ON;        // S_i from the shadow maps
 const bool reflection_on = LUZ_REFLECTION_ON;  // this mesh has kr > 0 and a reflection map
@@ -304,7 +306,8 @@ vec3 kd_texture_factor(vec2 uv) {
 // I = I_A + I_D * texture + I_S (+ Le): the sum the fragment writes.
 vec3 radiance(Terms terms, vec2 uv, bool emitting_side) {
   vec3 I = terms.ambient + terms.diffuse * kd_texture_factor(uv) + terms.specular;
-  if (emission_on && emitting_side) I += u_emission;  // an emitter shows its own Le
+  if (emission_on && emitting_side)  // an emitter shows its own Le, the texel at uv with a texture
+    I += u_emission * (has_emission_texture ? texture(u_emission_texture, uv).rgb : vec3(1.0));
   return I;
 }
 

@@ -260,4 +260,32 @@ void write_file(const std::filesystem::path& path, const std::vector<unsigned ch
       .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
+// A closed room 4 x 3 x 6 m (x, y, z), its six walls facing inwards, with a camera inside near
+// its front wall looking down -Z at the back wall, as Blender exports a room.
+GltfBuilder closed_room() {
+  GltfBuilder b;
+  const int white = b.material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
+                                                          {"metallicFactor", 0.0}}}});
+  const glm::vec3 lo(-2, 0, -3), hi(2, 3, 3);
+  // Each wall as two triangles, counter-clockwise seen from inside.
+  auto wall = [&](glm::vec3 a, glm::vec3 b1, glm::vec3 c, glm::vec3 d) {
+    Primitive p;
+    p.positions = {a, b1, c, d};
+    p.indices = {0, 1, 2, 0, 2, 3};
+    p.material = white;
+    return p;
+  };
+  const std::vector<Primitive> walls = {
+      wall({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}),  // back
+      wall({lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}),  // front
+      wall({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}),  // floor
+      wall({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}),  // ceiling
+      wall({lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}),  // left
+      wall({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z})}; // right
+  b.node({{"mesh", b.mesh(walls, "room")}});
+  b.node({{"camera", b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.05}}}})},
+          {"translation", {0, 1.5, 2.5}}});
+  return b;
+}
+
 }  // namespace luz::test

@@ -82,6 +82,11 @@ class GltfBuilder {
 // A scene of one triangle (material `material`, or none) at a root node.
 GltfBuilder one_triangle(const nlohmann::json& material = nullptr);
 
+// A closed room 4 x 3 x 6 m (x from -2 to 2, y from 0 to 3, z from -3 to 3), its six white
+// (kd 0.8) walls facing inwards, with a camera inside at (0, 1.5, 2.5) looking down -Z at the back
+// wall: a room as Blender exports it, without lights.
+GltfBuilder closed_room();
+
 // An uncompressed 8-bit RGB PNG of `width` x `height` pixels (rgb: 3 bytes per pixel, rows top
 // first): just enough PNG to test texture decoding without an image library in the tests.
 std::vector<unsigned char> png_rgb8(int width, int height, const std::vector<unsigned char>& rgb);

@@ -5,8 +5,8 @@
 // TearDown.
 #include <imgui.h>
 
-#include "app/label_text.h"
-#include "app/ui_glyphs.h"
+#include "app/common/label_text.h"
+#include "app/viewer/ui_glyphs.h"
 
 namespace luz::test {
 

@@ -8,9 +8,9 @@
 
 #include <imgui.h>
 
-#include "app/classroom_ui.h"
-#include "app/label_text.h"
-#include "app/ui_glyphs.h"
+#include "app/classroom/classroom_ui.h"
+#include "app/common/label_text.h"
+#include "app/viewer/ui_glyphs.h"
 #include "imgui_headless.h"
 
 namespace luz {

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <set>
 
-#include "app/i18n.h"
-#include "app/lesson.h"
-#include "app/viewer_settings.h"
+#include "app/common/i18n.h"
+#include "app/classroom/lesson.h"
+#include "app/viewer/viewer_settings.h"
 #include "io/default_lights.h"
 #include "viewer_support.h"
 

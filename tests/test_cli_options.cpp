@@ -1,4 +1,4 @@
-// `luz render`'s flags come from the options tables (src/app/options_tables.h): every float flag
+// `luz render`'s flags come from the options tables (src/app/common/options_tables.h): every float flag
 // refuses nan and inf as a usage error naming the flag; the help quotes each option's default
 // as its struct has it; a range without an upper end is said in words.
 #include <string>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/options_tables.h"
+#include "app/common/options_tables.h"
 #include "support.h"
 
 namespace luz::app {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/camera.h"
@@ -118,6 +119,32 @@ TEST(Camera, FramingSeesTheWholeBoundingBox) {
       }
 }
 
+TEST(Camera, FramingSeesAFlatWideSceneFromAbove) {
+  // A ground plane 10 m wide and 0.1 m tall: seen from 45 degrees above the horizon (less the
+  // little height it has: 45 x (1 - 2 x 0.01) = 44.1), not edge-on, and still all in view. A box
+  // as tall as it is wide is framed from +Z as before.
+  Bounds ground;
+  ground.grow({-5, 0, -5});
+  ground.grow({5, 0.1f, 5});
+  const Camera camera = Camera::framing(ground);
+  EXPECT_NEAR(camera.forward().y, -std::sin(glm::radians(44.1f)), 1e-4f);
+  EXPECT_NEAR(camera.forward().x, 0.0f, 1e-6f);
+  const glm::mat4 clip = camera.projection(1.0f, 100.0f) * camera.view();
+  for (float x : {-5.0f, 5.0f})
+    for (float y : {0.0f, 0.1f})
+      for (float z : {-5.0f, 5.0f}) {
+        const glm::vec4 p = clip * glm::vec4(x, y, z, 1.0f);
+        EXPECT_LE(std::abs(p.x / p.w), 1.0f);
+        EXPECT_LE(std::abs(p.y / p.w), 1.0f);
+        EXPECT_GT(p.w, 0.0f);
+      }
+  Bounds box;
+  box.grow({-1, -1, -1});
+  box.grow({1, 1, 1});
+  EXPECT_NEAR(Camera::framing(box).forward().z, -1.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(Camera::framing_elevation(box), 0.0f);
+}
+
 // One rule for every model: a mesh shows its material's kd texture when the texture exists and
 // the mesh has TEXCOORD_0 to place it by.
 TEST(Scene, AMeshShowsItsTextureOnlyWithTextureCoordinates) {
@@ -224,6 +251,20 @@ TEST(Exposure, ABigPictureIsReadOnAGridOfAbout65536Pixels) {
   EXPECT_EQ(picture_key(Image(300, 200, Rgb(0.5f))).lit, 60000u);
 }
 
+TEST(Exposure, APictureWithAlmostNoLightStopsAtSixteenEvAndSaysSo) {
+  // Radiance 1e-10 calls for log2(0.18 / 1e-10) = +30.7 EV: rounding noise shown as white blobs.
+  // The fit stops at +16 EV and the note says why; 0.045 (+2 EV) is an ordinary fit.
+  const PictureKey faint = picture_key(grey_picture(1e-10f, 10));
+  EXPECT_FLOAT_EQ(*fitted_exposure(faint), kMaxFittedExposure);
+  EXPECT_TRUE(almost_no_light(faint));
+  EXPECT_NE(almost_no_light_note(faint).find("+30.7 EV"), std::string::npos) << almost_no_light_note(faint);
+  const PictureKey ordinary = picture_key(grey_picture(0.045f, 10));
+  EXPECT_FALSE(almost_no_light(ordinary));
+  EXPECT_FLOAT_EQ(*fitted_exposure(ordinary), 2.0f);
+  // Just inside the bound: 0.18 / 2^16 is fitted, not bounded.
+  EXPECT_FALSE(almost_no_light(picture_key(grey_picture(0.18f / 65536.0f, 10))));
+}
+
 TEST(Exposure, TheFitIsRoundedToATenthOfAnEv) {
   // log2(0.18 / 0.1) = 0.848
   const float fitted = *fitted_exposure(picture_key(grey_picture(0.1f, 1)));
@@ -267,8 +308,8 @@ TEST(Exposure, ThePhotometricHintIsForBlendersLights) {
   EXPECT_EQ(photometric_hint(scene), "");  // no light
   scene.lights.push_back(Light{});
   EXPECT_EQ(photometric_hint(scene),
-            "Khronos glTF Blender I/O v3.4.50 writes lights in candela, 683 times the W/sr Luz reads, unless its "
-            "Lighting Mode is Unitless");
+            "Khronos glTF Blender I/O v3.4.50 writes lights in candela: in its Lighting Mode \"Standard\" 683 "
+            "times the W/sr Luz reads, in \"Raw\" its point and spot lights 4 pi times; \"Unitless\" writes W/sr");
   scene.default_lights = true;  // Luz's own: in its units
   EXPECT_EQ(photometric_hint(scene), "");
   scene.default_lights = false;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "core/error.h"
 #include "core/i18n.h"
@@ -43,11 +44,13 @@ bool any_warning_contains(const io::LoadedScene& loaded, const std::string& text
   return false;
 }
 
-// The warnings but the default lights' notice (these scenes have no light on purpose).
+// The warnings but the default lights' and the framing camera's notices (these scenes have no
+// light and no camera on purpose).
 std::vector<std::string> other_warnings(const io::LoadedScene& loaded) {
   std::vector<std::string> out;
   for (const std::string& w : loaded.warnings)
-    if (w.find(io::kDefaultLightsNotice) == std::string::npos) out.push_back(w);
+    if (w.find(io::kDefaultLightsNotice) == std::string::npos && w.find(io::kNoCameraNotice) == std::string::npos)
+      out.push_back(w);
   return out;
 }
 
@@ -208,20 +211,122 @@ TEST(Winding, FlippedWhenTheNodeMirrors) {
   EXPECT_VEC3(mesh.normals[0], 0, 0, 1);  // inverse transpose of diag(-1,1,1) keeps (0,0,1)
 }
 
-TEST(Primitive, NonTrianglesSkippedWithOneWarningNamingTheMesh) {
+TEST(Primitive, PointsAndLinesSkippedWithOneWarningNamingTheMeshAndTheModeInWords) {
   Primitive lines = triangle();
   lines.mode = 1;
-  Primitive strip = triangle();
-  strip.mode = 5;
+  Primitive points = triangle();
+  points.mode = 0;
+  Primitive more_lines = triangle();
+  more_lines.mode = 1;
   GltfBuilder b;
-  b.node({{"mesh", b.mesh({lines, triangle(), strip}, "wires")}});
+  b.node({{"mesh", b.mesh({lines, triangle(), points, more_lines}, "wires")}});
   ScratchDir dir;
   const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
   EXPECT_EQ(loaded.scene.triangle_count(), 1u);
-  int count = 0;
-  for (const std::string& w : loaded.warnings) count += w.find("\"wires\"") != std::string::npos;
-  EXPECT_EQ(count, 1);
-  EXPECT_NE(loaded.warnings.at(0).find("scene.gltf"), std::string::npos);
+  const std::vector<std::string> warnings = other_warnings(loaded);
+  ASSERT_EQ(warnings.size(), 1u) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(warnings[0], (dir / "scene.gltf").string() +
+                             ": mesh 0 \"wires\": skipped its lines (mode 1), points (mode 0); "
+                             "only triangles are drawn");
+}
+
+// The corners of every triangle of the scene's meshes, and whether each one faces +Z
+// (counter-clockwise seen from +Z, as glTF's front faces are).
+size_t triangles_facing_plus_z(const Scene& scene) {
+  size_t facing = 0;
+  for (const Mesh& mesh : scene.meshes)
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                      c = mesh.positions[mesh.indices[t + 2]];
+      facing += glm::cross(b - a, c - a).z > 0.0f;
+    }
+  return facing;
+}
+
+float total_area(const Scene& scene) {
+  float area = 0.0f;
+  for (const Mesh& mesh : scene.meshes)
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                      c = mesh.positions[mesh.indices[t + 2]];
+      area += 0.5f * glm::length(glm::cross(b - a, c - a));
+    }
+  return area;
+}
+
+TEST(Primitive, TriangleStripBecomesTrianglesWoundAlike) {
+  // A strip zig-zagging along x, as Mesh_PrimitiveMode_04 does: top, bottom, top, bottom, ...
+  // n vertices make n - 2 triangles, each of area 1/2, every one counter-clockwise from +Z
+  // (glTF: triangle i is (v_i, v_{i+1+i%2}, v_{i+2-i%2})).
+  Primitive strip;
+  strip.positions = {{0, 1, 0}, {0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {2, 1, 0}, {2, 0, 0}};
+  strip.mode = 5;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({strip}, "strip")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 4u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 4u);
+  EXPECT_NEAR(total_area(loaded.scene), 2.0f, kTol);
+}
+
+TEST(Primitive, IndexedStripsJoinedByRepeatedVerticesLoseOnlyTheJoins) {
+  // Two quads in one strip, joined the usual way (repeat the last vertex of one and the first of
+  // the next): 0 1 2 3 3 4 4 5 6 7. The four triangles that repeat a vertex are joins, not
+  // zero-area triangles of the model, and are not reported; the four real ones face +Z.
+  Primitive strip;
+  strip.positions = {{0, 1, 0}, {0, 0, 0}, {1, 1, 0}, {1, 0, 0},
+                     {5, 1, 0}, {5, 0, 0}, {6, 1, 0}, {6, 0, 0}};
+  strip.indices = {0, 1, 2, 3, 3, 4, 4, 5, 6, 7};
+  strip.mode = 5;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({strip}, "strips")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 4u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 4u);
+  EXPECT_NEAR(total_area(loaded.scene), 2.0f, kTol);
+}
+
+TEST(Primitive, TriangleFanBecomesTrianglesAroundItsFirstVertex) {
+  // A fan around the origin over a unit-radius half hexagon, counter-clockwise from +Z: n
+  // vertices make n - 2 triangles (glTF: triangle i is (v_{i+1}, v_{i+2}, v_0)), with normals
+  // from their faces.
+  Primitive fan;
+  fan.positions = {{0, 0, 0}};
+  for (int k = 0; k <= 3; ++k) {
+    const float angle = float(k) * std::numbers::pi_v<float> / 3.0f;
+    fan.positions.push_back({std::cos(angle), std::sin(angle), 0});
+  }
+  fan.indices = {0, 1, 2, 3, 4};
+  fan.mode = 6;
+  GltfBuilder b;
+  b.node({{"mesh", b.mesh({fan}, "fan")}});
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(b.write_gltf(dir));
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+  EXPECT_EQ(loaded.scene.triangle_count(), 3u);
+  EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 3u);
+  EXPECT_NEAR(total_area(loaded.scene), 3.0f * std::sqrt(3.0f) / 4.0f, kTol);
+  EXPECT_VEC3(loaded.scene.meshes[0].normals[0], 0, 0, 1);
+}
+
+TEST(Primitive, KhronosPrimitiveModeSamplesAreOneSquareFacingTheViewer) {
+  // glTF-Asset-Generator's Mesh_PrimitiveMode: the same unit square facing +Z as a triangle
+  // list (06, 13), strip (04, 11) and fan (05, 12), without and with indices.
+  const std::filesystem::path folder =
+      "/usr/share/assimp/models/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode";
+  if (!std::filesystem::is_directory(folder)) GTEST_SKIP() << folder << " is not installed";
+  for (const char* n : {"04", "05", "06", "11", "12", "13"}) {
+    SCOPED_TRACE(n);
+    const io::LoadedScene loaded =
+        io::load_gltf(folder / (std::string("Mesh_PrimitiveMode_") + n + ".gltf"));
+    EXPECT_EQ(loaded.scene.triangle_count(), 2u);
+    EXPECT_EQ(triangles_facing_plus_z(loaded.scene), 2u);
+    EXPECT_NEAR(total_area(loaded.scene), 1.0f, kTol);
+  }
 }
 
 TEST(Primitive, NonIndexedMakesATriangleOfEveryThreeVertices) {
@@ -512,16 +617,48 @@ TEST(Material, ExtrasScalarIsGreyAndRgbIsRgb) {
 }
 
 TEST(Material, TransmissionAndIorExtensionsUnlessExtrasSayOtherwise) {
-  json m = diffuse(0.1, 0.1, 0.1);
-  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 0.7}}},
+  // base (0.5, 0.4, 0.2), metallic 0.5, transmission 0.75: the dielectric half (0.25, 0.2, 0.1)
+  // splits into kd = a quarter of it and kt = three quarters, tinted by the base colour.
+  json m = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.2, 1}}, {"metallicFactor", 0.5}}}};
+  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}}},
                      {"KHR_materials_ior", {{"ior", 2.4}}}};
   const Material glass = load_material(m);
-  EXPECT_VEC3(glass.kt, 0.7f, 0.7f, 0.7f);
+  EXPECT_VEC3(glass.kd, 0.0625f, 0.05f, 0.025f);
+  EXPECT_VEC3(glass.kt, 0.1875f, 0.15f, 0.075f);
   EXPECT_FLOAT_EQ(glass.ior, 2.4f);
   m["extras"] = {{"kt", 0.2}, {"ior", 1.1}};
   const Material overridden = load_material(m);
   EXPECT_VEC3(overridden.kt, 0.2f, 0.2f, 0.2f);
+  EXPECT_VEC3(overridden.kd, 0.0625f, 0.05f, 0.025f);  // still weighed by (1 - transmission)
   EXPECT_FLOAT_EQ(overridden.ior, 1.1f);
+}
+
+TEST(Material, BlendersDefaultGlassIsClearNotAGlowingWhiteBall) {
+  // What Blender 3.4 writes for its Glass BSDF: a white base, metallic 0, roughness 0,
+  // transmission 1. All of it is transmitted: kd = 0 (and ka with it), kt = 1, and kd + kr + kt
+  // stays within 1, so the scene loads without the energy warning.
+  json m = {{"name", "Glass"},
+            {"pbrMetallicRoughness",
+             {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.0}}},
+            {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                            {"KHR_materials_ior", {{"ior", 1.45}}}}}};
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(one_triangle(m).write_gltf(dir));
+  const Material& glass = loaded.scene.materials.at(0);
+  EXPECT_VEC3(glass.kd, 0, 0, 0);
+  EXPECT_VEC3(glass.ka, 0, 0, 0);
+  EXPECT_VEC3(glass.kt, 1, 1, 1);
+  EXPECT_VEC3(glass.kr, 0, 0, 0);
+  EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+  EXPECT_TRUE(other_warnings(loaded).empty()) << ::testing::PrintToString(loaded.warnings);
+}
+
+TEST(Error, TransmissionOutsideZeroOneIsBadValue) {
+  json m = diffuse(1, 1, 1);
+  m["extensions"] = {{"KHR_materials_transmission", {{"transmissionFactor", 1.5}}}};
+  ScratchDir dir;
+  const std::string message = expect_error(one_triangle(m).write_gltf(dir), ErrorKind::bad_value);
+  EXPECT_NE(message.find("transmissionFactor"), std::string::npos) << message;
 }
 
 TEST(Material, EmissionTimesStrengthMakesAreaLights) {
@@ -608,10 +745,86 @@ TEST(Texture, MissingFileGivesWhiteAndAWarningNamingTheUri) {
   ASSERT_EQ(warnings.size(), 1u) << ::testing::PrintToString(loaded.warnings);
   EXPECT_NE(warnings[0].find("scene.gltf"), std::string::npos);
   EXPECT_NE(warnings[0].find("nowhere.png"), std::string::npos);
-  const Texture& t = loaded.scene.textures.at(size_t(loaded.scene.materials[0].kd_texture));
-  EXPECT_EQ(t.width, 1);
-  EXPECT_EQ(t.height, 1);
-  EXPECT_VEC3(t.texel(0, 0), 1, 1, 1);
+  EXPECT_EQ(loaded.scene.materials[0].kd_texture, -1);  // the material without its texture
+  EXPECT_VEC3(loaded.scene.materials[0].kd, 1, 1, 1);
+  EXPECT_TRUE(loaded.scene.textures.empty());
+}
+
+// A scene in DIR/scene/ whose one triangle uses an image of URI `uri`, with green.png's pixel
+// beside the scene under `beside` (when not empty) and a red one at DIR/maps/x.png, outside.
+struct WindowsPathScene {
+  ScratchDir dir;
+  std::filesystem::path gltf;
+  io::LoadedScene loaded;
+  WindowsPathScene(const std::string& uri, const std::string& beside) {
+    GltfBuilder b;
+    b.doc["images"] = json::array({{{"uri", uri}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    json m = diffuse(1, 1, 1);
+    m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    Primitive p = triangle(b.material(m));
+    p.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    b.node({{"mesh", b.mesh({p})}});
+    gltf = b.write_gltf(dir, "scene/scene.gltf", /*embed_buffer=*/true);
+    std::filesystem::create_directories(dir / "maps");
+    write_file(dir / "maps" / "x.png", png_rgb8(1, 1, {255, 0, 0}));
+    if (!beside.empty()) {
+      std::filesystem::create_directories((dir / "scene" / beside).parent_path());
+      write_file(dir / "scene" / beside, png_rgb8(1, 1, {0, 255, 0}));
+    }
+    loaded = io::load_gltf(gltf);
+  }
+  // The texel the material shows: green from beside the scene; never red, from outside it.
+  glm::vec3 texel() const {
+    const int t = loaded.scene.materials.at(0).kd_texture;
+    return t < 0 ? glm::vec3(-1.0f) : glm::vec3(loaded.scene.textures.at(size_t(t)).texel(0, 0));
+  }
+};
+
+TEST(Texture, WindowsPathInsideTheFolderIsReadWithoutAWord) {
+  // assimp writes `.\SpiderTex.jpg`: the backslash is a folder separator.
+  for (const auto& [uri, file] : {std::pair<std::string, std::string>{".\\x.png", "x.png"},
+                                  {"maps\\x.png", "maps/x.png"},
+                                  {".\\maps%5Cx.png", "maps/x.png"}}) {
+    const WindowsPathScene s(uri, file);
+    SCOPED_TRACE(uri);
+    EXPECT_VEC3(s.texel(), 0, 1, 0);
+    EXPECT_TRUE(other_warnings(s.loaded).empty()) << uri << ::testing::PrintToString(s.loaded.warnings);
+  }
+}
+
+TEST(Texture, ImageOutsideTheFolderIsNotOpenedAndTheOneBesideTheSceneStandsIn) {
+  // The red image at ../maps/x.png exists and is never read; x.png beside the scene is.
+  for (const std::string uri : {"..\\maps\\x.png", "D:\\work\\x.png", "../maps/x.png",
+                                "file:///maps/x.png", "/maps/x.png"}) {
+    const WindowsPathScene s(uri, "x.png");
+    SCOPED_TRACE(uri);
+    EXPECT_VEC3(s.texel(), 0, 1, 0);
+    const std::vector<std::string> warnings = other_warnings(s.loaded);
+    ASSERT_EQ(warnings.size(), 1u) << uri << ::testing::PrintToString(s.loaded.warnings);
+    EXPECT_NE(warnings[0].find("scene.gltf: image 0 \"" + uri + "\""), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("\"x.png\" beside the scene"), std::string::npos) << warnings[0];
+  }
+}
+
+TEST(Texture, ImageOutsideTheFolderWithNoneBesideIsAWarningNeverARefusal) {
+  for (const std::string uri : {"..\\maps\\x.png", "D:\\work\\x.png", "../../etc/secret.png"}) {
+    const WindowsPathScene s(uri, "");
+    EXPECT_EQ(s.loaded.scene.materials.at(0).kd_texture, -1) << uri;
+    EXPECT_EQ(s.loaded.scene.triangle_count(), 1u);
+    const std::vector<std::string> warnings = other_warnings(s.loaded);
+    ASSERT_EQ(warnings.size(), 1u) << uri << ::testing::PrintToString(s.loaded.warnings);
+    EXPECT_NE(warnings[0].find("image 0 \"" + uri + "\""), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("without its texture"), std::string::npos) << warnings[0];
+  }
+}
+
+TEST(Gltf, BufferWithAWindowsPathInsideTheFolderLoads) {
+  GltfBuilder b = one_triangle();
+  ScratchDir dir;
+  write_file(dir / "data" / "scene.bin", b.bin);
+  b.doc["buffers"] = json::array({{{"uri", ".\\data\\scene.bin"}, {"byteLength", b.bin.size()}}});
+  EXPECT_EQ(io::load_gltf(b.write_gltf(dir, "win.gltf")).scene.triangle_count(), 1u);
 }
 
 TEST(Texture, UndecodableGivesWhiteAndAWarning) {
@@ -756,6 +969,18 @@ TEST(Camera, OrthographicSkippedWithWarningAndFramingAdded) {
   EXPECT_TRUE(any_warning_contains(loaded, "\"plan\""));
   ASSERT_EQ(loaded.scene.cameras.size(), 1u);
   EXPECT_EQ(loaded.scene.cameras[0].name, "framing");
+}
+
+TEST(Camera, NoCameraIsSaidWithTheExportersOption) {
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(one_triangle().write_gltf(dir));
+  EXPECT_TRUE(any_warning_contains(loaded, "scene.gltf: no camera in the scene"))
+      << ::testing::PrintToString(loaded.warnings);
+  EXPECT_TRUE(any_warning_contains(loaded, "\"Cameras\""));
+  GltfBuilder b = one_triangle();
+  b.node({{"camera", b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}})}});
+  ScratchDir dir2;
+  EXPECT_FALSE(any_warning_contains(io::load_gltf(b.write_gltf(dir2)), "no camera"));
 }
 
 TEST(Camera, FramingWhenNone) {
@@ -1089,12 +1314,19 @@ TEST(Error, FileSchemeUriIsOutsideTheFolder) {
   expect_error(b.write_gltf(dir, "file.gltf"), ErrorKind::uri_outside_folder);
 }
 
-TEST(Error, ImageUriOutsideTheFolder) {
-  // Even a texture, which would only warn when missing, is refused when it leaves the folder.
-  GltfBuilder b = one_triangle();
-  b.doc["images"] = json::array({{{"uri", "../../etc/secret.png"}}});
+TEST(Error, BufferWithAWindowsPathOutsideTheFolderIsRefusedNamingIt) {
+  // Unlike an image, a buffer has no stand-in: the scene is refused, naming the URI.
   ScratchDir dir;
-  expect_error(b.write_gltf(dir), ErrorKind::uri_outside_folder);
+  GltfBuilder b = one_triangle();
+  write_file(dir / "outside.bin", b.bin);
+  for (const std::string uri : {"..\\outside.bin", "D:\\work\\outside.bin"}) {
+    b.doc["buffers"] = json::array({{{"uri", uri}, {"byteLength", b.bin.size()}}});
+    const std::string message = expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::uri_outside_folder);
+    EXPECT_NE(message.find(uri), std::string::npos) << message;
+  }
+  b.doc["buffers"] = json::array({{{"uri", ".\\missing.bin"}, {"byteLength", b.bin.size()}}});
+  const std::string message = expect_error(b.write_gltf(dir, "sub/scene.gltf"), ErrorKind::file_missing);
+  EXPECT_NE(message.find(".\\missing.bin"), std::string::npos) << message;
 }
 
 TEST(Error, NoTriangles) {
@@ -1181,6 +1413,28 @@ TEST(DefaultLights, AddedOnlyWithoutLightsWithTheNotice) {
   ScratchDir dir3;
   const io::LoadedScene emitter = io::load_gltf(one_triangle(glowing).write_gltf(dir3));
   EXPECT_TRUE(emitter.scene.lights.empty());  // an emissive triangle is a light
+}
+
+TEST(DefaultLights, InsideARoomTheyGoInsideAndLightTheBackWall) {
+  // Outside the walls they would light nothing the camera sees. Inside: both in the room, and
+  // the key sees the back wall's centre from its front side.
+  ScratchDir dir;
+  const io::LoadedScene loaded = io::load_gltf(closed_room().write_gltf(dir));
+  ASSERT_EQ(loaded.scene.lights.size(), 2u);
+  const Bounds room = loaded.scene.bounds();
+  for (const Light& light : loaded.scene.lights) {
+    SCOPED_TRACE(light.name);
+    EXPECT_TRUE(glm::all(glm::greaterThan(light.position, room.min)) &&
+                glm::all(glm::lessThan(light.position, room.max)));
+  }
+  const Light& key = loaded.scene.lights[0];
+  EXPECT_GT(key.position.z, -3.0f + 0.5f);  // in front of the back wall (z = -3), facing +Z
+  EXPECT_GT(key.position.y, 1.5f);          // above the camera: shadows fall below what it sees
+  // A white surface R from the key shows radiance 1: I = pi R^2, R half the room's diagonal.
+  const float R = 0.5f * glm::length(room.extent());
+  EXPECT_NEAR(key.intensity.r, std::numbers::pi_v<float> * R * R, 1e-3f * R * R);
+  // The notice says how to export lights from Blender.
+  EXPECT_TRUE(any_warning_contains(loaded, "\"Punctual Lights\"")) << ::testing::PrintToString(loaded.warnings);
 }
 
 TEST(DefaultLights, KeyLightGivesRadianceOneAtTheCentreFillNone) {

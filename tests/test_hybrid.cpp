@@ -182,12 +182,12 @@ TEST_F(CornellSpheres, TheMirrorShowsTheColourBledRoom) {
            q.z < lamp_high.z + margin.z;
   };
   float lowest = 1e30f, highest = 0.0f;
-  for (const Patch& patch : p.mesh.patches)
-    if (patch.mesh == ceiling)
-      for (const uint32_t v : patch.vertices) {
-        if (above_lamp(p.mesh.vertices[v])) continue;
-        lowest = std::min(lowest, luminance(p.diffuse->field().vertex[v]));
-        highest = std::max(highest, luminance(p.diffuse->field().vertex[v]));
+  for (size_t e = 0; e < p.mesh.size(); ++e)
+    if (p.mesh.patches[e].mesh == ceiling)
+      for (size_t k = 0; k < 3; ++k) {
+        if (above_lamp(p.mesh.vertices[p.mesh.patches[e].vertices[k]])) continue;
+        lowest = std::min(lowest, luminance(p.diffuse->field().corner[3 * e + k]));
+        highest = std::max(highest, luminance(p.diffuse->field().corner[3 * e + k]));
       }
   // Radiosity's ceiling is darkest at its rim, in the corners with the walls; its range reaches
   // down about to Whitted's ambient value there, so the two models are told apart by the mean

@@ -3,20 +3,22 @@
 // the locale.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <clocale>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <sys/wait.h>
 
 #include <imgui.h>
 
-#include "app/command_language.h"
-#include "app/i18n.h"
-#include "app/label_text.h"
-#include "app/shortcuts.h"
-#include "app/ui_glyphs.h"
+#include "app/cli/command_language.h"
+#include "app/common/i18n.h"
+#include "app/common/label_text.h"
+#include "app/viewer/shortcuts.h"
+#include "app/viewer/ui_glyphs.h"
 #include "core/error.h"
 #include "support.h"
 
@@ -83,6 +85,12 @@ TEST(MoReader, ReadsWhatMsgfmtWritesInEitherByteOrder) {
     ASSERT_NE(c.find("one shot"), nullptr);  // a plural keeps its singular pair
     EXPECT_EQ(*c.find("one shot"), "un disparo");
     EXPECT_EQ(c.size(), 3u);
+    // and its forms, chosen by "plural=(n != 1)"
+    ASSERT_NE(c.find_plural("one shot", 1), nullptr);
+    EXPECT_EQ(*c.find_plural("one shot", 1), "un disparo");
+    EXPECT_EQ(*c.find_plural("one shot", 2), "{} disparos");
+    EXPECT_EQ(*c.find_plural("one shot", 0), "{} disparos");
+    EXPECT_EQ(c.find_plural("diffuse reflection", 2), nullptr);  // not a plural entry
   }
 }
 
@@ -143,6 +151,51 @@ TEST(Catalogues, SwitchAtRunTimeAndUseTheLecturesTerms) {
   EXPECT_EQ(app::tr(unknown), unknown);
 }
 
+// Counts take the language's plural form: "1 luz", "2 luces" (gettext's ngettext), never "1 luces".
+TEST(Catalogues, CountsTakeThePluralForm) {
+  i18n::set_language(Language::es);
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 1, 1), "1 luz");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 2, 2), "2 luces");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 0, 0), "0 luces");
+  EXPECT_EQ(app::trnf("ray tree of pixel ({}, {}): {} ray", "ray tree of pixel ({}, {}): {} rays", 1, 3, 4, 1),
+            "árbol de rayos del píxel (3, 4): 1 rayo");
+  i18n::set_language(Language::en);
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 1, 1), "1 light");
+  EXPECT_EQ(app::trnf("{} light", "{} lights", 3, 3), "3 lights");
+  EXPECT_EQ(app::trnf("a count no catalogue has", "{} counts no catalogue has", 2, 2), "2 counts no catalogue has");
+}
+
+// A Spanish run leaves no English in the help of any command: a line the two languages print
+// alike holds only an option's names and its values' shapes (--fog off|linear|exponential), and the
+// usage line names the scene in Spanish.
+TEST(Catalogues, TheSpanishHelpLeavesNoEnglish) {
+  const std::regex flag_only(R"(\s*(-\w, )?--[\w-]+( [A-Za-z0-9.|,{}\[\]=:+-]+)?\s*)");
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{}, {"render"}, {"compare"}, {"solvers"}, {"bench"}}) {
+    std::vector<std::string> help[2];
+    for (const char* language : {"es", "en"}) {
+      std::vector<std::string> args = command;
+      args.insert(args.end(), {"--help", "--lang", language});
+      const test::CommandResult result = test::run_luz(args);
+      EXPECT_EQ(result.exit_code, 0) << result.output;
+      std::istringstream lines(result.output);
+      for (std::string line; std::getline(lines, line);) help[language[0] == 'e' && language[1] == 'n'].push_back(line);
+    }
+    const std::string name = command.empty() ? "luz" : command[0];
+    ASSERT_GT(help[0].size(), 3u) << name;
+    for (const std::string& line : help[0]) {
+      if (line.find_first_not_of(' ') == std::string::npos) continue;
+      if (std::find(help[1].begin(), help[1].end(), line) == help[1].end()) continue;
+      EXPECT_TRUE(std::regex_match(line, flag_only)) << name << ": English left in Spanish: \"" << line << "\"";
+    }
+    for (const std::string& line : help[0]) {
+      if (line.starts_with("Uso:")) {
+        EXPECT_EQ(line.find("SCENE"), std::string::npos) << line;
+      }
+    }
+  }
+}
+
 // CLI11 writes its usage errors in English: each of its shapes comes back in the current
 // language with the names and values it quotes; a message of ours passes untouched.
 TEST(Catalogues, CliElevenUsageErrorsAreTranslatedKeepingTheirPieces) {
@@ -191,6 +244,8 @@ TEST(Catalogues, EveryTranslationTakesItsIdsArguments) {
     const Catalogue& c = i18n::catalogue(language);
     EXPECT_GT(c.size(), 100u) << i18n::language_name(language);
     for (const auto& [id, text] : c.entries()) EXPECT_EQ(fields(id), fields(text)) << id << " -> " << text;
+    for (const auto& [id, forms] : c.plurals())
+      for (const std::string& form : forms) EXPECT_EQ(fields(id), fields(form)) << id << " -> " << form;
   }
 }
 

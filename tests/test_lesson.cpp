@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/lesson.h"
+#include "app/classroom/lesson.h"
 #include "core/error.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"

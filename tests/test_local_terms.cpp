@@ -13,8 +13,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "app/inspector.h"
-#include "app/picking.h"
+#include "app/viewer/inspector.h"
+#include "app/viewer/picking.h"
 #include "gltf_fixture.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"

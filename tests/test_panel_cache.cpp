@@ -10,8 +10,8 @@
 
 #include <imgui.h>
 
-#include "app/overlays.h"
-#include "app/panel_cache.h"
+#include "app/viewer/overlays.h"
+#include "app/viewer/panel_cache.h"
 #include "imgui_headless.h"
 
 namespace luz {

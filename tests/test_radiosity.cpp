@@ -488,16 +488,15 @@ TEST(VertexColours, NodalAveragingAcrossSmoothSurfacesNotAcrossCreases) {
   const RadianceField field = RadianceField::from(mesh, B);
   EXPECT_NEAR(field.patch[0].g, 1.0f, 1e-6f);  // B / pi
   // Vertex 0 and 2 of the quad are shared by both triangles (equal areas): the mean, 2.
-  const Patch& first = mesh.patches[0];
-  EXPECT_NEAR(field.vertex[first.vertices[0]].g, 2.0f, 1e-5f);
-  EXPECT_NEAR(field.vertex[first.vertices[1]].g, 1.0f, 1e-5f);  // only triangle 0
+  EXPECT_NEAR(field.corner[0].g, 2.0f, 1e-5f);
+  EXPECT_NEAR(field.corner[1].g, 1.0f, 1e-5f);  // only triangle 0
   // The crease at x = 1: the floor's corner (1, 0, 1) keeps the floor's mean (2), the wall's
   // corner at the same place keeps the wall's value (10).
   int found = 0;
-  for (const Patch& p : mesh.patches)
-    for (const uint32_t v : p.vertices)
-      if (glm::length(mesh.vertices[v] - glm::vec3(1, 0, 1)) < 1e-6f) {
-        EXPECT_NEAR(field.vertex[v].g, p.mesh == 0 ? 2.0f : 10.0f, 1e-5f);
+  for (size_t e = 0; e < mesh.size(); ++e)
+    for (size_t k = 0; k < 3; ++k)
+      if (glm::length(mesh.vertices[mesh.patches[e].vertices[k]] - glm::vec3(1, 0, 1)) < 1e-6f) {
+        EXPECT_NEAR(field.corner[3 * e + k].g, mesh.patches[e].mesh == 0 ? 2.0f : 10.0f, 1e-5f);
         ++found;
       }
   EXPECT_EQ(found, 3);  // two floor triangles and one wall triangle
@@ -505,6 +504,63 @@ TEST(VertexColours, NodalAveragingAcrossSmoothSurfacesNotAcrossCreases) {
   EXPECT_NEAR(field.at(mesh, 0, 0, {0.0f, 0.0f}).g, 2.0f, 1e-5f);
   EXPECT_NEAR(field.at(mesh, 0, 0, {1.0f, 0.0f}).g, 1.0f, 1e-5f);
   EXPECT_NEAR(field.at(mesh, 0, 0, {0.5f, 0.0f}).g, 1.5f, 1e-5f);
+}
+
+// The display's surfaces are the geometry's, not the file's vertex sharing (SCENES.md): one mesh
+// of a floor and a wall that share the vertices of their common edge (a box exported smooth)
+// keeps each side's value at the crease, and a floor whose two triangles have their own vertices
+// (a triangle soup) shows one value at each of the corners they have in common.
+TEST(VertexColours, ACreaseKeepsItsTwoSidesAndASoupHasNoSeams) {
+  const float pi_f = std::numbers::pi_v<float>;
+  {
+    Scene scene;
+    Mesh mesh;
+    mesh.name = "smooth box edge";
+    mesh.positions = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, {1, 1, 1}, {1, 1, 0}};
+    mesh.normals.assign(6, glm::normalize(glm::vec3(1, 1, 0)));  // averaged, as Blender writes them
+    mesh.indices = {0, 1, 2, 0, 2, 3, 3, 2, 4, 3, 4, 5};            // the edge (1, 0, z) shared
+    mesh.material = add_material(scene, 0.5f);
+    scene.meshes.push_back(mesh);
+    const PatchMesh patches = PatchMesh::build(scene, 10.0f);
+    ASSERT_EQ(patches.size(), 4u);
+    const RadianceField field =
+        RadianceField::from(patches, {Rgb(2 * pi_f), Rgb(2 * pi_f), Rgb(10 * pi_f), Rgb(10 * pi_f)});
+    for (size_t e = 0; e < patches.size(); ++e)
+      for (size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(field.corner[3 * e + k].g, e < 2 ? 2.0f : 10.0f, 1e-5f) << "element " << e << " corner " << k;
+  }
+  {
+    Scene scene;
+    Mesh mesh;
+    mesh.name = "soup";
+    mesh.positions = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {0, 0, 0}, {1, 0, 1}, {1, 0, 0}};
+    mesh.indices = {0, 1, 2, 3, 4, 5};
+    mesh.material = add_material(scene, 0.5f);
+    scene.meshes.push_back(mesh);
+    const PatchMesh patches = PatchMesh::build(scene, 10.0f);
+    ASSERT_EQ(patches.size(), 2u);
+    const RadianceField field = RadianceField::from(patches, {Rgb(pi_f), Rgb(3 * pi_f)});
+    // (0, 0, 0) and (1, 0, 1) belong to both triangles: the mean, 2; the others to one.
+    for (size_t e = 0; e < 2; ++e)
+      for (size_t k = 0; k < 3; ++k) {
+        const glm::vec3 q = patches.vertices[patches.patches[e].vertices[k]];
+        const bool shared = q.x == q.z;
+        EXPECT_NEAR(field.corner[3 * e + k].g, shared ? 2.0f : e == 0 ? 1.0f : 3.0f, 1e-5f) << e << " " << k;
+      }
+  }
+}
+
+// Two materials side by side in one plane are two surfaces: a change of material stays sharp.
+TEST(VertexColours, AChangeOfMaterialIsAnEdge) {
+  Scene scene;
+  add_quad(scene, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, add_material(scene, 0.5f), "white");
+  add_quad(scene, {1, 0, 0}, {1, 0, 1}, {2, 0, 1}, {2, 0, 0}, add_material(scene, 0.1f), "dark");
+  const PatchMesh mesh = PatchMesh::build(scene, 10.0f);
+  const float pi_f = std::numbers::pi_v<float>;
+  const RadianceField field = RadianceField::from(mesh, {Rgb(pi_f), Rgb(pi_f), Rgb(4 * pi_f), Rgb(4 * pi_f)});
+  for (size_t e = 0; e < mesh.size(); ++e)
+    for (size_t k = 0; k < 3; ++k)
+      EXPECT_NEAR(field.corner[3 * e + k].g, mesh.patches[e].mesh == 0 ? 1.0f : 4.0f, 1e-5f);
 }
 
 

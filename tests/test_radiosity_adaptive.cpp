@@ -346,6 +346,25 @@ TEST(AdaptiveSubdivision, ASolverRefusesAMeshAnotherHasRefined) {
   EXPECT_THROW(second.step(), Error);
 }
 
+// Subdivision respects its element budget: the shadow's outline wants hundreds of cuts (above),
+// a budget of 100 stops them with at most 100 elements added, and says so.
+TEST(AdaptiveSubdivision, StopsAtItsElementBudgetAndSaysSo) {
+  const Scene scene = shadowed_floor(0.0f);
+  RadiosityOptions options = adaptive_options();
+  options.refine_budget = 100;
+  PatchMesh mesh = PatchMesh::build(scene, options);
+  const size_t built = mesh.size();
+  ProgressiveSolver solver(scene, mesh, options);
+  size_t largest = built;
+  while (solver.step()) largest = std::max(largest, mesh.size());
+  ASSERT_GT(solver.refinement_passes(), 0);
+  EXPECT_LE(largest, built + 100);
+  EXPECT_GT(mesh.size(), built + 50) << "it cuts up to the budget";
+  size_t said = 0;
+  for (const std::string& w : solver.warnings()) said += w.find("its budget of 100 more") != std::string::npos;
+  EXPECT_EQ(said, 1u) << "once";
+}
+
 TEST(AdaptiveSubdivision, BadSettingsAreRefused) {
   RadiosityOptions options;
   options.refine_threshold = 0.0f;
@@ -358,6 +377,11 @@ TEST(AdaptiveSubdivision, BadSettingsAreRefused) {
   options.refine_levels = kMaxRefineLevels + 1;
   EXPECT_THROW(options.validate(), Error);
   options.refine_levels = 4;
+  options.refine_budget = -1;
+  EXPECT_THROW(options.validate(), Error);
+  options.refine_budget = kMaxRefineBudget + 1;
+  EXPECT_THROW(options.validate(), Error);
+  options.refine_budget = 0;
   EXPECT_NO_THROW(options.validate());
 }
 

@@ -206,5 +206,99 @@ TEST(RayFormFactors, APointLightDeliversWhatTheCubeOfItemBuffersDelivers) {
   EXPECT_NEAR(rays, cube, 0.01 * cube);
 }
 
+// ---- A directional light (a sun: SCENES.md, parallel light) -----------------------------------
+// A sun of E_perp W/m^2 travelling along `direction`.
+Light sun(float E, glm::vec3 direction) {
+  Light light;
+  light.name = "sun";
+  light.type = LightType::directional;
+  light.intensity = Rgb(E);
+  light.direction = glm::normalize(direction);
+  return light;
+}
+
+// A 2 x 2 m floor at y = 0 facing up, reflectance rho.
+Scene sunlit_floor(float rho, const Light& light) {
+  Scene scene;
+  add_quad(scene, {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, add_material(scene, rho), "floor");
+  scene.lights.push_back(light);
+  return scene;
+}
+
+// Each element receives E_perp cos(theta): a floor facing the sun gets E (B = rho E, nothing else
+// in the scene to reflect it back), tilted by theta E cos(theta), and a sun below the floor
+// (its back) nothing; whatever the form-factor method (a sun's rays are cast for all of them).
+TEST(SunLight, AFloorReceivesEPerpTimesCosTheta) {
+  const float E = 2.0f, rho = 0.5f;
+  for (const FormFactorMethod method : {FormFactorMethod::rays, FormFactorMethod::hemicube}) {
+    for (const double degrees : {0.0, 60.0}) {
+      const double theta = degrees * std::numbers::pi / 180.0;
+      const Scene scene = sunlit_floor(rho, sun(E, {float(std::sin(theta)), -float(std::cos(theta)), 0.0f}));
+      RadiosityOptions options;
+      options.form_factors = method;
+      options.hemicube_res = 64;
+      options.patch_size = 0.5f;
+      PatchMesh mesh = PatchMesh::build(scene, options);
+      ProgressiveSolver solver(scene, mesh, options);
+      EXPECT_TRUE(solver.warnings().empty());
+      ASSERT_EQ(solver.lights_left(), 1u);
+      solver.step();  // the sun's one shot
+      const double expected = double(E) * std::cos(theta);
+      // What the sun sent is E_perp over its beam's cross-section: the floor took E A cos(theta)
+      // of it (A = 4 m^2), the rest escaped, and the balance holds.
+      const EnergyTally t = solver.energy();
+      EXPECT_NEAR(t.absorbed + t.unshot + t.escaped, t.emitted, 1e-6 * t.emitted);
+      EXPECT_NEAR(t.emitted - t.escaped, expected * 4.0, 1e-4 * expected) << degrees << " degrees: delivered";
+      EXPECT_GE(t.escaped, 0.0) << "the beam holds at least what arrives";
+      while (solver.step()) {}
+      for (size_t e = 0; e < mesh.size(); ++e) {
+        ASSERT_NEAR(mean(solver.irradiance()[e]), expected, 1e-4 * expected) << degrees << " degrees, element " << e;
+        ASSERT_NEAR(mean(solver.displayed()[e]), rho * expected, 1e-4 * expected) << degrees << " degrees";
+      }
+    }
+  }
+  const Scene below = sunlit_floor(rho, sun(E, {0.0f, 1.0f, 0.0f}));
+  RadiosityOptions options;
+  PatchMesh mesh = PatchMesh::build(below, options);
+  ProgressiveSolver solver(below, mesh, options);
+  solver.step();
+  for (size_t e = 0; e < mesh.size(); ++e) ASSERT_EQ(mean(solver.irradiance()[e]), 0.0) << "its back faces the sun";
+}
+
+// Where a ray toward the sun is blocked the element gets nothing: a roof over the floor's left
+// half (x < 0) at 0.5 m, the sun straight above: the floor's left half is dark to its edge, its
+// right half lit, up to the elements the shadow's edge crosses.
+TEST(SunLight, AnOccludedElementReceivesNothing) {
+  const float E = 3.0f;
+  Scene scene = sunlit_floor(0.5f, sun(E, {0.0f, -1.0f, 0.0f}));
+  add_quad(scene, {-1.2f, 0.5f, -1.2f}, {-1.2f, 0.5f, 1.2f}, {0.0f, 0.5f, 1.2f}, {0.0f, 0.5f, -1.2f},
+           add_material(scene, 0.0f), "roof");
+  RadiosityOptions options;
+  options.patch_size = 0.25f;
+  options.meshing = Meshing::uniform;
+  PatchMesh mesh = PatchMesh::build(scene, options);
+  ProgressiveSolver solver(scene, mesh, options);
+  solver.step();
+  size_t dark = 0, lit = 0;
+  for (size_t e = 0; e < mesh.size(); ++e) {
+    const Patch& p = mesh.patches[e];
+    if (p.mesh != 0) continue;  // the roof
+    float lo = 1e9f, hi = -1e9f;
+    for (const uint32_t v : p.vertices) {
+      lo = std::min(lo, mesh.vertices[v].x);
+      hi = std::max(hi, mesh.vertices[v].x);
+    }
+    if (hi < -1e-4f) {
+      EXPECT_EQ(mean(solver.irradiance()[e]), 0.0) << "element " << e << " under the roof";
+      ++dark;
+    } else if (lo > 1e-4f) {
+      EXPECT_NEAR(mean(solver.irradiance()[e]), E, 1e-4 * E) << "element " << e << " in the sun";
+      ++lit;
+    }
+  }
+  EXPECT_GT(dark, 10u);
+  EXPECT_GT(lit, 10u);
+}
+
 }  // namespace
 }  // namespace luz

@@ -3,8 +3,8 @@
 // label, and the label has ink.
 #include <gtest/gtest.h>
 
-#include "app/i18n.h"
-#include "app/render_grid.h"
+#include "app/common/i18n.h"
+#include "app/cli/render_grid.h"
 #include "io/image_io.h"
 #include "support.h"
 

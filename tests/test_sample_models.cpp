@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/model_registry.h"
-#include "app/render_command.h"
+#include "app/common/model_registry.h"
+#include "app/cli/render_command.h"
 #include "core/error.h"
 #include "core/scene.h"
 #include "io/gltf_loader.h"
@@ -58,41 +58,29 @@ const std::map<std::string, Refusal> kRefused = {
     {"wrongTypes/badArray.gltf",
      {"no triangles to draw in the default scene", "its mesh's primitives are not an array, so it has none"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_00.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 0)",
-      "only points: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its points (mode 0); only triangles are drawn",
+      "only points: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_01.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 1)",
-      "only lines: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its lines (mode 1); only triangles are drawn",
+      "only lines: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_02.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 2)",
-      "only line loops: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its line loops (mode 2); only triangles are drawn",
+      "only line loops: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_03.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 3)",
-      "only line strips: Luz draws triangle lists (SCENES.md)"}},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 5)",
-      "only triangle strips: Luz draws triangle lists (SCENES.md)"}},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 6)",
-      "only triangle fans: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its line strips (mode 3); only triangles are drawn",
+      "only line strips: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_07.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 0)",
-      "only points: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its points (mode 0); only triangles are drawn",
+      "only points: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_08.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 1)",
-      "only lines: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its lines (mode 1); only triangles are drawn",
+      "only lines: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_09.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 2)",
-      "only line loops: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its line loops (mode 2); only triangles are drawn",
+      "only line loops: Luz draws triangles (SCENES.md)"}},
     {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_10.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 3)",
-      "only line strips: Luz draws triangle lists (SCENES.md)"}},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_11.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 5)",
-      "only triangle strips: Luz draws triangle lists (SCENES.md)"}},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_12.gltf",
-     {"no triangles to draw in the default scene; mesh 0: skipped its primitives that are not triangle lists (mode 6)",
-      "only triangle fans: Luz draws triangle lists (SCENES.md)"}},
+     {"no triangles to draw in the default scene; mesh 0: skipped its line strips (mode 3); only triangles are drawn",
+      "only line strips: Luz draws triangles (SCENES.md)"}},
 };
 
 std::vector<std::string> model_files() {

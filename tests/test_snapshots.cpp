@@ -140,8 +140,8 @@ TEST_P(RadiositySnapshot, MatchesItsGolden) {
   expect_golden(render(dir, scene, "radiosity", ".png", radiosity_flags(scene)), scene + "-radiosity");
 }
 
-// The slide-19 plate is for the local models (its sun is not shot, and its spheres alone make
-// some 17k patches): radiosity's snapshots are the lecture scenes.
+// The slide-19 plate is for the local models (its spheres alone make some 17k patches):
+// radiosity's snapshots are the lecture scenes.
 constexpr const char* kRadiosityScenes[] = {"cornell_box", "phong_spheres", "whitted", "cornell_spheres"};
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, RadiositySnapshot, testing::ValuesIn(kRadiosityScenes));
 

@@ -20,7 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "app/panes.h"
+#include "app/viewer/panes.h"
 #include "support.h"
 #include "viewer_support.h"
 

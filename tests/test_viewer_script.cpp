@@ -1,6 +1,7 @@
 // The viewer's script language and shortcut table, without a window: a bad line is refused
 // with FILE:LINE before anything opens, and the runner paces commands over frames.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,11 +13,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/model_registry.h"
-#include "app/orbit_camera.h"
-#include "app/script.h"
-#include "app/shortcuts.h"
-#include "app/widget_registry.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/orbit_camera.h"
+#include "app/script/script.h"
+#include "app/viewer/shortcuts.h"
+#include "app/viewer/widget_registry.h"
 #include "core/error.h"
 #include "support.h"
 
@@ -81,6 +82,59 @@ TEST(ViewerScript, WaitAndScreenshotsEndTheFrame) {
   ASSERT_TRUE(runner.step(target, error));
   EXPECT_EQ(target.done, (std::vector<std::string>{"key", "key", "screenshot", "key", "quit"}));
   EXPECT_TRUE(runner.finished());
+}
+
+// A tour paced to talk over: `wait 2s` lasts two seconds however many frames pass meanwhile (an
+// idle window draws few, a trace many), and `wait 500ms` half of one.
+TEST(ViewerScript, WaitsInSecondsLastThatLongWhateverTheFrames) {
+  using namespace std::chrono_literals;
+  const ScriptRunner::Clock::time_point start{};
+  ScriptRunner::Clock::time_point now = start;
+  ScriptRunner runner(parse_script_text("key 1\nwait 2s\nkey 2\nwait 500ms\nquit\n", "d.txt"), [&now] { return now; });
+  Recorder target;
+  std::string error;
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(target.done, (std::vector<std::string>{"key"}));
+  EXPECT_EQ(runner.waiting_until(), start + 2s);
+  for (int frame = 0; frame < 300; ++frame) {  // 300 frames in 1.5 s: still waiting
+    now += 5ms;
+    ASSERT_TRUE(runner.step(target, error));
+  }
+  now = start + 1999ms;
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(target.done.size(), 1u);
+  now = start + 2s;  // one frame when the time is up
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(target.done, (std::vector<std::string>{"key", "key"}));
+  EXPECT_EQ(runner.waiting_until(), start + 2500ms);
+  now = start + 2499ms;
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_FALSE(runner.finished());
+  now = start + 2500ms;
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(target.done.back(), "quit");
+  EXPECT_TRUE(runner.finished());
+  EXPECT_FALSE(runner.waiting_until());
+}
+
+TEST(ViewerScript, WaitTakesFramesSecondsOrMilliseconds) {
+  EXPECT_EQ(parse_script_text("wait 30\nwait 2s\nwait 1.5s\nwait 500ms\nwait 0s\n", "d.txt").commands.size(), 5u);
+  for (const char* bad : {"wait 2h\n", "wait s\n", "wait 1.5ms\n", "wait -2s\n", "wait two\n"})
+    EXPECT_EQ(error_of(bad), "demo.txt:1: `wait` takes frames (30), seconds (2s) or milliseconds (500ms)") << bad;
+}
+
+// The README's tour is paced to talk over: most of a minute of waits in seconds, none in frames
+// (a frame count plays at whatever speed the machine draws).
+TEST(ViewerScript, TheToursWaitsAreInSeconds) {
+  const Script tour = parse_script(test::scene_dir().parent_path() / "docs" / "tour.txt");
+  std::chrono::milliseconds talk{0};
+  for (const ScriptCommand& c : tour.commands)
+    if (c.verb == "wait") {
+      const std::optional<WaitLength> length = parse_wait(c.args[0]);
+      ASSERT_TRUE(length && length->time) << "line " << c.line << ": wait " << c.args[0];
+      talk += *length->time;
+    }
+  EXPECT_GE(talk, std::chrono::seconds(45));
 }
 
 TEST(ViewerScript, AFailingCommandNamesItsLine) {

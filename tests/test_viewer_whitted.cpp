@@ -83,6 +83,14 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   for (const char* kind : {"shadow", "reflected", "transmitted"}) EXPECT_GT(traced["rays"][kind].get<long>(), 0) << kind;
 }
 
+// `wait-until trace-done` (the traced view answers the condition) returns once every tile landed.
+TEST_F(ViewerWhitted, WaitUntilTraceDoneWaitsForTheLastTile) {
+  const nlohmann::json done = json_of(file("until-done.json"));
+  EXPECT_EQ(done["phase"], "done");
+  EXPECT_GT(done["tiles"][1].get<int>(), 0);
+  EXPECT_EQ(done["tiles"][0], done["tiles"][1]);
+}
+
 // The script holds the trace (`trace --held`: no tile lands until it is cancelled), so on any
 // machine the camera moves while it runs.
 TEST_F(ViewerWhitted, MovingTheCameraCancelsTheTraceAndReturnsToTheRasterView) {

@@ -11,22 +11,22 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/bench_command.h"
-#include "app/command_language.h"
-#include "app/compare_command.h"
-#include "app/handout_command.h"
-#include "app/i18n.h"
-#include "app/lesson.h"
-#include "app/man_page.h"
-#include "app/model_registry.h"
-#include "app/panes.h"
-#include "app/bench_local.h"
-#include "app/render_command.h"
-#include "app/render_flags.h"
-#include "app/viewer_settings.h"
-#include "app/solvers_command.h"
-#include "app/script.h"
-#include "app/viewer.h"
+#include "app/cli/bench/bench_command.h"
+#include "app/cli/command_language.h"
+#include "app/cli/compare_command.h"
+#include "app/handout/handout_command.h"
+#include "app/common/i18n.h"
+#include "app/classroom/lesson.h"
+#include "app/cli/man_page.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/panes.h"
+#include "app/cli/bench/bench_local.h"
+#include "app/cli/render_command.h"
+#include "app/cli/render_flags.h"
+#include "app/viewer/viewer_settings.h"
+#include "app/cli/solvers_command.h"
+#include "app/script/script.h"
+#include "app/viewer/viewer.h"
 #include "core/error.h"
 #include "core/resources.h"
 #include "core/version.h"
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
   std::optional<std::string> lesson_file;
   app.add_option("--lesson", lesson_file, tr("Open a lesson (default: lessons/sintesis.json) at its first step"))
       ->expected(0, 1)->default_str("");
-  app.add_option("SCENE", viewer.scene, tr("glTF scene for the viewer"));
+  app.add_option(tr("SCENE"), viewer.scene, tr("glTF scene for the viewer"));
   app.add_option("--script", script_file,
                  tr("Run the viewer from a script of commands (key, click, screenshot, ...; see README)"));
   app.add_option_function<std::string>(
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
   CLI::App* solvers = app.add_subcommand(
       "solvers", tr("Slide 36: Jacobi, Gauss-Seidel and Southwell on the full form-factor matrix, beside "
                     "slide 39's shooting; writes their convergence curves"));
-  solvers->add_option("SCENE", solvers_settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
+  solvers->add_option(tr("SCENE"), solvers_settings.scene, tr("glTF 2.0 scene (.gltf or .glb)"))->required();
   solvers->add_option("--csv", solvers_settings.csv,
                       tr("Curves as CSV: method,iteration,rows,seconds,residual,error"))->required();
   solvers->add_option("--png", solvers_settings.png, tr("Plot of the curves (residual and error against rows)"));
@@ -148,16 +148,18 @@ int main(int argc, char** argv) {
       },
       trf("Hemicube resolution ({} .. {}, even; default {})", luz::kMinHemicubeRes,
           luz::kMaxHemicubeRes, solvers_settings.hemicube_res))
-      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes));
+      ->type_name("INT")
+      ->check(CLI::Range(luz::kMinHemicubeRes, luz::kMaxHemicubeRes).description(""));
   solvers->add_option("--form-factors", solvers_settings.form_factors,
                       tr("analytic (Lambert's contour integral, the hemicube for visibility: rows and shot columns "
                          "reciprocal) or hemicube (both from the hemicube)"))
       ->transform(CLI::CheckedTransformer(std::map<std::string, luz::FormFactorMethod>{
-          {"analytic", luz::FormFactorMethod::analytic}, {"hemicube", luz::FormFactorMethod::hemicube}}))
+          {"analytic", luz::FormFactorMethod::analytic}, {"hemicube", luz::FormFactorMethod::hemicube}}).description(""))
+      ->type_name("analytic|hemicube")
       ->capture_default_str();
   solvers->add_option("--iterations", solvers_settings.iterations,
                       tr("Jacobi and Gauss-Seidel sweeps; Southwell and shooting use as many rows"))
-      ->check(CLI::Range(1, 10000))->capture_default_str();
+      ->type_name("1..10000")->check(CLI::Range(1, 10000).description(""))->capture_default_str();
   solvers->add_flag("-q,--quiet", solvers_settings.quiet, tr("Print nothing on success"));
 
   luz::app::WhittedBenchSettings bench_settings;

@@ -30,14 +30,27 @@ std::string Camera::to_string() const {
                      "yfov {:.3g} rad]", name, p.x, p.y, p.z, f.x, f.y, f.z, yfov);
 }
 
+float Camera::framing_elevation(const Bounds& bounds) {
+  const glm::vec3 e = bounds.extent();
+  const float wide = std::max(e.x, e.z);
+  if (!(wide > 0.0f)) return 0.0f;
+  // Height over width: 0 for a ground plane, 1/2 or more for anything as tall as half its width.
+  const float flatness = std::clamp(e.y / wide, 0.0f, 0.5f);
+  return kMaxFramingElevation * (1.0f - 2.0f * flatness);
+}
+
 Camera Camera::framing(const Bounds& bounds) {
   Camera camera;
   camera.name = "framing";
   const glm::vec3 centre = bounds.centre();
   const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
-  // Far enough back that the bounding sphere fits the vertical field of view.
+  // Far enough back that the bounding sphere fits the vertical field of view, from +Z raised by
+  // the elevation about +X (a flat, wide scene is seen from above, not edge-on).
   const float distance = radius / std::sin(0.5f * camera.yfov);
-  camera.to_world = glm::translate(glm::mat4(1.0f), centre + glm::vec3(0, 0, distance));
+  const float elevation = framing_elevation(bounds);
+  camera.to_world = glm::translate(glm::mat4(1.0f), centre) *
+                    glm::rotate(glm::mat4(1.0f), -elevation, glm::vec3(1, 0, 0)) *
+                    glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, distance));
   camera.znear = std::max(distance - radius, distance * 1e-3f) * 0.5f;
   camera.zfar = distance + 2.0f * radius;
   return camera;

@@ -25,8 +25,14 @@ struct Camera {
   glm::mat4 projection(float image_aspect, float fallback_far) const;
   std::string to_string() const;
 
-  // SCENES.md: a scene without a camera gets one framing its bounding box from +Z.
+  // SCENES.md: a scene without a camera gets one framing its bounding box from +Z, raised by
+  // framing_elevation() so that a flat, wide scene is seen from above rather than edge-on.
   static Camera framing(const Bounds& bounds);
+  // The angle above the horizon of the framing camera's view: kMaxFramingElevation for a flat
+  // box (height 0 against the larger of its width and depth), falling linearly to 0 for a box
+  // at least half as tall as it is wide (so a box, a figure or an upright plane is seen from +Z).
+  static float framing_elevation(const Bounds& bounds);
+  static constexpr float kMaxFramingElevation = 0.7853982f;  // 45 degrees
 };
 
 }  // namespace luz

@@ -39,10 +39,25 @@ PictureKey picture_key(const Image& picture) {
   return key;
 }
 
-std::optional<float> fitted_exposure(const PictureKey& key) {
-  if (key.lit == 0) return std::nullopt;
+namespace {
+// The fit before the bound.
+float unbounded_fit(const PictureKey& key) {
   // + 0: a fit of -0.0 would print as "-0 EV".
   return float(std::round(10.0 * std::log2(kMiddleGrey / key.log_average)) / 10.0) + 0.0f;
+}
+}  // namespace
+
+std::optional<float> fitted_exposure(const PictureKey& key) {
+  if (key.lit == 0) return std::nullopt;
+  return std::min(unbounded_fit(key), kMaxFittedExposure);
+}
+
+bool almost_no_light(const PictureKey& key) { return key.lit > 0 && unbounded_fit(key) > kMaxFittedExposure; }
+
+std::string almost_no_light_note(const PictureKey& key) {
+  return i18n::trf("the picture has almost no light (its mid-tones call for {:+.1f} EV): the exposure "
+                   "stops at {:+g} EV; are the scene's lights on and in view?",
+                   unbounded_fit(key), kMaxFittedExposure);
 }
 
 std::string exposure_problem(const Image& picture, float ev, const std::string& photometric_hint) {
@@ -80,8 +95,8 @@ std::string exposure_problem(const Image& picture, float ev, const std::string& 
 std::string photometric_hint(const Scene& scene) {
   const bool punctual = !scene.lights.empty() && !scene.default_lights;
   if (!punctual || scene.generator.find("Blender") == std::string::npos) return {};
-  return i18n::trf("{} writes lights in candela, 683 times the W/sr Luz reads, unless its Lighting Mode is "
-                   "Unitless",
+  return i18n::trf("{} writes lights in candela: in its Lighting Mode \"Standard\" 683 times the W/sr Luz "
+                   "reads, in \"Raw\" its point and spot lights 4 pi times; \"Unitless\" writes W/sr",
                    scene.generator);
 }
 

@@ -25,10 +25,20 @@ struct PictureKey {
 };
 PictureKey picture_key(const Image& picture);
 
+// The most the fit raises the exposure: +16 EV, 65536 times. A picture that calls for more has
+// almost no light (its lights off or hidden, an emitter whose texture is black where it is seen):
+// exposing its faint remains by 2^31 shows rounding noise as white blobs, so the fit stops here
+// and says so (almost_no_light).
+inline constexpr float kMaxFittedExposure = 16.0f;
+
 // The exposure, in EV, that shows the lit pixels' log-average luminance as middle grey:
 // log2(0.18 / key), rounded to a tenth of an EV so that it can be typed back (--exposure, the
-// panel). None when nothing is lit.
+// panel), and at most kMaxFittedExposure. None when nothing is lit.
 std::optional<float> fitted_exposure(const PictureKey& key);
+// Whether the picture calls for more than kMaxFittedExposure: it has almost no light.
+bool almost_no_light(const PictureKey& key);
+// The sentence that says so, for the warning of --exposure auto and the viewer's note.
+std::string almost_no_light_note(const PictureKey& key);
 
 // How far `ev` is from the fitted exposure before the picture counts as badly exposed: 4 EV,
 // sixteen times too bright or too dark. The shipped scenes, dim rooms lit by one or two lamps,
@@ -45,7 +55,8 @@ std::string exposure_problem(const Image& picture, float ev, const std::string& 
 // That hint for a scene whose punctual lights are likely photometric: those of Blender's glTF
 // exporter, whose default Lighting Mode ("Standard") writes a lamp of P watts as P / 4 pi x 683
 // candela (io_scene_gltf2, PBR_WATTS_TO_LUMENS), where its "Unitless" mode writes the P / 4 pi
-// W/sr Luz reads. Empty for any other scene.
+// W/sr Luz reads, and its "Raw" mode writes the P watts themselves as candela, 4 pi times the
+// W/sr. Empty for any other scene.
 std::string photometric_hint(const Scene& scene);
 
 }  // namespace luz

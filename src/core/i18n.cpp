@@ -1,5 +1,6 @@
 #include "core/i18n.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
@@ -78,7 +79,18 @@ Catalogue Catalogue::parse(std::string_view bytes, const std::string& name) {
     // A plural entry is "singular\0plural" -> "form0\0form1...": keep the singular pair, which
     // is how tr() is called.
     std::string text = string_at(translations, i);
-    if (const size_t nul = id.find('\0'); nul != std::string::npos) id.resize(nul);
+    if (const size_t nul = id.find('\0'); nul != std::string::npos) {
+      id.resize(nul);
+      std::vector<std::string> forms;
+      for (size_t from = 0;;) {
+        const size_t end = text.find('\0', from);
+        forms.push_back(text.substr(from, end == std::string::npos ? std::string::npos : end - from));
+        if (end == std::string::npos) break;
+        from = end + 1;
+      }
+      if (std::none_of(forms.begin(), forms.end(), [](const std::string& f) { return f.empty(); }))
+        catalogue.plurals_.emplace(id, std::move(forms));
+    }
     if (const size_t nul = text.find('\0'); nul != std::string::npos) text.resize(nul);
     if (!text.empty()) catalogue.entries_.emplace(std::move(id), std::move(text));
   }
@@ -96,6 +108,13 @@ Catalogue Catalogue::read(const fs::path& file) {
 const std::string* Catalogue::find(std::string_view id) const {
   const auto it = entries_.find(std::string(id));
   return it == entries_.end() ? nullptr : &it->second;
+}
+
+const std::string* Catalogue::find_plural(std::string_view singular, unsigned long n) const {
+  const auto it = plurals_.find(std::string(singular));
+  if (it == plurals_.end()) return nullptr;
+  const size_t form = n != 1 ? 1 : 0;
+  return form < it->second.size() ? &it->second[form] : nullptr;
 }
 
 // ---- the program's catalogues ------------------------------------------------------------
@@ -132,6 +151,11 @@ Language language() { return current.load(); }
 const char* tr(const char* id) {
   const std::string* text = catalogue(language()).find(id);
   return text ? text->c_str() : id;
+}
+
+const char* trn(const char* singular, const char* plural, unsigned long n) {
+  const std::string* text = catalogue(language()).find_plural(singular, n);
+  return text ? text->c_str() : n == 1 ? singular : plural;
 }
 
 }  // namespace luz::i18n

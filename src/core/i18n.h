@@ -13,6 +13,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -42,11 +43,17 @@ public:
 
   // The translation, or nullptr when the id is not there (or is there untranslated).
   const std::string* find(std::string_view id) const;
+  // A plural entry's form for the count n (gettext's ngettext), by the rule both catalogues
+  // declare, "nplurals=2; plural=(n != 1)"; nullptr when the singular id has no plural entry.
+  const std::string* find_plural(std::string_view singular, unsigned long n) const;
   size_t size() const { return entries_.size(); }
   const std::unordered_map<std::string, std::string>& entries() const { return entries_; }
+  // The plural entries: singular id -> its forms (the singular's is in entries() too).
+  const std::unordered_map<std::string, std::vector<std::string>>& plurals() const { return plurals_; }
 
 private:
   std::unordered_map<std::string, std::string> entries_;
+  std::unordered_map<std::string, std::vector<std::string>> plurals_;
 };
 
 // The catalogue of a language as the program uses it (read once, kept for the whole run, so
@@ -66,6 +73,16 @@ const char* tr(const char* id);
 template <typename... Args>
 std::string trf(const char* id, Args&&... args) {
   return fmt::format(fmt::runtime(tr(id)), std::forward<Args>(args)...);
+}
+
+// ngettext: the current language's form of a message for the count n ("1 light", "2 lights";
+// "1 luz", "2 luces"), or the English one when the catalogue lacks it. xgettext extracts both ids.
+const char* trn(const char* singular, const char* plural, unsigned long n);
+
+// trn's form, formatted: trnf("{} light", "{} lights", n, n).
+template <typename... Args>
+std::string trnf(const char* singular, const char* plural, unsigned long n, Args&&... args) {
+  return fmt::format(fmt::runtime(trn(singular, plural, n)), std::forward<Args>(args)...);
 }
 
 // Marks a message id where it is written, in a constant table, for xgettext (gettext's

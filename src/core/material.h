@@ -19,6 +19,7 @@ struct Material {
   float ior = 1.5f;     // index of refraction eta
   Rgb emission{0.0f};   // emitted radiance Le
   int kd_texture = -1;  // index into Scene::textures modulating kd, or -1
+  int emission_texture = -1;  // index into Scene::textures modulating Le (emissiveTexture), or -1
 
   bool is_emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
   std::string to_string() const;

@@ -32,6 +32,38 @@ int Scene::shown_texture(const Mesh& mesh, const Material& material) const {
   return t >= 0 && size_t(t) < textures.size() && !mesh.uvs.empty() ? t : -1;
 }
 
+int Scene::shown_emission_texture(const Mesh& mesh, const Material& material) const {
+  const int t = material.emission_texture;
+  return t >= 0 && size_t(t) < textures.size() && !mesh.uvs.empty() ? t : -1;
+}
+
+Rgb Scene::emission_at(int mesh_index, size_t triangle, glm::vec2 barycentrics) const {
+  const Mesh& mesh = meshes[size_t(mesh_index)];
+  const Material& material = materials[size_t(mesh.material)];
+  const int t = shown_emission_texture(mesh, material);
+  if (t < 0) return material.emission;
+  return material.emission * textures[size_t(t)].sample(mesh.uv_at(triangle, barycentrics));
+}
+
+// The mean by the midpoint rule on a regular grid: the part is cut into kCuts^2 triangles of equal
+// area and Le is read at each one's centroid. Exact for a uniform texture; for a bilinear
+// texture, exact but for the cells a texel's kink crosses.
+Rgb Scene::mean_emission(int mesh_index, size_t triangle, const std::array<glm::vec2, 3>& corners) const {
+  const Mesh& mesh = meshes[size_t(mesh_index)];
+  const Material& material = materials[size_t(mesh.material)];
+  if (shown_emission_texture(mesh, material) < 0) return material.emission;
+  constexpr int kCuts = 8;
+  const glm::vec2 a = corners[0], du = (corners[1] - a) / float(kCuts), dv = (corners[2] - a) / float(kCuts);
+  Rgb sum(0.0f);
+  for (int j = 0; j < kCuts; ++j)
+    for (int i = 0; i + j < kCuts; ++i) {
+      const glm::vec2 cell = a + float(i) * du + float(j) * dv;
+      sum += emission_at(mesh_index, triangle, cell + (du + dv) / 3.0f);  // the cell pointing up
+      if (i + j < kCuts - 1) sum += emission_at(mesh_index, triangle, cell + 2.0f * (du + dv) / 3.0f);
+    }
+  return sum / float(kCuts * kCuts);
+}
+
 Rgb Mesh::colour_at(size_t triangle, const glm::vec2& barycentrics) const {
   if (colors.empty()) return Rgb(1.0f);
   const float u = barycentrics.x, v = barycentrics.y;
@@ -83,7 +115,9 @@ void Scene::find_area_lights() {
       light.centroid = (a + b + c) / 3.0f;
       light.normal = cross / twice_area;  // counter-clockwise front face, as glTF
       light.area = 0.5f * twice_area;
-      light.radiance = material.emission;
+      // An emissive texture: the triangle emits its mean; a black part of it is no light.
+      light.radiance = mean_emission(int(m), t, {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1)});
+      if (!(light.radiance.r > 0.0f || light.radiance.g > 0.0f || light.radiance.b > 0.0f)) continue;
       area_lights.push_back(light);
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
 // The scene every model reads (SCENES.md): world-space triangle meshes, materials, textures,
 // punctual lights, emissive triangles as area lights, cameras and the scene-wide settings.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -91,6 +92,15 @@ struct Scene {
   // The index in `textures` of the kd texture `mesh` shows with `material`, or -1: none, or the
   // mesh has no TEXCOORD_0 to place it by. Every model shows a texture by this rule.
   int shown_texture(const Mesh& mesh, const Material& material) const;
+  // The same for the emissive texture, which multiplies Le.
+  int shown_emission_texture(const Mesh& mesh, const Material& material) const;
+  // Le at barycentrics (u, v) of triangle `triangle` of meshes[mesh]: the material's emission
+  // times the emissive texel there (what the local models, Whitted and the path tracer show).
+  Rgb emission_at(int mesh, size_t triangle, glm::vec2 barycentrics) const;
+  // The mean of Le over the part of that triangle whose corners have barycentrics `corners`
+  // (the whole triangle: (0, 0), (1, 0), (0, 1)): what radiosity shoots from an element and what
+  // an area light emits.
+  Rgb mean_emission(int mesh, size_t triangle, const std::array<glm::vec2, 3>& corners) const;
   std::string to_string() const;
 };
 

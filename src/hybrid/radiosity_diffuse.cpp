@@ -7,16 +7,16 @@ namespace luz::hybrid {
 
 RadiosityDiffuse::RadiosityDiffuse(const PatchMesh& mesh, RadianceField field)
     : mesh_(mesh), field_(std::move(field)) {
-  assert(field_.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
+  assert(field_.corner.size() == 3 * mesh_.size() && "the field belongs to another mesh");
 }
 
 void RadiosityDiffuse::update(RadianceField field) {
-  assert(field.vertex.size() == mesh_.vertices.size() && "the field belongs to another mesh");
+  assert(field.corner.size() == 3 * mesh_.size() && "the field belongs to another mesh");
   field_ = std::move(field);
 }
 
 Rgb RadiosityDiffuse::diffuse_radiance(int mesh, int triangle, glm::vec2 barycentrics) const {
-  // B/pi at the hit, Gouraud-interpolated from the patch's vertices (nodal averages), with the
+  // B/pi at the hit, Gouraud-interpolated from the element's corners (nodal averages), with the
   // texture's detail, as the radiosity picture shows that point.
   return field_.at(mesh_, mesh, triangle, barycentrics) * mesh_.detail.at(mesh, triangle, barycentrics);
 }

@@ -2,8 +2,8 @@
 //
 // [SECTION] Accessors: every read is bounds-checked here, because tinygltf 2.7 checks neither that
 //           an accessor fits its bufferView nor that a bufferView fits its buffer.
-// [SECTION] Primitives: triangles only, flattened by the node's world matrix, flat normals when
-//           the file has none, zero-area triangles dropped.
+// [SECTION] Primitives: triangles (lists, strips and fans), flattened by the node's world matrix,
+//           flat normals when the file has none, zero-area triangles dropped.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -362,6 +362,38 @@ bool is_degenerate(const glm::vec3& e1, const glm::vec3& e2) {
   return lhs <= rhs;
 }
 
+// glTF 2.0 "Topology types": triangle i of a strip is (v_i, v_{i+1+i%2}, v_{i+2-i%2}), so every
+// other triangle takes its last two corners swapped and all of them wind as the first does;
+// triangle i of a fan is (v_{i+1}, v_{i+2}, v_0). A strip's triangles that repeat a vertex are the
+// joins between strips, degenerate on purpose, and are left out without a word.
+std::vector<uint32_t> as_triangle_list(int mode, const std::vector<uint32_t>& v) {
+  std::vector<uint32_t> list;
+  for (size_t i = 0; i + 2 < v.size(); ++i) {
+    const uint32_t a = mode == TINYGLTF_MODE_TRIANGLE_FAN ? v[i + 1] : v[i];
+    const uint32_t b = mode == TINYGLTF_MODE_TRIANGLE_FAN ? v[i + 2] : v[i + 1 + i % 2];
+    const uint32_t c = mode == TINYGLTF_MODE_TRIANGLE_FAN ? v[0] : v[i + 2 - i % 2];
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP && (a == b || b == c || a == c)) continue;
+    list.insert(list.end(), {a, b, c});
+  }
+  return list;
+}
+
+// The primitive modes Luz does not draw, in words for the warning (glTF's modes 0 to 3).
+const char* mode_in_words(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return N_("points");
+    case TINYGLTF_MODE_LINE: return N_("lines");
+    case TINYGLTF_MODE_LINE_LOOP: return N_("line loops");
+    case TINYGLTF_MODE_LINE_STRIP: return N_("line strips");
+    default: return N_("primitives of an unknown mode");
+  }
+}
+
+bool is_triangles(int mode) {
+  return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+         mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
 }  // namespace
 
 void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_world,
@@ -379,17 +411,23 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
   const glm::mat3 normal_matrix =
       determinant != 0.0 ? glm::mat3(glm::transpose(glm::inverse(linear))) : glm::mat3(1.0f);
 
-  bool warned_mode = false;
+  // Points and lines have no area to light: one warning per mesh names what it skipped.
+  std::vector<int> skipped_modes;
+  for (const tinygltf::Primitive& primitive : gltf_mesh.primitives)
+    if (!is_triangles(primitive.mode) &&
+        std::find(skipped_modes.begin(), skipped_modes.end(), primitive.mode) == skipped_modes.end())
+      skipped_modes.push_back(primitive.mode);
+  if (!skipped_modes.empty()) {
+    std::string what;
+    for (int mode : skipped_modes)
+      what += fmt::format("{}{} (mode {})", what.empty() ? "" : ", ", tr(mode_in_words(mode)), mode);
+    ctx.warn(trf("{}: skipped its {}; only triangles are drawn", mesh_name, what));
+  }
+
   size_t dropped = 0;
   for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
     const tinygltf::Primitive& primitive = gltf_mesh.primitives[p];
-    if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-      if (!warned_mode)
-        ctx.warn(trf("{}: skipped its primitives that are not triangle lists (mode {})",
-                     mesh_name, primitive.mode));
-      warned_mode = true;
-      continue;
-    }
+    if (!is_triangles(primitive.mode)) continue;
     const std::string where = fmt::format("{} primitive {}", mesh_name, p);
     auto attribute = [&](const char* name) {
       auto it = primitive.attributes.find(name);
@@ -439,7 +477,8 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
       indices.resize(vertex_count);
       for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
     }
-    if (indices.size() % 3 != 0)
+    const bool list = primitive.mode == -1 || primitive.mode == TINYGLTF_MODE_TRIANGLES;
+    if (list && indices.size() % 3 != 0)
       ctx.fail(ErrorKind::bad_value, trf("{}: {} indices are not a whole number of "
                                          "triangles", where, indices.size()));
     for (size_t i = 0; i < indices.size(); ++i)
@@ -447,6 +486,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
         ctx.fail(ErrorKind::index_out_of_range,
                  trf("{}: index {} (element {}) is past the {} vertices", where, indices[i],
                      i, vertex_count));
+    if (!list) indices = as_triangle_list(primitive.mode, indices);
 
     // To world space.
     for (size_t i = 0; i < vertex_count; ++i) {

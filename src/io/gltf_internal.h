@@ -1,6 +1,7 @@
 #pragma once
 // What the parts of the glTF loader share (gltf_loader.cpp, gltf_geometry.cpp,
 // gltf_materials.cpp). Private to src/io: only these files include tiny_gltf.h.
+#include <filesystem>
 #include <map>
 #include <string>
 #include <unordered_set>
@@ -14,6 +15,7 @@
 #include "core/error.h"
 #include "core/i18n.h"
 #include "core/scene.h"
+#include "io/gltf_uris.h"
 
 namespace luz::io::gltf {
 
@@ -34,6 +36,7 @@ inline std::string one_line(std::string text) {
 // file as the user gave it, so that each one reads "FILE: problem" (STYLE.md 7).
 struct Context {
   std::string file;
+  std::filesystem::path folder;  // the scene's, absolute and canonical
   const tinygltf::Model& model;
   std::vector<std::string>& warnings;
   // Encoded bytes of every image tinygltf handed to our image loader, by image index. An image

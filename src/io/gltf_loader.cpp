@@ -11,7 +11,7 @@
 // - glTF material i is Scene::materials[i]. The default material ("default", kd 0.8 grey) is
 //   appended after them only when some primitive has no material, so indices stay the file's.
 // - Unsupported but legal glTF (quantized positions, an extension the file requires) is refused
-//   as bad_value rather than drawn wrongly. Orthographic cameras and non-triangle primitives are skipped with
+//   as bad_value rather than drawn wrongly. Orthographic cameras, points and lines are skipped with
 //   a warning, as SCENES.md says.
 // - tinygltf 2.7 trusts the file in places (an image's bufferView is read without checking it
 //   fits its buffer, accessors are not checked at all), so those bounds are checked here, and
@@ -124,56 +124,11 @@ std::vector<unsigned char> read_bytes(const fs::path& path) {
   return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {});
 }
 
-bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
-
-// tinygltf percent-decodes URIs before opening them, so the checks look at the decoded form.
-std::string percent_decode(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
-
-// Is `path` (absolute) inside `folder` (canonical) once symbolic links are resolved?
-bool inside(const fs::path& folder, const fs::path& path) {
-  std::error_code ec;
-  const fs::path resolved = fs::weakly_canonical(path, ec);
-  if (ec) return false;
-  const fs::path relative = resolved.lexically_relative(folder);
-  return !relative.empty() && *relative.begin() != "..";
-}
-
 // SCENES.md: external URIs resolve relative to the scene file and may not leave its folder.
-// Refused: any scheme (file://, http://, ...), absolute paths, `..` components, and relative
-// paths that a symbolic link leads out of the folder.
 void check_uri(const Source& source, const std::string& element, const std::string& uri) {
-  const std::string decoded = percent_decode(uri);
-  auto refuse = [&](const char* why) {  // why: an N_() message id
+  if (const char* why = gltf::why_outside(source.folder, uri))
     source.fail(ErrorKind::uri_outside_folder,
                 trf("{}: URI \"{}\" {}; only files in the scene's folder are read", element, uri, tr(why)));
-  };
-  const size_t colon = decoded.find(':');
-  const size_t slash = decoded.find_first_of("/\\");
-  if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
-    refuse(N_("has a scheme or drive"));
-  if (!decoded.empty() && (decoded[0] == '/' || decoded[0] == '\\')) refuse(N_("is absolute"));
-  std::string component;
-  for (char c : decoded + "/") {
-    if (c == '/' || c == '\\') {
-      if (component == "..") refuse(N_("goes up with .."));
-      component.clear();
-    } else {
-      component += c;
-    }
-  }
-  if (!inside(source.folder, source.folder / decoded)) refuse(N_("leads out of the folder"));
 }
 
 // The size of the data a base64 data URI holds, or -1 when it is not base64.
@@ -317,12 +272,12 @@ void check_before_parsing(const Source& source, const std::string& text) {
       const std::string uri = buffer["uri"].get<std::string>();
       const std::string element = fmt::format("buffer {}", i);
       long long has = -1;
-      if (is_data_uri(uri)) {
+      if (gltf::is_data_uri(uri)) {
         has = data_uri_size(uri);
         if (has < 0) source.fail(ErrorKind::not_gltf, trf("{}: its data URI is not base64", element));
       } else {
         check_uri(source, element, uri);
-        const fs::path file = source.folder / percent_decode(uri);
+        const fs::path file = source.folder / gltf::uri_path(uri);
         std::error_code ec;
         if (!fs::is_regular_file(file, ec))
           source.fail(ErrorKind::file_missing,
@@ -332,11 +287,11 @@ void check_before_parsing(const Source& source, const std::string& text) {
       if (declared >= 0 && has < declared)
         source.fail(ErrorKind::truncated_buffer,
                     trf("{} \"{}\" is cut short (has {} bytes, byteLength says {})", element,
-                        is_data_uri(uri) ? "data URI" : uri, has, declared));
+                        gltf::is_data_uri(uri) ? "data URI" : uri, has, declared));
       if (declared >= 0 && has > declared)  // tinygltf insists on the exact size
         source.fail(ErrorKind::bad_value,
                     trf("{} \"{}\" has {} bytes but byteLength says {}", element,
-                        is_data_uri(uri) ? "data URI" : uri, has, declared));
+                        gltf::is_data_uri(uri) ? "data URI" : uri, has, declared));
     }
   }
 
@@ -348,9 +303,10 @@ void check_before_parsing(const Source& source, const std::string& text) {
       const std::string element = fmt::format("image {}", i);
       if (!image.is_object()) continue;
       if (image.contains("uri") && image["uri"].is_string()) {
+        // An image outside the folder is not refused: it is looked for beside the scene
+        // (gltf_materials.cpp), and a missing image is only a warning.
         const std::string uri = image["uri"].get<std::string>();
-        if (!is_data_uri(uri)) check_uri(source, element, uri);
-        else if (uri.rfind(";base64,") != std::string::npos && data_uri_size(uri) < 0)
+        if (gltf::is_data_uri(uri) && uri.rfind(";base64,") != std::string::npos && data_uri_size(uri) < 0)
           source.fail(ErrorKind::not_gltf, trf("{}: its data URI is not base64", element));
       }
       const long long view = json_size(image, "bufferView");
@@ -385,10 +341,17 @@ void check_before_parsing(const Source& source, const std::string& text) {
 // the scene's folder exists for tinygltf, which otherwise also searches the working directory.
 bool file_exists(const std::string& path, void* folder) {
   std::error_code ec;
-  return inside(*static_cast<const fs::path*>(folder), path) && fs::is_regular_file(path, ec);
+  return gltf::inside(*static_cast<const fs::path*>(folder), path) && fs::is_regular_file(path, ec);
 }
 
-std::string expand_file_path(const std::string& path, void*) { return path; }
+// The URI part of the path tinygltf joined to the folder: its backslashes are separators.
+std::string expand_file_path(const std::string& path, void* folder) {
+  const std::string base = static_cast<const fs::path*>(folder)->string();
+  if (path.rfind(base, 0) != 0) return path;
+  std::string rest = path.substr(base.size());  // tinygltf has percent-decoded it already
+  std::replace(rest.begin(), rest.end(), '\\', '/');
+  return base + rest;
+}
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                      void* folder) {
@@ -562,7 +525,7 @@ LoadedScene load_gltf(const fs::path& path) {
 
   LoadedScene loaded;
   tinygltf::Model model;
-  Context ctx{source.file, model, loaded.warnings, {}, {}, {}};
+  Context ctx{source.file, source.folder, model, loaded.warnings, {}, {}, {}};
 
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(&keep_image_bytes, &ctx.image_bytes);
@@ -611,7 +574,10 @@ LoadedScene load_gltf(const fs::path& path) {
     scene.materials.push_back(Material{});  // "default": kd 0.8 grey (SCENES.md)
   read_scene_extras(ctx, scene);
   scene.generator = ctx.model.asset.generator;
-  if (scene.cameras.empty()) scene.cameras.push_back(Camera::framing(scene.bounds()));
+  if (scene.cameras.empty()) {
+    scene.cameras.push_back(Camera::framing(scene.bounds()));
+    ctx.warn(tr(kNoCameraNotice));
+  }
   scene.find_area_lights();
   if (io::has_no_lights(scene)) {
     io::add_default_lights(scene);

@@ -1,18 +1,24 @@
 // glTF materials -> the lecture's coefficients, row by row of SCENES.md "Materials":
 //
-//   kd  = baseColorFactor.rgb x baseColorTexture x (1 - metallicFactor)   (texture: kd_texture)
+//   kd  = baseColorFactor.rgb x baseColorTexture x (1 - metallicFactor) x (1 - transmission)
+//         (texture: kd_texture)
 //   ka  = extras.ka, else kd
 //   ks  = extras.ks, else baseColor x metallicFactor unless the material is a mirror (Metals)
 //   n   = extras.shininess, else 2/r^4 - 2 clamped to [1, 10000], r = roughnessFactor
 //   kr  = extras.kr, else baseColor when metallic >= 0.5 and roughness <= 0.05, else 0
-//   kt  = extras.kt, else KHR_materials_transmission.transmissionFactor, else 0
+//   kt  = extras.kt, else transmission x baseColor x (1 - metallicFactor), where transmission is
+//         KHR_materials_transmission.transmissionFactor, else 0
 //   eta = extras.ior, else KHR_materials_ior.ior, else 1.5
-//   Le  = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength
+//   Le  = emissiveFactor x emissiveTexture x KHR_materials_emissive_strength.emissiveStrength
+//         (texture: emission_texture)
 //
-// A base colour texture whose image is missing or undecodable becomes a 1x1 white texture with a
-// warning: the scene still loads, only the texture's detail is lost.
+// A base colour texture whose image is missing is left out with a warning (the material keeps its
+// colour); one whose image cannot be decoded becomes a 1x1 white texture with a warning. Either
+// way the scene still loads, only the texture's detail is lost.
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 
@@ -65,29 +71,91 @@ std::string image_label(const tinygltf::Image& image, size_t index) {
   return fmt::format("image {} \"{}\"", index, image.uri);
 }
 
-// The scene texture for glTF image `index`, decoded on first use.
+// The encoded bytes of an external image tinygltf did not read, told in one warning either way:
+// a URI that leaves the scene's folder is not opened, and a file of its name beside the scene
+// stands in for it (converters write `..\maps\tex.jpg` and `D:\work\tex.jpg`).
+std::optional<std::vector<unsigned char>> read_image_elsewhere(const Context& ctx,
+                                                               const tinygltf::Image& image,
+                                                               const std::string& label) {
+  if (image.uri.empty() || is_data_uri(image.uri)) {
+    ctx.warn(trf("{}: cannot be read; the material is drawn without its texture", label));
+    return std::nullopt;
+  }
+  const char* why = why_outside(ctx.folder, image.uri);
+  if (!why) {
+    ctx.warn(trf("{}: no such file beside the scene; the material is drawn without its texture", label));
+    return std::nullopt;
+  }
+  const std::filesystem::path beside = beside_the_scene(ctx.folder, image.uri);
+  const std::string name = beside.filename().string();
+  std::error_code ec;
+  if (name.empty() || !inside(ctx.folder, beside) || !std::filesystem::is_regular_file(beside, ec)) {
+    ctx.warn(trf("{}: outside the scene's folder ({}), not opened, and no \"{}\" beside the "
+                 "scene; the material is drawn without its texture", label, tr(why), name));
+    return std::nullopt;
+  }
+  ctx.warn(trf("{}: outside the scene's folder ({}), not opened; using \"{}\" beside the scene",
+               label, tr(why), name));
+  std::ifstream in(beside, std::ios::binary);
+  return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {});
+}
+
+// The scene texture for glTF image `index`, decoded on first use; -1 when the image cannot be
+// read (the material keeps its colour, without the texture).
 int texture_for_image(const Context& ctx, int index, std::map<int, int>& textures, Scene& scene) {
   if (auto it = textures.find(index); it != textures.end()) return it->second;
   const tinygltf::Image& image = ctx.model.images[size_t(index)];
   const std::string label = image_label(image, size_t(index));
-  Texture texture;  // 1x1 white until decoded
-  auto bytes = ctx.image_bytes.find(index);
-  if (bytes == ctx.image_bytes.end()) {
-    ctx.warn(trf("{}: cannot be read; using a white texture", label));
-  } else {
-    std::string error;
-    if (std::optional<Texture> decoded = decode_texture(bytes->second, label, error))
-      texture = std::move(*decoded);
-    else
-      ctx.warn(trf("{}: cannot be decoded ({}); using a white texture", label, error));
-  }
+  std::optional<std::vector<unsigned char>> bytes;
+  // tinygltf joins even an absolute URI to the folder; what it read for a URI that leaves the
+  // folder is not used.
+  const bool outside = !image.uri.empty() && !is_data_uri(image.uri) && why_outside(ctx.folder, image.uri);
+  if (auto kept = ctx.image_bytes.find(index); kept != ctx.image_bytes.end() && !outside)
+    bytes = kept->second;
+  else
+    bytes = read_image_elsewhere(ctx, image, label);
+  if (!bytes) return textures[index] = -1;
+  Texture texture;  // 1x1 white unless decoded
+  std::string error;
+  if (std::optional<Texture> decoded = decode_texture(*bytes, label, error))
+    texture = std::move(*decoded);
+  else
+    ctx.warn(trf("{}: cannot be decoded ({}); using a white texture", label, error));
   texture.name = !image.name.empty() ? image.name
-                 : !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                 : !image.uri.empty() && !is_data_uri(image.uri)
                      ? image.uri
                      : fmt::format("image {}", index);
   scene.textures.push_back(std::move(texture));
   textures[index] = int(scene.textures.size() - 1);
   return textures[index];
+}
+
+// KHR_materials_transmission.transmissionFactor (0 without the extension), in [0, 1].
+float transmission_factor(const Context& ctx, const tinygltf::Material& source, const std::string& what) {
+  const tinygltf::Value* ext = extension(source.extensions, "KHR_materials_transmission");
+  const tinygltf::Value* factor = ext ? member(*ext, "transmissionFactor") : nullptr;
+  if (!factor) return 0.0f;
+  const float t = read_number(ctx, *factor, what);
+  if (t < 0.0f || t > 1.0f) ctx.fail(ErrorKind::bad_value, trf("{} {} is outside [0, 1]", what, t));
+  return t;
+}
+
+// The scene texture a material's texture reference `info` (named `slot` in messages) uses, or -1.
+template <typename TextureInfo>
+int scene_texture(const Context& ctx, const TextureInfo& info, const char* slot, const std::string& what,
+                  std::map<int, int>& textures, Scene& scene) {
+  const int t = info.index;
+  if (t == -1) return -1;
+  ctx.check_index(t, ctx.model.textures.size(), what + ": " + slot, "textures");
+  const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
+  if (texture.source == -1) {
+    ctx.warn(trf("{}: texture {} has no image; ignored", what, t));
+    return -1;
+  }
+  ctx.check_index(texture.source, ctx.model.images.size(), fmt::format("texture {}: source", t), "images");
+  if (info.texCoord != 0)
+    ctx.warn(trf("{}: {} uses TEXCOORD_{}; TEXCOORD_0 is read instead", what, slot, info.texCoord));
+  return texture_for_image(ctx, texture.source, textures, scene);
 }
 
 Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, Scene& scene) {
@@ -109,7 +177,12 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
     ctx.fail(ErrorKind::bad_value, trf("{} {} is outside [0, 1]", field("roughnessFactor"), roughness));
 
   const tinygltf::Value& extras = source.extras;
-  m.kd = base * (1.0f - metallic);
+  const float transmission = transmission_factor(ctx, source, field("transmissionFactor"));
+  // glTF's transmission takes its share from the dielectric (non-metallic) base: what is
+  // transmitted is not diffusely reflected, and it is tinted by the base colour. Blender's
+  // default glass (white, transmission 1) is kd = 0, kt = 1.
+  const Rgb dielectric = base * (1.0f - metallic);
+  m.kd = dielectric * (1.0f - transmission);
   const tinygltf::Value* v = member(extras, "ka");
   m.ka = v ? read_rgb(ctx, *v, field("extras.ka")) : m.kd;
   // A smooth metal is the mirror of the classic model, tinted by its base colour.
@@ -124,12 +197,8 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   v = member(extras, "kr");
   m.kr = v ? read_rgb(ctx, *v, field("extras.kr")) : mirror ? base : Rgb(0.0f);
 
-  if ((v = member(extras, "kt"))) {
-    m.kt = read_rgb(ctx, *v, field("extras.kt"));
-  } else if (const tinygltf::Value* ext = extension(source.extensions, "KHR_materials_transmission")) {
-    const tinygltf::Value* factor = member(*ext, "transmissionFactor");
-    m.kt = Rgb(factor ? read_number(ctx, *factor, field("transmissionFactor")) : 0.0f);
-  }
+  v = member(extras, "kt");
+  m.kt = v ? read_rgb(ctx, *v, field("extras.kt")) : dielectric * transmission;
 
   if ((v = member(extras, "ior"))) {
     m.ior = read_number(ctx, *v, field("ior"));
@@ -166,20 +235,11 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   if (!(m.ior > 0.0f))
     ctx.fail(ErrorKind::bad_value, trf("{} {} is not positive", field("ior"), m.ior));
 
-  if (const int t = pbr.baseColorTexture.index; t != -1) {
-    ctx.check_index(t, ctx.model.textures.size(), field("baseColorTexture"), "textures");
-    const tinygltf::Texture& texture = ctx.model.textures[size_t(t)];
-    if (texture.source == -1) {
-      ctx.warn(trf("{}: texture {} has no image; ignored", what, t));
-    } else {
-      ctx.check_index(texture.source, ctx.model.images.size(),
-                      fmt::format("texture {}: source", t), "images");
-      if (pbr.baseColorTexture.texCoord != 0)
-        ctx.warn(trf("{}: baseColorTexture uses TEXCOORD_{}; TEXCOORD_0 is read instead",
-                     what, pbr.baseColorTexture.texCoord));
-      m.kd_texture = texture_for_image(ctx, texture.source, textures, scene);
-    }
-  }
+  m.kd_texture = scene_texture(ctx, pbr.baseColorTexture, "baseColorTexture", what, textures, scene);
+  // Le = emissiveFactor x emissiveTexture x strength: the texture only scales what the factor
+  // gives (glTF's emissiveFactor defaults to black, so a texture alone emits nothing).
+  if (m.is_emissive())
+    m.emission_texture = scene_texture(ctx, source.emissiveTexture, "emissiveTexture", what, textures, scene);
   return m;
 }
 

@@ -58,6 +58,7 @@ constexpr int kd_unit = 0;
 constexpr int shadow_unit = 1;
 constexpr int reflection_unit = 2;
 constexpr int environment_unit = 3;
+constexpr int emission_unit = 4;
 
 namespace {
 
@@ -131,7 +132,7 @@ struct ReflectionCube {
 struct Switches {
   Shading shading = Shading::phong;
   bool ambient = true, diffuse = true, specular = true, emission = true, blinn = false;
-  bool kd_texture = false;
+  bool kd_texture = false, emission_texture = false;
   bool shadows = false, reflection = false, environment = false, transparent = false;
   bool display = false;  // lighting.glsl's second output, the displayed value
   FogMode fog = FogMode::off;
@@ -145,6 +146,7 @@ struct Switches {
     return line("LUZ_AMBIENT_ON", ambient) + line("LUZ_DIFFUSE_ON", diffuse) +
            line("LUZ_SPECULAR_ON", specular) + line("LUZ_EMISSION_ON", emission) +
            line("LUZ_BLINN", blinn) + line("LUZ_KD_TEXTURE", kd_texture) +
+           line("LUZ_EMISSION_TEXTURE", emission_texture) +
            line("LUZ_SHADOWS_ON", shadows) + line("LUZ_REFLECTION_ON", reflection) +
            line("LUZ_ENVIRONMENT", environment) + line("LUZ_TRANSPARENT", transparent) +
            fmt::format("#define LUZ_FOG_MODE {}\n", int(fog)) +  // lighting.glsl's FOG_*
@@ -241,7 +243,7 @@ struct LocalRenderer::Impl {
   void set_pass(gl::Program& p, const ScenePass& pass, const LocalOptions& options, bool shadows);
   void set_lights(gl::Program& p, bool shadows);
   // `textured`: is_textured() of the mesh drawn with it.
-  void set_material(gl::Program& p, const Material& material, bool textured);
+  void set_material(gl::Program& p, const Material& material, bool textured, bool emission_textured);
   bool is_textured(size_t mesh, const LocalOptions& options) const {
     return options.terms.textures && scene.shown_texture(scene.meshes[mesh], material_of(mesh)) >= 0;
   }
@@ -350,6 +352,7 @@ void LocalRenderer::Impl::set_pass(gl::Program& p, const ScenePass& pass, const 
   p.set("u_eye", pass.eye);
   p.set("u_ambient", glm::vec3(scene.ambient));
   p.set("u_kd_texture", kd_unit);
+  p.set("u_emission_texture", emission_unit);
   // Slide 19. S_i: the shadow maps (already rendered for this frame).
   p.set("u_shadow_maps", shadow_unit);
   p.set("u_shadow_constant_bias", options.shadows.constant_bias);
@@ -384,7 +387,8 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
   return programs.emplace(std::move(key), std::move(variant)).first->second;
 }
 
-void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material, bool textured) {
+void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material, bool textured,
+                                       bool emission_textured) {
   p.set("u_ka", glm::vec3(material.ka));
   p.set("u_kd", glm::vec3(material.kd));
   p.set("u_ks", glm::vec3(material.ks));
@@ -392,6 +396,8 @@ void LocalRenderer::Impl::set_material(gl::Program& p, const Material& material,
   p.set("u_emission", glm::vec3(material.emission));
   glActiveTexture(GL_TEXTURE0 + kd_unit);
   glBindTexture(GL_TEXTURE_2D, textured ? textures[size_t(material.kd_texture)] : 0);
+  glActiveTexture(GL_TEXTURE0 + emission_unit);
+  glBindTexture(GL_TEXTURE_2D, emission_textured ? textures[size_t(material.emission_texture)] : 0);
   p.set("u_kr", glm::vec3(material.kr));
   p.set("u_kt", glm::vec3(material.kt));
 }
@@ -458,6 +464,8 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
     const Material& material = material_of(m);
     Switches switches = common;
     switches.kd_texture = is_textured(m, options);
+    switches.emission_texture = options.terms.emission && material.is_emissive() &&
+                                scene.shown_emission_texture(scene.meshes[m], material) >= 0;
     switches.reflection = pass.reflections && options.reflection.on && any(material.kr) && cubes[m].texture;
     switches.transparent = transparent;
     switches.display = pass.display && !transparent;
@@ -468,7 +476,7 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
       set_pass(p, pass, options, shadows);
       variant.pass = pass_number;
     }
-    set_material(p, material, switches.kd_texture);
+    set_material(p, material, switches.kd_texture, switches.emission_texture);
     glActiveTexture(GL_TEXTURE0 + reflection_unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, switches.reflection ? cubes[m].texture : 0);
     meshes[m].draw();

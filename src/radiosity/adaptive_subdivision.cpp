@@ -20,6 +20,10 @@ double mean(const Rgb& c) { return (double(c.r) + double(c.g) + double(c.b)) / 3
 
 // The rays of a gather draw their points from a stream no shot uses.
 constexpr uint32_t kGatherShot = 0xffffff;
+// The most elements one cut makes, with the cuts conformity chains to it: the element and the one
+// across its longest edge give two, and a chain, whose edges grow along it, rarely more than a
+// few more; the budget keeps this margin so that no cut passes it.
+constexpr double kElementsPerCut = 16.0;
 
 bool emits(const Patch& p) { return mean(p.emission) > 0.0; }
 
@@ -83,9 +87,11 @@ Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<uint32_t>& senders, 
   // A light's shadow edge is where the cuts are: its rays are the most a ray estimate takes.
   for (size_t k = 0; k < next_light_; ++k) {
     const Light& light = scene_.lights[lights_[k]];
-    const double omega = rays_->element_solid_angle(light, j, kMaxVisibilityRays, options_.seed,
-                                                    kGatherShot, traced);
-    arrived += glm::dvec3(light_flux(light, element, float(omega))) / double(element.area);
+    const double value =
+        light.type == LightType::directional
+            ? rays_->element_sunlit_area(light, j, kMaxVisibilityRays, options_.seed, kGatherShot, traced)
+            : rays_->element_solid_angle(light, j, kMaxVisibilityRays, options_.seed, kGatherShot, traced);
+    arrived += glm::dvec3(light_flux(light, element, float(value))) / double(element.area);
   }
   return Rgb(arrived);
 }
@@ -94,6 +100,8 @@ Rgb ProgressiveSolver::gather(uint32_t j, const std::vector<uint32_t>& senders, 
 // or the elements are refine_levels cuts deep.
 size_t ProgressiveSolver::refine() {
   if (refinement_passes_ == 0) original_ = mesh_;  // for reset()
+  // The elements subdivision may add, within what memory allows.
+  const double budget = std::min(kMaxElements, double(original_.size()) + double(options_.refine_budget));
   const size_t before = mesh_.size();
   rays();
   MeshBisection bisection(mesh_);
@@ -111,16 +119,19 @@ size_t ProgressiveSolver::refine() {
   for (int depth = 0; depth < options_.refine_levels; ++depth) {
     const std::vector<uint32_t> marked = too_coarse(bisection, candidates);
     if (marked.empty()) break;
-    if (double(mesh_.size()) + 2.0 * double(marked.size()) > kMaxElements) {
-      warnings_.push_back(i18n::trf("radiosity: adaptive subdivision stopped at {} elements, the "
-                                    "budget of {:.3g}", mesh_.size(), kMaxElements));
-      break;
-    }
     std::vector<int> level(marked.size());
     for (size_t k = 0; k < marked.size(); ++k) level[k] = mesh_.patches[marked[k]].level;
     changed.clear();
-    for (size_t k = 0; k < marked.size(); ++k)  // unless a neighbour's cut already cut it
+    bool out_of_budget = false;
+    for (size_t k = 0; k < marked.size(); ++k) {  // unless a neighbour's cut already cut it
+      // A cut with the cuts conformity chains to it makes a few elements: none is begun that
+      // could pass the budget.
+      if (double(mesh_.size()) + kElementsPerCut > budget) {
+        out_of_budget = true;
+        break;
+      }
       if (mesh_.patches[marked[k]].level == level[k]) bisection.split(marked[k], changed);
+    }
 
     // A new half starts as a copy of the element it came from (the half that kept the slot),
     // in the order they were made, so a half cut again copies its own values.
@@ -163,6 +174,14 @@ size_t ProgressiveSolver::refine() {
       irradiance_[e] = gathered[k];
       unshot_[e] = p.emission + p.rho * gathered[k] - radiosity_[e];  // displayed = E + rho H
     }
+    if (out_of_budget) {
+      if (!budget_reached_)
+        warnings_.push_back(i18n::trf("radiosity: adaptive subdivision stopped at {} elements, its budget "
+                                      "of {} more than the {} built (--refine-budget)",
+                                      mesh_.size(), options_.refine_budget, original_.size()));
+      budget_reached_ = true;
+      break;
+    }
     candidates = changed;
     for (const uint32_t e : changed) bisection.neighbours(e, candidates);
     std::sort(candidates.begin(), candidates.end());
@@ -171,6 +190,7 @@ size_t ProgressiveSolver::refine() {
   patch_unshot_.assign(mesh_.shooters.size(), glm::dvec3(0.0));
   for (size_t e = 0; e < mesh_.size(); ++e)
     patch_unshot_[mesh_.shooter_of[e]] += glm::dvec3(unshot_[e]) * double(mesh_.patches[e].area);
+  mesh_.find_display_surfaces();
   revision_ = ++mesh_.revision;
   items_.upload(mesh_);
   ++refinement_passes_;

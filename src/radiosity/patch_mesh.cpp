@@ -7,6 +7,7 @@
 #include "radiosity/patch_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <numbers>
@@ -215,8 +216,11 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     const Material& material = material_of(scene, mesh);
+    result.mesh_material.push_back(mesh.material);
     const Rgb rho = material.kd * result.detail.mean(int(m));
     const Rgb exitance = std::numbers::pi_v<float> * material.emission;  // E = pi * Le
+    // An emissive texture: each element shoots pi times the mean of Le over it (SCENES.md).
+    const bool emission_textured = material.is_emissive() && scene.shown_emission_texture(mesh, material) >= 0;
     const float longest = longest_edge(mesh);
     const int patches_per_edge = int(subdivisions_for(longest, max_edge));
     const int k_mesh = elements_per_patch_edge(longest, max_edge, k, double(patches_per_edge));
@@ -248,6 +252,15 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
             const float third = half == 0 ? 1.0f / 3.0f : 2.0f / 3.0f;
             p.rho = rho * mesh.colour_at(t, glm::vec2(float(i) + third, float(j) + third) / float(n));
             p.emission = exitance;
+            if (emission_textured) {
+              const float fn = float(n), fi = float(i), fj = float(j);
+              const std::array<glm::vec2, 3> corners =
+                  half == 0 ? std::array<glm::vec2, 3>{glm::vec2(fi, fj) / fn, glm::vec2(fi + 1, fj) / fn,
+                                                       glm::vec2(fi, fj + 1) / fn}
+                            : std::array<glm::vec2, 3>{glm::vec2(fi + 1, fj) / fn, glm::vec2(fi + 1, fj + 1) / fn,
+                                                       glm::vec2(fi, fj + 1) / fn};
+              p.emission = std::numbers::pi_v<float> * scene.mean_emission(int(m), t, corners);
+            }
             // The patch holding this element: the coarse cell of the element's centroid.
             const float cu = (float(i) + (half == 0 ? 1.0f : 2.0f) / 3.0f) / float(n);
             const float cv = (float(j) + (half == 0 ? 1.0f : 2.0f) / 3.0f) / float(n);
@@ -280,6 +293,7 @@ PatchMesh PatchMesh::build(const Scene& scene, float max_edge, int elements_per_
       shooter.radius = std::max(shooter.radius, glm::length(corner - shooter.centre));
   }
   result.group_by_shooter();
+  result.find_display_surfaces();
   return result;
 }
 

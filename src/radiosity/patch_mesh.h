@@ -9,9 +9,8 @@
 // Points on a shared edge are computed from the edge's ends in a canonical order, so both
 // triangles get bit-identical coordinates.
 //
-// Vertices are shared exactly where the source mesh shares them: a smooth glTF surface (shared
-// vertex indices) shares its patch vertices and radiosity is averaged across it; a crease
-// (separate vertices, or separate primitives such as the walls of the Cornell box) is not.
+// Vertices are shared exactly where the source mesh shares them (what the display averages is
+// decided apart, by the surfaces that meet at a point: display_surfaces.h).
 //
 // Substructuring (Cohen, Greenberg, Immel & Brock, "An Efficient Radiosity Approach for
 // Realistic Image Synthesis", IEEE CG&A 1986): the triangles of `patches` are the *elements*,
@@ -37,6 +36,7 @@
 
 #include "core/color.h"
 #include "core/scene.h"
+#include "radiosity/display_surfaces.h"
 #include "radiosity/radiosity_options.h"
 #include "radiosity/texture_detail.h"
 
@@ -95,6 +95,8 @@ public:
   // The kd textures the reflectances were made with (none with RadiosityOptions::textures
   // false): the picture and the hybrid show the same detail.
   TextureDetail detail;
+  std::vector<int> mesh_material;    // per scene mesh, its material
+  DisplaySurfaces display;           // which element corners show one value
   int revision = 0;                  // changes whenever the elements change after build()
 
   size_t size() const { return patches.size(); }
@@ -126,6 +128,8 @@ public:
   // Fills `members` and every shooter's (first, count) from `shooter_of`, keeping the elements of
   // a patch in index order.
   void group_by_shooter();
+  // `display` again, after elements were cut.
+  void find_display_surfaces() { display = DisplaySurfaces::of(*this, mesh_material); }
 
 private:
   struct Source {

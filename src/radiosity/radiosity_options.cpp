@@ -59,6 +59,8 @@ void RadiosityOptions::validate() const {
                "would cut every element down to the last level)", refine_threshold));
   if (refine_levels < 1 || refine_levels > kMaxRefineLevels)
     refuse(trf("{} refinement levels, expected 1 .. {}", refine_levels, kMaxRefineLevels));
+  if (refine_budget < 0 || refine_budget > kMaxRefineBudget)
+    refuse(trf("refinement budget of {} elements, expected 0 .. {}", refine_budget, kMaxRefineBudget));
   if (hemicube_res < kMinHemicubeRes || hemicube_res > kMaxHemicubeRes || hemicube_res % 2 != 0)
     refuse(trf("hemicube resolution {} must be even and in {} .. {}", hemicube_res, kMinHemicubeRes,
                kMaxHemicubeRes));

@@ -39,6 +39,10 @@ struct RadiosityOptions {
   Meshing meshing = Meshing::adaptive;
   float refine_threshold = 0.15f;
   int refine_levels = 4;
+  // The most elements subdivision may add to the mesh as built. Every element is drawn each frame
+  // and gathers at every pass, so a model of many triangles would otherwise grow to millions and
+  // the viewer's frames to seconds; subdivision stops at the budget and says so.
+  int refine_budget = 200'000;
   // A patch's reflectance rho = kd, times the mean texel of the kd texture its mesh shows, whose
   // detail the picture puts back (texture_detail.h). false: kd alone and no detail, as
   // `--no-textures` (the viewer's T) leaves every model without the texture.
@@ -89,6 +93,7 @@ struct RadiosityOptions {
 
 inline constexpr int kMaxVisibilityRays = 64;
 inline constexpr int kMaxRefineLevels = 12;
+inline constexpr int kMaxRefineBudget = 2'000'000;
 inline constexpr int kMaxPixelSamples = 256;
 inline constexpr float kMinOvershoot = 1.0f;
 inline constexpr float kMaxOvershoot = 1.9f;

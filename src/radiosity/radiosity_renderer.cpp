@@ -153,7 +153,7 @@ void RadiosityRenderer::update(const RadianceField& field, const RadiosityOption
     const uint32_t e = s.mesh.members[drawn];
     for (int k = 0; k < 3; ++k)
       s.corner_colours[3 * drawn + size_t(k)] =
-          options.flat_patches ? field.patch[e] : field.vertex[s.mesh.patches[e].vertices[k]];
+          options.flat_patches ? field.patch[e] : field.corner[3 * e + size_t(k)];
   }
   glBindBuffer(GL_ARRAY_BUFFER, s.colours);
   glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(s.corner_colours.size() * sizeof(Rgb)),

@@ -211,4 +211,38 @@ const std::vector<FormFactor>& RayFormFactors::solid_angles(const Light& light, 
   });
 }
 
+// A sun has no position: its rays leave the element against the light's direction and go on
+// out of the scene (tfar infinite), and the element's projected area replaces the solid angle.
+double RayFormFactors::element_sunlit_area(const Light& sun, size_t j, size_t m, uint32_t seed,
+                                           uint32_t shot, uint64_t& traced) const {
+  const Patch& element = mesh_.patches[j];
+  const glm::vec3 towards = -sun.direction;
+  const double cos_theta = double(glm::dot(element.normal, towards));
+  if (!(cos_theta > 0.0)) return 0.0;  // its back faces the sun, or the light grazes it
+  const glm::vec3 corners[3] = {mesh_.vertices[element.vertices[0]],
+                                mesh_.vertices[element.vertices[1]],
+                                mesh_.vertices[element.vertices[2]]};
+  Random random{(uint64_t(seed) << 48) ^ (uint64_t(shot) << 24) ^ uint64_t(j)};
+  std::array<rt::Ray, kMaxVisibilityRays> rays;
+  std::array<bool, kMaxVisibilityRays> blocked{};
+  for (size_t k = 0; k < m; ++k) {
+    const float u = (float(k) + random.next()) / float(m), v = random.next();
+    const glm::vec3 start = point_in(corners[0], corners[1], corners[2], u, v) + offset_ * element.normal;
+    rays[k] = {start, towards, rt::kInfinity};
+  }
+  uint64_t tests = 0;
+  bvh_->occluded(std::span(rays.data(), m), std::span(blocked.data(), m), tests);
+  traced += m;
+  const auto open = std::count(blocked.begin(), blocked.begin() + long(m), false);
+  return double(element.area) * cos_theta * double(open) / double(m);
+}
+
+const std::vector<FormFactor>& RayFormFactors::sunlit_areas(const Light& sun, int rays, uint32_t seed,
+                                                            uint32_t shot) {
+  const size_t m = size_t(std::clamp(rays, 1, kMaxVisibilityRays));
+  return for_each_element([&](size_t j, uint64_t& traced) {
+    return element_sunlit_area(sun, j, m, seed, shot, traced);
+  });
+}
+
 }  // namespace luz

@@ -76,6 +76,11 @@ public:
   // so the solver gives it more rays than a patch.
   const std::vector<FormFactor>& solid_angles(const Light& light, int rays, uint32_t seed,
                                               uint32_t shot);
+  // For a directional light (a sun, SCENES.md: parallel light): each element's area lit by it,
+  // A_j cos(theta_j) (its area seen across the beam) x the fraction of m rays from stratified
+  // points of the element toward the light that nothing blocks. E_perp times it is the flux the
+  // element receives, so its irradiance is E_perp cos(theta) where the sun reaches it.
+  const std::vector<FormFactor>& sunlit_areas(const Light& sun, int rays, uint32_t seed, uint32_t shot);
   // Rays traced for the last row or lights' solid angles.
   uint64_t last_rays() const { return last_rays_; }
 
@@ -84,6 +89,8 @@ public:
   double element_factor(size_t shooter, const ShooterEmission& emission, size_t element,
                         size_t rays, uint32_t seed, uint32_t shot, uint64_t& traced) const;
   double element_solid_angle(const Light& light, size_t element, size_t rays, uint32_t seed,
+                             uint32_t shot, uint64_t& traced) const;
+  double element_sunlit_area(const Light& sun, size_t element, size_t rays, uint32_t seed,
                              uint32_t shot, uint64_t& traced) const;
 
 private:

@@ -47,6 +47,30 @@ double emitting_solid_angle(const Light& light) {
   return total;
 }
 
+bool is_zero(const Rgb& c) { return c.r <= 0.0f && c.g <= 0.0f && c.b <= 0.0f; }
+
+// The materials the scene's meshes show as metals with a highlight only (kd = 0, ks > 0, no
+// mirror, no glass): radiosity computes diffuse light only, so they are black in its picture,
+// while the other models show their highlight. Most are glTF metals by omission (metallicFactor
+// is 1 where a file leaves it out, as Khronos's Box does): the message says what to change.
+// Mirrors and glass are black in radiosity too, but on purpose: the hybrid is for them.
+std::vector<std::string> metal_warnings(const Scene& scene) {
+  std::vector<std::string> warnings;
+  std::vector<bool> shown(scene.materials.size(), false);
+  for (const Mesh& mesh : scene.meshes) shown.at(size_t(mesh.material)) = true;
+  for (size_t k = 0; k < scene.materials.size(); ++k) {
+    const Material& m = scene.materials[k];
+    if (!shown[k] || !is_zero(m.kd) || m.is_emissive() || is_zero(m.ks)) continue;
+    if (!is_zero(m.kr) || !is_zero(m.kt)) continue;
+    warnings.push_back(i18n::trf("radiosity: material \"{}\" is a metal (kd = 0, a highlight only; glTF "
+                                 "reads a material that leaves metallicFactor out as metallic); radiosity "
+                                 "computes diffuse light only, so it is black here, and the hybrid adds its "
+                                 "highlight. For a diffuse surface give it metallicFactor 0 (Blender: "
+                                 "Metallic 0)", m.name));
+  }
+  return warnings;
+}
+
 }  // namespace
 
 // ---- [powers] ----------------------------------------------------------------------------------
@@ -59,18 +83,15 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, PatchMesh& mesh,
                                      const RadiosityOptions& options)
     : scene_(scene), mesh_(mesh), revision_(mesh.revision), options_(options), items_(mesh),
       hemicube_(mesh, items_, options.hemicube_res, options.hemicube_passes, options.hemicube_sums) {
+  warnings_ = metal_warnings(scene);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     const Light& light = scene.lights[k];
     if (!light.enabled) continue;
-    if (light.type == LightType::directional) {
-      warnings_.push_back(i18n::trf("radiosity: directional light \"{}\" is not shot (a light "
-                                    "at infinity has no place for a cube of item buffers); "
-                                    "it is ignored", light.name));
-      continue;
-    }
     lights_.push_back(k);
   }
-  if (!lights_.empty())
+  // A sun's rays are cast whatever the form factors (a light at infinity has no place for a cube).
+  if (std::any_of(lights_.begin(), lights_.end(),
+                  [&](size_t k) { return scene.lights[k].type != LightType::directional; }))
     cube_ = std::make_unique<PointSource>(mesh, items_, options.hemicube_res);
   double rho_area = 0.0, area = 0.0;
   for (const Patch& p : mesh.patches) {
@@ -91,6 +112,7 @@ void ProgressiveSolver::reset() {
     items_.upload(mesh_);
     refinement_passes_ = 0;
   }
+  budget_reached_ = false;
   next_refinement_ = 0;
   radiosity_.assign(mesh_.size(), Rgb(0.0f));
   unshot_.assign(mesh_.size(), Rgb(0.0f));
@@ -104,7 +126,9 @@ void ProgressiveSolver::reset() {
   light_power_.clear();
   for (const size_t k : lights_) {
     const Light& light = scene_.lights[k];
-    light_power_.push_back(light.intensity * float(emitting_solid_angle(light)));
+    light_power_.push_back(light.type == LightType::directional
+                               ? light.intensity * float(beam_cross_section())
+                               : light.intensity * float(emitting_solid_angle(light)));
     tally_.emitted += mean(light_power_.back());
   }
   next_light_ = 0;
@@ -266,8 +290,12 @@ void ProgressiveSolver::add_unshot(size_t element, const Rgb& gain) {
 
 // ---- [point lights] ----------------------------------------------------------------------------
 // The flux I * omega reaching an element of solid angle omega from the light, with the classroom
-// attenuation where the scene asks for it (f_att(d) d^2: 1 for the physical 1/d^2).
-Rgb ProgressiveSolver::light_flux(const Light& light, const Patch& receiver, float omega) {
+// attenuation where the scene asks for it (f_att(d) d^2: 1 for the physical 1/d^2). For a sun,
+// `value` is the element's sunlit area A cos(theta) V and the flux E_perp times it (no distance,
+// no attenuation: the light is parallel).
+Rgb ProgressiveSolver::light_flux(const Light& light, const Patch& receiver, float value) {
+  if (light.type == LightType::directional) return light.intensity * value;
+  const float omega = value;
   float attenuation = 1.0f;
   if (light.attenuation.classroom) {
     const float d = glm::length(receiver.centre - light.position);
@@ -278,11 +306,15 @@ Rgb ProgressiveSolver::light_flux(const Light& light, const Patch& receiver, flo
 
 // Patch j receives the flux Phi_j = I * omega_j (omega_j: its spot-weighted solid angle from the
 // light), so its irradiance is Phi_j / A_j and it gains rho_j Phi_j / A_j of unshot exitance.
+// A sun gives Phi_j = E_perp A_j cos(theta_j) V_j (its sunlit area, from rays).
 void ProgressiveSolver::shoot_light(size_t k) {
   const Light& light = scene_.lights[lights_[k]];
+  const int rays = 4 * options_.visibility_rays;
   const std::vector<FormFactor>& omegas =
-      options_.form_factors == FormFactorMethod::rays
-          ? rays().solid_angles(light, 4 * options_.visibility_rays, options_.seed, uint32_t(shots_))
+      light.type == LightType::directional
+          ? this->rays().sunlit_areas(light, rays, options_.seed, uint32_t(shots_))
+      : options_.form_factors == FormFactorMethod::rays
+          ? this->rays().solid_angles(light, rays, options_.seed, uint32_t(shots_))
           : cube_->solid_angles(light);
   row_times_ = RowTimes{};
   double delivered = 0.0;
@@ -296,6 +328,18 @@ void ProgressiveSolver::shoot_light(size_t k) {
   tally_.escaped += mean(light_power_[k]) - delivered;
   ++shots_;
   record(-1 - int(k));
+}
+
+// What a sun sends at the scene: E_perp over the disc that the scene's bounding sphere shows the
+// beam, pi R^2 with R half the diagonal of the elements' bounds. Every element it reaches lies
+// in that disc, seen along the beam, and no two cover the same part of it (a ray stops at the
+// first), so what arrives is at most this; the rest escapes.
+double ProgressiveSolver::beam_cross_section() const {
+  Bounds bounds;
+  for (const glm::vec3& v : mesh_.vertices) bounds.grow(v);
+  if (bounds.empty()) return 0.0;
+  const double radius = 0.5 * double(glm::length(bounds.extent()));
+  return std::numbers::pi * radius * radius;
 }
 
 // ---- [the loop] --------------------------------------------------------------------------------

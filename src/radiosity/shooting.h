@@ -11,7 +11,9 @@
 //
 // F_ji comes from the shooter's row F_ij by reciprocity, F_ji = F_ij A_i / A_j; the row from its
 // hemicube, or cast with rays (options.form_factors, ray_form_factors.h).
-// The scene's punctual lights are shot first, each once, as point sources (point_source.h).
+// The scene's punctual lights are shot first, each once: point and spot lights as point sources
+// (point_source.h), directional ones (a sun) as parallel light, each element receiving
+// E_perp cos(theta) where a ray toward the light is unblocked (ray_form_factors.h).
 //
 // Substructuring (patch_mesh.h): i runs over the shooting patches and j over the elements. Each
 // element keeps its own radiosity and unshot radiosity; a patch's unshot radiosity is the
@@ -89,8 +91,7 @@ class ProgressiveSolver {
 public:
   // Needs a current GL context (the hemicube draws through it) for its whole life. `mesh` and
   // `scene` must outlive the solver; with adaptive subdivision the solver refines `mesh`, and
-  // reset() puts it back as it was given. Directional lights are not shot (no position to put a
-  // cube at): warnings() says so.
+  // reset() puts it back as it was given. warnings() names the materials radiosity shows black.
   ProgressiveSolver(const Scene& scene, PatchMesh& mesh, const RadiosityOptions& options);
 
   // Step 1 again: radiosity = 0, unshot = E, lights unshot, history cleared.
@@ -102,7 +103,7 @@ public:
   // Step 2 for shooting patch i, mesh().shooters[i] (public so a test or the viewer can shoot a
   // chosen patch; without substructuring shooter i is element i).
   void shoot(size_t i);
-  // Shoots the scene's light k as a point source.
+  // Shoots the scene's light k: a point source, or parallel light for a directional one.
   void shoot_light(size_t k);
   // One pass of adaptive subdivision now (step() makes them at kRefineAt); returns the elements
   // it added.
@@ -162,7 +163,8 @@ private:
   void receive(size_t element, const Rgb& arriving);
   // Element j's unshot radiosity grows by `gain` (its patch's unshot power with it).
   void add_unshot(size_t element, const Rgb& gain);
-  static Rgb light_flux(const Light& light, const Patch& receiver, float omega);
+  static Rgb light_flux(const Light& light, const Patch& receiver, float value);
+  double beam_cross_section() const;
   bool refinement_due() const;
   // Adaptive subdivision's pieces (adaptive_subdivision.cpp).
   std::vector<uint32_t> too_coarse(const MeshBisection& bisection,
@@ -184,10 +186,9 @@ private:
   glm::vec3 eye_{0.0f};  // where the shooting patch's hemicube stands (emission_centre)
   std::unique_ptr<RayFormFactors> rays_;  // made at the first shot with FormFactorMethod::rays
   std::unique_ptr<PointSource> cube_;  // made when the scene has punctual lights
-  std::vector<size_t> lights_;         // the scene's lights that shoot (enabled point and spot)
+  std::vector<size_t> lights_;         // the scene's lights that shoot (the enabled ones)
   size_t next_light_ = 0;
-  std::vector<Rgb> light_power_;       // I * sum(spot d_omega), filled when each light shoots
-  double unshot_light_power_ = 0.0;    // estimate for lights not yet shot (I * 4 pi)
+  std::vector<Rgb> light_power_;       // I * sum(spot d_omega), or a sun's E_perp * pi R^2
   std::vector<Rgb> radiosity_, unshot_, irradiance_;  // per element
   std::vector<Rgb> sent_;                 // per element of the patch shooting now
   std::vector<Rgb> arriving_;             // per entry of its row: the power arriving (W)
@@ -196,6 +197,7 @@ private:
   int shots_ = 0;
   int last_shooter_ = -1;
   int refinement_passes_ = 0;
+  bool budget_reached_ = false;  // adaptive subdivision stopped at options_.refine_budget
   size_t next_refinement_ = 0;  // into kRefineAt
   std::mt19937 random_;
   std::vector<ShotRecord> history_;

@@ -1,6 +1,7 @@
 #include "radiosity/vertex_colours.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -18,17 +19,20 @@ RadianceField RadianceField::from(const PatchMesh& mesh, const std::vector<Rgb>&
   for (size_t i = 0; i < mesh.size(); ++i)
     field.patch[i] = (exitance[i] + mesh.patches[i].rho * ambient) * inv_pi;  // L = B / pi
 
-  // Nodal averaging, area-weighted.
-  std::vector<Rgb> sum(mesh.vertices.size(), Rgb(0.0f));
-  std::vector<float> weight(mesh.vertices.size(), 0.0f);
-  for (size_t i = 0; i < mesh.size(); ++i)
-    for (const uint32_t v : mesh.patches[i].vertices) {
-      sum[v] += mesh.patches[i].area * field.patch[i];
-      weight[v] += mesh.patches[i].area;
-    }
-  field.vertex.resize(mesh.vertices.size());
-  for (size_t v = 0; v < sum.size(); ++v)
-    field.vertex[v] = weight[v] > 0.0f ? sum[v] / weight[v] : Rgb(0.0f);
+  // Nodal averaging, area-weighted, over the elements of one surface at each point.
+  const DisplaySurfaces& display = mesh.display;
+  assert(display.fits(mesh.size()) && "the display surfaces are found again after elements are cut");
+  std::vector<Rgb> sum(display.points, Rgb(0.0f));
+  std::vector<float> weight(display.points, 0.0f);
+  for (size_t c = 0; c < display.corner.size(); ++c) {
+    sum[display.corner[c]] += mesh.patches[c / 3].area * field.patch[c / 3];
+    weight[display.corner[c]] += mesh.patches[c / 3].area;
+  }
+  field.corner.resize(display.corner.size());
+  for (size_t c = 0; c < display.corner.size(); ++c) {
+    const uint32_t point = display.corner[c];
+    field.corner[c] = weight[point] > 0.0f ? sum[point] / weight[point] : Rgb(0.0f);
+  }
   return field;
 }
 
@@ -59,9 +63,8 @@ RadianceField RadianceField::unshot_heat_map(const ProgressiveSolver& solver) {
 
 Rgb RadianceField::at(const PatchMesh& mesh, int scene_mesh, int triangle, glm::vec2 b) const {
   const PatchMesh::Location where = mesh.locate(scene_mesh, triangle, b);
-  const Patch& p = mesh.patches[where.patch];
-  return where.weights.x * vertex[p.vertices[0]] + where.weights.y * vertex[p.vertices[1]] +
-         where.weights.z * vertex[p.vertices[2]];
+  const size_t c = 3 * where.patch;
+  return where.weights.x * corner[c] + where.weights.y * corner[c + 1] + where.weights.z * corner[c + 2];
 }
 
 }  // namespace luz

@@ -107,6 +107,8 @@ std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, co
                       .kt = o.kt,
                       .ambient = options.terms.ambient ? scene.ambient * o.ka : Rgb(0.0f),
                       .emission = options.terms.emission ? o.emission : Rgb(0.0f),
+                      .emission_textured = options.terms.emission && o.is_emissive() &&
+                                           scene.shown_emission_texture(mesh, o) >= 0,
                       .shininess = o.shininess,
                       .ior = o.ior,
                       .shiny = options.terms.specular && positive(o.ks),
@@ -430,6 +432,11 @@ void HitLanes::unlit_colors(std::span<Rgb> local) const {
       const LaneMesh& m = meshes_[size_t(mesh_[one_mesh_ ? 0 : k])];
       local[ray_[k]] = m.ambient + select(front_[k] != 0, m.emission, Rgb(0.0f));
     }
+    // An emissive texture: the texel where the lane hit.
+    for (size_t k = 0; k < count_; ++k)
+      if (front_[k] != 0 && meshes_[size_t(mesh_[k])].emission_textured)
+        local[ray_[k]] += scene_->emission_at(mesh_[k], size_t(triangle_[k]), glm::vec2(u_[k], v_[k])) -
+                          meshes_[size_t(mesh_[k])].emission;
     return;
   }
   for (size_t k = 0; k < count_; ++k) {

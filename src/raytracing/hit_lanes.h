@@ -83,6 +83,7 @@ struct LaneMesh {
   Rgb ks, kr, kt;
   Rgb ambient;      // Ia * ka, zero where the ambient term is off
   Rgb emission;     // Le, zero where the emission term is off
+  bool emission_textured;  // Le varies over the mesh: Scene::emission_at gives it per lane
   float shininess, ior;
   int32_t shiny;    // ks > 0 and the specular term on: the highlight counts
   bool reflective, transmissive;

@@ -78,6 +78,7 @@ EmitterTable::EmitterTable(const Scene& scene) {
   for (const AreaLight& light : scene.area_lights) {
     running += double(light.area) * double(mean(light.radiance));
     cdf_.push_back(float(running));
+    mean_le_[uint64_t(light.mesh) << 32 | uint32_t(light.triangle)] = float(mean(light.radiance));
   }
   total_power_ = running;
   if (total_power_ <= 0.0) {
@@ -94,8 +95,10 @@ EmitterChoice EmitterTable::pick(float u) const {
   return {int(k), cdf_[k] - (k > 0 ? cdf_[k - 1] : 0.0f)};
 }
 
-float EmitterTable::area_density(const Rgb& Le) const {
-  return total_power_ > 0.0 ? float(double(mean(Le)) / total_power_) : 0.0f;
+float EmitterTable::area_density(int mesh, int triangle) const {
+  const auto found = mean_le_.find(uint64_t(mesh) << 32 | uint32_t(triangle));
+  if (total_power_ <= 0.0 || found == mean_le_.end()) return 0.0f;
+  return float(double(found->second) / total_power_);
 }
 
 // ---- [one path] ---------------------------------------------------------------------------------
@@ -133,10 +136,10 @@ public:
         float w = 1.0f;
         if (!after_delta) {
           const float cos_e = std::max(glm::dot(p.geometric, V), 1e-6f);
-          const float light_pdf = emitters_.area_density(m.emission) * hit.t * hit.t / cos_e;
+          const float light_pdf = emitters_.area_density(p.mesh, p.triangle) * hit.t * hit.t / cos_e;
           w = power_heuristic(bsdf_pdf, light_pdf);
         }
-        L += throughput * m.emission * w;
+        L += throughput * scene_.emission_at(p.mesh, size_t(p.triangle), p.barycentrics) * w;
       }
 
       // Next-event estimation. At the last depth no BSDF ray follows to find the emitters, so the
@@ -227,7 +230,9 @@ private:
     const Rgb f = bsdf.eval(L);
     if (max_of(f) <= 0.0f || !visible(p, L, d)) return sum;
     const float w = alone ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(L));
-    return sum + f * area.radiance * (cos_theta * w / light_pdf);
+    // Le at y: (u, v) = (b1, b2) in Scene::emission_at's barycentrics.
+    const Rgb Le = scene_.emission_at(area.mesh, t, glm::vec2(b1, 1.0f - b0 - b1));
+    return sum + f * Le * (cos_theta * w / light_pdf);
   }
 
   // The shadow ray: nothing between p and the light (just short of it: an emitter's point lies

@@ -24,6 +24,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -71,18 +72,22 @@ struct EmitterChoice {
 };
 
 // The emissive triangles with probabilities in proportion to their power A * mean(Le), so the
-// density of a point y chosen on them (area measure) is mean(Le(y)) / sum_j A_j mean(Le_j),
-// which MIS needs when a ray meets an emitter by chance.
+// density of a point y chosen on triangle j (area measure) is mean(Le_j) / sum_i A_i mean(Le_i),
+// which MIS needs when a ray meets an emitter by chance. Le_j is the triangle's AreaLight
+// radiance: its material's Le, or with an emissive texture the texture's mean over it (the point
+// is then chosen uniformly on the triangle and weighed by the texel it lands on).
 class EmitterTable {
 public:
   explicit EmitterTable(const Scene& scene);
   EmitterChoice pick(float u) const;
-  float area_density(const Rgb& Le) const;  // 0 when no triangle emits
+  // The density on triangle `triangle` of scene mesh `mesh`; 0 when it emits nothing.
+  float area_density(int mesh, int triangle) const;
   bool empty() const { return cdf_.empty(); }
 
 private:
   std::vector<float> cdf_;
   double total_power_ = 0.0;
+  std::unordered_map<uint64_t, float> mean_le_;  // mean(Le_j) by (mesh << 32 | triangle)
 };
 
 // Called once per finished tile of a pass, never by two threads at once: the tile, how many

@@ -70,7 +70,8 @@ Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lig
   if (!diffuse_) {
     if (options_.terms.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
-    if (options_.terms.emission && p.front) color += o.emission;
+    if (options_.terms.emission && p.front && o.is_emissive())
+      color += scene_.emission_at(p.mesh, size_t(p.triangle), p.barycentrics);  // the texel hit
   } else if (options_.terms.diffuse && p.front) {
     // The hybrid (slides 41-43): the diffuse part comes from the radiosity solution, B/pi
     // interpolated across the patches, which already holds everything view-independent:

@@ -111,10 +111,14 @@ def copy_tree(scratch):
 
 def viewer_scripts():
     """Viewer test programs and the ctest test that runs their scripted viewer before them
-    (tests/CMakeLists.txt's luz_viewer_test): a mutant is caught there too when its viewer fails."""
+    (tests/CMakeLists.txt's luz_viewer_test, or a program given LUZ_VIEWER_SCRIPT_TEST by hand, as
+    the lessons' are): a mutant is caught there too when its viewer fails."""
     text = (REPO / "tests" / "CMakeLists.txt").read_text()
-    return {m.group(1): f"viewer_{pathlib.Path(m.group(2)).stem}_script"
-            for m in re.finditer(r"^luz_viewer_test\((\w+)\s+(\S+)", text, re.M)}
+    scripts = {m.group(1): f"viewer_{pathlib.Path(m.group(2)).stem}_script"
+               for m in re.finditer(r"^luz_viewer_test\((\w+)\s+(\S+)", text, re.M)}
+    for m in re.finditer(r"target_compile_definitions\((\w+)\s+PRIVATE[^)]*LUZ_VIEWER_SCRIPT_TEST=\"(\w+)\"", text):
+        scripts.setdefault(m.group(1), m.group(2))
+    return scripts
 
 
 def run(command, cwd, log, timeout=None, env=None):

@@ -35,6 +35,17 @@ cat > bright.gltf <<EOF
  "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5435.14}]}},
  $triangle}
 EOF
+# A triangle whose material leaves metallicFactor out, as Khronos's Box does: a metal, black in
+# radiosity (which says so).
+cat > metal.gltf <<EOF
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "materials": [{"name": "Red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0, 0, 1]}}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+EOF
 # A 2 m square seen from above under a lamp, its kd a texture of two texels: dark (sRGB 64) on
 # the left, light (sRGB 224) on the right.
 cat > textured.gltf <<EOF

@@ -1,0 +1,70 @@
+#include "app/classroom/classroom.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "app/common/i18n.h"
+
+namespace luz::app {
+
+Classroom::Classroom(Lesson lesson) : player_(LessonPlayer(std::move(lesson))) { queue(player_->go_to(0)); }
+
+void Classroom::queue(std::vector<ScriptCommand> commands) {
+  Script script;
+  script.file = player_->lesson().file;
+  // Slide 36's window is closed unless the step opens it, as every other switch goes back to
+  // its default: it would cover the next steps' picture.
+  const bool opens_solvers = std::any_of(commands.begin(), commands.end(), [](const ScriptCommand& c) {
+    return c.verb == "solvers" || c.verb == "wait-solver-rows";
+  });
+  if (!opens_solvers) script.commands.push_back({player_->step().line, "solvers", {"close"}});
+  for (ScriptCommand& c : commands) script.commands.push_back(std::move(c));
+  moves_.emplace_back(std::move(script));
+}
+
+void Classroom::move(LessonMove move) {
+  if (!player_ || move == LessonMove::none) return;
+  const size_t before = player_->index();
+  std::vector<ScriptCommand> commands = move == LessonMove::next ? player_->next() : player_->previous();
+  if (player_->index() != before) queue(std::move(commands));
+}
+
+bool Classroom::run_verb(const ScriptCommand& command, std::string& error) {
+  if (command.verb == "lang") {
+    i18n::set_language(*i18n::parse_language(command.args[0]));
+    return true;
+  }
+  if (!player_) {
+    error = tr("no lesson is open (luz --lesson [FILE])");
+    return false;
+  }
+  std::vector<ScriptCommand> commands;
+  if (!player_->run(command, commands, error)) return false;
+  if (command.verb == "lesson") queue(std::move(commands));
+  return true;
+}
+
+bool Classroom::step(ScriptTarget& viewer, std::string& error) {
+  stepping_ = true;
+  bool ok = true;
+  // One move at a time, in the order asked; a finished one gives way to the next in this frame.
+  while (!moves_.empty() && ok) {
+    ok = moves_.front().step(viewer, error);
+    if (!moves_.front().finished()) break;
+    moves_.pop_front();
+  }
+  if (!ok) moves_.clear();
+  stepping_ = false;
+  return ok;
+}
+
+float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin) {
+  if (!player_) return origin.y;
+  const float width = 0.8f * size.x;
+  const ImVec2 top_left(origin.x + 0.5f * (size.x - width), origin.y + margin);
+  const CaptionResult result = draw_lesson_caption(*player_, i18n::language(), top_left, width, 1.25f);
+  move(result.move);
+  return top_left.y + result.size.y;
+}
+
+}  // namespace luz::app

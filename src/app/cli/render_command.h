@@ -1,0 +1,88 @@
+#pragma once
+// `luz render`: one picture of a scene, headless through OSMesa.
+#include <memory>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/scene.h"
+#include "local/local_options.h"
+#include "radiosity/radiosity_options.h"
+#include "raytracing/whitted_options.h"
+
+namespace CLI { class App; class Option; }
+
+namespace luz::app {
+
+struct RadiositySolution;
+// The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
+struct PathFlags {
+  uint32_t seed = 0;
+  std::string error_out;  // --error-out FILE.exr: the standard error per pixel
+};
+
+struct RenderSettings {
+  std::string scene;
+  std::string model = "phong";   // a name of the registry (model_registry.h)
+  std::string out;
+  int width = 0;                 // 0: from the camera's aspect ratio (see output_size)
+  int height = 0;
+  std::string camera;            // name or index; empty = the scene's first
+  std::optional<float> exposure; // overrides the scene's
+  bool exposure_auto = false;    // --exposure auto: fitted to the picture (core/exposure.h)
+  LocalOptions local;
+  RadiosityOptions radiosity;
+  std::string csv;               // radiosity: the residual history, one row per shot
+  // --time: the path tracer's passes, or radiosity's shooting, stop when it is up.
+  std::optional<double> seconds;
+  bool quiet = false;
+  // --model whitted: the tracer's options (the --no-TERM switches and --blinn come from `local`)
+  // and the pixel whose ray tree is written beside the image.
+  rt::WhittedOptions whitted;
+  std::optional<std::pair<int, int>> ray_tree;
+  // --model path: its own flags (it shares --spp and --depth with whitted).
+  PathFlags path;
+  // The flags of a flag group that were given, with their group: a group the model does not
+  // take (model_registry.h) is a usage error.
+  struct GivenFlag {
+    std::string flag;
+    std::string group;
+  };
+  std::vector<GivenFlag> given_flags;
+  // A radiosity solution already solved for this scene and these flags (render_radiosity.h):
+  // the radiosity and hybrid pictures show it instead of solving again. Empty: each solves.
+  std::shared_ptr<const RadiositySolution> radiosity_solution;
+};
+
+// Declares --seed and --error-out on `render`; returns them so that the command can
+// tell which were given (a usage error with another model).
+std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags);
+
+// Parses "WxH"; false when malformed or out of range.
+bool parse_size(const std::string& text, int& width, int& height);
+
+// Parses "X,Y" (a pixel); false when malformed.
+bool parse_pixel(const std::string& text, int& x, int& y);
+// Parses "R,G,B" (three finite numbers >= 0); false when malformed.
+bool parse_rgb(const std::string& text, Rgb& colour);
+
+// The camera --camera names (by name or index), else the scene's first; a usage error naming the
+// scene's cameras when there is none of that name.
+const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene);
+
+// The PNG's exposure: --exposure's number, the picture's fitted one with --exposure auto, else
+// the scene's. Where no number was given, a picture far off the exposure it gets is warned of on
+// stderr, with the way out.
+float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture);
+
+// Where --ray-tree's JSON goes: beside the image, `<out without extension>.ray-tree.json`.
+std::filesystem::path ray_tree_path(const std::filesystem::path& out);
+
+// Loads, renders and writes; returns the exit code (0, 1 bad input, 2 usage) after printing
+// any message to stderr.
+int run_render(const RenderSettings& settings);
+
+}  // namespace luz::app

@@ -1,0 +1,63 @@
+#pragma once
+// The illumination models, one entry each: the name `luz render --model` and the script take,
+// the panel's label, the digit key, the command-line flag groups it accepts, its headless render
+// and its viewer view. `luz render`, `main`'s --help, the script's `model` verb, the panel's
+// radio buttons, F1 and the keys all read this table, so adding a model is one file pair (its
+// render function and its ModelView) and one line in model_registry.cpp.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+
+namespace luz::app {
+
+struct RenderSettings;
+struct RadiositySolution;
+struct ScriptVerb;
+class ModelView;
+class ViewerServices;
+
+// What a headless render makes: the picture and what `luz render` prints or writes beside it.
+struct Rendered {
+  Image image;
+  std::string summary;                  // printed after the picture's line (counters, shots)
+  std::optional<std::string> ray_tree;  // JSON, written beside the image when --ray-tree was given
+};
+
+struct ModelEntry {
+  const char* name;    // `luz render --model NAME`, `model NAME` in a script
+  const char* label;   // the panel's radio button, the status line
+  int key;             // the digit that shows it (1 .. 9)
+  const char* help;    // F1's line and --help's
+  // The flag groups of `luz render` it takes: each options table row names its group
+  // (options_tables.h: "terms", "ambient-emission", "textures", "local", "whitted", "sampling",
+  // "path", "radiosity", "radiosity-display", "time"); a flag of
+  // another group is a usage error naming the models that take it.
+  std::span<const char* const> flag_groups;
+  // Headless (OSMesa or CPU): makes its own GL context when it needs one.
+  Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
+  // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model of
+  // `luz render` only (its key says so; the panel has no button for it).
+  std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
+  bool in_viewer() const { return make_view != nullptr; }
+  std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones
+  // The view-independent solution its pictures show, solved once for several panes of a sheet
+  // (radiosity's, which the hybrid shows too); nullptr for a model that has none.
+  std::shared_ptr<const RadiositySolution> (*solve)(const Scene& scene, const RenderSettings& settings);
+};
+
+std::span<const ModelEntry> models();
+const ModelEntry* find_model(std::string_view name);  // nullptr when there is none
+const ModelEntry* model_on_key(int digit);            // nullptr when no model has that key
+// "flat, gouraud or phong": the models that accept a flag group, for messages.
+std::string models_accepting(std::string_view flag_group);
+// "flat, gouraud, phong, ...": every model's name.
+std::string model_names(const char* separator = ", ");
+
+}  // namespace luz::app

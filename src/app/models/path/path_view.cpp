@@ -1,0 +1,317 @@
+// The path model in the viewer. Sections: [the noise] [the film's worker] [the frame] [panel]
+// [script verbs]
+#include "app/models/path/path_view.h"
+
+#include <algorithm>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include "app/viewer/difference_window.h"
+#include "app/common/i18n.h"
+#include "app/common/model_registry.h"
+#include "app/common/options_tables.h"
+#include "app/viewer/overlays.h"
+#include "app/models/whitted/whitted_worker.h"
+#include "core/image_compare.h"
+#include "gl/functions.h"
+#include "local/local_renderer.h"
+
+namespace luz::app {
+
+// ---- [the noise] ---------------------------------------------------------------------------------
+double relative_noise(const Image& mean, const Image& standard_error) {
+  const size_t n = mean.pixels.size();
+  if (n == 0 || standard_error.pixels.size() != n) return 0.0;
+  double mean_y = 0.0;
+  for (const Rgb& c : mean.pixels) mean_y += double(rec709_luminance(c));
+  mean_y /= double(n);
+  double sum = 0.0;
+  size_t lit = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double y = double(rec709_luminance(mean.pixels[i]));
+    if (!(y > 0.01 * mean_y) || !(y > 0.0)) continue;
+    sum += double(rec709_luminance(standard_error.pixels[i])) / y;
+    ++lit;
+  }
+  return lit > 0 ? sum / double(lit) : 0.0;
+}
+
+// ---- [the film's worker] -------------------------------------------------------------------------
+PathModel::PathModel(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
+
+PathModel::~PathModel() { cancel(); }
+
+void PathModel::scene_changed() {
+  cancel();
+  tracer_.reset();  // its BVH is of the old geometry
+  copy_.reset();
+  shown_ = PathPicture{};
+  uploaded_ = -1;
+}
+
+void PathModel::hidden() {
+  pause_ = true;  // the pass running finishes: the film keeps whole passes
+  wait_for_ = 0;
+}
+
+void PathModel::cancel() {
+  if (worker_.joinable()) {
+    cancel_ = true;
+    worker_.join();
+  }
+  cancel_ = false;
+  running_ = false;
+  have_film_ = false;
+  shown_ = PathPicture{};
+  uploaded_ = -1;
+  std::lock_guard lock(mutex_);
+  published_ = PathPicture{};
+}
+
+PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) const {
+  rt::PathOptions o = options;
+  o.spp = 0;
+  o.max_depth = rt::max_depth_of(o);
+  o.textures = viewer_.state().local.terms.textures;  // the panel's T switch, as --no-textures
+  return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
+}
+
+void PathModel::start(const Camera& camera, glm::ivec2 size) {
+  const Scene& scene = *viewer_.state().scene;
+  if (!tracer_) {
+    copy_ = std::make_unique<Scene>(scene);
+    tracer_ = std::make_unique<rt::PathRenderer>(*copy_);  // Embree's BVH, once per scene
+  }
+  if (!have_film_) {
+    // A new film: the tracer's copy takes the viewer's editable values (the geometry is the
+    // same: a new geometry is a new scene).
+    copy_->lights = scene.lights;
+    copy_->materials = scene.materials;
+    copy_->area_lights = scene.area_lights;
+    copy_->ambient = scene.ambient;
+    copy_->background = scene.background;
+    film_ = rt::PathFilm(size.x, size.y);
+    started_ = fingerprint(camera, size);
+    have_film_ = true;
+    ++restarts_;
+    began_ = std::chrono::steady_clock::now();
+  }
+  pause_ = false;
+  finished_ = false;
+  running_ = true;
+  const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
+  target_ = std::max(1, options.spp);
+  // GL stays on this thread; the worker only traces and copies pixels (DESIGN.md "Threads").
+  worker_ = std::jthread([this, camera, o] {
+    while (!cancel_ && !pause_ && film_.min_samples() < target_) {
+      tracer_->add_samples(film_, camera, o, 1, {}, &cancel_);
+      if (cancel_) break;  // an unfinished pass: the film is dropped
+      PathPicture pass;
+      pass.mean = film_.mean();
+      pass.spp = film_.min_samples();
+      pass.noise = relative_noise(pass.mean, film_.standard_error());
+      pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+      std::lock_guard lock(mutex_);
+      pass.version = published_.version + 1;
+      published_ = std::move(pass);
+    }
+    finished_.store(true, std::memory_order_release);
+  });
+}
+
+void PathModel::collect() {
+  if (running_ && finished_.load(std::memory_order_acquire)) {
+    worker_.join();
+    running_ = false;
+  }
+  std::lock_guard lock(mutex_);
+  if (published_.version != shown_.version) shown_ = published_;
+}
+
+void PathModel::advance(const Camera& camera, const Viewport& viewport) {
+  target_ = std::max(1, options.spp);  // a running worker stops there (or goes on to there)
+  collect();
+  const glm::ivec2 size = viewport.pixels;
+  const bool stale = have_film_ && started_ != fingerprint(camera, size);
+  // A lower target than the film has: a new film, so that the picture is of that many samples.
+  const bool too_many = have_film_ && shown_.spp > std::max(1, options.spp);
+  if (restart_ || stale || too_many) {
+    restart_ = false;
+    cancel();
+  }
+  if (running_ && pause_) {
+    pause_ = false;  // shown again before the pass ended: it goes on
+    if (finished_.load(std::memory_order_acquire)) collect();  // it had stopped already
+  }
+  if (!running_ && (!have_film_ || shown_.spp < std::max(1, options.spp))) start(camera, size);
+  if (!busy()) wait_for_ = 0;  // a wait ends once: a later restart does not hold the script again
+}
+
+const PathPicture* PathModel::picture_for(const Camera& camera, glm::ivec2 size) const {
+  if (!have_film_ || shown_.spp == 0 || started_ != fingerprint(camera, size)) return nullptr;
+  return &shown_;
+}
+
+// ---- [the frame] ---------------------------------------------------------------------------------
+void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+  const glm::ivec2 size = viewport.pixels;
+  if (!picture_for(camera, size)) {
+    // Until the first pass: the raster (Phong) view, as Whitted's model shows before a trace.
+    LocalOptions raster = viewer_.state().local;
+    raster.shading = Shading::phong;
+    picture.bind();
+    viewer_.local_renderer().draw(camera, size.x, size.y, raster);
+    return;
+  }
+  if (!texture_ || texture_->width() != size.x || texture_->height() != size.y) {
+    texture_ = std::make_unique<gl::Framebuffer>(size.x, size.y);
+    uploaded_ = -1;
+  }
+  if (uploaded_ != shown_.version) {
+    // GL's rows go bottom-up: image row y is texture row height - 1 - y.
+    upload_.resize(size_t(size.x) * size_t(size.y) * 3);
+    for (int row = 0; row < size.y; ++row)
+      for (int x = 0; x < size.x; ++x) {
+        const Rgb& p = shown_.mean.at(x, size.y - 1 - row);
+        float* out = &upload_[(size_t(row) * size_t(size.x) + size_t(x)) * 3];
+        out[0] = p.r, out[1] = p.g, out[2] = p.b;
+      }
+    glBindTexture(GL_TEXTURE_2D, texture_->colour_texture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGB, GL_FLOAT, upload_.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    uploaded_ = shown_.version;
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, texture_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture.id());
+  glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  picture.bind();
+}
+
+bool PathModel::busy() const {
+  if (wait_for_ <= 0) return false;
+  // What advance() publishes it draws in the same frame, so a pass seen here is on screen. A
+  // worker that stopped short (hidden) ends the wait.
+  const int goal = std::min(wait_for_, std::max(1, options.spp));
+  return shown_.spp < goal && (running_ || restart_ || !have_film_);
+}
+
+std::string PathModel::status() const {
+  if (shown_.spp == 0) return tr("(first pass)");
+  return trf("{} spp, noise {:.2f}%{}", shown_.spp, 100.0 * shown_.noise, running_ ? tr(", refining") : "");
+}
+
+void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
+  begin_hint("path hint", viewport, corners, 8.0f * viewer_.ui_scale());
+  const int target = std::max(1, options.spp);
+  ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
+  ImGui::SameLine();
+  const std::string text = shown_.spp == 0 ? std::string(tr("(first pass)"))
+                           : running_      ? trf("{} / {} spp, noise {:.2f}%", shown_.spp, target, 100.0 * shown_.noise)
+                                           : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
+  ImGui::TextUnformatted(text.c_str());
+  end_hint(corners);
+}
+
+// ---- [panel] -------------------------------------------------------------------------------------
+void PathModel::panel() {
+  ImGui::TextDisabled("%s", tr("slide 14's equation by Monte Carlo: the reference"));
+  ImGui::TextWrapped("L(x, V) = Le(x, V) + ∫ f(x, L, V) · L(x, L) · cos θ dL");
+  // The ranges of `luz render`'s --spp and --depth (options_tables.h), which this model shares.
+  const SliderRange spp = whitted_range("spp"), depth = whitted_range("depth");
+  int target = options.spp;
+  if (ImGui::SliderInt(tr("samples per pixel (target)"), &target, int(spp.low), int(spp.high), "%d",
+                       ImGuiSliderFlags_Logarithmic))
+    options.spp = std::max(1, target);
+  int max_depth = rt::max_depth_of(options);
+  if (ImGui::SliderInt(tr("maximum depth"), &max_depth, 1, int(depth.high))) options.max_depth = max_depth;
+  int seed = int(options.seed);
+  if (ImGui::InputInt(tr("seed"), &seed)) options.seed = uint32_t(std::max(0, seed));
+  if (ImGui::Button(tr("Restart"))) restart();
+  const double seconds = std::max(shown_.seconds, 1e-9);
+  const glm::ivec2 s = size();
+  ImGui::Text("%s", trf("{} of {} samples per pixel, {:.3g} samples/s", shown_.spp, std::max(1, options.spp),
+                        double(s.x) * double(s.y) * double(shown_.spp) / seconds).c_str());
+  ImGui::Text("%s", trf("noise: {:.2f}% (standard error / mean, lit pixels)", 100.0 * shown_.noise).c_str());
+  ImGui::TextDisabled("%s", tr("moving the camera or editing the scene starts a new picture"));
+}
+
+}  // namespace luz::app
+
+// ---- [script verbs] ------------------------------------------------------------------------------
+namespace luz::app {
+namespace {
+
+PathModel& path_model(ViewerServices& viewer) { return static_cast<PathModel&>(viewer.view("path")); }
+
+std::string check_path(const ScriptCommand& c) {
+  const auto& a = c.args;
+  if (a.size() == 1 && a[0] == "restart") return "";
+  if (a.size() != 2 || (a[0] != "spp" && a[0] != "depth" && a[0] != "seed"))
+    return "`path` takes spp N, depth N, seed S or restart";
+  if (!is_int(a[1]) || std::stol(a[1]) < (a[0] == "seed" ? 0 : 1)) return fmt::format("`path {}` takes a whole number{}", a[0], a[0] == "seed" ? " >= 0" : " >= 1");
+  const SliderRange range = whitted_range(a[0] == "spp" ? "spp" : "depth");
+  if (a[0] != "seed" && std::stol(a[1]) > long(range.high))
+    return fmt::format("`path {}` takes at most {}", a[0], int(range.high));
+  return "";
+}
+
+bool run_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
+  PathModel& path = path_model(viewer);
+  const auto& a = c.args;
+  if (a[0] == "restart") path.restart();
+  else if (a[0] == "spp") path.options.spp = std::stoi(a[1]);
+  else if (a[0] == "depth") path.options.max_depth = std::stoi(a[1]);
+  else path.options.seed = uint32_t(std::stoul(a[1]));
+  return true;
+}
+
+std::string check_wait_path(const ScriptCommand& c) {
+  if (auto e = check_count(c, 0, 1); !e.empty()) return e;
+  return c.args.empty() || (is_int(c.args[0]) && std::stoi(c.args[0]) >= 1) ? "" : "`wait-path N` takes N >= 1";
+}
+
+// Waits for the path picture shown, or for the difference view's reference; with neither, the
+// path model is shown first.
+bool run_wait_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
+  if (!viewer.state().difference.on && viewer.state().model != "path") viewer.set_model(*find_model("path"));
+  path_model(viewer).wait_for(c.args.empty() ? 0 : std::stoi(c.args[0]));
+  viewer.state().difference.waiting = viewer.state().difference.on;
+  return true;
+}
+
+bool run_dump_path(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
+  const PathModel& path = path_model(viewer);
+  const PathPicture& p = path.latest();
+  nlohmann::json j = {{"spp", p.spp},
+                      {"target", path.options.spp},
+                      {"depth", rt::max_depth_of(path.options)},
+                      {"seed", path.options.seed},
+                      {"size", {path.size().x, path.size().y}},
+                      {"noise", p.noise},
+                      {"seconds", p.seconds},
+                      {"running", path.running()},
+                      {"restarts", path.restarts()}};
+  std::ofstream out(c.args[0]);
+  out << j.dump(2) << '\n';
+  if (out) return true;
+  error = fmt::format("{}: cannot write the path tracer's state", c.args[0]);
+  return false;
+}
+
+constexpr ScriptVerb verbs[] = {
+    {"path", "path spp N|depth N|seed S|restart", check_path, run_path, false},
+    {"wait-path", "wait-path [N]", check_wait_path, run_wait_path, true},
+    {"dump-path", "dump-path FILE.json", check_json_file, run_dump_path, true},
+    {"difference", "difference on|off", check_difference, run_difference, true},
+    {"dump-difference", "dump-difference FILE.json", check_json_file, run_dump_difference, true},
+};
+
+}  // namespace
+
+std::span<const ScriptVerb> path_verbs() { return verbs; }
+
+}  // namespace luz::app

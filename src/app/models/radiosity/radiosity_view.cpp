@@ -1,0 +1,283 @@
+#include "app/models/radiosity/radiosity_view.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <imgui.h>
+
+#include <fstream>
+
+#include "app/common/i18n.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/inspector.h"
+#include "app/models/local/local_view.h"
+#include "app/common/options_tables.h"
+#include "app/viewer/overlays.h"
+#include "app/viewer/panel.h"
+#include "core/error.h"
+#include "gl/functions.h"
+#include "radiosity/texture_detail.h"
+
+namespace luz::app {
+
+void RadiosityModel::drop() {
+  for (const auto& listener : drop_listeners_) listener();
+  solution_.reset();
+}
+
+bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture,
+                                   Display display) {
+  ViewerState& state = viewer_.state();
+  RadiosityState& r = state.radiosity;
+  // The kd texture follows T, as in every model. It is the patches' reflectance, so switching
+  // it starts the solution over, where the scene shows a texture at all.
+  r.options.textures = state.local.terms.textures;
+  if (solution_ && solution_->mesh().detail.textures() != r.options.textures && TextureDetail::any_shown(*state.scene))
+    r.remesh = true;
+  if (!solution_ || r.remesh) {
+    r.remesh = false;
+    drop();  // the old solver's GL objects go before the new ones are made
+    r.status = RadiosityStatus{};
+    r.patch.reset();
+    try {
+      solution_ = std::make_unique<RadiosityView>(*state.scene, r.options);
+      const PatchMesh& mesh = solution_->mesh();
+      state.note = trf("radiosity: {} patches of {} elements, hemicube {}", mesh.shooters.size(), mesh.size(),
+                       r.options.hemicube_res);
+      for (const std::string& warning : solution_->solver().warnings()) viewer_.warn(warning);
+    } catch (const Error& error) {
+      state.note = error.what();
+      fmt::print(stderr, "luz: {}\n", error.what());
+      r.drive.running = false;
+      r.steps = r.stop_at = 0;
+      picture.bind();
+      const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+      glClearBufferfv(GL_COLOR, 0, black);
+      return false;
+    }
+  }
+  const bool was_running = r.drive.running;
+  solution_->advance(r, state.exposure, display.heat_map);
+  if (was_running && !r.drive.running && r.status.done)
+    // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
+    state.note = trf("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
+                             100.0 * r.status.unshot_fraction);
+  picture.bind();
+  solution_->draw(camera, viewport.pixels.x, viewport.pixels.y, display.shooter);
+  return true;
+}
+
+// The solver steps here, on the GL thread, within the frame's budget; the picture is the
+// solution so far (vertex colours uploaded after the shots), the shooter highlighted.
+void RadiosityModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+  RadiosityState& r = viewer_.state().radiosity;
+  step_and_draw(camera, viewport, picture, {r.drive.heat_map, r.drive.show_shooter});
+  // The clicked patch's values, live as the shots go on.
+  const bool inspected = refresh_inspection(viewer_, camera, viewport);
+  picture.bind();
+  if (inspected && solution_) r.patch = solution_->read(*viewer_.inspection().pick);
+  else r.patch.reset();
+}
+
+void RadiosityModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
+  ViewerState& state = viewer_.state();
+  if (inspect(viewer_, camera, viewport, pixel)) {
+    state.show_inspector = true;
+    if (solution_) state.radiosity.patch = solution_->read(*viewer_.inspection().pick);
+    return;
+  }
+  state.radiosity.patch.reset();
+  state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
+}
+
+void RadiosityModel::panel() { radiosity_section(viewer_.state()); }
+
+// The patch inspector in the corner away from the clicked point, the shooter's hemicube in
+// another, and at shot 0 a hint saying how to start.
+void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
+  ViewerState& state = viewer_.state();
+  RadiosityState& r = state.radiosity;
+  if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
+    begin_hint("radiosity hint", viewport, corners, 8.0f * viewer_.ui_scale());
+    ImGui::TextUnformatted(tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."));
+    ImGui::TextUnformatted(tr("Press Space to run the shooting, '.' for one shot."));
+    end_hint(corners);
+  }
+  const Inspection& in = viewer_.inspection();
+  if (in.pick && r.patch && state.show_inspector) {
+    const glm::vec2 at = viewport.window_of(glm::ivec2(in.pick->x, in.pick->y));
+    corners.place_away_from(at);
+    draw_patch_inspector(*state.scene, *r.patch, state.show_inspector);
+    draw_pick_cross(at, viewer_.ui_scale());
+  }
+  r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
+  if (r.drive.show_item_buffer) {
+    corners.place(WindowCorners::top_right);
+    draw_item_buffer_window(state, 200.0f * viewer_.ui_scale());
+  }
+}
+
+std::string RadiosityModel::status() const {
+  const RadiosityState& r = viewer_.state().radiosity;
+  if (!r.status.built) return {};
+  // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
+  return trf("shot {}, {:.2f}% unshot{}", r.status.shots, 100.0 * r.status.unshot_fraction,
+                     r.drive.running ? tr(", running") : r.status.done ? tr(", done") : tr(", paused"));
+}
+
+// Running and stepping show model 5 (the viewer shows the model whose action it is).
+bool RadiosityModel::act(Action action) {
+  ViewerState& state = viewer_.state();
+  RadiosityState& r = state.radiosity;
+  switch (action) {
+    case Action::radiosity_run:
+      r.drive.running = !r.drive.running;
+      state.note = r.drive.running ? tr("radiosity: running") : tr("radiosity: paused");
+      return true;
+    case Action::radiosity_step:
+      r.drive.running = false;
+      r.steps += 1;
+      state.note = tr("radiosity: one shot");
+      return true;
+    default: return false;
+  }
+}
+
+bool RadiosityModel::busy() const {
+  const RadiosityState& r = viewer_.state().radiosity;
+  return r.steps > 0 || r.stop_at > 0 || r.remesh;
+}
+
+bool RadiosityModel::animating() const {
+  const RadiosityState& r = viewer_.state().radiosity;
+  return r.drive.running || busy() || r.reset;
+}
+
+}  // namespace luz::app
+
+// ---- its script verbs ----------------------------------------------------------------------------
+namespace luz::app {
+namespace {
+
+RadiosityModel& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityModel&>(viewer.view("radiosity")); }
+
+// `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
+std::string check_radiosity(const ScriptCommand& c) {
+  const auto& a = c.args;
+  if (a.empty())
+    return "`radiosity` takes run, pause, reset, step N, patch-size M, hemicube N, meshing M, form-factors F, "
+           "budget MS or a switch";
+  const std::string& what = a[0];
+  if (what == "run" || what == "pause" || what == "reset")
+    return a.size() == 1 ? "" : fmt::format("`radiosity {}` takes no value", what);
+  if (a.size() != 2) return fmt::format("`radiosity {}` takes one value", what);
+  const std::string& value = a[1];
+  if (what == "step") return is_int(value) && std::stoi(value) >= 1 ? "" : "`radiosity step N` takes N >= 1";
+  if (what == "patch-size")
+    return is_number(value) && std::stof(value) >= 0.0f ? "" : "`radiosity patch-size M` takes metres >= 0 (0: auto)";
+  if (what == "hemicube") {
+    const bool fits = is_int(value) && std::stoi(value) >= kMinHemicubeRes && std::stoi(value) <= kMaxHemicubeRes &&
+                      std::stoi(value) % 2 == 0;
+    return fits ? "" : fmt::format("`radiosity hemicube N` takes an even N in {} .. {}", kMinHemicubeRes, kMaxHemicubeRes);
+  }
+  if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
+  if (what == "meshing" || what == "form-factors")  // slide 40's choices, as --meshing and --form-factors
+    return parse_value(*find_row(radiosity_rows(), what), value, true)
+               ? ""
+               : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_rows(), what)));
+  for (const char* name : {"heat-map", "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer", "rotation"})
+    if (what == name) return value == "on" || value == "off" ? "" : fmt::format("`radiosity {}` takes on or off", name);
+  return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, meshing, "
+                     "form-factors, budget, heat-map, outlines, flat-patches, ambient-estimate, shooter, "
+                     "item-buffer, rotation)", what);
+}
+
+bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
+  const auto& a = c.args;
+  RadiosityState& r = viewer.state().radiosity;
+  if (a[0] == "run") {
+    r.drive.running = true;
+  } else if (a[0] == "pause") {
+    r.drive.running = false;
+  } else if (a[0] == "reset") {
+    r.reset = true;
+  } else if (a[0] == "step") {
+    r.drive.running = false;
+    r.steps += std::stoi(a[1]);
+  } else if (a[0] == "patch-size") {
+    r.options.patch_size = std::stof(a[1]);
+    r.remesh = true;
+  } else if (a[0] == "hemicube") {
+    r.options.hemicube_res = std::stoi(a[1]);
+    r.remesh = true;
+  } else if (a[0] == "meshing" || a[0] == "form-factors") {
+    const RadiosityRow& row = *find_row(radiosity_rows(), a[0]);
+    row.set(r.options, *parse_value(row, a[1], true));
+    r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
+  } else if (a[0] == "budget") {
+    r.drive.by_time = true;
+    r.drive.budget_ms = std::stof(a[1]);
+  } else {
+    const bool on = a[1] == "on";
+    if (a[0] == "heat-map") r.drive.heat_map = on;
+    if (a[0] == "outlines") r.options.outlines = on;
+    if (a[0] == "flat-patches") r.options.flat_patches = on;
+    if (a[0] == "ambient-estimate") r.options.ambient_estimate = on;
+    if (a[0] == "shooter") r.drive.show_shooter = on;
+    if (a[0] == "item-buffer") r.drive.show_item_buffer = on;
+    if (a[0] == "rotation") r.options.random_rotation = on;
+  }
+  return true;
+}
+
+std::string check_shots(const ScriptCommand& c) {
+  if (auto e = check_count(c, 1, 1); !e.empty()) return e;
+  return is_int(c.args[0]) && std::stoi(c.args[0]) >= 1 ? "" : "`wait-shots N` takes a number of shots >= 1";
+}
+
+bool run_wait_shots(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
+  const std::string& model = viewer.model().name;
+  if (model != std::string("radiosity") && model != std::string("hybrid")) {
+    error = "`wait-shots` runs the radiosity solver: choose it first (`model radiosity` or `model hybrid`)";
+    return false;
+  }
+  RadiosityState& r = viewer.state().radiosity;
+  r.stop_at = std::stoi(c.args[0]);
+  r.drive.running = true;
+  return true;
+}
+
+bool dump(const std::string& path, const nlohmann::json& json, std::string& error) {
+  std::ofstream out(path);
+  out << json.dump(2) << '\n';
+  if (out) return true;
+  error = fmt::format("{}: cannot write the radiosity values", path);
+  return false;
+}
+
+bool run_dump_patch(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
+  const RadiosityState& r = viewer.state().radiosity;
+  if (!r.patch) {
+    error = "no patch is inspected: click a surface in the radiosity model first";
+    return false;
+  }
+  return dump(c.args[0], to_json(*r.patch), error);
+}
+
+bool run_dump_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
+  radiosity_of(viewer);  // the status is the view's, even before it is shown
+  return dump(c.args[0], to_json(viewer.state().radiosity), error);
+}
+
+constexpr ScriptVerb verbs[] = {
+    {"radiosity", "radiosity run|pause|reset|step N|patch-size M|hemicube N|budget MS|SWITCH on|off", check_radiosity,
+     run_radiosity, true},
+    {"wait-shots", "wait-shots N", check_shots, run_wait_shots, true},
+    {"dump-patch", "dump-patch FILE.json", check_json_file, run_dump_patch, true},
+    {"dump-radiosity", "dump-radiosity FILE.json", check_json_file, run_dump_radiosity, true},
+};
+
+}  // namespace
+
+std::span<const ScriptVerb> radiosity_verbs() { return verbs; }
+
+}  // namespace luz::app

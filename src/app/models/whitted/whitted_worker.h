@@ -1,0 +1,108 @@
+#pragma once
+// The viewer's Whitted model: the view traced on demand, tile by tile, off the GL
+// thread, and shown as the tiles arrive.
+//
+//   start()   the trace runs on a worker thread (rt::WhittedRenderer::render, its tiles on TBB);
+//             each finished tile is copied, under a mutex, into a CPU image and queued;
+//   update()  on the GL thread, every frame: the queued tiles go up into a float texture
+//             (glTexSubImage2D, one call per tile), and a finished worker is joined;
+//   cancel()  sets the cancel flag and joins: tiles not started are skipped.
+//
+// The tracer reads its own copy of the scene, whose lights, materials, area lights, ambient and
+// background are refreshed from the viewer's at every start (and before a ray tree is traced):
+// the panel can edit the viewer's scene while a trace runs without a data race, and the viewer
+// cancels the trace when it sees such an edit (see Fingerprint).
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+#include "app/viewer/viewer_state.h"
+#include "gl/framebuffer.h"
+#include "raytracing/counters.h"
+#include "raytracing/ray_tree.h"
+#include "raytracing/renderer.h"
+#include "raytracing/whitted_options.h"
+
+namespace luz::app {
+
+// Everything a traced picture depends on, to tell when the picture on screen is no longer the
+// view's (the camera moved, the window was resized, an option or the scene was edited).
+struct Fingerprint {
+  glm::mat4 to_world{1.0f};
+  float yfov = 0.0f;
+  int width = 0, height = 0;
+  rt::WhittedOptions options;
+  std::vector<float> scene;  // the editable numbers of lights, materials and scene settings
+  bool operator==(const Fingerprint&) const = default;
+};
+std::vector<float> editable_values(const Scene& scene);
+
+class WhittedView {
+public:
+  explicit WhittedView(const Scene& scene);
+  ~WhittedView();  // cancels and joins
+  WhittedView(const WhittedView&) = delete;
+  WhittedView& operator=(const WhittedView&) = delete;
+
+  // Starts tracing (a running trace is cancelled first). `raster` holds the picture the local
+  // model drew of the same view, w x h: the tiles not traced yet show it. A `held` trace keeps
+  // every tile back until it is cancelled: a trace surely still running, for the tests of
+  // cancelling.
+  void start(const Scene& scene, const Camera& camera, int width, int height,
+             const rt::WhittedOptions& options, const gl::Framebuffer& raster, bool held = false);
+  // Back to the raster view; true when a trace was running (and is now cancelled).
+  bool cancel();
+  // GL thread, once a frame: uploads the finished tiles, joins a finished worker.
+  void update();
+
+  // The hybrid's diffuse part (rt::WhittedRenderer::set_diffuse_source); not while tracing.
+  void set_diffuse_source(const rt::DiffuseSource* source) { tracer_.set_diffuse_source(source); }
+
+  TracePhase phase() const { return phase_; }
+  bool cancelled() const { return cancelled_; }  // the last trace was cancelled before its end
+  bool showing() const { return phase_ != TracePhase::raster; }
+  const Fingerprint& fingerprint() const { return started_; }
+  const gl::Framebuffer& picture() const { return *picture_; }  // while showing()
+  int tiles_done() const { return uploaded_done_; }
+  int tiles_total() const { return total_; }
+  double seconds() const;                                       // so far, or in all once done
+  const rt::Counters& counters() const { return counters_; }    // of the finished trace
+
+  // Slide 24: the ray tree of pixel (x, y) of a width x height view, with the viewer's current
+  // scene (copied in first when no trace runs).
+  rt::RayTree trace_pixel(const Scene& scene, const Camera& camera, int width, int height, int x, int y,
+                          const rt::WhittedOptions& options);
+
+private:
+  void sync(const Scene& scene);  // the tracer's copy takes the viewer's editable values
+
+  Scene copy_;
+  rt::WhittedRenderer tracer_;
+  TracePhase phase_ = TracePhase::raster;
+  bool cancelled_ = false;
+  Fingerprint started_;
+  std::unique_ptr<gl::Framebuffer> picture_;  // the traced tiles over the raster picture
+
+  // Shared with the worker: the tiles finished and not yet uploaded, and their pixels.
+  std::mutex mutex_;
+  Image pixels_;
+  std::vector<rt::Tile> pending_;
+  int done_ = 0;
+  std::atomic<bool> cancel_{false};
+  std::atomic<bool> finished_{false};
+  std::jthread worker_;
+
+  int uploaded_done_ = 0, total_ = 0;
+  std::chrono::steady_clock::time_point began_;
+  double seconds_ = 0.0;
+  rt::Counters counters_;
+  std::vector<float> upload_;  // one tile's rows, bottom-up, for glTexSubImage2D
+};
+
+}  // namespace luz::app

@@ -1,0 +1,192 @@
+#include "app/viewer/overlays.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "app/common/i18n.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/shortcuts.h"
+
+namespace luz::app {
+
+bool WindowCorners::place_away_from(glm::vec2 at) {
+  const glm::vec2 centre = viewport_.centre();
+  // The corner diagonally opposite the point first, then the one beside it across, ...
+  const bool right = at.x > centre.x, low = at.y > centre.y;
+  const Corner order[4] = {Corner(int(!low) * 2 + int(!right)), Corner(int(low) * 2 + int(!right)),
+                           Corner(int(!low) * 2 + int(right)), Corner(int(low) * 2 + int(right))};
+  for (Corner c : order)
+    if (!taken_[c]) {
+      put(c);
+      return true;
+    }
+  put(order[0]);
+  return false;
+}
+
+bool WindowCorners::place(Corner preferred) {
+  for (int i = 0; i < 4; ++i) {
+    const Corner c = Corner((int(preferred) + i) % 4);
+    if (!taken_[c]) {
+      put(c);
+      return true;
+    }
+  }
+  put(preferred);
+  return false;
+}
+
+void WindowCorners::put(Corner corner) {
+  taken_[corner] = true;
+  const bool right = corner == top_right || corner == bottom_right;
+  const bool low = corner == bottom_left || corner == bottom_right;
+  const glm::vec2 o = viewport_.origin, s = viewport_.size;
+  const float top = std::max(o.y, top_) + margin_;
+  const float x = right ? o.x + s.x - margin_ : o.x + margin_;
+  const float y = low ? o.y + s.y - margin_ : top;
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(right ? 1.0f : 0.0f, low ? 1.0f : 0.0f));
+  // Each quarter less the margins: windows in different corners cannot meet, nor cover the centre.
+  const float half_height = low ? 0.5f * s.y - 1.5f * margin_ : o.y + 0.5f * s.y - top - 0.5f * margin_;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                      ImVec2(std::max(0.5f * s.x - 1.5f * margin_, 1.0f), std::max(half_height, 1.0f)));
+}
+
+glm::vec4 WindowCorners::take_left_half() {
+  taken_[top_left] = taken_[bottom_left] = true;
+  const float hint = 2.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+  const glm::vec2 o = viewport_.origin, s = viewport_.size;
+  const float top = std::max(o.y, top_) + margin_ + hint;
+  return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
+}
+
+void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin) {
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin(name, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  const float text_width = viewport.size.x - 2.0f * (margin + ImGui::GetStyle().WindowPadding.x);
+  ImGui::PushTextWrapPos(std::max(text_width, 4.0f * ImGui::GetFontSize()));
+}
+
+void end_hint(WindowCorners& corners) {
+  ImGui::PopTextWrapPos();
+  corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
+  ImGui::End();
+}
+
+void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGuiWindowFlags flags, Edge edge) {
+  ImGui::SetNextWindowPos(ImVec2(origin.x, origin.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(size.x, size.y), ImGuiCond_Always);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::Begin(name, nullptr, flags);
+  ImGui::PopStyleVar();
+  const float t = std::max(ImGui::GetStyle().WindowBorderSize, 1.0f);
+  const glm::vec2 end = origin + size;
+  const ImVec2 a = edge == Edge::top ? ImVec2(origin.x, origin.y) : ImVec2(end.x - t, origin.y);
+  const ImVec2 b = edge == Edge::top ? ImVec2(end.x, origin.y + t) : ImVec2(end.x, end.y);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(a, b);
+  draw->AddRectFilled(a, b, ImGui::GetColorU32(ImGuiCol_Border));  // square corners: no anti-aliased fringe
+  draw->PopClipRect();
+}
+
+std::string status_line_text(const ViewerState& state, const std::string& model) {
+  const Scene& scene = *state.scene;
+  const auto lights = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.enabled; });
+  const std::string camera = state.free_camera ? tr("free camera (C: back)") : scene.cameras[size_t(state.scene_camera)].name;
+  const size_t triangles = scene.triangle_count(), emitters = scene.area_lights.size();
+  return fmt::format("{}  |  {:.1f} ms  |  {}  |  {}, {}  |  {}  |  {}", model, state.status_ms,
+                     trnf("{} triangle", "{} triangles", triangles, triangles),
+                     trnf("{} light", "{} lights", size_t(lights), lights),
+                     trnf("{} emitter", "{} emitters", emitters, emitters), camera, state.note);
+}
+
+void draw_status_line(const std::string& text, float top, float width, float height) {
+  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  begin_frame_window("status", glm::vec2(0.0f, top), glm::vec2(width, height), fixed, Edge::top);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::End();
+}
+
+void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
+  ImGui::SetNextWindowPos(ImVec2(centre.x, centre.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(max.x, max.y));
+  // Auto-sized up to `max`; beyond it the list scrolls (wheel, scrollbar), the title bar's
+  // close button and F1 hide it.
+  ImGui::Begin(tr("Keys (F1)"), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_AlwaysVerticalScrollbar);
+  // As wide as `max` allows, the descriptions wrapped in their column: a longer translation
+  // takes another line instead of running past the window's edge.
+  const float width = max.x - 2.0f * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg, ImVec2(width, 0.0f))) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    auto row = [](const std::string& keys, const char* what) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(keys.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("%s", what);
+    };
+    for (const ModelEntry& m : models()) row(std::to_string(m.key), tr(m.help));
+    for (const Shortcut& s : shortcuts())
+      if (s.action != Action::choose_model) row(tr(s.keys), tr(s.what));
+    row(tr("left drag"), tr("orbit around the scene"));
+    row(tr("right drag"), tr("pan"));
+    row(tr("wheel"), tr("zoom"));
+    row(tr("left click"), tr("inspect the pixel: each term's value (Whitted: its ray tree; radiosity: the patch)"));
+    row(tr("drop a file"), tr("load a .gltf / .glb scene"));
+    ImGui::EndTable();
+  }
+  if (ImGui::Button(tr("close  [F1]"))) open = false;
+  ImGui::End();
+}
+
+void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewport& viewport, float margin) {
+  if (warnings.empty() || !open) return;
+  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, viewport.origin.y + viewport.size.y - margin), ImGuiCond_Always,
+                          ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(0.9f * viewport.size.x, 0.3f * viewport.size.y));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.55f, 0.4f, 0.05f, 1.0f));
+  const std::string title = (warnings.size() == 1 ? std::string(tr("1 warning")) : trf("{} warnings", warnings.size())) + "###warnings";
+  ImGui::Begin(title.c_str(), &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                                         ImGuiWindowFlags_NoFocusOnAppearing);
+  // BulletText does not wrap: a bullet, then the text on its line, wrapped at the window's width.
+  ImGui::PushTextWrapPos(0.85f * viewport.size.x);
+  for (const std::string& w : warnings) {
+    ImGui::Bullet();
+    ImGui::TextUnformatted(w.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+  ImGui::PopStyleColor(2);
+}
+
+void draw_load_error(ViewerState& state, float x, float y, float max_width) {
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(0.9f * max_width, 1e6f));
+  // A red title: the tests find the window by it (tests/test_viewer.cpp).
+  ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.1f, 0.1f, 1.0f));
+  ImGui::Begin(tr("The scene did not load"), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushTextWrapPos(0.85f * max_width);
+  ImGui::TextUnformatted(state.error.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::TextDisabled(tr("Still showing %s. Fix the file and press R, or drop another."),
+                      state.scene_path.filename().string().c_str());
+  if (ImGui::Button(tr("OK"))) state.error.clear();
+  ImGui::End();
+  ImGui::PopStyleColor(2);
+}
+
+}  // namespace luz::app

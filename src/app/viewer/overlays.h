@@ -1,0 +1,83 @@
+#pragma once
+// The small windows of the viewer besides the panel and the inspector: the status line, the
+// list of keys (F1), Whitted's hint and progress, and the error of a scene that did not load.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <imgui.h>
+
+#include "app/viewer/model_view.h"
+#include "app/viewer/viewer_state.h"
+
+namespace luz::app {
+
+// Floating windows over the picture go into its corners, one window per corner, each at most a
+// little under half the picture's width and height: so none covers the picture's centre or
+// another. A hint at the top centre pushes the top corners down below it.
+class WindowCorners {
+public:
+  enum Corner { top_left, top_right, bottom_left, bottom_right };
+  WindowCorners(const Viewport& viewport, float margin) : viewport_(viewport), margin_(margin) {}
+  // The next window goes into the free corner farthest from `at` (the inspected point, which
+  // stays in view); false when every corner is taken (it goes into the farthest anyway).
+  bool place_away_from(glm::vec2 at);
+  // The next window goes into `preferred`, or the next free corner.
+  bool place(Corner preferred);
+  // A window at the top centre ends at `bottom` (window units).
+  void reserve_top(float bottom) { top_ = std::max(top_, bottom); }
+  // Where the next window at the top centre starts: below those reserved (the lesson's caption).
+  float top() const { return std::max(viewport_.origin.y, top_); }
+  // The left half of the picture for one large window (slide 36's), below room for a two-line
+  // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
+  glm::vec4 take_left_half();
+  // Where the windows placed so far ended up (ImGui's rectangles), for the tests' dump-windows.
+  const Viewport& viewport() const { return viewport_; }
+
+private:
+  void put(Corner corner);
+  Viewport viewport_;
+  float margin_;
+  float top_ = 0.0f;
+  bool taken_[4] = {false, false, false, false};
+};
+
+// A hint over the picture: a window without decoration or input at the top centre of
+// `viewport`, from `corners.top()` down, sized to its text, which wraps to the viewport's width
+// (a pane of the side-by-side view is narrow). end_hint reserves the top for it and ends it.
+void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin);
+void end_hint(WindowCorners& corners);
+
+// The panel and the status line frame the picture: fixed windows without ImGui's own border,
+// whose anti-aliased edge reaches a pixel past the window, onto the picture (and into the
+// panel cache's way, panel_cache.h). A line of the border's colour inside the window along
+// `edge` takes its place. Ends with ImGui::End as any window.
+enum class Edge { top, right };
+void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGuiWindowFlags flags, Edge edge);
+
+// The status line's text: model, its state, frame time (`state.status_ms`), triangles, lights,
+// camera and the latest message.
+std::string status_line_text(const ViewerState& state, const std::string& model);
+// `text` in one line at `top` (the status line; wrapped to a second line when it does not fit).
+void draw_status_line(const std::string& text, float top, float width, float height);
+
+// The shortcut table (shortcuts.h), the models' keys and the mouse gestures, in a window of at
+// most `max` window units centred on `centre`, scrolled when the list is longer; its close
+// button (and F1 again) hides it.
+void draw_help(bool& open, glm::vec2 centre, glm::vec2 max);
+
+// The scene's warnings (the loader's and the renderers'), in a small window at the bottom of
+// the picture until closed.
+void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewport& viewport, float margin);
+
+// Radiosity: the last shooter's hemicube (its five item-buffer faces, unfolded, a false colour
+// per patch ID), `side` window units across, in a window placed by the caller (WindowCorners)
+// (radiosity_panel.cpp).
+void draw_item_buffer_window(ViewerState& state, float side);
+
+// state.error in a red-titled window centred on (x, y); its OK button clears the error.
+void draw_load_error(ViewerState& state, float x, float y, float max_width);
+
+}  // namespace luz::app

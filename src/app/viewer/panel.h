@@ -1,0 +1,30 @@
+#pragma once
+// The Dear ImGui panel: the models' radio buttons and the shown model's own section (its
+// ModelView's panel()), the lights, the material of the clicked object and the scene-wide
+// settings. It edits the ViewerState in place.
+#include <imgui.h>
+
+#include "app/viewer/model_view.h"
+#include "app/viewer/viewer_state.h"
+#include "app/viewer/widget_registry.h"  // name_widget() after each labelled widget
+
+namespace luz::app {
+
+// Draws the panel as a fixed window at the left of the window, `width` x `height` window units.
+void draw_panel(ViewerState& state, ModelView& shown, float width, float height);
+
+// The local models' section: where the formula is evaluated, the formula, the term switches
+// and slide 19's other possibilities.
+void local_section(ViewerState& state);
+
+// Radiosity's section (radiosity_panel.cpp): run, pause, one shot, reset; counters and the plot
+// of unshot power against shots; the time budget, stopping rule, mesh, hemicube and display.
+void radiosity_section(ViewerState& state);
+
+// A remark in the disabled colour, wrapped at the panel's edge (never cut off).
+void dim_text(const char* format, ...) IM_FMTARGS(1);
+
+// The formula of the local models with each term coloured, or greyed when it is off.
+void draw_local_formula(const LocalOptions& options, const Scene& scene);
+
+}  // namespace luz::app

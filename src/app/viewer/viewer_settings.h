@@ -1,0 +1,26 @@
+#pragma once
+// The script's `set NAME VALUE`: the options tables' rows (options_tables.h) of the local and
+// Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector).
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/viewer/viewer_state.h"
+
+namespace luz::app {
+
+// The interface's size (`--ui-scale`, `set ui-scale`, Ctrl+= / Ctrl+-): 1 is the default.
+inline constexpr float kMinUiScale = 0.5f;
+inline constexpr float kMaxUiScale = 4.0f;
+
+// "" when NAME takes VALUE, else what is wrong (checked before any window opens).
+std::string check_setting(const std::string& name, const std::string& value);
+// Sets it; false (with `error`) when it cannot be set.
+bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
+
+// Every row of the local, Whitted and radiosity tables as the viewer holds it now, by the row's
+// name: {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...}}
+// (dump-state's "settings": what a lesson's step or a panel edit really set).
+nlohmann::json settings_json(const ViewerState& state);
+
+}  // namespace luz::app

@@ -1,0 +1,82 @@
+#include "app/viewer/widget_verbs.h"
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "app/viewer/model_view.h"
+#include "app/viewer/widget_registry.h"
+#include "app/viewer/viewer_window.h"
+
+namespace luz::app {
+
+std::string check_click_widget(const ScriptCommand& c) {
+  if (auto e = check_count(c, 1, 1); !e.empty()) return e;
+  return c.args[0].empty() ? "`click-widget` takes a widget's label" : "";
+}
+
+// The widget is looked up among those of the last frame drawn; one hidden by the panel's scroll
+// cannot be clicked, as a user could not.
+bool run_click_widget(Viewer& v, const ScriptCommand& c, std::string& error) {
+  const std::optional<NamedWidget> widget = find_widget(c.args[0], error);
+  if (!widget) return false;
+  if (!widget->visible) {
+    error = fmt::format("the widget \"{}\" is scrolled out of the panel's view", c.args[0]);
+    return false;
+  }
+  v.click_at(widget->centre());
+  return true;
+}
+
+bool run_dump_widgets(Viewer&, const ScriptCommand& c, std::string& error) {
+  std::ofstream out(c.args[0]);
+  out << widgets_json().dump(2) << '\n';
+  if (out) return true;
+  error = fmt::format("{}: cannot write the widgets' rectangles", c.args[0]);
+  return false;
+}
+
+std::string check_click_picture(const ScriptCommand& c) {
+  if (auto e = check_count(c, 2, 2); !e.empty()) return e;
+  return is_int(c.args[0]) && is_int(c.args[1]) && std::stoi(c.args[0]) >= 0 && std::stoi(c.args[1]) >= 0
+             ? "" : "`click-picture X Y` takes a pixel of the picture (whole numbers from 0)";
+}
+
+bool run_click_picture(Viewer& v, const ScriptCommand& c, std::string& error) {
+  const Viewport view = v.layout().view;
+  const glm::ivec2 pixel(std::stoi(c.args[0]), std::stoi(c.args[1]));
+  if (pixel.x >= view.pixels.x || pixel.y >= view.pixels.y) {
+    error = fmt::format("the picture is {}x{} pixels: ({}, {}) is outside it", view.pixels.x, view.pixels.y, pixel.x,
+                        pixel.y);
+    return false;
+  }
+  v.click_at(view.window_of(pixel));
+  return true;
+}
+
+// A state a script waits for instead of a number of frames, which a faster or slower machine
+// would turn into another state.
+std::string check_wait_until(const ScriptCommand& c) {
+  if (auto e = check_count(c, 2, 2); !e.empty()) return e;
+  if (c.args[0] != "trace-done" && c.args[0] != "radiosity-done")
+    return fmt::format("unknown condition \"{}\" (trace-done, radiosity-done)", c.args[0]);
+  return is_int(c.args[1]) && std::stoi(c.args[1]) >= 1 ? "" : "`wait-until CONDITION FRAMES` takes a number of frames >= 1";
+}
+
+bool condition_holds(Viewer& v, const std::string& condition) {
+  if (condition == "trace-done") {  // every traced pane (`trace` traces them all)
+    bool traced_pane = false;
+    for (const ModelView* pane : v.pane_views())
+      if (pane->trace_state()) {
+        if (!pane->holds(condition)) return false;
+        traced_pane = true;
+      }
+    return traced_pane;
+  }
+  const RadiosityStatus& r = v.state().radiosity.status;  // the solution models 5 and 6 show
+  return condition == "radiosity-done" && r.built && r.done;
+}
+
+bool Viewer::holds(const std::string& condition) { return condition_holds(*this, condition); }
+
+}  // namespace luz::app

@@ -1,0 +1,130 @@
+// The shipped lesson as a class sees it on a projector: tests/lesson/sintesis.txt is played on
+// lessons/sintesis.json by the `viewer_sintesis_script` CTest fixture (Xvfb, Mesa's software GL);
+// these tests read what it dumped. Skipped only when xvfb-run is missing.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "viewer_support.h"
+
+namespace luz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::json_of;
+
+const fs::path run_dir = LUZ_VIEWER_RUN_DIR;
+
+class ViewerSintesis : public ::testing::Test {
+protected:
+  void SetUp() override { test::require_scripted_run(run_dir, LUZ_VIEWER_SCRIPT_TEST); }
+  static fs::path file(const std::string& name) { return run_dir / name; }
+};
+
+// Esc with a lesson open shows "Quit Luz?" instead of ending the class; Esc again answers "stay",
+// and the script went on to its end (its own `quit` quits without asking).
+TEST_F(ViewerSintesis, EscAsksBeforeEndingTheClass) {
+  EXPECT_TRUE(json_of(file("quit-asked.json"))["asking_to_quit"].get<bool>());
+  const nlohmann::json windows = json_of(file("quit-asked-windows.json"));
+  const bool shown = std::any_of(windows["windows"].begin(), windows["windows"].end(), [](const nlohmann::json& w) {
+    return w["name"].get<std::string>().ends_with("###quit");
+  });
+  EXPECT_TRUE(shown) << windows.dump(2);
+  EXPECT_FALSE(json_of(file("quit-stayed.json"))["asking_to_quit"].get<bool>());
+}
+
+// A trace nobody waits for ends inside a frame whose panel and status line were laid out while it
+// still ran: the window must draw once more, with no input, and then wait. What the screen showed
+// after the idle seconds is what it shows frames later: the finished picture, no "tracing 98%".
+TEST_F(ViewerSintesis, TheEndOfATraceIsDrawnWithoutInput) {
+  EXPECT_EQ(json_of(file("traced-trace.json"))["phase"], "done");
+  const test::Codes idle = test::codes(file("traced-idle-shown.png"));
+  const test::Codes later = test::codes(file("traced-later-shown.png"));
+  ASSERT_EQ(idle.size(), later.size());
+  // Above the status line, whose message the first screenshot changed ("saved ...").
+  int moved = 0;
+  for (int y = 0; y < idle.height - 40; ++y)
+    for (int x = 0; x < idle.width; ++x)
+      for (int c = 0; c < 3; ++c) moved += std::abs(idle.at(x, y, c) - later.at(x, y, c)) > 2;
+  EXPECT_EQ(moved, 0);
+
+  const nlohmann::json state = json_of(file("traced-idle.json"));
+  EXPECT_EQ(state["status_line"], json_of(file("traced-later.json"))["status_line"]);
+  EXPECT_EQ(state["model"], "whitted");
+}
+
+// The same for radiosity run to its stopping rule: the status line the class reads says it is
+// done (not "running") without anyone touching the window.
+TEST_F(ViewerSintesis, ASolveRunToItsEndIsDrawnWithoutInput) {
+  const nlohmann::json radiosity = json_of(file("converged-idle-radiosity.json"));
+  ASSERT_TRUE(radiosity["done"].get<bool>()) << radiosity.dump(2);
+  EXPECT_FALSE(radiosity["running"].get<bool>());
+  const nlohmann::json state = json_of(file("converged-idle.json"));
+  EXPECT_EQ(state["status_line"], json_of(file("converged-later.json"))["status_line"]);
+}
+
+int max_depth(const nlohmann::json& tree) {
+  int depth = 0;
+  for (const auto& node : tree["nodes"]) depth = std::max(depth, node["depth"].get<int>());
+  return depth;
+}
+
+size_t rays_of_kind(const nlohmann::json& tree, const std::string& kind) {
+  return size_t(std::count_if(tree["nodes"].begin(), tree["nodes"].end(),
+                              [&](const nlohmann::json& n) { return n["kind"] == kind; }));
+}
+
+// Step 28's clicked pixel keeps its ray tree through steps 29-35, traced again with each step's
+// switches: no shadow rays listed once they are off, no ray deeper than the depth set.
+TEST_F(ViewerSintesis, TheRayTreeFollowsTheStepsSwitches) {
+  const nlohmann::json tree = json_of(file("tree-28.json"));
+  ASSERT_GT(rays_of_kind(tree, "shadow"), 0u) << tree.dump(2);
+  ASSERT_GT(max_depth(tree), 2);
+  const nlohmann::json no_shadows = json_of(file("tree-30-no-shadow-rays.json"));
+  EXPECT_EQ(no_shadows["pixel"], tree["pixel"]);
+  EXPECT_EQ(rays_of_kind(no_shadows, "shadow"), 0u);
+  const nlohmann::json shallow = json_of(file("tree-31-depth-2.json"));
+  EXPECT_EQ(shallow["pixel"], tree["pixel"]);
+  EXPECT_GT(rays_of_kind(shallow, "shadow"), 0u);  // back on in step 31
+  EXPECT_LE(max_depth(shallow), 2);
+  EXPECT_LT(shallow["nodes"].size(), tree["nodes"].size());
+}
+
+std::set<std::string> models_of(const nlohmann::json& panes) {
+  std::set<std::string> models;
+  for (const auto& pane : panes["panes"]) models.insert(pane["model"].get<std::string>());
+  return models;
+}
+
+// Each traced pane of a step, traced: its trace is the step's, not one left over from an earlier step.
+void expect_traced(const nlohmann::json& panes, const std::string& model) {
+  bool found = false;
+  for (const auto& pane : panes["panes"])
+    if (pane["model"] == model) {
+      found = true;
+      EXPECT_EQ(pane.value("trace", ""), "done") << model;
+    }
+  EXPECT_TRUE(found) << model << " is not among the panes: " << panes.dump(2);
+}
+
+// Step 18 shows flat, Gouraud and Phong, as its title says (with Whitted's per-pixel trace);
+// 58 and 59 trace their Whitted and hybrid panes.
+TEST_F(ViewerSintesis, SidebySideStepsShowWhatTheirTextSays) {
+  const nlohmann::json step18 = json_of(file("panes-18.json"));
+  EXPECT_EQ(models_of(step18), (std::set<std::string>{"flat", "gouraud", "phong", "whitted"}));
+  expect_traced(step18, "whitted");
+  const nlohmann::json step58 = json_of(file("panes-58.json"));
+  EXPECT_EQ(models_of(step58), (std::set<std::string>{"flat", "gouraud", "phong", "whitted"}));
+  expect_traced(step58, "whitted");
+  const nlohmann::json step59 = json_of(file("panes-59.json"));
+  EXPECT_EQ(models_of(step59), (std::set<std::string>{"radiosity", "hybrid"}));
+  expect_traced(step59, "hybrid");
+}
+
+}  // namespace
+}  // namespace luz
