@@ -19,7 +19,6 @@
 #include "io/gltf_loader.h"
 #include "raytracing/diffuse_source.h"
 #include "raytracing/renderer.h"
-#include "raytracing/sampling.h"
 #include "raytracing/whitted.h"
 #include "support.h"
 
