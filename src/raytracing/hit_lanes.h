@@ -9,8 +9,8 @@
 // survive) runs in short scalar loops of its own between them.
 //
 // Per lane, the operations are those of SurfaceReader::surface_at and Whitted's light_samples,
-// local_color and secondary_rays, in the same order, so every ray is the recursion's to the bit and every light's
-// term too (test_whitted_streams).
+// local_color and secondary_rays, in the same order, so every ray is the recursion's to the bit
+// and every light's term too (test_whitted_streams).
 #include <cstdint>
 #include <span>
 #include <vector>
