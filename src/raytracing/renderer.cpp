@@ -82,12 +82,12 @@ void trace_pixels(const Tile& tile, const PrimaryRays& camera_rays, int samples,
     for (int x = tile.x0; x < tile.x1; ++x) {
       Random jitter(x, y, -1);
       stratified_pixel_samples(samples, jitter, offsets);
-      Rgb color(0.0f);
+      Rgb color(0.0f);  // Trazar(rayoPrimario, 1), for each of the pixel's primary rays
       for (int s = 0; s < samples; ++s) {
         const Ray primary = camera_rays.through(glm::vec2(float(x), float(y)) + offsets[size_t(s)]);
         color += whitted.trace(primary, 1, RayKind::primary, sample_seed(x, y, s), weight);
       }
-      image.at(x, y) = color * weight;
+      image.at(x, y) = color * weight;  // Poner_pixel(pixel, color)
     }
   counters.samples += size_t(tile.width()) * size_t(tile.height()) * size_t(samples);
 }
