@@ -150,7 +150,18 @@ public:
   Hemicube& hemicube() { return hemicube_; }
 
 private:
+  // Step 2's pieces (shooting.cpp): the patch's unshot radiosity into its radiosity, returning
+  // what it shoots; the power arriving at each element of its row; the energy balance of a shot.
+  float hemicube_rotation();
+  Rgb take_unshot(size_t shooter);
+  void arriving_from(const ShootingPatch& shooter, const std::vector<FormFactor>& row, const Rgb& shot);
+  void tally_shot(const std::vector<FormFactor>& row, double sent);
+  void count_shot(int shooter);
   void record(int shooter);
+  // A light's row (solid angles, or a sun's sunlit areas) and the power it sends.
+  const std::vector<FormFactor>& light_row(const Light& light);
+  Rgb light_power(const Light& light) const;
+  void refuse_a_changed_mesh() const;
   size_t most_unshot_patch() const;
   static double power(const Rgb& exitance, float area);
   double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
