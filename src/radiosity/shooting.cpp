@@ -134,6 +134,7 @@ void ProgressiveSolver::reset() {
   }
   next_light_ = 0;
   shots_ = 0;
+  element_shots_ = 0.0;
   last_shooter_ = -1;
   random_.seed(options_.seed);
   history_.clear();
@@ -430,6 +431,7 @@ void ProgressiveSolver::refuse_a_changed_mesh() const {
 
 void ProgressiveSolver::record(int shooter) {
   last_shooter_ = shooter;
+  if (shots_ > 0) element_shots_ += double(mesh_.size());  // shot 0 is the start
   ShotRecord r;
   r.shot = shots_;
   r.shooter = shooter;

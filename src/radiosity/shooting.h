@@ -129,6 +129,8 @@ public:
   double unshot_fraction() const;
   EnergyTally energy() const;
   int shots() const { return shots_; }
+  // The work done so far: the elements in the mesh at each shot, summed over the shots.
+  double element_shots() const { return element_shots_; }
   // Shooting patch, -1 - k for light k, or -1 before any.
   int last_shooter() const { return last_shooter_; }
   size_t lights_left() const { return lights_.size() - next_light_; }
@@ -206,6 +208,7 @@ private:
   std::vector<glm::dvec3> patch_unshot_;  // per shooting patch: sum of A_j unshot_j (W)
   EnergyTally tally_;
   int shots_ = 0;
+  double element_shots_ = 0.0;
   int last_shooter_ = -1;
   int refinement_passes_ = 0;
   bool budget_reached_ = false;  // adaptive subdivision stopped at options_.refine_budget
