@@ -148,7 +148,10 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
               double(r.pick.P.y), double(r.pick.P.z), double(r.normal.x), double(r.normal.y),
               double(r.normal.z));
   ImGui::TextDisabled("%s", tr(r.where.c_str()));
-  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  // Each column as wide as its text (NoHostExtendX: the table is no narrower than its columns);
+  // a window too narrow for the table scrolls sideways rather than squeezing them.
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoHostExtendX;
   if (ImGui::BeginTable("terms", 8, flags)) {
     for (const char* heading : {tr("light"), "theta", "alpha", "d", "f_att", "S", "I_D", "I_S"})
       ImGui::TableSetupColumn(heading);
@@ -220,7 +223,10 @@ void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open)
   ImGui::Text(tr("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)"), double(r.centre.x), double(r.centre.y),
               double(r.centre.z), double(r.normal.x), double(r.normal.y), double(r.normal.z));
   ImGui::TextDisabled(tr("after %d shots; exitances in W/m², radiance in W/(m² sr)"), r.shots);
-  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  // Each column as wide as its text (NoHostExtendX: the table is no narrower than its columns);
+  // a window too narrow for the table scrolls sideways rather than squeezing them.
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoHostExtendX;
   if (ImGui::BeginTable("patch", 2, flags)) {
     auto row = [](const char* name, const Rgb& value) {
       ImGui::TableNextRow();
