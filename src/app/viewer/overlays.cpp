@@ -222,4 +222,10 @@ void draw_load_error(ViewerState& state, float x, float y, float max_width) {
   ImGui::PopStyleColor(2);
 }
 
+float text_wide_table_height(int rows) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float row = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y + 1.0f;  // 1: a border
+  return float(rows) * row + style.ScrollbarSize + 2.0f;
+}
+
 }  // namespace luz::app

@@ -91,4 +91,11 @@ void draw_item_buffer_window(ViewerState& state, float side);
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);
 
+// A table that keeps every column as wide as its text: it scrolls sideways inside its window
+// where the window is narrower (ImGui squeezes a table's columns to the window otherwise). Such
+// a table is a child window of its own, as high as this: `rows` one-line rows (its headings
+// among them) and the scroll bar.
+constexpr ImGuiTableFlags kTextWideTable = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+float text_wide_table_height(int rows);
+
 }  // namespace luz::app

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/i18n.h"
+#include "app/viewer/overlays.h"
 #include "app/cli/solvers_command.h"
 #include "core/error.h"
 #include "gl/functions.h"
@@ -226,7 +227,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
     ImGui::Text(tr("%zu patches, matrix in %.2f s; rows %zu / %zu%s"), s.patches, s.matrix_seconds, s.rows, s.max_rows,
                 s.done ? tr(" (done)") : "");
     // The legend, with where each method has got: a table, so it fits half the picture.
-    if (ImGui::BeginTable("legend", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoHostExtendX)) {
+    if (ImGui::BeginTable("legend", 4, kTextWideTable, ImVec2(0.0f, text_wide_table_height(1 + int(std::size(kMethods)))))) {
       for (const char* heading : {"", tr("rows"), tr("residual"), tr("error")}) ImGui::TableSetupColumn(heading);
       ImGui::TableHeadersRow();
       for (const Method m : kMethods) {

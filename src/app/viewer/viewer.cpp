@@ -684,9 +684,12 @@ nlohmann::json Viewer::tables_json() const {
       columns.push_back({{"text", end - column.WorkMinX}, {"room", column.WorkMaxX - column.WorkMinX},
                          {"right", column.MaxX}});
     }
-    const ImGuiWindow* w = t->OuterWindow->RootWindow;
-    tables.push_back({{"window", w->Name}, {"clip_right", w->InnerClipRect.Max.x},
-                      {"scrolls_sideways", w->ScrollbarX}, {"columns", columns}});
+    // A table that scrolls sideways is a child window of its own (InnerWindow): its clip and
+    // its scroll bar are that child's.
+    const ImGuiWindow* inner = t->InnerWindow ? t->InnerWindow : t->OuterWindow;
+    tables.push_back({{"window", t->OuterWindow->RootWindow->Name}, {"clip_right", inner->InnerClipRect.Max.x},
+                      {"scrolls_sideways", inner->ScrollbarX || t->OuterWindow->RootWindow->ScrollbarX},
+                      {"columns", columns}});
   }
   return tables;
 }
