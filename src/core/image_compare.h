@@ -46,7 +46,11 @@ ImageComparison compare_images(const Image& a, const Image& reference, const Com
 // a PNG written from it shows those colours.
 Image relative_difference_heatmap(const ImageComparison& comparison, int width, int height, float range);
 
-// A range for the heat map: the smallest of 1, 2, 5, 10, 20, 50, 100 % that holds 95% of the
+// The heat maps' scale unless one is asked for: +-50%, the same in the window's difference view,
+// `luz compare` and the handouts, so that two heat maps side by side mean the same colours.
+inline constexpr float kHeatmapRange = 0.5f;
+
+// A range fitted to one comparison: the smallest of 1, 2, 5, 10, 20, 50, 100 % that holds 95% of the
 // lit pixels' relative differences.
 float heatmap_range(const ImageComparison& comparison);
 

@@ -3,6 +3,10 @@
 // reference B (core/image_compare.h has the figures and their definitions).
 #include <string>
 
+#include <fmt/format.h>
+
+#include "core/image_compare.h"
+
 namespace CLI { class App; }
 
 namespace luz::app {
@@ -10,9 +14,9 @@ namespace luz::app {
 struct CompareSettings {
   std::string a, b;      // B is the reference
   std::string heatmap;   // signed relative difference with a legend, PNG
-  // The heat map's scale in percent, the same for every comparison so that handouts compare
-  // (auto: fitted to this one, heatmap_range).
-  std::string range = "50";
+  // The heat map's scale in percent: kHeatmapRange unless given (auto: fitted to this one,
+  // heatmap_range).
+  std::string range = fmt::format("{:g}", 100.0 * double(kHeatmapRange));
   bool mask_emitters = false;
   bool quiet = false;
 };

@@ -28,7 +28,7 @@ DifferenceFigures difference_figures(const ImageComparison& c, int width, int he
   f.rel_rmse = c.rel_rmse;
   f.mean_relative_error = c.mean_relative_error;
   f.lit_pixels = c.lit_pixels;
-  f.range = heatmap_range(c);
+  f.range = kHeatmapRange;
   return f;
 }
 

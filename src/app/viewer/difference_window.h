@@ -34,7 +34,7 @@ void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const C
                      const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane);
 
 // The figures of a comparison (image_compare.h) of two width x height pictures, with the heat
-// map's range (heatmap_range) and without the model's name and the reference's samples.
+// map's range (kHeatmapRange, as `luz compare` draws it) and without the model's name and the reference's samples.
 DifferenceFigures difference_figures(const ImageComparison& comparison, int width, int height);
 
 // The legend over the picture: the colour bar with its scale, and the figures.
