@@ -1,7 +1,6 @@
 // luz compare. Sections: [legend] [command]
 #include "app/cli/compare_command.h"
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -9,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "app/common/i18n.h"
+#include "app/common/line_plot.h"
 #include "core/error.h"
 #include "core/image_compare.h"
 #include "io/image_io.h"
@@ -17,44 +17,6 @@ namespace luz::app {
 
 // ---- [legend] -----------------------------------------------------------------------------------
 namespace {
-
-// A 3x5 pixel font for the legend's labels: each glyph is five rows of three bits.
-std::array<unsigned char, 5> glyph(char c) {
-  switch (c) {
-    case '0': return {7, 5, 5, 5, 7};
-    case '1': return {2, 6, 2, 2, 7};
-    case '2': return {7, 1, 7, 4, 7};
-    case '3': return {7, 1, 7, 1, 7};
-    case '4': return {5, 5, 7, 1, 1};
-    case '5': return {7, 4, 7, 1, 7};
-    case '6': return {7, 4, 7, 5, 7};
-    case '7': return {7, 1, 1, 1, 1};
-    case '8': return {7, 5, 7, 5, 7};
-    case '9': return {7, 5, 7, 1, 7};
-    case '+': return {0, 2, 7, 2, 0};
-    case '-': return {0, 0, 7, 0, 0};
-    case '%': return {5, 1, 2, 4, 5};
-    default: return {0, 0, 0, 0, 0};
-  }
-}
-
-// Draws `text` with its top left at (x, y), each font pixel a scale x scale square.
-void draw_text(Image& image, int x, int y, const std::string& text, int scale, const Rgb& colour) {
-  for (char c : text) {
-    const auto rows = glyph(c);
-    for (int r = 0; r < 5; ++r)
-      for (int b = 0; b < 3; ++b)
-        if (rows[size_t(r)] & (4 >> b))
-          for (int dy = 0; dy < scale; ++dy)
-            for (int dx = 0; dx < scale; ++dx) {
-              const int u = x + b * scale + dx, v = y + r * scale + dy;
-              if (u >= 0 && v >= 0 && u < image.width && v < image.height) image.at(u, v) = colour;
-            }
-    x += 4 * scale;
-  }
-}
-
-int text_width(const std::string& text, int scale) { return int(text.size()) * 4 * scale - scale; }
 
 // The heat map above a legend: a colour bar from -range to +range, labelled at both ends and 0.
 Image with_legend(const Image& heatmap, float range) {
@@ -72,9 +34,9 @@ Image with_legend(const Image& heatmap, float range) {
   const std::string low = fmt::format("-{}%", percent), high = fmt::format("+{}%", percent);
   const Rgb white(1.0f);
   const int text_y = top + bar + scale;
-  draw_text(out, scale, text_y, low, scale, white);
-  draw_text(out, (out.width - text_width("0", scale)) / 2, text_y, "0", scale, white);
-  draw_text(out, out.width - text_width(high, scale) - scale, text_y, high, scale, white);
+  draw_text(out, scale, text_y, low, white, scale);
+  draw_text(out, (out.width - text_width("0", scale)) / 2, text_y, "0", white, scale);
+  draw_text(out, out.width - text_width(high, scale), text_y, high, white, scale);
   return out;
 }
 

@@ -77,7 +77,16 @@ const ModelEntry table[] = {
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs()},
 };
 
+const std::vector<std::string> comparisons[] = {
+    {"flat", "gouraud", "phong", "whitted"},  // the local models against Whitted
+    {"radiosity", "hybrid"},                  // radiosity against the hybrid
+};
+
 }  // namespace
+
+const ModelEntry& reference_model() { return *find_model("path"); }
+
+std::span<const std::vector<std::string>> lecture_comparisons() { return comparisons; }
 
 std::span<const ModelEntry> models() { return table; }
 

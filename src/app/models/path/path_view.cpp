@@ -3,18 +3,18 @@
 #include "app/models/path/path_view.h"
 
 #include <algorithm>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/viewer/difference_window.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
+#include "app/viewer/background_render.h"
 #include "app/viewer/overlays.h"
-#include "app/models/whitted/whitted_worker.h"
 #include "core/image_compare.h"
 #include "gl/functions.h"
 #include "local/local_renderer.h"
@@ -58,11 +58,7 @@ void PathModel::hidden() {
 }
 
 void PathModel::cancel() {
-  if (worker_.joinable()) {
-    cancel_ = true;
-    worker_.join();
-  }
-  cancel_ = false;
+  worker_.stop();
   running_ = false;
   have_film_ = false;
   shown_ = PathPicture{};
@@ -88,11 +84,7 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
   if (!have_film_) {
     // A new film: the tracer's copy takes the viewer's editable values (the geometry is the
     // same: a new geometry is a new scene).
-    copy_->lights = scene.lights;
-    copy_->materials = scene.materials;
-    copy_->area_lights = scene.area_lights;
-    copy_->ambient = scene.ambient;
-    copy_->background = scene.background;
+    copy_editable(scene, *copy_);
     film_ = rt::PathFilm(size.x, size.y);
     started_ = fingerprint(camera, size);
     have_film_ = true;
@@ -100,15 +92,13 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
     began_ = std::chrono::steady_clock::now();
   }
   pause_ = false;
-  finished_ = false;
   running_ = true;
   const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
   target_ = std::max(1, options.spp);
-  // GL stays on this thread; the worker only traces and copies pixels (DESIGN.md "Threads").
-  worker_ = std::jthread([this, camera, o] {
-    while (!cancel_ && !pause_ && film_.min_samples() < target_) {
-      tracer_->add_samples(film_, camera, o, 1, {}, &cancel_);
-      if (cancel_) break;  // an unfinished pass: the film is dropped
+  worker_.start([this, camera, o](const std::atomic<bool>& cancel) {
+    while (!cancel && !pause_ && film_.min_samples() < target_) {
+      tracer_->add_samples(film_, camera, o, 1, {}, &cancel);
+      if (cancel) break;  // an unfinished pass: the film is dropped
       PathPicture pass;
       pass.mean = film_.mean();
       pass.spp = film_.min_samples();
@@ -118,12 +108,11 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
       pass.version = published_.version + 1;
       published_ = std::move(pass);
     }
-    finished_.store(true, std::memory_order_release);
   });
 }
 
 void PathModel::collect() {
-  if (running_ && finished_.load(std::memory_order_acquire)) {
+  if (running_ && worker_.finished()) {
     worker_.join();
     running_ = false;
   }
@@ -144,7 +133,7 @@ void PathModel::advance(const Camera& camera, const Viewport& viewport) {
   }
   if (running_ && pause_) {
     pause_ = false;  // shown again before the pass ended: it goes on
-    if (finished_.load(std::memory_order_acquire)) collect();  // it had stopped already
+    if (worker_.finished()) collect();  // it had stopped already
   }
   if (!running_ && (!have_film_ || shown_.spp < std::max(1, options.spp))) start(camera, size);
   if (!busy()) wait_for_ = 0;  // a wait ends once: a later restart does not hold the script again
@@ -171,18 +160,7 @@ void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebu
     uploaded_ = -1;
   }
   if (uploaded_ != shown_.version) {
-    // GL's rows go bottom-up: image row y is texture row height - 1 - y.
-    upload_.resize(size_t(size.x) * size_t(size.y) * 3);
-    for (int row = 0; row < size.y; ++row)
-      for (int x = 0; x < size.x; ++x) {
-        const Rgb& p = shown_.mean.at(x, size.y - 1 - row);
-        float* out = &upload_[(size_t(row) * size_t(size.x) + size_t(x)) * 3];
-        out[0] = p.r, out[1] = p.g, out[2] = p.b;
-      }
-    glBindTexture(GL_TEXTURE_2D, texture_->colour_texture());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGB, GL_FLOAT, upload_.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    upload_pixels(*texture_, shown_.mean, 0, 0, size.x, size.y, upload_);
     uploaded_ = shown_.version;
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, texture_->id());
@@ -295,11 +273,7 @@ bool run_dump_path(ViewerServices& viewer, const ScriptCommand& c, std::string& 
                       {"seconds", p.seconds},
                       {"running", path.running()},
                       {"restarts", path.restarts()}};
-  std::ofstream out(c.args[0]);
-  out << j.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the path tracer's state", c.args[0]);
-  return false;
+  return write_json(c.args[0], j, "the path tracer's state", error);
 }
 
 constexpr ScriptVerb verbs[] = {

@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <imgui.h>
 
-#include <fstream>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/inspector.h"
@@ -247,11 +247,7 @@ bool run_wait_shots(ViewerServices& viewer, const ScriptCommand& c, std::string&
 }
 
 bool dump(const std::string& path, const nlohmann::json& json, std::string& error) {
-  std::ofstream out(path);
-  out << json.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the radiosity values", path);
-  return false;
+  return write_json(path, json, "the radiosity values", error);
 }
 
 bool run_dump_patch(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {

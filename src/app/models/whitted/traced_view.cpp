@@ -1,12 +1,12 @@
 #include "app/models/whitted/traced_view.h"
 
 #include <cmath>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/overlays.h"
@@ -210,21 +210,13 @@ bool run_wait_trace(ViewerServices& viewer, const ScriptCommand&, std::string&) 
   return true;
 }
 
-bool write(const std::string& path, const std::string& text, const char* what, std::string& error) {
-  std::ofstream out(path);
-  out << text << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write {}", path, what);
-  return false;
-}
-
 bool run_dump_ray_tree(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
   auto* shown = dynamic_cast<TracedModel*>(&viewer.shown());
   if (!shown || !shown->ray_tree()) {
     error = "there is no ray tree: click a pixel in the Whitted model first";
     return false;
   }
-  return write(c.args[0], shown->ray_tree()->to_json(), "the ray tree", error);
+  return write_text(c.args[0], shown->ray_tree()->to_json() + '\n', "the ray tree", error);
 }
 
 bool run_dump_trace(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
@@ -237,7 +229,7 @@ bool run_dump_trace(ViewerServices& viewer, const ScriptCommand& c, std::string&
   j["seconds"] = t.seconds;
   for (int k = 0; k < rt::kRayKinds; ++k) j["rays"][rt::to_string(rt::RayKind(k))] = t.counters.rays[size_t(k)];
   j["intersection_tests"] = t.counters.intersection_tests;
-  return write(c.args[0], j.dump(2), "the trace's state", error);
+  return write_json(c.args[0], j, "the trace's state", error);
 }
 
 constexpr ScriptVerb verbs[] = {
