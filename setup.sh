@@ -14,6 +14,7 @@ packages=(
   libgtest-dev xvfb xauth fonts-dejavu-core gettext locales xdotool
   libegl-dev libegl-mesa0 assimp-testmodels
   librsvg2-bin desktop-file-utils appstream dpkg-dev groff-base
+  libcairo2-dev poppler-utils
 )
 
 missing=()

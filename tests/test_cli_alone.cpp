@@ -31,8 +31,8 @@ Rendered render_traced(const Scene& scene, const Camera& camera, int width, int 
 }
 
 const ModelEntry table[] = {
-    {"flat", "flat", 1, "flat shading", local_flags, render_flat, nullptr, {}},
-    {"whitted", "Whitted", 4, "Whitted ray tracing", whitted_flags, render_traced, nullptr, {}},
+    {"flat", "flat", 1, "flat shading", local_flags, render_flat, nullptr, {}, nullptr},
+    {"whitted", "Whitted", 4, "Whitted ray tracing", whitted_flags, render_traced, nullptr, {}, nullptr},
 };
 
 }  // namespace

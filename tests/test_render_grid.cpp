@@ -1,5 +1,6 @@
-// `luz render --model A,B[,C,D]`: each pane is the picture `luz render --model A` makes at the
-// pane's size, but for its label, and the label has ink.
+// `luz render --model A,B[,C,D] --size WxH`: a sheet of W x H, each pane the picture
+// `luz render --model A` makes at the pane's size (a column's and a row's share), but for its
+// label, and the label has ink.
 #include <gtest/gtest.h>
 
 #include "app/common/i18n.h"
@@ -15,8 +16,8 @@ constexpr int kW = 160, kH = 120;
 std::string scene() { return (test::scene_dir() / "phong_spheres.gltf").string(); }
 
 Image render(const test::ScratchDir& dir, const std::string& model, const std::string& name,
-             const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args = {"render", scene(), "--model", model, "--size", std::to_string(kW) + "x" + std::to_string(kH),
+             const std::vector<std::string>& extra = {}, int width = kW, int height = kH) {
+  std::vector<std::string> args = {"render", scene(), "--model", model, "--size", std::to_string(width) + "x" + std::to_string(height),
                                    "--out", (dir / name).string(), "-q"};
   args.insert(args.end(), extra.begin(), extra.end());
   const test::CommandResult result = test::run_luz(args);
@@ -37,8 +38,8 @@ void expect_panes(const std::vector<std::string>& models, const std::string& lan
   const test::ScratchDir dir;
   std::string list;
   for (const std::string& m : models) list += (list.empty() ? "" : ",") + m;
-  const Image sheet = render(dir, list, "grid.png", {"--lang", lang});
   const app::GridLayout layout = app::grid_layout(models.size());
+  const Image sheet = render(dir, list, "grid.png", {"--lang", lang}, layout.columns * kW, layout.rows * kH);
   ASSERT_EQ(sheet.width, layout.columns * kW);
   ASSERT_EQ(sheet.height, layout.rows * kH);
   const app::LabelFont font;

@@ -14,6 +14,7 @@
 #include "app/cli/bench/bench_command.h"
 #include "app/cli/command_language.h"
 #include "app/cli/compare_command.h"
+#include "app/handout/handout_command.h"
 #include "app/common/i18n.h"
 #include "app/classroom/lesson.h"
 #include "app/cli/man_page.h"
@@ -204,6 +205,14 @@ int main(int argc, char** argv) {
       "compare", tr("How far picture A is from reference B: mean error, rel-RMSE, mean relative error over lit pixels"));
   luz::app::add_compare_flags(*compare, compare_settings);
 
+  luz::app::HandoutSettings handout_settings;
+  CLI::App* lesson = app.add_subcommand(
+      "lesson", tr("The lesson as a handout, headless: every step's picture with its slide, title and text, as a PDF "
+                   "of A4 pages and/or one PNG per step"));
+  lesson->add_option_function<std::string>("--lang", lang, tr("Language of the titles, texts and labels: es or en"))
+      ->check(CLI::IsMember({"es", "en"}));
+  luz::app::add_handout_flags(*lesson, handout_settings);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -224,6 +233,7 @@ int main(int argc, char** argv) {
   }
   if (solvers->parsed()) return luz::app::run_solvers(solvers_settings);
   if (compare->parsed()) return luz::app::run_compare(compare_settings);
+  if (lesson->parsed()) return luz::app::run_handout(handout_settings);
   if (bench_whitted->parsed()) return luz::app::run_bench_whitted(bench_settings);
   if (bench_radiosity->parsed()) return luz::app::run_radiosity_bench(radiosity_bench);
   if (bench_local->parsed()) return luz::app::run_bench_local(local_bench);

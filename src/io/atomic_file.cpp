@@ -1,5 +1,6 @@
 #include "io/atomic_file.h"
 
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -24,49 +25,53 @@ fs::path temporary_beside(const fs::path& path) {
          fmt::format(".{}.tmp{:08x}{}", path.stem().string(), random(), path.extension().string());
 }
 
-// While the temporary file exists, SIGINT and SIGTERM remove it before the process ends as it
-// would have (the previous disposition is restored and the signal raised again). The handler
-// only calls async-signal-safe functions (unlink, sigaction, raise) on a fixed buffer.
-char g_temporary[4096];
+// The paths the handler removes, in fixed slots: it only calls async-signal-safe functions
+// (unlink, rmdir, sigaction, raise) on what was laid out before the count took it in.
+constexpr size_t kSlots = 256;
+std::array<std::array<char, 4096>, kSlots> g_paths;
+volatile std::sig_atomic_t g_count = 0;
+int g_guards = 0;
 struct sigaction g_previous_int, g_previous_term;
 
-extern "C" void remove_temporary_and_reraise(int signal_number) {
-  unlink(g_temporary);
+extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  for (std::sig_atomic_t i = 0; i < g_count; ++i) {
+    unlink(g_paths[size_t(i)].data());
+    rmdir(g_paths[size_t(i)].data());
+  }
   sigaction(SIGINT, &g_previous_int, nullptr);
   sigaction(SIGTERM, &g_previous_term, nullptr);
   raise(signal_number);
 }
 
-class TemporaryGuard {
- public:
-  explicit TemporaryGuard(const fs::path& temporary) {
-    const std::string name = temporary.string();
-    armed_ = name.size() < sizeof g_temporary;
-    if (!armed_) return;
-    std::memcpy(g_temporary, name.c_str(), name.size() + 1);
-    struct sigaction action {};
-    action.sa_handler = remove_temporary_and_reraise;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &g_previous_int);
-    sigaction(SIGTERM, &action, &g_previous_term);
-  }
-  ~TemporaryGuard() {
-    if (!armed_) return;
-    sigaction(SIGINT, &g_previous_int, nullptr);
-    sigaction(SIGTERM, &g_previous_term, nullptr);
-  }
-  TemporaryGuard(const TemporaryGuard&) = delete;
-  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
-
- private:
-  bool armed_ = false;
-};
-
 }  // namespace
+
+RemovedOnSignal::RemovedOnSignal(const std::vector<fs::path>& paths) {
+  for (const fs::path& path : paths) {
+    const std::string name = path.string();
+    // A path longer than a slot, or past the last slot, is not removed on a signal.
+    if (name.size() >= g_paths[0].size() || size_t(g_count) == kSlots) continue;
+    std::memcpy(g_paths[size_t(g_count)].data(), name.c_str(), name.size() + 1);
+    g_count = g_count + 1;
+    ++added_;
+  }
+  if (g_guards++ > 0) return;
+  struct sigaction action {};
+  action.sa_handler = remove_temporaries_and_reraise;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &g_previous_int);
+  sigaction(SIGTERM, &action, &g_previous_term);
+}
+
+RemovedOnSignal::~RemovedOnSignal() {
+  g_count = g_count - std::sig_atomic_t(added_);
+  if (--g_guards > 0) return;
+  sigaction(SIGINT, &g_previous_int, nullptr);
+  sigaction(SIGTERM, &g_previous_term, nullptr);
+}
 
 std::string write_atomically(const fs::path& path, const std::function<std::string()>& contents) {
   const fs::path temporary = temporary_beside(path);
-  const TemporaryGuard guard(temporary);
+  const RemovedOnSignal guard({temporary});
   auto fail = [&](std::string why) {
     std::error_code ignored;
     fs::remove(temporary, ignored);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace luz::io {
 
@@ -13,5 +14,20 @@ namespace luz::io {
 // meanwhile. Returns "" once written, else why not (the system's words, or what `contents`
 // threw).
 std::string write_atomically(const std::filesystem::path& path, const std::function<std::string()>& contents);
+
+// While it lives, SIGINT and SIGTERM remove `paths` (files, and folders once emptied, in the
+// order given) before the process ends as it would have: the disposition before the first guard
+// is restored and the signal raised again. For outputs written under temporary names; guards
+// nest (a handout's folder, and each image written into it), the last made gone first.
+class RemovedOnSignal {
+public:
+  explicit RemovedOnSignal(const std::vector<std::filesystem::path>& paths);
+  ~RemovedOnSignal();
+  RemovedOnSignal(const RemovedOnSignal&) = delete;
+  RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
+
+private:
+  size_t added_ = 0;
+};
 
 }  // namespace luz::io

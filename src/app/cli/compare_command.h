@@ -1,5 +1,5 @@
 #pragma once
-// `luz compare A.exr B.exr [--heatmap OUT.png] [--mask-emitters]`: how far picture A is from
+// `luz compare A.exr B.exr [--heatmap OUT.png [--range P]] [--mask-emitters]`: how far picture A is from
 // reference B (core/image_compare.h has the figures and their definitions).
 #include <string>
 
@@ -10,6 +10,9 @@ namespace luz::app {
 struct CompareSettings {
   std::string a, b;      // B is the reference
   std::string heatmap;   // signed relative difference with a legend, PNG
+  // The heat map's scale in percent, the same for every comparison so that handouts compare
+  // (auto: fitted to this one, heatmap_range).
+  std::string range = "50";
   bool mask_emitters = false;
   bool quiet = false;
 };

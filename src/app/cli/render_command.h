@@ -1,5 +1,6 @@
 #pragma once
 // `luz render`: one picture of a scene, headless through OSMesa.
+#include <memory>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -16,6 +17,7 @@ namespace CLI { class App; class Option; }
 
 namespace luz::app {
 
+struct RadiositySolution;
 // The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
 struct PathFlags {
   uint32_t seed = 0;
@@ -50,6 +52,9 @@ struct RenderSettings {
     std::string group;
   };
   std::vector<GivenFlag> given_flags;
+  // A radiosity solution already solved for this scene and these flags (render_radiosity.h):
+  // the radiosity and hybrid pictures show it instead of solving again. Empty: each solves.
+  std::shared_ptr<const RadiositySolution> radiosity_solution;
 };
 
 // Declares --seed and --error-out on `render`; returns them so that the command can

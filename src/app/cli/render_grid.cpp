@@ -101,6 +101,58 @@ void draw_label(Image& pane, const LabelFont& font, const std::string& label, fl
   font.draw(pane, box.x + pad, box.y + pad, label, size, white);
 }
 
+namespace {
+
+// True when two panes or more show a radiosity solution: they share one solve.
+bool shares_radiosity(const std::vector<std::string>& models) {
+  return std::count_if(models.begin(), models.end(),
+                       [](const std::string& m) { return m == "radiosity" || m == "hybrid"; }) > 1;
+}
+
+}  // namespace
+
+Sheet render_sheet(const RenderSettings& settings, const Scene& scene, const Camera& camera,
+                   const std::vector<std::string>& models) {
+  Sheet sheet;
+  sheet.layout = grid_layout(models.size());
+  const float aspect = camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f;
+  int width = settings.width, height = settings.height;
+  if (width <= 0) {
+    sheet.pane_height = kDefaultPaneHeight;
+    sheet.pane_width = std::max(1, int(std::lround(float(kDefaultPaneHeight) * aspect)));
+    width = sheet.pane_width * sheet.layout.columns;
+    height = sheet.pane_height * sheet.layout.rows;
+  } else {
+    sheet.pane_width = std::max(1, width / sheet.layout.columns);
+    sheet.pane_height = std::max(1, height / sheet.layout.rows);
+  }
+  RenderSettings shared = settings;
+  if (!shared.radiosity_solution && shares_radiosity(models))
+    shared.radiosity_solution = find_model("radiosity")->solve(scene, settings);
+
+  std::vector<Image> panes;
+  for (const std::string& name : models)
+    panes.push_back(render_pane(scene, camera, sheet.pane_width, sheet.pane_height, *find_model(name), shared));
+  sheet.image = Image(width, height, Rgb(0.0f));
+  const auto assemble = [&] {
+    for (size_t i = 0; i < panes.size(); ++i) {
+      const int left = int(i) % sheet.layout.columns * sheet.pane_width;
+      const int top = int(i) / sheet.layout.columns * sheet.pane_height;
+      for (int y = 0; y < sheet.pane_height; ++y)
+        std::copy_n(&panes[i].at(0, y), sheet.pane_width, &sheet.image.at(left, top + y));
+    }
+  };
+  // One exposure for all the panes, so that they compare, chosen before the labels go on.
+  assemble();
+  sheet.exposure = chosen_exposure(settings, scene, sheet.image);
+  if (models.size() > 1) {
+    const LabelFont font;
+    for (size_t i = 0; i < panes.size(); ++i) draw_label(panes[i], font, model_label(models[i]), sheet.exposure);
+    assemble();
+  }
+  return sheet;
+}
+
 int run_render_grid(const RenderSettings& settings) {
   try {
     const std::vector<std::string> models = parse_model_list(settings.model);
@@ -109,38 +161,20 @@ int run_render_grid(const RenderSettings& settings) {
     check_flags(settings, entries);
     if (!io::is_supported_output(settings.out))
       throw Error(ErrorKind::usage, trf("--out {}: the output must end in .png or .exr", settings.out));
-    const LabelFont font;
+    LabelFont{};  // a missing font is found before the panes are rendered
     io::LoadedScene loaded = io::load_gltf(settings.scene);
     for (const std::string& warning : loaded.warnings) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
     const Scene& scene = loaded.scene;
     const Camera& camera = chosen_camera(settings, scene);
-    int width = settings.width, height = settings.height;
-    if (width <= 0) {
-      height = kDefaultPaneHeight;
-      width = std::max(1, int(std::lround(float(height) * (camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f))));
-    }
-    const GridLayout layout = grid_layout(models.size());
 
     const auto start = std::chrono::steady_clock::now();
-    std::vector<Image> panes;
-    for (const ModelEntry* entry : entries) panes.push_back(render_pane(scene, camera, width, height, *entry, settings));
-    Image sheet(layout.columns * width, layout.rows * height);
-    const auto assemble = [&] {
-      for (size_t i = 0; i < panes.size(); ++i) {
-        const int left = int(i) % layout.columns * width, top = int(i) / layout.columns * height;
-        for (int y = 0; y < height; ++y) std::copy_n(&panes[i].at(0, y), width, &sheet.at(left, top + y));
-      }
-    };
-    // One exposure for all the panes, so that they compare, chosen before the labels go on.
-    assemble();
-    const float exposure = chosen_exposure(settings, scene, sheet);
-    for (size_t i = 0; i < panes.size(); ++i) draw_label(panes[i], font, model_label(models[i]), exposure);
-    assemble();
-    io::write_image(sheet, settings.out, exposure);
+    const Sheet sheet = render_sheet(settings, scene, camera, models);
+    io::write_image(sheet.image, settings.out, sheet.exposure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet)
       fmt::print("{}\n", trf("{}: {} {}x{} panes ({}x{} each), camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
-                              settings.model, layout.columns, layout.rows, width, height, camera.name, exposure, seconds));
+                              settings.model, sheet.layout.columns, sheet.layout.rows, sheet.pane_width,
+                              sheet.pane_height, camera.name, sheet.exposure, seconds));
     return 0;
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());

@@ -9,6 +9,8 @@
 #include "app/common/label_text.h"
 #include "app/common/model_registry.h"  // model_label, each pane's label
 #include "app/cli/render_command.h"
+#include "core/camera.h"
+#include "core/scene.h"
 #include "core/image.h"
 
 namespace luz::app {
@@ -44,6 +46,20 @@ LabelBox label_box(const LabelFont& font, const std::string& label, int pane_hei
 
 // Darkens the box and writes the label in white as the PNG will show it at `exposure` EV.
 void draw_label(Image& pane, const LabelFont& font, const std::string& label, float exposure);
+
+// The sheet of `models` (1, 2 or 4; one model: its picture alone, without a label). With
+// --size (settings.width, height) the sheet is that size and each pane a column's and a row's
+// share of it, the pixels a division leaves over black at the right and bottom edge, as the
+// window's panes; without, each pane is kDefaultPaneHeight high at the camera's aspect. The
+// radiosity and hybrid panes share one solve unless settings bring a solution already.
+struct Sheet {
+  Image image;
+  float exposure = 0.0f;  // chosen_exposure's, the labels written for it
+  int pane_width = 0, pane_height = 0;
+  GridLayout layout;
+};
+Sheet render_sheet(const RenderSettings& settings, const Scene& scene, const Camera& camera,
+                   const std::vector<std::string>& models);
 
 // Renders every pane, assembles and writes the sheet; returns the exit code like run_render.
 int run_render_grid(const RenderSettings& settings);

@@ -43,7 +43,7 @@ constexpr Glyph kFont[] = {
     {'/', {0x20, 0x10, 0x08, 0x04, 0x02}}, {'=', {0x14, 0x14, 0x14, 0x14, 0x14}},
     {'|', {0x00, 0x00, 0x7F, 0x00, 0x00}}, {',', {0x00, 0x80, 0x60, 0x00, 0x00}},
     {'+', {0x08, 0x08, 0x3E, 0x08, 0x08}}, {':', {0x00, 0x36, 0x36, 0x00, 0x00}},
-    {'*', {0x14, 0x08, 0x3E, 0x08, 0x14}}, {'%', {0x23, 0x13, 0x08, 0x64, 0x62}},
+    {'*', {0x14, 0x08, 0x3E, 0x08, 0x14}},
 };
 
 const Glyph* glyph_of(char c) {
@@ -79,11 +79,11 @@ void fill(Image& image, int x0, int y0, int x1, int y1, const Rgb& colour) {
     for (int x = x0; x < x1; ++x) put(image, x, y, colour);
 }
 
+int text_width(const std::string& text, int scale) { return int(text.size()) * 6 * scale; }
+
 const Rgb kBackground(1.0f), kInk(0.0f), kGrid(0.8f);
 
 }  // namespace
-
-int text_width(const std::string& text, int scale) { return int(text.size()) * 6 * scale; }
 
 void draw_text(Image& image, int x, int y, const std::string& text, const Rgb& colour, int scale) {
   for (const char c : text) {

@@ -2,8 +2,7 @@
 // A tiny line plotter into a core::Image, for `luz solvers --png` (no plotting library is in the
 // Debian set Luz uses): panels with a log10 y axis and a linear or log10 x axis, grid lines at
 // the decades, labels in a 5x7 bitmap font (capitals, digits, a few signs), a legend of colour
-// swatches. Values are radiance, so io::write_image writes the picture at exposure 0. The font
-// also writes `luz compare`'s legend.
+// swatches. Values are radiance, so io::write_image writes the picture at exposure 0.
 #include <string>
 #include <vector>
 
@@ -34,7 +33,5 @@ Image plot(const std::vector<PlotPanel>& panels, int panel_width, int height);
 // Writes `text` with its top-left corner at (x, y), `scale` pixels per font pixel. Lower-case
 // letters are drawn as capitals; characters without a glyph as blanks.
 void draw_text(Image& image, int x, int y, const std::string& text, const Rgb& colour, int scale = 1);
-// The pixels `text` advances: six font pixels a character (five and a gap), times `scale`.
-int text_width(const std::string& text, int scale = 1);
 
 }  // namespace luz::app

@@ -18,6 +18,7 @@
 namespace luz::app {
 
 struct RenderSettings;
+struct RadiositySolution;
 struct ScriptVerb;
 class ModelView;
 class ViewerServices;
@@ -44,6 +45,9 @@ struct ModelEntry {
   // The viewer's view; the scene and the GL context are the viewer's.
   std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
   std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones
+  // The view-independent solution its pictures show, solved once for several panes of a sheet
+  // (radiosity's, which the hybrid shows too); nullptr for a model that has none.
+  std::shared_ptr<const RadiositySolution> (*solve)(const Scene& scene, const RenderSettings& settings);
 };
 
 std::span<const ModelEntry> models();

@@ -49,32 +49,36 @@ Rendered render_radiosity_model(const Scene& scene, const Camera& camera, int wi
   return {render_radiosity(scene, camera, width, height, settings), "", std::nullopt};
 }
 
+std::shared_ptr<const RadiositySolution> solve_radiosity_model(const Scene& scene, const RenderSettings& settings) {
+  return solve_radiosity(scene, settings);
+}
+
 Rendered render_whitted_model(const Scene& scene, const Camera& camera, int width, int height,
                               const RenderSettings& settings) {
   return render_whitted(scene, camera, width, height, settings);  // no GL needed
 }
 
 const ModelEntry table[] = {
-    {"flat", N_("flat"), 1, N_("flat shading"), local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}},
+    {"flat", N_("flat"), 1, N_("flat shading"), local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}, nullptr},
     {"gouraud", N_("Gouraud"), 2, N_("Gouraud shading"), local_flags, render_shaded<Shading::gouraud>,
-     local_view<Shading::gouraud>, {}},
-    {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}},
+     local_view<Shading::gouraud>, {}, nullptr},
+    {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}, nullptr},
     {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags,
      render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedModel>(v); },
-     traced_verbs()},
+     traced_verbs(), nullptr},
     {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags,
      render_radiosity_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityModel>(v); },
-     radiosity_verbs()},
+     radiosity_verbs(), solve_radiosity_model},
     {"hybrid", N_("hybrid"), 6, N_("hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"),
      hybrid_flags, render_hybrid,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> {
        return std::make_unique<HybridModel>(v, static_cast<RadiosityModel&>(v.view("radiosity")));
      },
-     {}},
+     {}, nullptr},
     {"path", N_("path tracer"), 7, N_("path tracing of slide 14's equation, the reference (refines while the view stays)"),
      path_flags, render_path_model,
-     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs()},
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs(), nullptr},
 };
 
 const std::vector<std::string> comparisons[] = {

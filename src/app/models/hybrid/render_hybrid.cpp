@@ -15,6 +15,10 @@ Rendered render_hybrid(const Scene& scene, const Camera& camera, int width, int 
                             const RenderSettings& settings) {
   check_square_spp(settings);  // before the solve, not after it
   // The view-independent part: radiosity, solved as `--model radiosity` solves it.
+  if (const RadiositySolution* shared = settings.radiosity_solution.get()) {
+    const hybrid::RadiosityDiffuse diffuse(shared->mesh, shared->radiance);
+    return render_whitted(scene, camera, width, height, settings, &diffuse);
+  }
   const RadiosityOptions options = radiosity_options(settings);
   PatchMesh mesh = PatchMesh::build(scene, options);
   std::optional<hybrid::RadiosityDiffuse> diffuse;

@@ -12,6 +12,7 @@
 
 #include "app/common/i18n.h"
 #include "core/error.h"
+#include "gl/offscreen_context.h"
 #include "io/atomic_file.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
@@ -99,6 +100,13 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
                        const RenderSettings& settings) {
   const RadiosityOptions options = radiosity_options(settings);
+  if (const RadiositySolution* shared = settings.radiosity_solution.get()) {
+    RadiosityRenderer renderer(scene, shared->mesh);
+    // The heat map is no radiance for a texture to modulate.
+    if (shared->heat_map) renderer.update(*shared->heat_map, options, false);
+    else renderer.update(shared->radiance, options);
+    return renderer.render(camera, width, height, options);
+  }
   PatchMesh mesh = PatchMesh::build(scene, options);
   ProgressiveSolver solver(scene, mesh, options);
   run_radiosity_solver(solver, settings);
@@ -106,6 +114,31 @@ Image render_radiosity(const Scene& scene, const Camera& camera, int width, int 
   RadiosityRenderer renderer(scene, mesh);
   renderer.update(RadianceField::of(solver), options);
   return renderer.render(camera, width, height, options);
+}
+
+std::shared_ptr<const RadiositySolution> solve_radiosity(const Scene& scene, const RenderSettings& settings,
+                                                         const SolveExtent& extent) {
+  auto solution = std::make_shared<RadiositySolution>();
+  const RadiosityOptions options = radiosity_options(settings);
+  solution->mesh = PatchMesh::build(scene, options);
+  gl::OffscreenContext context;  // the hemicubes draw through GL
+  ProgressiveSolver solver(scene, solution->mesh, options);
+  if (extent.shots) {
+    for (int shot = 0; shot < *extent.shots && solver.step(); ++shot) {
+    }
+  } else {
+    run_radiosity_solver(solver, settings);
+  }
+  solution->radiance = RadianceField::of(solver);
+  if (extent.heat_map) {
+    // The PNG multiplies by 2^exposure: divided out here, the picture shows the map's colours.
+    RadianceField heat = extent.heat_map(solver);
+    const float undo = std::exp2(-extent.exposure);
+    for (Rgb& c : heat.patch) c *= undo;
+    for (Rgb& c : heat.corner) c *= undo;
+    solution->heat_map = std::move(heat);
+  }
+  return solution;
 }
 
 }  // namespace luz::app
