@@ -498,7 +498,22 @@ def cornell_exposure():
     return round(ev * 2.0) / 2.0                                                    # 0.5
 
 
-def cornell_box(name="cornell_box", blocks=True):
+def unwelded_quad(points, towards):
+    """The quad as a triangle soup, as converters write the published data: two triangles with
+    their own three vertices each and each its own face normal, so a quad that is out of plane
+    (the measured walls) is two faces at a slight angle sharing no vertex."""
+    points, _, _ = oriented_quad(points, towards)
+    indices = [0, 1, 3, 1, 2, 3]  # the other diagonal from the shipped box's
+    corners, normals = [], []
+    for t in range(0, len(indices), 3):
+        a, b, c = (points[i] for i in indices[t:t + 3])
+        n = normalize(cross(sub(b, a), sub(c, a)))
+        corners += [a, b, c]
+        normals += [n, n, n]
+    return corners, normals, list(range(len(corners)))
+
+
+def cornell_box(name="cornell_box", blocks=True, unwelded=False):
     g = GltfBuilder(name)
     materials = {
         "white": g.material("white", CORNELL_WHITE, ks=0.0),
@@ -510,7 +525,8 @@ def cornell_box(name="cornell_box", blocks=True):
     room_centre = (278.0, 274.4, 279.6)
 
     def quad_geometry(corners_mm, towards):
-        points, normals, indices = oriented_quad([scale(p, MM) for p in corners_mm], towards)
+        make = unwelded_quad if unwelded else oriented_quad
+        points, normals, indices = make([scale(p, MM) for p in corners_mm], towards)
         return g.geometry(points, normals, indices)
 
     # Walls, floor and ceiling: normals into the room (towards its centre).
@@ -542,6 +558,13 @@ def cornell_box(name="cornell_box", blocks=True):
     g.scene_extras(ambient=(0.02, 0.02, 0.02), background=(0.0, 0.0, 0.0),
                    exposure=cornell_exposure())
     return g
+
+
+def cornell_unwelded():
+    """Not shipped: the Cornell box as a file from outside brings it (unwelded_quad), for
+    measuring radiosity against the path tracer on geometry the team did not mesh
+    (docs/radiosity.md); written by --unwelded."""
+    return cornell_box("cornell_unwelded", unwelded=True)
 
 
 # ==== [CORNELL SPHERES] ========================================================================
@@ -1018,7 +1041,13 @@ def main(argv):
     parser.add_argument("--out", default=here, help="folder to write into (default: %(default)s)")
     parser.add_argument("--check", nargs="?", const=here, metavar="DIR",
                         help="only check the scenes in DIR (default: this folder)")
+    parser.add_argument("--unwelded", metavar="DIR",
+                        help="only write cornell_unwelded.gltf (a triangle soup of the box) into DIR")
     args = parser.parse_args(argv)
+    if args.unwelded is not None:
+        os.makedirs(args.unwelded, exist_ok=True)
+        cornell_unwelded().write(args.unwelded)
+        return 0
 
     if args.check is None:
         os.makedirs(args.out, exist_ok=True)

@@ -1,6 +1,7 @@
 // `luz render --model radiosity` as a user calls it: its flags, their usage errors (exit 2),
 // the residual history in CSV, and `luz bench radiosity`'s table.
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -109,6 +110,7 @@ TEST(RadiosityCli, BadValuesAreUsageErrors) {
                                              {"--refine-threshold", "0"}, {"--refine-threshold", "-1"},
                                              {"--refine-levels", "0"}, {"--refine-levels", "13"},
                                              {"--refine-budget", "-1"}, {"--refine-budget", "2000001"},
+                                             {"--work-budget", "-1"}, {"--work-budget", "1e16"},
                                              {"--time", "0"}, {"--time", "-1"}}) {
     std::vector<std::string> args = {"render", cornell(), "--model", "radiosity", "--out", out};
     args.insert(args.end(), bad.begin(), bad.end());
@@ -187,6 +189,62 @@ TEST(RadiosityCli, TimeStopsTheShootingAndSaysSo) {
   EXPECT_TRUE(contains(counted.output, " 1 shots")) << counted.output;
   EXPECT_GE(last_shot(dir / "c.csv").second, 0.001) << "the shot outlasted the time";
   EXPECT_FALSE(contains(counted.output, "stopped by --time")) << counted.output;
+}
+
+// The number just after `key` in `text` (-1 when absent).
+double number_after(const std::string& text, const std::string& key) {
+  const size_t at = text.find(key);
+  return at == std::string::npos ? -1.0 : std::stod(text.substr(at + key.size()));
+}
+
+// The unshot fraction of a --csv history's last row.
+double last_fraction(const std::filesystem::path& csv_path) {
+  std::ifstream csv(csv_path);
+  std::string line, last;
+  while (std::getline(csv, line)) last = line;
+  std::istringstream fields(last);
+  int shot = -1;
+  double power = 0, fraction = -1;
+  char comma = 0;
+  fields >> shot >> comma >> power >> comma >> fraction;
+  return fraction;
+}
+
+// At the defaults a run is bounded by the work done, not by seconds: a budget set low stops the
+// shooting at the first shot that reaches it, the picture is written, and the message says it
+// stopped early, how much power is left unshot (the history's last row) and how to go further.
+TEST(RadiosityCli, TheWorkBudgetStopsADefaultRunAndSaysHowFarItGot) {
+  test::ScratchDir dir;
+  for (const char* model : {"radiosity", "hybrid"}) {
+    const auto out = dir / (std::string(model) + ".png");
+    const auto csv = dir / (std::string(model) + ".csv");
+    const auto bounded = run_luz({"render", cornell(), "--model", model, "--out", out.string(), "--size", "32x32",
+                                  "--meshing", "uniform", "--work-budget", "100000", "--csv", csv.string()});
+    ASSERT_EQ(bounded.exit_code, 0) << model << ": " << bounded.output;
+    EXPECT_TRUE(std::filesystem::exists(out)) << model;
+    EXPECT_TRUE(contains(bounded.output, "stopped early")) << bounded.output;
+    EXPECT_TRUE(contains(bounded.output, "--time SECONDS or --converge EPS")) << bounded.output;
+    const double shots = number_after(bounded.output, "element-shots (");
+    const double elements = number_after(bounded.output, " shots on ");
+    ASSERT_GT(elements, 0.0) << bounded.output;
+    EXPECT_EQ(shots, std::ceil(100000.0 / elements)) << "the first shot that reaches the budget is the last";
+    EXPECT_EQ(shots, double(last_shot(csv).first));
+    const double fraction = last_fraction(csv);
+    EXPECT_NEAR(number_after(bounded.output, "elements): "), 100.0 * fraction, 0.006) << bounded.output;
+    EXPECT_GT(fraction, 0.005) << "stopped before the default convergence";
+  }
+  // A stopping rule given by the user lifts the budget: --converge runs to its threshold.
+  const auto asked = run_luz({"render", cornell(), "--model", "radiosity", "--out", (dir / "c.png").string(),
+                              "--size", "32x32", "--meshing", "uniform", "--work-budget", "100000", "--converge",
+                              "0.02", "--csv", (dir / "c.csv").string()});
+  ASSERT_EQ(asked.exit_code, 0) << asked.output;
+  EXPECT_FALSE(contains(asked.output, "stopped early")) << asked.output;
+  EXPECT_LT(last_fraction(dir / "c.csv"), 0.02) << asked.output;
+  // The shipped Cornell box converges at the defaults within the default budget.
+  const auto shipped = run_luz({"render", cornell(), "--model", "radiosity", "--out", (dir / "d.png").string(),
+                                "--size", "32x32"});
+  ASSERT_EQ(shipped.exit_code, 0) << shipped.output;
+  EXPECT_FALSE(contains(shipped.output, "stopped early")) << shipped.output;
 }
 
 // A mesh beyond the element budget is refused from its count, naming the numbers, before any

@@ -235,7 +235,7 @@ TEST(Exposure, TheTwoModelsOfAGridShareOneFittedExposure) {
   b.doc["asset"]["generator"] = "Khronos glTF Blender I/O v3.4.50";
   const std::string scene = b.write_gltf(dir).string();
   const std::string grid = (dir / "grid.png").string();
-  const CommandResult r = run_luz({"render", scene, "--model", "phong,whitted", "--size", "80x120",
+  const CommandResult r = run_luz({"render", scene, "--model", "phong,whitted", "--size", "160x120",
                                    "--exposure", "auto", "--out", grid});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const size_t at = r.output.find("exposure ");
@@ -243,7 +243,7 @@ TEST(Exposure, TheTwoModelsOfAGridShareOneFittedExposure) {
   const float ev = std::stof(r.output.substr(at + 9));
   EXPECT_LT(ev, -6.0f) << r.output;  // the lamp's 683 brought down
   const Image sheet = io::read_image(grid);
-  ASSERT_EQ(sheet.width, 160);
+  ASSERT_EQ(sheet.width, 160);  // --size is the whole sheet's: two 80x120 panes
   for (const auto& [model, left] : {std::pair<std::string, int>{"phong", 0}, {"whitted", 80}}) {
     SCOPED_TRACE(model);
     const std::string alone = (dir / (model + ".png")).string();

@@ -69,6 +69,8 @@ void RadiosityOptions::validate() const {
   const int root = int(std::lround(std::sqrt(double(pixel_samples))));
   if (pixel_samples < 1 || pixel_samples > kMaxPixelSamples || root * root != pixel_samples)
     refuse(trf("{} samples per pixel, expected a square in 1 .. {}", pixel_samples, kMaxPixelSamples));
+  if (!std::isfinite(work_budget) || work_budget < 0.0 || work_budget > kMaxWorkBudget)
+    refuse(trf("work budget of {} element-shots, expected 0 .. {:g}", work_budget, kMaxWorkBudget));
   if (max_shots < 0) refuse(trf("{} shots must not be negative", max_shots));
   if (!std::isfinite(converge) || converge < 0.0f || converge >= 1.0f)
     refuse(trf("convergence threshold {} must be in [0, 1) (0 = run until --shots)", converge));

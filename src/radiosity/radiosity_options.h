@@ -70,6 +70,14 @@ struct RadiosityOptions {
   // ---- The shooting loop (slide 39) ----
   int max_shots = 0;        // stop after this many shots (lights included); 0 = no limit
   float converge = 0.005f;  // stop when unshot power < converge x emitted power; 0 = never
+  // The most work a headless run (`luz render`) does when no stopping rule was asked for, in
+  // element-shots: the elements each shot reaches, summed over the shots, for a shot's cost
+  // grows with them. A bound on work, not on seconds, stops at the same shot on a loaded
+  // machine as on a quiet one, so a picture that converges before it is the same everywhere;
+  // a scene of tens of thousands of triangles meets it in about a minute and says how far it
+  // got. `luz render` lifts it when --shots, --converge or --time is given; 0 = no bound. The
+  // viewer shows how far the solution is and leaves the stopping to the user.
+  double work_budget = 1e8;
   // Overshooting (Feda & Purgathofer 1992, read as over-relaxation by Gortler, Cohen &
   // Slusallek 1993): a patch shoots `overshoot` times its unshot radiosity and keeps the
   // negative remainder (1 - overshoot) x unshot to shoot back later. 1 = plain shooting;
@@ -95,6 +103,7 @@ inline constexpr int kMaxVisibilityRays = 64;
 inline constexpr int kMaxRefineLevels = 12;
 inline constexpr int kMaxRefineBudget = 2'000'000;
 inline constexpr int kMaxPixelSamples = 256;
+inline constexpr double kMaxWorkBudget = 1e15;
 inline constexpr float kMinOvershoot = 1.0f;
 inline constexpr float kMaxOvershoot = 1.9f;
 

@@ -26,6 +26,10 @@ double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 double mean(const Rgb& c) { return (double(c.r) + double(c.g) + double(c.b)) / 3.0; }
 double mean(const glm::dvec3& c) { return (c.r + c.g + c.b) / 3.0; }
 
@@ -125,14 +129,12 @@ void ProgressiveSolver::reset() {
   }
   light_power_.clear();
   for (const size_t k : lights_) {
-    const Light& light = scene_.lights[k];
-    light_power_.push_back(light.type == LightType::directional
-                               ? light.intensity * float(beam_cross_section())
-                               : light.intensity * float(emitting_solid_angle(light)));
+    light_power_.push_back(light_power(scene_.lights[k]));
     tally_.emitted += mean(light_power_.back());
   }
   next_light_ = 0;
   shots_ = 0;
+  element_shots_ = 0.0;
   last_shooter_ = -1;
   random_.seed(options_.seed);
   history_.clear();
@@ -141,17 +143,45 @@ void ProgressiveSolver::reset() {
 }
 
 // ---- [step 2: shoot a patch] -------------------------------------------------------------------
-// Step 2: patch i shoots its unshot radiosity to every element its hemicube sees.
+// Step 2 for shooting patch i, line by line as slide 39 writes it. What the slide leaves out, the
+// hemicube's rotation, where it stands, the energy balance, the timings and the history, is in
+// the helpers after it.
 void ProgressiveSolver::shoot(size_t i) {
   const ShootingPatch& shooter = mesh_.shooters[i];
-  const float rotation = options_.random_rotation
-      ? std::uniform_real_distribution<float>(0.0f, 2.0f * std::numbers::pi_v<float>)(random_)
-      : 0.0f;
+  const float rotation = hemicube_rotation();
 
   // radiosidad[i] = radiosidad[i] + carga[i];  carga[i] = 0
-  // (the slide zeroes carga[i] before the loop that uses it: keep what is shot aside first).
-  // The patch's carga is the area-weighted mean of its elements'; overshooting sends w times it
-  // and leaves (1 - w) times it behind.
+  // (the slide zeroes carga[i] before the loop that uses it: what is shot is kept aside first).
+  const Rgb shot = take_unshot(i);
+
+  // para cada j: calcular F_ji
+  const std::vector<FormFactor>& row = this->row(i, rotation);
+
+  // carga[j] = carga[j] + rho_j F_ji carga[i]
+  const auto update_start = std::chrono::steady_clock::now();
+  arriving_from(shooter, row, shot);
+  for (size_t k = 0; k < row.size(); ++k) {
+    const Patch& receiver = mesh_.patches[row[k].patch];
+    receive(row[k].patch, arriving_[k] / receiver.area);
+  }
+  tally_shot(row, power(shot, shooter.area));
+  update_seconds_ = seconds_since(update_start);
+  count_shot(int(i));
+}
+
+// A random turn of the hemicube about the patch's normal for each shot (options.random_rotation),
+// so that its aliasing falls elsewhere every time; 0 without it.
+float ProgressiveSolver::hemicube_rotation() {
+  return options_.random_rotation
+      ? std::uniform_real_distribution<float>(0.0f, 2.0f * std::numbers::pi_v<float>)(random_)
+      : 0.0f;
+}
+
+// Patch i's unshot radiosity moves to its radiosity, element by element, and what it shoots comes
+// back: the area-weighted mean of its elements' (sent_ keeps each element's part). Overshooting
+// sends w times it and leaves (1 - w) times it behind.
+Rgb ProgressiveSolver::take_unshot(size_t i) {
+  const ShootingPatch& shooter = mesh_.shooters[i];
   const float w = options_.overshoot;
   glm::dvec3 shot_power_rgb(0.0);
   sent_.clear();
@@ -164,15 +194,14 @@ void ProgressiveSolver::shoot(size_t i) {
     unshot_[e] -= sent;
   }
   patch_unshot_[i] *= double(1.0f - w);
-  const Rgb shot = Rgb(shot_power_rgb / double(shooter.area));
-  eye_ = emission_centre(shooter);
+  return Rgb(shot_power_rgb / double(shooter.area));
+}
 
-  // para cada j: calcular F_ji;  carga[j] = carga[j] + rho_j F_ji carga[i]
-  const std::vector<FormFactor>& row = this->row(i, rotation);
-  const auto update_start = std::chrono::steady_clock::now();
-  // The power arriving at each j, F_ij A_i x what i sends (on TBB's threads: the analytic
-  // factors are most of a shot's work); by reciprocity j's unshot radiosity then grows by
-  // rho_j F_ji x what i sends, F_ji = F_ij A_i / A_j.
+// The power arriving at each j of the row, F_ij A_i x what i sends, into arriving_ (on TBB's
+// threads: the analytic factors are most of a shot's work). By reciprocity, F_ji = F_ij A_i / A_j,
+// j's unshot radiosity then grows by rho_j F_ji x what i sends = rho_j x arriving_ / A_j.
+void ProgressiveSolver::arriving_from(const ShootingPatch& shooter, const std::vector<FormFactor>& row,
+                                      const Rgb& shot) {
   arriving_.resize(row.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, row.size(), 128), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t k = r.begin(); k != r.end(); ++k) {
@@ -181,18 +210,24 @@ void ProgressiveSolver::shoot(size_t i) {
       arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot, sent_);
     }
   });
+}
+
+// The energy balance of a shot that sent `sent` watts: of the power arriving_ at each receiver of
+// `row`, rho_j is reflected and the rest absorbed; what arrived nowhere escaped the scene.
+void ProgressiveSolver::tally_shot(const std::vector<FormFactor>& row, double sent) {
   double delivered = 0.0;
   for (size_t k = 0; k < row.size(); ++k) {
     const Patch& receiver = mesh_.patches[row[k].patch];
-    receive(row[k].patch, arriving_[k] / receiver.area);
-    // Of what arrives, rho_j is reflected, the rest absorbed.
     tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * arriving_[k]);
     delivered += mean(arriving_[k]);
   }
-  tally_.escaped += power(shot, shooter.area) - delivered;
-  update_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - update_start).count();
+  tally_.escaped += sent - delivered;
+}
+
+// One shot more, and its line in the history.
+void ProgressiveSolver::count_shot(int shooter) {
   ++shots_;
-  record(int(i));
+  record(shooter);
 }
 
 // F from the shooting patch to element j, given the hemicube's point-to-area value from the
@@ -232,10 +267,12 @@ glm::vec3 ProgressiveSolver::emission_centre(const ShootingPatch& shooter) const
   return weight > 0.0 ? glm::vec3(sum / weight) : shooter.centre;
 }
 
-// The shooter's row F_ij: from its hemicube, or cast with rays (which need no GL and are
-// timed as the row's "draw").
+// The shooter's row F_ij: from its hemicube, standing where the patch's light leaves from
+// (emission_centre, of what take_unshot kept in sent_), or cast with rays (which need no GL and
+// are timed as the row's "draw").
 const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) {
   const ShootingPatch& shooter = mesh_.shooters[i];
+  eye_ = emission_centre(shooter);
   if (options_.form_factors != FormFactorMethod::rays) {
     const std::vector<FormFactor>& row =
         hemicube_.row(eye_, shooter.normal, shooter.clearance, rotation);
@@ -246,7 +283,7 @@ const std::vector<FormFactor>& ProgressiveSolver::row(size_t i, float rotation) 
   const std::vector<FormFactor>& row =
       rays().row(i, options_.visibility_rays, options_.seed, uint32_t(shots_), sent_);
   row_times_ = RowTimes{};
-  row_times_.draw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  row_times_.draw = seconds_since(start);
   return row;
 }
 
@@ -309,25 +346,35 @@ Rgb ProgressiveSolver::light_flux(const Light& light, const Patch& receiver, flo
 // A sun gives Phi_j = E_perp A_j cos(theta_j) V_j (its sunlit area, from rays).
 void ProgressiveSolver::shoot_light(size_t k) {
   const Light& light = scene_.lights[lights_[k]];
-  const int rays = 4 * options_.visibility_rays;
-  const std::vector<FormFactor>& omegas =
-      light.type == LightType::directional
-          ? this->rays().sunlit_areas(light, rays, options_.seed, uint32_t(shots_))
-      : options_.form_factors == FormFactorMethod::rays
-          ? this->rays().solid_angles(light, rays, options_.seed, uint32_t(shots_))
-          : cube_->solid_angles(light);
+  const std::vector<FormFactor>& omegas = light_row(light);
   row_times_ = RowTimes{};
-  double delivered = 0.0;
-  for (const FormFactor& f : omegas) {
-    const Patch& receiver = mesh_.patches[f.patch];
-    const Rgb flux = light_flux(light, receiver, f.value);
-    receive(f.patch, flux / receiver.area);
-    tally_.absorbed += mean((Rgb(1.0f) - receiver.rho) * flux);
-    delivered += mean(flux);
+  arriving_.resize(omegas.size());
+  for (size_t n = 0; n < omegas.size(); ++n) {
+    const Patch& receiver = mesh_.patches[omegas[n].patch];
+    arriving_[n] = light_flux(light, receiver, omegas[n].value);
+    receive(omegas[n].patch, arriving_[n] / receiver.area);
   }
-  tally_.escaped += mean(light_power_[k]) - delivered;
-  ++shots_;
-  record(-1 - int(k));
+  tally_shot(omegas, mean(light_power_[k]));
+  count_shot(-1 - int(k));
+}
+
+// What a light reaches: per element, its spot-weighted solid angle from the light (a point source
+// drawn with a cube, or cast with rays), or a sun's sunlit area (rays: a light at infinity has no
+// place for a cube).
+const std::vector<FormFactor>& ProgressiveSolver::light_row(const Light& light) {
+  const int rays = 4 * options_.visibility_rays;
+  if (light.type == LightType::directional)
+    return this->rays().sunlit_areas(light, rays, options_.seed, uint32_t(shots_));
+  if (options_.form_factors == FormFactorMethod::rays)
+    return this->rays().solid_angles(light, rays, options_.seed, uint32_t(shots_));
+  return cube_->solid_angles(light);
+}
+
+// The power a light sends: I x its emitting solid angle, or for a sun E_perp over its beam's
+// cross-section (beam_cross_section).
+Rgb ProgressiveSolver::light_power(const Light& light) const {
+  return light.type == LightType::directional ? light.intensity * float(beam_cross_section())
+                                              : light.intensity * float(emitting_solid_angle(light));
 }
 
 // What a sun sends at the scene: E_perp over the disc that the scene's bounding sphere shows the
@@ -365,21 +412,26 @@ bool ProgressiveSolver::done() const {
 // Step 4: repeat until no difference shows. One call is one shot, so the viewer can spend a time
 // budget per frame and redraw (step 3) between shots.
 bool ProgressiveSolver::step() {
-  if (mesh_.revision != revision_)
-    throw Error(ErrorKind::bad_value, i18n::tr("radiosity: the mesh was changed by another solver's "
-                                               "adaptive subdivision; give each solver its own mesh"));
+  refuse_a_changed_mesh();
   if (done()) return false;
   if (next_light_ < lights_.size()) {
     shoot_light(next_light_++);  // punctual lights first, each once
     return true;
   }
   if (refinement_due()) refine();
-  shoot(most_unshot_patch());
+  shoot(most_unshot_patch());  // "elegir el retazo más cargado (i) y propagar"
   return true;
+}
+
+void ProgressiveSolver::refuse_a_changed_mesh() const {
+  if (mesh_.revision != revision_)
+    throw Error(ErrorKind::bad_value, i18n::tr("radiosity: the mesh was changed by another solver's "
+                                               "adaptive subdivision; give each solver its own mesh"));
 }
 
 void ProgressiveSolver::record(int shooter) {
   last_shooter_ = shooter;
+  if (shots_ > 0) element_shots_ += double(mesh_.size());  // shot 0 is the start
   ShotRecord r;
   r.shot = shots_;
   r.shooter = shooter;

@@ -129,6 +129,8 @@ public:
   double unshot_fraction() const;
   EnergyTally energy() const;
   int shots() const { return shots_; }
+  // The work done so far: the elements in the mesh at each shot, summed over the shots.
+  double element_shots() const { return element_shots_; }
   // Shooting patch, -1 - k for light k, or -1 before any.
   int last_shooter() const { return last_shooter_; }
   size_t lights_left() const { return lights_.size() - next_light_; }
@@ -150,7 +152,18 @@ public:
   Hemicube& hemicube() { return hemicube_; }
 
 private:
+  // Step 2's pieces (shooting.cpp): the patch's unshot radiosity into its radiosity, returning
+  // what it shoots; the power arriving at each element of its row; the energy balance of a shot.
+  float hemicube_rotation();
+  Rgb take_unshot(size_t shooter);
+  void arriving_from(const ShootingPatch& shooter, const std::vector<FormFactor>& row, const Rgb& shot);
+  void tally_shot(const std::vector<FormFactor>& row, double sent);
+  void count_shot(int shooter);
   void record(int shooter);
+  // A light's row (solid angles, or a sun's sunlit areas) and the power it sends.
+  const std::vector<FormFactor>& light_row(const Light& light);
+  Rgb light_power(const Light& light) const;
+  void refuse_a_changed_mesh() const;
   size_t most_unshot_patch() const;
   static double power(const Rgb& exitance, float area);
   double form_factor_to(const ShootingPatch& shooter, const FormFactor& hemicube) const;
@@ -195,6 +208,7 @@ private:
   std::vector<glm::dvec3> patch_unshot_;  // per shooting patch: sum of A_j unshot_j (W)
   EnergyTally tally_;
   int shots_ = 0;
+  double element_shots_ = 0.0;
   int last_shooter_ = -1;
   int refinement_passes_ = 0;
   bool budget_reached_ = false;  // adaptive subdivision stopped at options_.refine_budget

@@ -97,10 +97,10 @@ std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, co
   meshes.reserve(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
-    const Material& o = shading.material_of(mesh);
+    const Material& o = shading.surfaces().material_of(mesh);
     meshes.push_back({.corners = corners[m].data(),
                       .material = &o,
-                      .kd_uniform = !diffuse || shading.kd_is_uniform(o, mesh),
+                      .kd_uniform = !diffuse || shading.surfaces().kd_is_uniform(o, mesh),
                       .kd = o.kd,
                       .ks = o.ks,
                       .kr = o.kr,
@@ -217,7 +217,7 @@ void HitLanes::load(std::span<const uint32_t> queue, std::span<const Ray> rays, 
       const Mesh& mesh = scene_->meshes[size_t(mesh_[k])];
       const glm::vec2 barycentrics(u_[k], v_[k]);
       const glm::vec2 uv = mesh.uv_at(size_t(triangle_[k]), barycentrics);
-      kd_.set(k, shading_->kd_at(*m.material, mesh_[k], triangle_[k], barycentrics, uv));
+      kd_.set(k, shading_->surfaces().kd_at(*m.material, mesh_[k], triangle_[k], barycentrics, uv));
     }
     ks_.set(k, m.ks);
     shininess_[k] = m.shininess;

@@ -8,9 +8,9 @@
 // cannot be vectorised (fetching each hit's material, collecting the light samples and rays that
 // survive) runs in short scalar loops of its own between them.
 //
-// Per lane, the operations are those of Whitted::surface_at, light_samples, local_color and
-// secondary_rays, in the same order, so every ray is the recursion's to the bit and every light's
-// term too (test_whitted_streams).
+// Per lane, the operations are those of SurfaceReader::surface_at and Whitted's light_samples,
+// local_color and secondary_rays, in the same order, so every ray is the recursion's to the bit
+// and every light's term too (test_whitted_streams).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -96,7 +96,7 @@ std::vector<LaneMesh> lane_meshes(const Scene& scene, const Whitted& shading, co
 
 class HitLanes {
 public:
-  // What the lanes shade with, until told again: `shading` is the recursion whose kd_at() and
+  // What the lanes shade with, until told again: `shading` is the recursion whose surfaces() and
   // diffuse source they share, `meshes` lane_meshes() of the same. (The lanes are kept per thread
   // and reused, so this is no constructor.)
   void shade_with(const Scene& scene, const Whitted& shading, const WhittedOptions& options,

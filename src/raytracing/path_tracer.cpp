@@ -12,6 +12,7 @@
 #include "raytracing/embree_scene.h"
 #include "raytracing/optics.h"
 #include "raytracing/path_bsdf.h"
+#include "raytracing/surface_reader.h"
 #include "raytracing/whitted.h"
 
 namespace luz::rt {
@@ -111,8 +112,7 @@ public:
   PathTracer(const Scene& scene, const Intersector& intersector, const EmitterTable& emitters,
              const PathOptions& options)
       : scene_(scene), intersector_(intersector), emitters_(emitters), options_(options),
-        surface_options_(surface_options(options)),
-        surfaces_(scene, intersector, surface_options_, counters_) {}
+        surfaces_(scene, options.textures) {}
 
   Rgb radiance(Ray ray, Random& random) {
     Rgb L(0.0f);
@@ -139,7 +139,7 @@ public:
           const float light_pdf = emitters_.area_density(p.mesh, p.triangle) * hit.t * hit.t / cos_e;
           w = power_heuristic(bsdf_pdf, light_pdf);
         }
-        L += throughput * scene_.emission_at(p.mesh, size_t(p.triangle), p.barycentrics) * w;
+        L += throughput * surfaces_.emission_at(p) * w;
       }
 
       // Next-event estimation. At the last depth no BSDF ray follows to find the emitters, so the
@@ -170,12 +170,6 @@ public:
   }
 
 private:
-  static WhittedOptions surface_options(const PathOptions& options) {
-    WhittedOptions o;
-    o.terms.textures = options.textures;
-    return o;
-  }
-
   // ---- [lights] ---------------------------------------------------------------------------------
   // Next-event estimation at p: sum over the punctual lights of f cos(theta) E_i (the delta
   // lights' irradiance, SCENES.md's units), plus one emissive triangle's estimate, weighed by
@@ -248,9 +242,7 @@ private:
   const Intersector& intersector_;
   const EmitterTable& emitters_;
   const PathOptions& options_;
-  WhittedOptions surface_options_;
-  Counters counters_;
-  Whitted surfaces_;  // the Whitted tracer's surface code: hit point, normals, kd x texture
+  SurfaceReader surfaces_;  // the hits read as the Whitted tracer reads them: point, normals, kd
   uint64_t tests_ = 0;
 };
 

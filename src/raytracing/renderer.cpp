@@ -1,4 +1,5 @@
-// Tiles on TBB. Sections: [the renderer] [one tile] [one pixel]
+// Tiles on TBB. Sections: [slide 26's loop] [adaptive] [streams] [the renderer] [one tile]
+// [one pixel]
 #include "raytracing/renderer.h"
 
 #include <algorithm>
@@ -53,6 +54,179 @@ void mark_stream_starts(std::vector<RecordedRay>& log) {
   for (RecordedRay& r : log)
     if (r.traced == Traced::in_stream && !std::exchange(started[size_t(r.kind)], true))
       r.traced = Traced::starts_stream;
+}
+
+// Per-thread scratch, reused from tile to tile: no allocation or clearing per tile.
+TileScratch& scratch_of_this_thread() {
+  thread_local TileScratch scratch;
+  return scratch;
+}
+
+// Stratified sampling's samples a pixel: a non-square spp is taken down to a square.
+int samples_per_pixel(const WhittedOptions& options) {
+  const int side = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
+  return side * side;
+}
+
+// ---- [slide 26's loop] --------------------------------------------------------------------------
+//   para cada pixel
+//     color := Trazar(rayoPrimario, 1)
+//     Poner_pixel(pixel, color)
+// with `samples` primary rays a pixel (stratified and jittered; one: the centre), each weighed
+// 1/samples, every one traced alone by the recursion.
+void trace_pixels(const Tile& tile, const PrimaryRays& camera_rays, int samples, Whitted& whitted,
+                  Image& image, Counters& counters) {
+  const Rgb weight(1.0f / float(samples));
+  std::vector<glm::vec2> offsets;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Random jitter(x, y, -1);
+      stratified_pixel_samples(samples, jitter, offsets);
+      Rgb color(0.0f);  // Trazar(rayoPrimario, 1), for each of the pixel's primary rays
+      for (int s = 0; s < samples; ++s) {
+        const Ray primary = camera_rays.through(glm::vec2(float(x), float(y)) + offsets[size_t(s)]);
+        color += whitted.trace(primary, 1, RayKind::primary, sample_seed(x, y, s), weight);
+      }
+      image.at(x, y) = color * weight;  // Poner_pixel(pixel, color)
+    }
+  counters.samples += size_t(tile.width()) * size_t(tile.height()) * size_t(samples);
+}
+
+// ---- [adaptive] ---------------------------------------------------------------------------------
+// Whitted's adaptive supersampling: corners first (shared by neighbouring pixels), then each
+// pixel subdivided where its corners differ. Every point's random numbers are seeded by the
+// point itself, so a corner gives the same radiance from either pixel.
+void adaptive_tile(const Tile& tile, const PrimaryRays& camera_rays, const WhittedOptions& options,
+                   Whitted& whitted, Image& image, Counters& counters) {
+  const auto radiance = [&](float x, float y) {
+    ++counters.samples;
+    return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary,
+                         sample_seed(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
+  };
+  const int cw = tile.width() + 1;
+  std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
+  for (int y = tile.y0; y <= tile.y1; ++y)
+    for (int x = tile.x0; x <= tile.x1; ++x)
+      corners[size_t(y - tile.y0) * cw + size_t(x - tile.x0)] = radiance(float(x), float(y));
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      const auto corner = [&](int dx, int dy) {
+        return corners[size_t(y - tile.y0 + dy) * cw + size_t(x - tile.x0 + dx)];
+      };
+      const Rgb c[4] = {corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1)};
+      image.at(x, y) = adaptive_pixel(float(x), float(y), c, options.adaptive_levels,
+                                      options.adaptive_threshold, radiance);
+    }
+}
+
+// ---- [streams] ----------------------------------------------------------------------------------
+// The tile's primary rays and each one's seed, sample by sample in pixel order: the samples of
+// trace_pixels, made several to an instruction.
+void primary_samples(const Tile& tile, const PrimaryRays& camera_rays, int samples, bool seeded,
+                     TileScratch& scratch, std::span<Ray> rays, std::span<uint64_t> seeds) {
+  size_t i = 0;
+  if (samples == 1) {
+    // One sample a pixel: its centre, stratified_pixel_samples' rule, taken here without the call
+    // and the generator per pixel.
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      camera_rays.through_pixel_centres(tile.x0, y, rays.subspan(i, size_t(tile.width())));
+      for (int x = tile.x0; x < tile.x1; ++x) seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
+    }
+    return;
+  }
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Random jitter(x, y, -1);
+      stratified_pixel_samples(samples, jitter, scratch.offsets);
+      for (int s = 0; s < samples; ++s, ++i) {
+        scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
+        seeds[i] = seeded ? sample_seed(x, y, s) : 0;
+      }
+    }
+  camera_rays.through(std::span(scratch.points).first(rays.size()), rays);
+}
+
+// Every generation as streams (wavefront.h); each sample's radiance comes back x 1/spp. The
+// primary rays and seeds are written straight into the wavefront's first queue.
+void wavefront_tile(const Scene& scene, const Intersector& hits_of, const Tile& tile,
+                    const PrimaryRays& camera_rays, const WhittedOptions& options, Whitted& whitted,
+                    std::span<const LaneMesh> meshes, Image& image, Counters& counters,
+                    std::vector<RecordedRay>* log) {
+  const int samples = samples_per_pixel(options);
+  const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples);
+  TileScratch& scratch = scratch_of_this_thread();
+  scratch.resize(n);
+  Wavefront wavefront(scene, whitted, meshes, hits_of, options, counters, log);
+  const Wavefront::FirstGeneration primary = wavefront.first_generation(n);
+  primary_samples(tile, camera_rays, samples, whitted.draws_random_numbers(), scratch, primary.rays,
+                  primary.seeds);
+  counters.samples += n;
+
+  const std::span<Rgb> radiance(scratch.radiance.data(), n);
+  wavefront.trace(Rgb(1.0f / float(samples)), radiance);
+  size_t i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Rgb sum(0.0f);
+      for (int s = 0; s < samples; ++s, ++i) sum += radiance[i];
+      image.at(x, y) = sum;
+    }
+}
+
+// The recursion, with the first generation traced as streams (see StreamedAnswers):
+//   1. the tile's primary rays, intersected as one stream;
+//   2. each hit's surface point and light samples;
+//   3. all their shadow rays, as one stream;
+//   4. trace() of each primary ray with those answers: Color() and its recursion.
+void streamed_tile(const Intersector& hits_of, const Tile& tile, const PrimaryRays& camera_rays,
+                   const WhittedOptions& options, Whitted& whitted, Image& image, Counters& counters,
+                   std::vector<RecordedRay>* log) {
+  const int samples = samples_per_pixel(options);
+  const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples);
+  TileScratch& scratch = scratch_of_this_thread();
+  scratch.resize(n);
+  const std::span<Ray> rays(scratch.rays.data(), n);
+  const std::span<uint64_t> seeds(scratch.seeds.data(), n);
+  primary_samples(tile, camera_rays, samples, whitted.draws_random_numbers(), scratch, rays, seeds);
+  counters.samples += n;
+
+  std::span<Hit> hits(scratch.hits.data(), n);
+  hits_of.intersect(rays, hits, counters.intersection_tests);  // 1.
+
+  std::vector<StreamedAnswers>& answers = scratch.answers;
+  std::vector<size_t>& first = scratch.first;      // sample i's lights: first[i] .. first[i + 1]
+  std::vector<LightSample>& lights = scratch.lights;
+  lights.clear();
+  for (size_t i = 0; i < n; ++i) {  // 2.
+    first[i] = lights.size();
+    answers[i].hit = hits[i];
+    if (hits[i].found()) {
+      whitted.surfaces().surface_at(rays[i], hits[i], answers[i].point);
+      whitted.light_samples(answers[i].point, -rays[i].direction, seeds[i], lights);
+    }
+  }
+  first[n] = lights.size();
+  if (options.shadows) {  // 3.
+    scratch.shadow_rays.resize(lights.size());
+    for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
+    hits_of.occluded(scratch.shadow_rays, scratch.blocked.first(lights.size()),
+                     counters.intersection_tests);
+  }
+
+  const bool* blocked = options.shadows ? scratch.blocked.first(lights.size()).data() : nullptr;
+  const Rgb weight(1.0f / float(samples));
+  size_t i = 0;
+  for (int y = tile.y0; y < tile.y1; ++y)
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      Rgb sum(0.0f);
+      for (int s = 0; s < samples; ++s, ++i) {  // 4.
+        answers[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
+        answers[i].blocked = blocked ? blocked + first[i] : nullptr;
+        sum += whitted.trace(rays[i], 1, RayKind::primary, seeds[i], weight, &answers[i]);
+      }
+      image.at(x, y) = sum * weight;
+    }
+  if (log) mark_stream_starts(*log);
 }
 
 }  // namespace
@@ -120,6 +294,9 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
 }
 
 // ---- [one tile] ---------------------------------------------------------------------------------
+// A tile by the options' strategy: adaptive sampling (Whitted's), or stratified sampling traced by
+// the wavefront or by the recursion with its first generation streamed. The ray tree of a pixel
+// takes slide 26's loop itself (trace_pixels).
 void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int width, int height,
                                   const WhittedOptions& options, std::span<const LaneMesh> meshes,
                                   Image& image, Counters& counters, std::vector<RecordedRay>* log,
@@ -129,127 +306,24 @@ void WhittedRenderer::render_tile(const Tile& tile, const Camera& camera, int wi
   Whitted whitted(scene_, hits_of, options, counters, diffuse_);
   whitted.log_rays(log);
   whitted.record_tree(tree);
+  if (options.sampling == Sampling::adaptive)
+    adaptive_tile(tile, camera_rays, options, whitted, image, counters);
+  else if (tree)
+    trace_pixels(tile, camera_rays, samples_per_pixel(options), whitted, image, counters);
+  else if (options.renderer == RendererKind::wavefront)
+    wavefront_tile(scene_, hits_of, tile, camera_rays, options, whitted, meshes, image, counters, log);
+  else
+    streamed_tile(hits_of, tile, camera_rays, options, whitted, image, counters, log);
+}
 
-  if (options.sampling == Sampling::adaptive) {
-    // Whitted's adaptive supersampling: corners first (shared by neighbouring pixels), then each
-    // pixel subdivided where its corners differ. Every point's random numbers are seeded by the
-    // point itself, so a corner gives the same radiance from either pixel.
-    const auto radiance = [&](float x, float y) {
-      ++counters.samples;
-      return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary,
-                           sample_seed(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
-    };
-    const int cw = tile.width() + 1;
-    std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
-    for (int y = tile.y0; y <= tile.y1; ++y)
-      for (int x = tile.x0; x <= tile.x1; ++x)
-        corners[size_t(y - tile.y0) * cw + size_t(x - tile.x0)] = radiance(float(x), float(y));
-    for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) {
-        const auto corner = [&](int dx, int dy) {
-          return corners[size_t(y - tile.y0 + dy) * cw + size_t(x - tile.x0 + dx)];
-        };
-        const Rgb c[4] = {corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1)};
-        image.at(x, y) = adaptive_pixel(float(x), float(y), c, options.adaptive_levels,
-                                        options.adaptive_threshold, radiance);
-      }
-    return;
-  }
-
-  // Stratified sampling: the tile's primary rays, sample by sample in pixel order.
-  const int spp = std::max(1, int(std::floor(std::sqrt(double(std::max(options.spp, 1))) + 1e-9)));
-  const int samples_per_pixel = spp * spp;  // a non-square spp is taken down to a square
-  const size_t n = size_t(tile.width()) * size_t(tile.height()) * size_t(samples_per_pixel);
-  // Per-thread scratch, reused from tile to tile: no allocation or clearing per tile. The
-  // wavefront's primary rays and seeds are written straight into its first queue.
-  thread_local TileScratch scratch;
-  scratch.resize(n);
-  const bool streams = options.renderer == RendererKind::wavefront && !tree;
-  Wavefront wavefront(scene_, whitted, meshes, hits_of, options, counters, log);
-  const Wavefront::FirstGeneration primary =
-      streams ? wavefront.first_generation(n)
-              : Wavefront::FirstGeneration{{scratch.rays.data(), n}, {scratch.seeds.data(), n}};
-  const std::span<Ray> rays = primary.rays;
-  const std::span<uint64_t> seeds = primary.seeds;
-  const bool seeded = whitted.draws_random_numbers();
-  size_t i = 0;
-  if (samples_per_pixel == 1) {
-    // One sample a pixel: its centre, stratified_pixel_samples' rule, taken here without the call
-    // and the generator per pixel.
-    for (int y = tile.y0; y < tile.y1; ++y) {
-      camera_rays.through_pixel_centres(tile.x0, y, rays.subspan(i, size_t(tile.width())));
-      for (int x = tile.x0; x < tile.x1; ++x) seeds[i++] = seeded ? sample_seed(x, y, 0) : 0;
-    }
-  } else {
-    for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) {
-        Random jitter(x, y, -1);
-        stratified_pixel_samples(samples_per_pixel, jitter, scratch.offsets);
-        for (int s = 0; s < samples_per_pixel; ++s, ++i) {
-          scratch.points[i] = glm::vec2(float(x), float(y)) + scratch.offsets[size_t(s)];
-          seeds[i] = seeded ? sample_seed(x, y, s) : 0;
-        }
-      }
-    camera_rays.through(std::span(scratch.points).first(n), rays);
-  }
-  counters.samples += n;
-  const Rgb weight(1.0f / float(samples_per_pixel));
-
-  if (streams) {
-    // Every generation as streams (wavefront.h); each sample's radiance comes back x 1/spp.
-    const std::span<Rgb> radiance(scratch.radiance.data(), n);
-    wavefront.trace(weight, radiance);
-    i = 0;
-    for (int y = tile.y0; y < tile.y1; ++y)
-      for (int x = tile.x0; x < tile.x1; ++x) {
-        Rgb sum(0.0f);
-        for (int s = 0; s < samples_per_pixel; ++s, ++i) sum += radiance[i];
-        image.at(x, y) = sum;
-      }
-    return;
-  }
-
-  // The recursion, with the first generation traced as streams (see StreamedAnswers):
-  //   1. the tile's primary rays, intersected as one stream;
-  //   2. each hit's surface point and light samples;
-  //   3. all their shadow rays, as one stream;
-  //   4. trace() of each primary ray with those answers: Color() and its recursion.
-  std::span<Hit> hits(scratch.hits.data(), n);
-  hits_of.intersect(rays, hits, counters.intersection_tests);  // 1.
-
-  std::vector<StreamedAnswers>& answers = scratch.answers;
-  std::vector<size_t>& first = scratch.first;      // sample i's lights: first[i] .. first[i + 1]
-  std::vector<LightSample>& lights = scratch.lights;
-  lights.clear();
-  for (i = 0; i < n; ++i) {  // 2.
-    first[i] = lights.size();
-    answers[i].hit = hits[i];
-    if (hits[i].found()) {
-      whitted.surface_at(rays[i], hits[i], answers[i].point);
-      whitted.light_samples(answers[i].point, -rays[i].direction, seeds[i], lights);
-    }
-  }
-  first[n] = lights.size();
-  if (options.shadows) {  // 3.
-    scratch.shadow_rays.resize(lights.size());
-    for (size_t k = 0; k < lights.size(); ++k) scratch.shadow_rays[k] = lights[k].shadow;
-    hits_of.occluded(scratch.shadow_rays, scratch.blocked.first(lights.size()),
-                     counters.intersection_tests);
-  }
-
-  const bool* blocked = options.shadows ? scratch.blocked.first(lights.size()).data() : nullptr;
-  i = 0;
-  for (int y = tile.y0; y < tile.y1; ++y)
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      Rgb sum(0.0f);
-      for (int s = 0; s < samples_per_pixel; ++s, ++i) {  // 4.
-        answers[i].lights = std::span(lights).subspan(first[i], first[i + 1] - first[i]);
-        answers[i].blocked = blocked ? blocked + first[i] : nullptr;
-        sum += whitted.trace(rays[i], 1, RayKind::primary, seeds[i], weight, &answers[i]);
-      }
-      image.at(x, y) = sum * weight;
-    }
-  if (log) mark_stream_starts(*log);
+Image WhittedRenderer::render_per_pixel(const Camera& camera, int width, int height,
+                                        const WhittedOptions& options) {
+  Image image(width, height);
+  Counters counters;
+  Whitted whitted(scene_, intersector(options), options, counters, diffuse_);
+  trace_pixels(Tile{0, 0, width, height}, PrimaryRays(camera, width, height), samples_per_pixel(options),
+               whitted, image, counters);
+  return image;
 }
 
 // ---- [one pixel] --------------------------------------------------------------------------------

@@ -3,8 +3,8 @@
 // it renders a camera's view tile by tile on TBB's worker threads into a float image, reports
 // each finished tile, can be cancelled, and traces one pixel's ray tree on demand.
 // A tile of stratified samples is traced by the wavefront renderer (wavefront.h) or by slide 26's
-// recursion (WhittedOptions::renderer), to the same picture; adaptive sampling and the ray tree
-// always take the recursion.
+// recursion (WhittedOptions::renderer), to the picture of slide 26's own pixel loop
+// (render_per_pixel); adaptive sampling and the ray tree always take the recursion.
 //
 //   WhittedRenderer tracer(scene);                       // Embree's BVH built here, once
 //   Image image = tracer.render(camera, w, h, options, on_tile, &cancel);
@@ -73,6 +73,11 @@ public:
   // same image bit for bit, however the threads are scheduled.
   Image render(const Camera& camera, int width, int height, const WhittedOptions& options,
                const TileCallback& on_tile = {}, const std::atomic<bool>* cancel = nullptr);
+
+  // Slide 26's loop over the whole picture, on the calling thread: each pixel's primary rays
+  // traced one by one by the recursion, nothing traced ahead. The reference render() is held to
+  // (to within 1e-6, see renderer.cpp); stratified sampling only.
+  Image render_per_pixel(const Camera& camera, int width, int height, const WhittedOptions& options);
 
   // The ray tree of pixel (x, y) of that render (slide 24): every ray its samples spawned.
   RayTree trace_pixel(const Camera& camera, int width, int height, int x, int y,

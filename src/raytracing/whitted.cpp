@@ -1,4 +1,4 @@
-// Whitted's tracer, slide 26. Sections: [Trazar] [Color] [lights] [surface] [rays]
+// Whitted's tracer, slide 26. Sections: [Trazar] [Color] [lights] [rays]
 #include "raytracing/whitted.h"
 
 #include <algorithm>
@@ -23,7 +23,8 @@ constexpr float kPi = std::numbers::pi_v<float>;
 
 Whitted::Whitted(const Scene& scene, const Intersector& intersector, const WhittedOptions& options,
                  Counters& counters, const DiffuseSource* diffuse)
-    : scene_(scene), intersector_(intersector), options_(options), counters_(counters), diffuse_(diffuse) {}
+    : scene_(scene), intersector_(intersector), options_(options), surfaces_(scene, options.terms.textures),
+      counters_(counters), diffuse_(diffuse) {}
 
 // ---- [Trazar] -----------------------------------------------------------------------------------
 Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb weight,
@@ -35,7 +36,7 @@ Rgb Whitted::trace(const Ray& ray, int depth, RayKind kind, uint64_t seed, Rgb w
   Rgb radiance = scene_.background;  // "sino devolver color del fondo"
   if (hit.found()) {
     // "calcular la normal"
-    const SurfacePoint p = streamed ? streamed->point : surface_at(ray, hit);
+    const SurfacePoint p = streamed ? streamed->point : surfaces_.surface_at(ray, hit);
     tree_.hit(hit.t, p.position, p.N, scene_.meshes[size_t(p.mesh)].name, p.material->name);
     streamed_ = streamed;  // lights_at() takes its answers for this hit, and only this one
     radiance = color(p, ray, depth, seed);
@@ -71,7 +72,7 @@ Rgb Whitted::local_color(const SurfacePoint& p, std::span<const LightSample> lig
     if (options_.terms.ambient) color = scene_.ambient * o.ka;
     // An emitter shows its own Le on its front side (as gl_FrontFacing in the rasteriser).
     if (options_.terms.emission && p.front && o.is_emissive())
-      color += scene_.emission_at(p.mesh, size_t(p.triangle), p.barycentrics);  // the texel hit
+      color += surfaces_.emission_at(p);  // the texel hit
   } else if (options_.terms.diffuse && p.front) {
     // The hybrid (slides 41-43): the diffuse part comes from the radiosity solution, B/pi
     // interpolated across the patches, which already holds everything view-independent:
@@ -110,7 +111,7 @@ void Whitted::light_samples(const SurfacePoint& p, const glm::vec3& V, uint64_t 
                             std::vector<LightSample>& out) {
   Random random(seed);
   // I_D's kd, once for all the lights; in the hybrid radiosity has I_D already (see local_color()).
-  const Rgb kd = options_.terms.diffuse && !diffuse_ ? kd_at(p) : Rgb(0.0f);
+  const Rgb kd = options_.terms.diffuse && !diffuse_ ? surfaces_.kd_at(p) : Rgb(0.0f);
   // Punctual lights: IL = I * f_att(d) * spot / pi, or E_perp / pi for directional ones.
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
@@ -165,7 +166,7 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   if (options_.terms.specular && positive(o.ks))
     term += IL * o.ks * cos_power(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
   if (!positive(term)) return;
-  LightSample& sample = out.emplace_back();  // written in place: see surface_at() in whitted.h
+  LightSample& sample = out.emplace_back();  // written in place: see surface_reader.h
   sample.term = term;
   sample.shadow = shadow_ray(p.position, p.geometric, L, distance);
   sample.distance = distance;
@@ -192,40 +193,6 @@ const bool* Whitted::shadow_rays(const LightsAt& lights) {
     tree_.shadow(sample.shadow, blocked[i], sample.distance, sample.light, sample.term);
   }
   return blocked.data();
-}
-
-Rgb Whitted::kd_at(const SurfacePoint& p) const {
-  return kd_at(*p.material, p.mesh, p.triangle, p.barycentrics, p.uv);
-}
-
-Rgb Whitted::kd_at(const Material& o, int mesh_index, int triangle, glm::vec2 barycentrics,
-                   glm::vec2 uv) const {
-  const Mesh& mesh = scene_.meshes[size_t(mesh_index)];
-  // COLOR_0 multiplies kd (SCENES.md), interpolated as the rasteriser interpolates it.
-  const Rgb kd = o.kd * mesh.colour_at(size_t(triangle), barycentrics);
-  if (!samples_texture(o, mesh)) return kd;
-  // GL's linear filter on the base level: the rasteriser's mipmaps only differ where a texel is
-  // smaller than a pixel.
-  return kd * scene_.textures[size_t(o.kd_texture)].sample(uv);
-}
-
-// ---- [surface] ----------------------------------------------------------------------------------
-void Whitted::surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const {
-  const Mesh& mesh = scene_.meshes[size_t(hit.mesh)];
-  const size_t t = size_t(hit.triangle);
-  const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
-  const SurfaceGeometry g = surface_geometry(mesh.positions[i0], mesh.positions[i1], mesh.positions[i2],
-                                             mesh.normals[i0], mesh.normals[i1], mesh.normals[i2],
-                                             hit.u, hit.v, ray.direction);
-  p.position = g.position;
-  p.geometric = g.geometric;
-  p.N = g.N;
-  p.front = g.front;
-  p.mesh = hit.mesh;
-  p.triangle = hit.triangle;
-  p.barycentrics = glm::vec2(hit.u, hit.v);
-  p.uv = mesh.uv_at(t, p.barycentrics);
-  p.material = &material_of(mesh);
 }
 
 // ---- [rays] -------------------------------------------------------------------------------------

@@ -16,7 +16,8 @@
 // light samples at its own hit draw from it. The wavefront renderer (wavefront.h), which traces
 // the same rays in another order, gives each ray the same seed and so the same picture.
 //
-// The pieces of Color(): surface_at(), light_samples(), local_color() and secondary_rays(). Their
+// The pieces of Color(): the hit's surface (SurfaceReader, surface_reader.h, which the path tracer
+// reads its hits with too), light_samples(), local_color() and secondary_rays(). Their
 // arithmetic is in hit_math.h, which the wavefront renderer's lanes (hit_lanes.h) run too, so
 // that it cannot drift from the slide's code.
 #include <cstdint>
@@ -35,22 +36,10 @@
 #include "raytracing/ray.h"
 #include "raytracing/ray_tree.h"
 #include "raytracing/sampling.h"
+#include "raytracing/surface_reader.h"
 #include "raytracing/whitted_options.h"
 
 namespace luz::rt {
-
-// Where a ray met a surface: what Color() needs ("calcular la normal" of slide 26).
-struct SurfacePoint {
-  glm::vec3 position{0.0f};  // from the barycentrics, not o + t d (see offset_origin)
-  glm::vec3 geometric{0.0f}; // unit face normal on the side the ray came from
-  glm::vec3 N{0.0f};         // unit shading normal (interpolated), turned to the ray's side
-  bool front = true;         // the ray hit the counter-clockwise (glTF front) face
-  glm::vec2 uv{0.0f};
-  glm::vec2 barycentrics{0.0f};  // (u, v) of the hit: point = A + u (B - A) + v (C - A)
-  const Material* material = nullptr;
-  int mesh = -1;
-  int triangle = -1;
-};
 
 // A ray kept for the benchmark, which traces the same rays again without shading and in the same
 // calls: a stream is the rays of one kind from one that `starts_stream` up to the next such ray
@@ -119,27 +108,8 @@ public:
   // Color(o, r, p, N, d), for the hit of the ray of that seed.
   Rgb color(const SurfacePoint& p, const Ray& ray, int depth, uint64_t seed);
 
-  // The surface point of a ray's hit, written in place: a 72-byte point returned by value and
-  // copied into a queue is read back before its stores have landed, which stalls the copy.
-  void surface_at(const Ray& ray, const Hit& hit, SurfacePoint& p) const;
-  SurfacePoint surface_at(const Ray& ray, const Hit& hit) const {
-    SurfacePoint p;
-    surface_at(ray, hit, p);
-    return p;
-  }
-  // Its material, or the default one.
-  const Material& material_of(const Mesh& mesh) const {
-    static const Material fallback;
-    const bool known = mesh.material >= 0 && size_t(mesh.material) < scene_.materials.size();
-    return known ? scene_.materials[size_t(mesh.material)] : fallback;
-  }
-  Rgb kd_at(const SurfacePoint& p) const;  // kd x baseColorTexture (the path tracer reads it too)
-  // The same at barycentrics (u, v) and texture coordinates uv of a triangle of material o.
-  Rgb kd_at(const Material& o, int mesh, int triangle, glm::vec2 barycentrics, glm::vec2 uv) const;
-  // Whether kd_at is o.kd itself all over `mesh`: no vertex colours, no texture sampled.
-  bool kd_is_uniform(const Material& o, const Mesh& mesh) const {
-    return mesh.colors.empty() && !samples_texture(o, mesh);
-  }
+  // What reads this tracer's hits: the surface point, its material and kd x texture.
+  const SurfaceReader& surfaces() const { return surfaces_; }
   // Whether shading draws random numbers at all: only the area lights' samples beyond the
   // centroid do. Without them no ray's seed is ever read, and the renderers need not make one.
   bool draws_random_numbers() const {
@@ -157,7 +127,7 @@ public:
   Rgb local_color(const SurfacePoint& p, std::span<const LightSample> lights, const bool* blocked) const;
   // The reflected and transmitted rays of the hit p of `ray`, with their weights: Fresnel's
   // split of kt (when on), Snell's law, total internal reflection (no transmitted ray).
-  // Written in place, as surface_at().
+  // Written in place, as SurfaceReader::surface_at().
   void secondary_rays(const SurfacePoint& p, const Ray& ray, SecondaryRays& out) const;
   SecondaryRays secondary_rays(const SurfacePoint& p, const Ray& ray) const {
     SecondaryRays out;
@@ -169,17 +139,13 @@ public:
   void log_rays(std::vector<RecordedRay>* log) { log_ = log; }
 
 private:
-  // Whether kd_at multiplies kd by o's base colour texture on `mesh`.
-  bool samples_texture(const Material& o, const Mesh& mesh) const {
-    return options_.terms.textures && scene_.shown_texture(mesh, o) >= 0;
-  }
   // The hit's light samples: the streamed ones when trace() was given them for this hit, else
   // sampled here. The one lookup of the streamed answers, so that color() has a single path.
   LightsAt lights_at(const SurfacePoint& p, const glm::vec3& V, uint64_t seed);
   // "y no hay obstrucción": per light sample, whether its shadow ray meets anything before its
   // light (traced here, or the streamed answer); nullptr when shadows are off (none blocks).
   const bool* shadow_rays(const LightsAt& lights);
-  // Light `light`'s term at p (kd: kd_at(p)) and its shadow ray, if it lights p at all.
+  // Light `light`'s term at p (kd: surfaces().kd_at(p)) and its shadow ray, if it lights p at all.
   void add_light(const SurfacePoint& p, const glm::vec3& V, const glm::vec3& L, const Rgb& IL,
                  float distance, int light, const Rgb& kd, std::vector<LightSample>& out) const;
   // Counts and logs a ray of `kind` as traced (inline: it runs for every ray); `streamed`: the
@@ -192,6 +158,7 @@ private:
   const Scene& scene_;
   const Intersector& intersector_;
   const WhittedOptions& options_;
+  SurfaceReader surfaces_;
   Counters& counters_;
   const DiffuseSource* diffuse_;
   std::vector<glm::vec3> light_points_;  // scratch for area-light samples

@@ -125,6 +125,10 @@ const RadiosityRow radiosity_table[] = {
        o.converge = float(v);
        o.max_shots = 0;
      }},
+    {"work-budget", "--work-budget", "radiosity", OptionKind::real,
+     N_("radiosity/hybrid: with none of --shots, --converge, --time, stop after N element-shots (the elements "
+     "each shot reaches, summed over the shots; 0: no bound)"), 0, kMaxWorkBudget,
+     LUZ_FIELD(RadiosityOptions, work_budget)},
     {"patch-size", "--patch-size", "radiosity", OptionKind::real,
      N_("radiosity/hybrid: longest patch edge, metres (0: subdivision adds about target-patches patches)"), 0, 100,
      LUZ_FIELD(RadiosityOptions, patch_size)},

@@ -55,6 +55,15 @@ void write_csv(const std::string& path, const ProgressiveSolver& solver) {
   if (!failure.empty()) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
+// The work budget bounds a run at the defaults only: a stopping rule given on the command line
+// (or the budget itself) is the user's.
+bool work_bounded(const RenderSettings& settings) {
+  if (settings.radiosity.work_budget <= 0.0) return false;
+  return std::none_of(settings.given_flags.begin(), settings.given_flags.end(), [](const RenderSettings::GivenFlag& g) {
+    return g.flag == "--shots" || g.flag == "--converge" || g.flag == "--time";
+  });
+}
+
 }  // namespace
 
 RadiosityOptions radiosity_options(const RenderSettings& settings) {
@@ -73,14 +82,16 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
   const auto solving = [&] { return solver.history().back().seconds; };
   auto last_draw = std::chrono::steady_clock::now();
   // A shot that starts finishes, so the time may run over by one shot; the first always runs.
-  bool out_of_time = false;
+  bool out_of_time = false, out_of_work = false;
+  const bool bounded = work_bounded(settings);
   while (solver.step()) {
     if (bar && std::chrono::steady_clock::now() - last_draw > std::chrono::milliseconds(100)) {
       draw_progress(solver, options, solving(), settings.seconds);
       last_draw = std::chrono::steady_clock::now();
     }
     out_of_time = settings.seconds && solving() >= *settings.seconds && !solver.done();
-    if (out_of_time) break;
+    out_of_work = bounded && solver.element_shots() >= options.work_budget && !solver.done();
+    if (out_of_time || out_of_work) break;
   }
   if (bar) {
     draw_progress(solver, options, solving(), settings.seconds);
@@ -95,6 +106,13 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
                            100.0 * solver.unshot_fraction(), solving()));
   if (!settings.quiet && out_of_time)
     fmt::print("{}\n", trf("radiosity: stopped by --time {:g} before --converge or --shots", *settings.seconds));
+  if (out_of_work)
+    // xgettext:no-c-format
+    fmt::print(stderr, "{}\n", trf("radiosity: stopped early, at the work budget of {:.3g} element-shots ({} shots on {} elements): "
+                                   "{:.2f}% of the emitted power is still unshot (the defaults stop below {:.2g}%); to go "
+                                   "further give --time SECONDS or --converge EPS (or a larger --work-budget)",
+                                   options.work_budget, solver.shots(), mesh.size(), 100.0 * solver.unshot_fraction(),
+                                   100.0 * double(options.converge)));
 }
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
