@@ -914,7 +914,7 @@ void Viewer::frame() {
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
   const SolversState& s = state_.solvers;
   if (s.open || s.run_to_rows > 0 || s.reset) {
-    if (!solvers_) solvers_ = std::make_unique<SolversView>(*state_.scene);
+    if (!solvers_) solvers_ = std::make_unique<SolversWindow>(*state_.scene);
     solvers_->advance(state_.solvers);
   }
 

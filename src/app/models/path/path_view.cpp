@@ -40,11 +40,11 @@ double relative_noise(const Image& mean, const Image& standard_error) {
 }
 
 // ---- [the film's worker] -------------------------------------------------------------------------
-PathModel::PathModel(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
+PathView::PathView(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
 
-PathModel::~PathModel() { cancel(); }
+PathView::~PathView() { cancel(); }
 
-void PathModel::scene_changed() {
+void PathView::scene_changed() {
   cancel();
   tracer_.reset();  // its BVH is of the old geometry
   copy_.reset();
@@ -52,12 +52,12 @@ void PathModel::scene_changed() {
   uploaded_ = -1;
 }
 
-void PathModel::hidden() {
+void PathView::hidden() {
   pause_ = true;  // the pass running finishes: the film keeps whole passes
   wait_for_ = 0;
 }
 
-void PathModel::cancel() {
+void PathView::cancel() {
   worker_.stop();
   running_ = false;
   have_film_ = false;
@@ -67,7 +67,7 @@ void PathModel::cancel() {
   published_ = PathPicture{};
 }
 
-PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) const {
+PathFingerprint PathView::fingerprint(const Camera& camera, glm::ivec2 size) const {
   rt::PathOptions o = options;
   o.spp = 0;
   o.max_depth = rt::max_depth_of(o);
@@ -75,7 +75,7 @@ PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) co
   return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
 }
 
-void PathModel::start(const Camera& camera, glm::ivec2 size) {
+void PathView::start(const Camera& camera, glm::ivec2 size) {
   const Scene& scene = *viewer_.state().scene;
   if (!tracer_) {
     copy_ = std::make_unique<Scene>(scene);
@@ -111,7 +111,7 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
   });
 }
 
-void PathModel::collect() {
+void PathView::collect() {
   if (running_ && worker_.finished()) {
     worker_.join();
     running_ = false;
@@ -120,7 +120,7 @@ void PathModel::collect() {
   if (published_.version != shown_.version) shown_ = published_;
 }
 
-void PathModel::advance(const Camera& camera, const Viewport& viewport) {
+void PathView::advance(const Camera& camera, const Viewport& viewport) {
   target_ = std::max(1, options.spp);  // a running worker stops there (or goes on to there)
   collect();
   const glm::ivec2 size = viewport.pixels;
@@ -139,13 +139,13 @@ void PathModel::advance(const Camera& camera, const Viewport& viewport) {
   if (!busy()) wait_for_ = 0;  // a wait ends once: a later restart does not hold the script again
 }
 
-const PathPicture* PathModel::picture_for(const Camera& camera, glm::ivec2 size) const {
+const PathPicture* PathView::picture_for(const Camera& camera, glm::ivec2 size) const {
   if (!have_film_ || shown_.spp == 0 || started_ != fingerprint(camera, size)) return nullptr;
   return &shown_;
 }
 
 // ---- [the frame] ---------------------------------------------------------------------------------
-void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void PathView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   const glm::ivec2 size = viewport.pixels;
   if (!picture_for(camera, size)) {
     // Until the first pass: the raster (Phong) view, as Whitted's model shows before a trace.
@@ -169,7 +169,7 @@ void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebu
   picture.bind();
 }
 
-bool PathModel::busy() const {
+bool PathView::busy() const {
   if (wait_for_ <= 0) return false;
   // What advance() publishes it draws in the same frame, so a pass seen here is on screen. A
   // worker that stopped short (hidden) ends the wait.
@@ -177,12 +177,12 @@ bool PathModel::busy() const {
   return shown_.spp < goal && (running_ || restart_ || !have_film_);
 }
 
-std::string PathModel::status() const {
+std::string PathView::status() const {
   if (shown_.spp == 0) return tr("(first pass)");
   return trf("{} spp, noise {:.2f}%{}", shown_.spp, 100.0 * shown_.noise, running_ ? tr(", refining") : "");
 }
 
-void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
+void PathView::windows(const Viewport& viewport, WindowCorners& corners) {
   begin_hint("path hint", viewport, corners, 8.0f * viewer_.ui_scale());
   const int target = std::max(1, options.spp);
   ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
@@ -195,7 +195,7 @@ void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
 }
 
 // ---- [panel] -------------------------------------------------------------------------------------
-void PathModel::panel() {
+void PathView::panel() {
   ImGui::TextDisabled("%s", tr("slide 14's equation by Monte Carlo: the reference"));
   ImGui::TextWrapped("L(x, V) = Le(x, V) + ∫ f(x, L, V) · L(x, L) · cos θ dL");
   // The ranges of `luz render`'s --spp and --depth (options_tables.h), which this model shares.
@@ -223,7 +223,7 @@ void PathModel::panel() {
 namespace luz::app {
 namespace {
 
-PathModel& path_model(ViewerServices& viewer) { return static_cast<PathModel&>(viewer.view("path")); }
+PathView& path_model(ViewerServices& viewer) { return static_cast<PathView&>(viewer.view("path")); }
 
 std::string check_path(const ScriptCommand& c) {
   const auto& a = c.args;
@@ -238,7 +238,7 @@ std::string check_path(const ScriptCommand& c) {
 }
 
 bool run_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
-  PathModel& path = path_model(viewer);
+  PathView& path = path_model(viewer);
   const auto& a = c.args;
   if (a[0] == "restart") path.restart();
   else if (a[0] == "spp") path.options.spp = std::stoi(a[1]);
@@ -262,7 +262,7 @@ bool run_wait_path(ViewerServices& viewer, const ScriptCommand& c, std::string&)
 }
 
 bool run_dump_path(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  const PathModel& path = path_model(viewer);
+  const PathView& path = path_model(viewer);
   const PathPicture& p = path.latest();
   nlohmann::json j = {{"spp", p.spp},
                       {"target", path.options.spp},

@@ -15,7 +15,7 @@
 // --spp N --seed S` of the same view, bit for bit.
 //
 // Hidden (another model shown), the worker finishes its pass and stops; the film is kept and
-// goes on when the view is shown again or the difference view (difference_view.h) asks for the
+// goes on when the view is shown again or the difference view (difference_window.h) asks for the
 // reference. The worker reads its own copy of the scene, refreshed at every new film
 // (background_render.h): the panel may edit the viewer's scene while a pass runs.
 #include <atomic>
@@ -46,14 +46,14 @@ using PathFingerprint = ViewFingerprint<rt::PathOptions>;
 // weights, Y(error) bounds the standard error of Y from above.
 double relative_noise(const Image& mean, const Image& standard_error);
 
-class PathModel final : public ModelView {
+class PathView final : public ModelView {
 public:
   // The target the viewer refines to unless the panel or the script says otherwise: enough for
   // a reference the difference view can trust to a few percent on the shipped scenes.
   static constexpr int default_target = 256;
 
-  explicit PathModel(ViewerServices& viewer);
-  ~PathModel() override;  // cancels and joins the worker before the scene copy goes
+  explicit PathView(ViewerServices& viewer);
+  ~PathView() override;  // cancels and joins the worker before the scene copy goes
 
   void scene_changed() override;
   void hidden() override;
@@ -113,7 +113,7 @@ private:
 };
 
 // The path model's script verbs (its registry entry): path spp|depth|seed N, path restart,
-// wait-path [N], dump-path FILE.json, and the difference view's (difference_view.h).
+// wait-path [N], dump-path FILE.json, and the difference view's (difference_window.h).
 std::span<const ScriptVerb> path_verbs();
 
 }  // namespace luz::app

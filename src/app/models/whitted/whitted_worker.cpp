@@ -4,11 +4,11 @@
 
 namespace luz::app {
 
-WhittedView::WhittedView(const Scene& scene) : copy_(scene), tracer_(copy_) {}
+WhittedWorker::WhittedWorker(const Scene& scene) : copy_(scene), tracer_(copy_) {}
 
-WhittedView::~WhittedView() { cancel(); }
+WhittedWorker::~WhittedWorker() { cancel(); }
 
-void WhittedView::start(const Scene& scene, const Camera& camera, int width, int height,
+void WhittedWorker::start(const Scene& scene, const Camera& camera, int width, int height,
                         const rt::WhittedOptions& options, const gl::Framebuffer& raster, bool held) {
   cancel();
   copy_editable(scene, copy_);
@@ -46,7 +46,7 @@ void WhittedView::start(const Scene& scene, const Camera& camera, int width, int
   });
 }
 
-bool WhittedView::cancel() {
+bool WhittedWorker::cancel() {
   const bool was_running = phase_ == TracePhase::tracing;
   worker_.stop();
   if (was_running) {
@@ -58,7 +58,7 @@ bool WhittedView::cancel() {
   return was_running;
 }
 
-void WhittedView::update() {
+void WhittedWorker::update() {
   if (phase_ != TracePhase::tracing) return;
   // Read before the tiles: every tile of a finished render was queued before it finished.
   const bool finished = worker_.finished();
@@ -76,12 +76,12 @@ void WhittedView::update() {
   }
 }
 
-double WhittedView::seconds() const {
+double WhittedWorker::seconds() const {
   if (phase_ == TracePhase::tracing) return worker_.seconds();
   return seconds_;
 }
 
-rt::RayTree WhittedView::trace_pixel(const Scene& scene, const Camera& camera, int width, int height, int x,
+rt::RayTree WhittedWorker::trace_pixel(const Scene& scene, const Camera& camera, int width, int height, int x,
                                      int y, const rt::WhittedOptions& options) {
   // A running trace reads the copy; the viewer cancels it on any edit, so then it is current.
   if (phase_ != TracePhase::tracing) copy_editable(scene, copy_);

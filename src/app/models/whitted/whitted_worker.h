@@ -31,12 +31,12 @@ namespace luz::app {
 
 using Fingerprint = ViewFingerprint<rt::WhittedOptions>;
 
-class WhittedView {
+class WhittedWorker {
 public:
-  explicit WhittedView(const Scene& scene);
-  ~WhittedView();  // cancels and joins
-  WhittedView(const WhittedView&) = delete;
-  WhittedView& operator=(const WhittedView&) = delete;
+  explicit WhittedWorker(const Scene& scene);
+  ~WhittedWorker();  // cancels and joins
+  WhittedWorker(const WhittedWorker&) = delete;
+  WhittedWorker& operator=(const WhittedWorker&) = delete;
 
   // Starts tracing (a running trace is cancelled first). `raster` holds the picture the local
   // model drew of the same view, w x h: the tiles not traced yet show it. A `held` trace keeps
