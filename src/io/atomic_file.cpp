@@ -34,10 +34,10 @@ int g_guards = 0;
 struct sigaction g_previous_int, g_previous_term;
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
-  for (std::sig_atomic_t i = 0; i < g_count; ++i) {
-    unlink(g_paths[size_t(i)].data());
-    rmdir(g_paths[size_t(i)].data());
-  }
+  // The files first, whichever guard holds them, then the folders, the last laid out first: a
+  // folder goes once what was written into it has.
+  for (std::sig_atomic_t i = 0; i < g_count; ++i) unlink(g_paths[size_t(i)].data());
+  for (std::sig_atomic_t i = g_count; i > 0; --i) rmdir(g_paths[size_t(i - 1)].data());
   sigaction(SIGINT, &g_previous_int, nullptr);
   sigaction(SIGTERM, &g_previous_term, nullptr);
   raise(signal_number);

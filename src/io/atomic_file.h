@@ -15,10 +15,10 @@ namespace luz::io {
 // threw).
 std::string write_atomically(const std::filesystem::path& path, const std::function<std::string()>& contents);
 
-// While it lives, SIGINT and SIGTERM remove `paths` (files, and folders once emptied, in the
-// order given) before the process ends as it would have: the disposition before the first guard
-// is restored and the signal raised again. For outputs written under temporary names; guards
-// nest (a handout's folder, and each image written into it), the last made gone first.
+// While it lives, SIGINT and SIGTERM remove `paths` (the files, then the folders emptied) before
+// the process ends as it would have: the disposition before the first guard is restored and the
+// signal raised again. For outputs written under temporary names; guards nest (a handout's
+// folder, and each image written into it), the last made gone first.
 class RemovedOnSignal {
 public:
   explicit RemovedOnSignal(const std::vector<std::filesystem::path>& paths);
