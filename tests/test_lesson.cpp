@@ -100,7 +100,7 @@ TEST(ShippedLesson, RunsTheActionsOfTheirSlides) {
   auto verb = [](const char* v, const char* first = nullptr) {
     return [=](const ScriptCommand& c) { return c.verb == v && (!first || (!c.args.empty() && c.args[0] == first)); };
   };
-  EXPECT_TRUE(any(24, verb("click")));                 // the ray tree of a pixel
+  EXPECT_TRUE(any(24, verb("click-picture")));         // the ray tree of a pixel
   EXPECT_TRUE(any(24, verb("trace")));
   EXPECT_TRUE(any(27, verb("set", "brute-force")));
   EXPECT_TRUE(any(27, [](const ScriptCommand& c) { return line_of(c) == "set spp 16"; }));

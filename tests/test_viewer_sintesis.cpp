@@ -2,6 +2,7 @@
 // lessons/sintesis.json by the `viewer_sintesis_script` CTest fixture (Xvfb, Mesa's software GL);
 // these tests read what it dumped. Skipped only when xvfb-run is missing.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -124,6 +125,97 @@ TEST_F(ViewerSintesis, SidebySideStepsShowWhatTheirTextSays) {
   const nlohmann::json step59 = json_of(file("panes-59.json"));
   EXPECT_EQ(models_of(step59), (std::set<std::string>{"radiosity", "hybrid"}));
   expect_traced(step59, "hybrid");
+}
+
+// ---- presenter mode -----------------------------------------------------------------------------
+struct Rect {
+  double x0, y0, x1, y1;
+  bool meets(const Rect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  double width() const { return x1 - x0; }
+};
+
+Rect rect_of(const nlohmann::json& r) {
+  return {r[0].get<double>(), r[1].get<double>(), r[2].get<double>(), r[3].get<double>()};
+}
+
+const char* const presenter_dumps[] = {
+    "presenter-28-1.json",   "presenter-45-1.json",   "presenter-46-1.json",   "presenter-58-1.json",
+    "presenter-28-1.5.json", "presenter-45-1.5.json", "presenter-46-1.5.json", "presenter-58-1.5.json",
+    "presenter-45-2.json",   "presenter-46-2.json",   "presenter-58-2.json",   "presenter-28-1120-1.5.json"};
+
+std::string fmt_name(const std::string& stem, const std::string& scale) { return stem + scale + ".json"; }
+
+bool has_window(const nlohmann::json& dump, const std::string& prefix) {
+  return std::any_of(dump["windows"].begin(), dump["windows"].end(),
+                     [&](const nlohmann::json& w) { return w["name"].get<std::string>().starts_with(prefix); });
+}
+
+// At 1280x720 and UI scales 1, 1.5 and 2: the caption and every window the steps open (the ray
+// tree's hint, slide 36's solvers, the item buffer, the panes' hint) lie in the dock beside the
+// picture, none over it; the panel and the status line frame it as always.
+TEST_F(ViewerSintesis, TheCaptionAndTheWindowsLeaveThePictureUncovered) {
+  for (const char* name : presenter_dumps) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const Rect view = rect_of(dump["view"]), dock = rect_of(dump["dock"]);
+    EXPECT_GT(view.width(), 0.0);
+    EXPECT_GT(dock.width(), 0.0);
+    EXPECT_FALSE(dock.meets(view));
+    EXPECT_TRUE(has_window(dump, "##lesson caption")) << dump.dump(2);
+    size_t over_the_picture = 0;
+    for (const auto& w : dump["windows"]) {
+      const std::string window = w["name"];
+      if (window == "Luz" || window == "status") continue;
+      ++over_the_picture;
+      EXPECT_FALSE(rect_of(w["rect"]).meets(view)) << window << " covers the picture: " << dump.dump(2);
+    }
+    EXPECT_GE(over_the_picture, 1u);
+  }
+  for (const char* scale : {"1", "1.5", "2"}) {
+    EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-45-", scale))), "Slide 36")) << scale;
+    EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-46-", scale))), "item buffer")) << scale;
+  }
+}
+
+// Every table of every window at scales 1, 1.5 and 2 (the inspector's, slide 36's legend): no
+// column narrower than its widest cell, and none past its window's edge unless the window
+// scrolls sideways to it. Slide 36's exponents ("2.7e-02") are read whole.
+TEST_F(ViewerSintesis, NoTableCellIsNarrowerThanItsText) {
+  size_t columns = 0;
+  for (const char* name : presenter_dumps) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    for (const auto& table : dump["tables"])
+      for (const auto& c : table["columns"]) {
+        ++columns;
+        EXPECT_LE(c["text"].get<double>(), c["room"].get<double>() + 1.0) << table.dump(2);
+        EXPECT_TRUE(c["right"].get<double>() <= table["clip_right"].get<double>() + 1.0 ||
+                    table["scrolls_sideways"].get<bool>())
+            << table.dump(2);
+      }
+  }
+  EXPECT_GE(columns, 4u);  // slide 36's legend at least
+}
+
+// Step 28 clicks a point of the picture given as fractions of it: at 1280x720 at scale 1, at
+// 1120x630 at scale 1.5 with the panel hidden and in the default window, different pictures, the
+// same ray leaves the eye and meets the same object.
+TEST_F(ViewerSintesis, StepTwentyEightsClickHitsTheSameObjectAtAnySizeAndScale) {
+  const nlohmann::json a = json_of(file("presenter-tree-1280-1.json")), b = json_of(file("presenter-tree-1120-1.5.json")),
+                       c = json_of(file("tree-28.json"));
+  EXPECT_NE(a["size"], b["size"]);
+  EXPECT_NE(a["size"], c["size"]);
+  for (const nlohmann::json* other : {&b, &c}) {
+    const nlohmann::json& p = a["nodes"][0];
+    const nlohmann::json& q = (*other)["nodes"][0];
+    ASSERT_FALSE(p["hit"].is_null());
+    ASSERT_FALSE(q["hit"].is_null());
+    EXPECT_EQ(p["hit"]["mesh"], q["hit"]["mesh"]);
+    EXPECT_EQ(p["hit"]["material"], q["hit"]["material"]);
+    double dot = 0.0;
+    for (int i = 0; i < 3; ++i) dot += p["direction"][i].get<double>() * q["direction"][i].get<double>();
+    EXPECT_GT(dot, std::cos(0.01)) << "the primary rays differ by more than 0.01 rad";
+  }
 }
 
 }  // namespace

@@ -20,9 +20,12 @@ triangle='"meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
                 "min": [0, 0, 0], "max": [1, 1, 0]}],
  "bufferViews": [{"buffer": 0, "byteLength": 36}],
  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]'
-# A scene that loads with a warning (it brings no light: the default lights, said in the window).
+# A scene that loads with one warning (it brings no light: the default lights, said in the
+# window); its camera, 3 m in front of the triangle, keeps the missing camera's warning away.
 cat > unlit.gltf <<EOF
-{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+ "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.33, 0.33, 3]}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.05}}],
  $triangle}
 EOF
 # A scene as Blender's glTF exporter writes it in its default Lighting Mode: a 100 W lamp 3 m

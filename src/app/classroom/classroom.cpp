@@ -58,11 +58,15 @@ bool Classroom::step(ScriptTarget& viewer, std::string& error) {
   return ok;
 }
 
-float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin) {
+float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale) {
   if (!player_) return origin.y;
-  const float width = 0.8f * size.x;
-  const ImVec2 top_left(origin.x + 0.5f * (size.x - width), origin.y + margin);
-  const CaptionResult result = draw_lesson_caption(*player_, i18n::language(), top_left, width, 1.25f);
+  const float width = std::max(size.x - 2.0f * margin, 1.0f);
+  const ImVec2 top_left(origin.x + margin, origin.y + margin);
+  // 1.25 times the panel's text at a UI scale of 1; an interface already enlarged for the back
+  // row (--ui-scale 1.25 and up) is read there as it is, and leaves the picture its room.
+  const float enlarged = std::max(1.25f / ui_scale, 1.0f);
+  const CaptionResult result =
+      draw_lesson_caption(*player_, i18n::language(), top_left, width, size.y - 2.0f * margin, enlarged);
   move(result.move);
   return top_left.y + result.size.y;
 }

@@ -40,11 +40,12 @@ public:
   // viewer does, not for itself.
   bool moving() const { return !stepping_ && !moves_.empty(); }
 
-  // The step's caption box at the top of the picture, `margin` from its edges, its text 1.25
-  // times the panel's (the UI scale is in the font already): the back row reads it. Moves asked
-  // by its buttons are queued. Returns where the box ends (window units), the top of the picture
-  // without a lesson, so that the picture's other windows keep below it.
-  float draw_caption(glm::vec2 origin, glm::vec2 size, float margin);
+  // The step's caption box at the top of the dock beside the picture (origin and size: the
+  // dock's), `margin` from its edges, its text 1.25 times the panel's at `ui_scale` 1 (the UI
+  // scale is in the font already; a larger one is not enlarged further): the back row reads it,
+  // and it covers nothing of the picture. Moves asked by its buttons are queued. Returns where
+  // the box ends (window units), `origin.y` without a lesson.
+  float draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale);
 
 private:
   void queue(std::vector<ScriptCommand> commands);

@@ -16,10 +16,10 @@ struct CaptionResult {
 };
 
 // The current step: "slide N · step i / n", its title and its text in `language`, wrapped to
-// `width`, scaled by `text_scale` (the UI scale times the class's enlargement), in a box whose
-// top-left corner is `top_left` (window coordinates).
+// `width`, scaled by `text_scale` (the class's enlargement over the UI's font), in a box whose
+// top-left corner is `top_left` (window coordinates), at most `max_height` high.
 CaptionResult draw_lesson_caption(const LessonPlayer& player, i18n::Language language, ImVec2 top_left,
-                                  float width, float text_scale);
+                                  float width, float max_height, float text_scale);
 
 // "Español | English" radio buttons; switches the language at once (i18n::set_language).
 void draw_language_switch();

@@ -364,10 +364,14 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
       out.push_back(key == "shots" ? command(line, "wait-shots", {std::to_string(n)})
                                    : command(line, "radiosity", {"step", std::to_string(n)}));
     } else if (key == "click") {
-      if (!value.is_array() || value.size() != 2) r.fail(a + "/click", tr("click takes [X, Y], window coordinates"));
-      const long x = r.integer(value[0], a + "/click/0", "click X", 0, 16384);
-      const long y = r.integer(value[1], a + "/click/1", "click Y", 0, 16384);
-      out.push_back(command(line, "click", {std::to_string(x), std::to_string(y)}));
+      // A point of the picture as fractions of the square as high as the picture, centred in it:
+      // the same object under the click whatever the window's size, the panel's width or the UI
+      // scale (click-picture X% Y%).
+      if (!value.is_array() || value.size() != 2)
+        r.fail(a + "/click", tr("click takes [X, Y], fractions of the picture's height, X from the left of its centred square"));
+      const double x = r.number(value[0], a + "/click/0", "click X", 0.0, 0.999);
+      const double y = r.number(value[1], a + "/click/1", "click Y", 0.0, 0.999);
+      out.push_back(command(line, "click-picture", {fmt::format("{:g}%", 100.0 * x), fmt::format("{:g}%", 100.0 * y)}));
     } else {
       r.fail(a + "/" + key, trf("unknown action \"{}\" (shots, solver-steps, click)", key));
     }

@@ -13,7 +13,7 @@
 //               "whitted":   {"depth": 1, "spp": 4, "fresnel": true},   // slides 24-27
 //               "radiosity": {"patch-size": 0.1, "hemicube": 64, "heat-map": true},
 //               "panes":     ["flat", "gouraud", "phong", "whitted"],  // slide 44
-//               "actions":   ["run-solver", {"shots": 5}, "trace", {"click": [900, 300]},
+//               "actions":   ["run-solver", {"shots": 5}, "trace", {"click": [0.7, 0.4]},
 //                             "open-solvers"]}]}
 //
 // What a step does not name: scene, camera and model stay as the step before left them (the

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/common/i18n.h"
+#include "app/viewer/overlays.h"
 
 namespace luz::app {
 namespace {
@@ -148,8 +149,9 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
               double(r.pick.P.y), double(r.pick.P.z), double(r.normal.x), double(r.normal.y),
               double(r.normal.z));
   ImGui::TextDisabled("%s", tr(r.where.c_str()));
-  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-  if (ImGui::BeginTable("terms", 8, flags)) {
+  // Each column as wide as its text: a window too narrow for the table scrolls it sideways.
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | kTextWideTable;
+  if (ImGui::BeginTable("terms", 8, flags, ImVec2(0.0f, text_wide_table_height(1 + int(r.terms.lights.size()))))) {
     for (const char* heading : {tr("light"), "theta", "alpha", "d", "f_att", "S", "I_D", "I_S"})
       ImGui::TableSetupColumn(heading);
     ImGui::TableHeadersRow();
@@ -176,7 +178,10 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
     }
     ImGui::EndTable();
   }
-  if (ImGui::BeginTable("sum", 2, flags)) {
+  const int sum_rows = 5 + int(r.kd_texture != Rgb(1.0f)) + int(r.vertex_colour != Rgb(1.0f)) +
+                       int(r.emitting_side && material.is_emissive()) + int(r.terms.reflection != Rgb(0.0f)) +
+                       int(r.terms.fog < 1.0f) + int(r.transparent);
+  if (ImGui::BeginTable("sum", 2, flags, ImVec2(0.0f, text_wide_table_height(sum_rows)))) {
     auto row = [](const char* name, const Rgb& value) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
@@ -220,8 +225,9 @@ void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open)
   ImGui::Text(tr("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)"), double(r.centre.x), double(r.centre.y),
               double(r.centre.z), double(r.normal.x), double(r.normal.y), double(r.normal.z));
   ImGui::TextDisabled(tr("after %d shots; exitances in W/m², radiance in W/(m² sr)"), r.shots);
-  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-  if (ImGui::BeginTable("patch", 2, flags)) {
+  // Each column as wide as its text: a window too narrow for the table scrolls it sideways.
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | kTextWideTable;
+  if (ImGui::BeginTable("patch", 2, flags, ImVec2(0.0f, text_wide_table_height(7)))) {
     auto row = [](const char* name, const Rgb& value) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the windows drawn in the dock so far this frame
 
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
@@ -40,8 +41,28 @@ bool WindowCorners::place(Corner preferred) {
   return false;
 }
 
+float WindowCorners::docked_top() const {
+  float bottom = dock_.origin.y;
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  for (const ImGuiWindow* w : g.Windows) {
+    const bool this_frame = w->LastFrameActive == g.FrameCount && !w->Hidden;
+    const bool own = !(w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup));
+    if (this_frame && own && w->Pos.x >= dock_.origin.x && w->Pos.x < dock_.origin.x + dock_.size.x)
+      bottom = std::max(bottom, w->Pos.y + w->Size.y);
+  }
+  return bottom;
+}
+
 void WindowCorners::put(Corner corner) {
   taken_[corner] = true;
+  if (docked()) {
+    const float top = docked_top() + margin_;
+    ImGui::SetNextWindowPos(ImVec2(dock_.origin.x + margin_, top), ImGuiCond_Always);
+    const float width = std::max(dock_.size.x - 2.0f * margin_, 1.0f);
+    const float height = std::max(dock_.origin.y + dock_.size.y - margin_ - top, 1.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, height));
+    return;
+  }
   const bool right = corner == top_right || corner == bottom_right;
   const bool low = corner == bottom_left || corner == bottom_right;
   const glm::vec2 o = viewport_.origin, s = viewport_.size;
@@ -57,14 +78,26 @@ void WindowCorners::put(Corner corner) {
 
 glm::vec4 WindowCorners::take_left_half() {
   taken_[top_left] = taken_[bottom_left] = true;
+  if (docked()) {
+    const float top = docked_top() + margin_;
+    return {dock_.origin.x + margin_, top, dock_.size.x - 2.0f * margin_, dock_.origin.y + dock_.size.y - margin_ - top};
+  }
   const float hint = 2.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
   const glm::vec2 o = viewport_.origin, s = viewport_.size;
   const float top = std::max(o.y, top_) + margin_ + hint;
   return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
 }
 
-void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin) {
-  ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+void begin_hint(const char* name, const Viewport& picture, const WindowCorners& corners, float margin) {
+  const Viewport& viewport = corners.docked() ? corners.dock() : picture;
+  if (corners.docked()) {
+    const float top = corners.docked_top() + margin;
+    ImGui::SetNextWindowPos(ImVec2(viewport.origin.x + margin, top), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(0.0f, 0.0f),
+        ImVec2(std::max(viewport.size.x - 2.0f * margin, 1.0f), std::max(viewport.origin.y + viewport.size.y - margin - top, 1.0f)));
+  } else
+    ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin(name, nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
@@ -187,6 +220,12 @@ void draw_load_error(ViewerState& state, float x, float y, float max_width) {
   if (ImGui::Button(tr("OK"))) state.error.clear();
   ImGui::End();
   ImGui::PopStyleColor(2);
+}
+
+float text_wide_table_height(int rows) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float row = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y + 1.0f;  // 1: a border
+  return float(rows) * row + style.ScrollbarSize + 2.0f;
 }
 
 }  // namespace luz::app

@@ -32,13 +32,23 @@ public:
   float top() const { return std::max(viewport_.origin.y, top_); }
   // The left half of the picture for one large window (slide 36's), below room for a two-line
   // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
+  // Docked: the dock's room below the windows already in it.
   glm::vec4 take_left_half();
+  // A lesson's dock beside the picture (Layout::dock): every window placed from now on, hints
+  // included, goes there instead, one under the other below those already in it (the caption
+  // first), as wide as the dock. None covers the picture.
+  void dock_in(const Viewport& dock) { dock_ = dock; }
+  bool docked() const { return !dock_.empty(); }
+  const Viewport& dock() const { return dock_; }
+  // Where the next docked window starts: below every window drawn in the dock so far this frame.
+  float docked_top() const;
   // Where the windows placed so far ended up (ImGui's rectangles), for the tests' dump-windows.
   const Viewport& viewport() const { return viewport_; }
 
 private:
   void put(Corner corner);
   Viewport viewport_;
+  Viewport dock_;
   float margin_;
   float top_ = 0.0f;
   bool taken_[4] = {false, false, false, false};
@@ -46,7 +56,8 @@ private:
 
 // A hint over the picture: a window without decoration or input at the top centre of
 // `viewport`, from `corners.top()` down, sized to its text, which wraps to the viewport's width
-// (a pane of the side-by-side view is narrow). end_hint reserves the top for it and ends it.
+// (a pane of the side-by-side view is narrow); in the dock when `corners` is docked. end_hint
+// reserves the top for it and ends it.
 void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin);
 void end_hint(WindowCorners& corners);
 
@@ -79,5 +90,12 @@ void draw_item_buffer_window(ViewerState& state, float side);
 
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);
+
+// A table that keeps every column as wide as its text: it scrolls sideways inside its window
+// where the window is narrower (ImGui squeezes a table's columns to the window otherwise). Such
+// a table is a child window of its own, as high as this: `rows` one-line rows (its headings
+// among them) and the scroll bar.
+constexpr ImGuiTableFlags kTextWideTable = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+float text_wide_table_height(int rows);
 
 }  // namespace luz::app

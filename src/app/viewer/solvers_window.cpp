@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/i18n.h"
+#include "app/viewer/overlays.h"
 #include "app/cli/solvers_command.h"
 #include "core/error.h"
 #include "gl/functions.h"
@@ -192,11 +193,14 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
 }  // namespace
 
 // ---- [the window] ------------------------------------------------------------------------------
-void SolversWindow::draw(SolversState& state, float x, float y, float width, float height) const {
+void SolversWindow::draw(SolversState& state, float x, float y, float width, float height, bool pinned) const {
   SolversState::Status& s = state.status;
-  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin(tr("Slide 36: the system solved four ways  [J]"), &state.open, ImGuiWindowFlags_NoCollapse)) {
+  const ImGuiCond when = pinned ? ImGuiCond_Always : ImGuiCond_Appearing;
+  ImGui::SetNextWindowPos(ImVec2(x, y), when);
+  ImGui::SetNextWindowSize(ImVec2(width, height), when);
+  // Sideways scrolling rather than a cut: the legend's columns keep the width of their text.
+  if (!ImGui::Begin(tr("Slide 36: the system solved four ways  [J]"), &state.open,
+                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }
@@ -223,7 +227,7 @@ void SolversWindow::draw(SolversState& state, float x, float y, float width, flo
     ImGui::Text(tr("%zu patches, matrix in %.2f s; rows %zu / %zu%s"), s.patches, s.matrix_seconds, s.rows, s.max_rows,
                 s.done ? tr(" (done)") : "");
     // The legend, with where each method has got: a table, so it fits half the picture.
-    if (ImGui::BeginTable("legend", 4, ImGuiTableFlags_SizingFixedFit)) {
+    if (ImGui::BeginTable("legend", 4, kTextWideTable, ImVec2(0.0f, text_wide_table_height(1 + int(std::size(kMethods)))))) {
       for (const char* heading : {"", tr("rows"), tr("residual"), tr("error")}) ImGui::TableSetupColumn(heading);
       ImGui::TableHeadersRow();
       for (const Method m : kMethods) {

@@ -33,7 +33,9 @@ public:
   void advance(SolversState& state);
   // The window (ImGui only); `open` is cleared by its close button.
   // First shown at (x, y), width x height window units; the class may move and resize it.
-  void draw(SolversState& state, float x, float y, float width, float height) const;
+  // `pinned`: kept at that place and size every frame (a lesson's dock), else placed there when
+  // it opens and moved freely after.
+  void draw(SolversState& state, float x, float y, float width, float height, bool pinned) const;
 
   const SolverComparison* comparison() const { return race_.get(); }
 

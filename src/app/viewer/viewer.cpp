@@ -46,6 +46,8 @@ namespace {
 constexpr int default_width = 1280;
 constexpr int default_height = 760;
 constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
+constexpr float dock_share = 0.3f;      // of the picture's room, a lesson's dock at the least
+constexpr float dock_ems = 20.0f;       // and at least this many font heights: the caption's lines
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
 constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
@@ -198,6 +200,7 @@ void Viewer::rebuild_fonts() {
 void Viewer::set_ui_scale(float scale) {
   user_scale_ = std::clamp(scale, kMinUiScale, kMaxUiScale);
   fonts_stale_ = true;  // between frames: ImGui's font atlas is locked inside one
+  dock_wanted_ = 0.0f;  // measured again in the new font
   state_.note = trf("interface size x{:.2f}", user_scale_);
 }
 
@@ -221,6 +224,20 @@ Layout Viewer::layout() const {
   const int left = int(std::lround(l.panel * scale.x));
   v.pixels = glm::ivec2(std::max(l.framebuffer.x - left, 0), std::max(int(std::lround(v.size.y * scale.y)), 0));
   v.gl_origin = glm::ivec2(left, l.framebuffer.y - v.pixels.y);
+  if (classroom_.has_lesson() && v.size.x > 0.0f) {
+    // A third of the picture's room, or more when the caption's font or a docked window asks for
+    // it (a table keeps its columns as wide as their text), but never more than half of it.
+    const float least = std::max(dock_share * v.size.x, dock_ems * ImGui::GetFontSize());
+    const float width = whole_pixels(std::min(std::max(least, dock_wanted_), 0.5f * v.size.x), scale.x);
+    Viewport& d = l.dock;
+    d.scale = scale;
+    d.pixels = glm::ivec2(int(std::lround(width * scale.x)), v.pixels.y);
+    v.pixels.x = std::max(v.pixels.x - d.pixels.x, 0);
+    v.size.x = std::max(v.size.x - width, 0.0f);
+    d.origin = glm::vec2(v.origin.x + v.size.x, 0.0f);
+    d.size = glm::vec2(width, v.size.y);
+    d.gl_origin = glm::ivec2(left + v.pixels.x, v.gl_origin.y);
+  }
   l.panes = pane_viewports(v, panes_.size());
   return l;
 }
@@ -638,7 +655,38 @@ nlohmann::json Viewer::windows_json() const {
                        {"scrolls_sideways", w->ScrollbarX}});
   }
   const Viewport& v = last_layout_.view;
-  return {{"view", {v.origin.x, v.origin.y, v.origin.x + v.size.x, v.origin.y + v.size.y}}, {"windows", windows}};
+  const Viewport& d = last_layout_.dock;
+  return {{"view", {v.origin.x, v.origin.y, v.origin.x + v.size.x, v.origin.y + v.size.y}},
+          {"dock", {d.origin.x, d.origin.y, d.origin.x + d.size.x, d.origin.y + d.size.y}},
+          {"windows", windows},
+          {"tables", tables_json()}};
+}
+
+// Every table of the last frame, column by column: the width its text took ("text", the widest
+// cell or heading) beside the room the column had ("room"), and whether its right edge ("right")
+// lies inside its window ("clip_right") or the window scrolls sideways to it. A cell narrower
+// than its text is cut.
+nlohmann::json Viewer::tables_json() const {
+  nlohmann::json tables = nlohmann::json::array();
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  for (int i = 0; i < g.Tables.GetMapSize(); ++i) {
+    const ImGuiTable* t = g.Tables.TryGetMapData(i);
+    if (!t || t->LastFrameActive < g.FrameCount - 1 || !t->OuterWindow || !t->OuterWindow->Active) continue;
+    nlohmann::json columns = nlohmann::json::array();
+    for (int c = 0; c < t->ColumnsCount; ++c) {
+      const ImGuiTableColumn& column = t->Columns[c];
+      const float end = std::max({column.ContentMaxXUnfrozen, column.ContentMaxXFrozen, column.ContentMaxXHeadersIdeal});
+      columns.push_back({{"text", end - column.WorkMinX}, {"room", column.WorkMaxX - column.WorkMinX},
+                         {"right", column.MaxX}});
+    }
+    // A table that scrolls sideways is a child window of its own (InnerWindow): its clip and
+    // its scroll bar are that child's.
+    const ImGuiWindow* inner = t->InnerWindow ? t->InnerWindow : t->OuterWindow;
+    tables.push_back({{"window", t->OuterWindow->RootWindow->Name}, {"clip_right", inner->InnerClipRect.Max.x},
+                      {"scrolls_sideways", inner->ScrollbarX || t->OuterWindow->RootWindow->ScrollbarX},
+                      {"columns", columns}});
+  }
+  return tables;
 }
 
 // ---- [the frame] -------------------------------------------------------------------------------
@@ -775,16 +823,20 @@ void Viewer::draw_windows(const Layout& l) {
 
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
-  corners.reserve_top(classroom_.draw_caption(l.view.origin, l.view.size, margin));
+  if (!l.dock.empty()) {
+    corners.dock_in(l.dock);
+    classroom_.draw_caption(l.dock.origin, l.dock.size, margin, ui_scale_);
+  }
   state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
   if (state_.solvers.open && solvers_) {
     const glm::vec4 half = corners.take_left_half();
-    solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w);
+    solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w, corners.docked());
   }
   if (panes_.size() > 1) {  // the active pane's windows, in its own corners
     WindowCorners pane_corners(l.panes[active_pane_], margin);
     const PaneLabel label = pane_label(panes_[active_pane_]->name, l.panes[active_pane_]);
     pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
+    if (!l.dock.empty()) pane_corners.dock_in(l.dock);
     shown().windows(l.panes[active_pane_], pane_corners);
     difference_windows(state_, l.panes[active_pane_], pane_corners);
   } else {
@@ -795,6 +847,29 @@ void Viewer::draw_windows(const Layout& l) {
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
   draw_quit_question(l.view);
+  measure_dock(l, margin);
+}
+
+// The dock widens when a docked window's content is wider than the room it had (a table's
+// columns keep the width of their text), up to half the picture's room; the next frame gives it
+// that room. It keeps that width while windows other than the caption stay docked.
+void Viewer::measure_dock(const Layout& l, float margin) {
+  if (l.dock.empty()) return;
+  float wanted = dock_wanted_;
+  int docked = 0;
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  for (const ImGuiWindow* w : g.Windows) {
+    if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip))) continue;
+    if (w->Pos.x < l.dock.origin.x + 0.5f * margin || std::string_view(w->Name).starts_with("##lesson")) continue;
+    ++docked;
+    const float overflow = w->ContentSize.x - w->ContentRegionRect.GetWidth();
+    if (overflow > 0.5f) wanted = std::max(wanted, l.dock.size.x + overflow);
+  }
+  if (docked == 0) wanted = 0.0f;
+  if (std::abs(wanted - dock_wanted_) > 0.5f) {
+    dock_wanted_ = wanted;
+    frames_to_draw_ = std::max(frames_to_draw_, 2);
+  }
 }
 
 // Esc's question, in the picture's middle: Enter (or Q, or its button) quits, Esc (or N, or its
@@ -878,6 +953,7 @@ void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> p
   };
   if (!panel_painted) std::for_each(panel.begin(), panel.end(), clear);
   if (!view_tiled) clear(framebuffer_rect(l.view));
+  if (!l.dock.empty()) clear(framebuffer_rect(l.dock));  // under the caption and the docked windows
   glDisable(GL_SCISSOR_TEST);
 }
 
@@ -961,8 +1037,8 @@ void Viewer::frame() {
   take_screenshots(l);
   smooth(phases.panel_building_ms, panel_building);
   smooth(phases.panel_ms, panel_building + finish_phase(phase_start));
-  const FramebufferRect rest[] = {framebuffer_rect(l.view)};
-  if (panel_kept) window_.present(rest);
+  const FramebufferRect rest[] = {framebuffer_rect(l.view), framebuffer_rect(l.dock)};
+  if (panel_kept) window_.present(std::span(rest, l.dock.empty() ? 1 : 2));
   else window_.present();
   show_whole_window_ = false;
   smooth(phases.present_ms, finish_phase(phase_start));

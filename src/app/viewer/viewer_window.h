@@ -52,6 +52,10 @@ struct Layout {
   float status = 0.0f;   // status line height
   Viewport view;
   std::vector<Viewport> panes;  // the view split side by side (panes.h); one pane: the view
+  // With a lesson open, a column right of the picture for the caption and the picture's windows
+  // (WindowCorners docks them there), so that nothing covers what the class looks at; empty
+  // without a lesson.
+  Viewport dock;
 };
 
 class Viewer final : public ScriptTarget, public ViewerServices {
@@ -102,7 +106,8 @@ public:
   // `idle SECONDS`: the script waits while the viewer sits idle, measuring the CPU it uses.
   void idle(double seconds);
   double idle_cpu_fraction() const { return idle_cpu_fraction_; }  // CPU seconds per second
-  nlohmann::json windows_json() const;  // the viewport and the floating windows' rectangles
+  nlohmann::json windows_json() const;  // the viewport, the dock, the floating windows' rectangles, the tables
+  nlohmann::json tables_json() const;   // every table's columns: their text's width and their room
   const ModelEntry& model() const override { return *model_; }
   ModelView& shown() override { return view(model_->name); }
   SolversWindow* solvers() { return solvers_.get(); }
@@ -141,6 +146,7 @@ private:
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
+  void measure_dock(const Layout& l, float margin);
   void draw_quit_question(const Viewport& view);
   const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
@@ -197,6 +203,7 @@ private:
   int frames_to_draw_ = 3;         // frames still to draw after an event before waiting again
   bool show_whole_window_ = true;  // the next frame shows every pixel, kept or not (an expose)
   Layout last_layout_;
+  float dock_wanted_ = 0.0f;  // the dock's width its windows asked for on the last frame (window units)
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a
   // frame (the key callback in viewer.cpp says why).

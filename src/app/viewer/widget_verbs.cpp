@@ -1,5 +1,7 @@
 #include "app/viewer/widget_verbs.h"
 
+#include <optional>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -32,14 +34,52 @@ bool run_dump_widgets(Viewer&, const ScriptCommand& c, std::string& error) {
   return write_json(c.args[0], widgets_json(), "the widgets' rectangles", error);
 }
 
+namespace {
+
+// "55%" or "55.5%": a fraction of the picture in [0, 1), else nothing.
+std::optional<float> percent_of(const std::string& arg) {
+  if (arg.size() < 2 || arg.back() != '%') return std::nullopt;
+  try {
+    size_t used = 0;
+    const float value = std::stof(arg.substr(0, arg.size() - 1), &used);
+    if (used + 1 != arg.size() || !(value >= 0.0f && value < 100.0f)) return std::nullopt;
+    return value / 100.0f;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+bool is_pixel(const std::string& arg) { return is_int(arg) && std::stoi(arg) >= 0; }
+
+}  // namespace
+
 std::string check_click_picture(const ScriptCommand& c) {
   if (auto e = check_count(c, 2, 2); !e.empty()) return e;
-  return is_int(c.args[0]) && is_int(c.args[1]) && std::stoi(c.args[0]) >= 0 && std::stoi(c.args[1]) >= 0
-             ? "" : "`click-picture X Y` takes a pixel of the picture (whole numbers from 0)";
+  if (is_pixel(c.args[0]) && is_pixel(c.args[1])) return "";
+  if (percent_of(c.args[0]) && percent_of(c.args[1])) return "";
+  return "`click-picture X Y` takes a pixel of the picture (whole numbers from 0) or `X% Y%`, fractions of it (0 to 100%)";
 }
 
 bool run_click_picture(Viewer& v, const ScriptCommand& c, std::string& error) {
   const Viewport view = v.layout().view;
+  if (const auto x = percent_of(c.args[0]), y = percent_of(c.args[1]); x && y) {
+    if (view.empty()) {
+      error = "the picture has no pixels to click";
+      return false;
+    }
+    // The camera spans the picture's height whatever its width (a fixed vertical field of
+    // view): fractions of the square of that height, centred in the picture, name the same
+    // direction, hence the same object, at any window size, panel width or UI scale.
+    const float side = float(view.pixels.y);
+    const glm::vec2 at(0.5f * float(view.pixels.x) + (*x - 0.5f) * side, *y * side);
+    if (at.x < 0.0f || at.x >= float(view.pixels.x)) {
+      error = fmt::format("the picture is {}x{} pixels: {} of its height from its centre is outside it", view.pixels.x,
+                          view.pixels.y, c.args[0]);
+      return false;
+    }
+    v.click_at(view.window_of(glm::ivec2(glm::floor(at))));
+    return true;
+  }
   const glm::ivec2 pixel(std::stoi(c.args[0]), std::stoi(c.args[1]));
   if (pixel.x >= view.pixels.x || pixel.y >= view.pixels.y) {
     error = fmt::format("the picture is {}x{} pixels: ({}, {}) is outside it", view.pixels.x, view.pixels.y, pixel.x,

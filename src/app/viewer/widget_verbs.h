@@ -6,6 +6,9 @@
 //   dump-widgets FILE.json  every named widget's label and rectangle, in window coordinates
 //   click-picture X Y       a click on pixel (X, Y) of the picture (row 0 at the top), wherever
 //                           the panel leaves the picture: the pixel `luz render --ray-tree X,Y` reads
+//   click-picture X% Y%     a click at those fractions of the square as high as the picture,
+//                           centred in it (the camera's vertical field of view spans it at any
+//                           width): the same object at any window size and UI scale (a lesson's)
 // and the waits for a state, each with a cap on the frames it may take:
 //   wait-until CONDITION FRAMES   trace-done | radiosity-done; the script fails when the
 //                                 condition does not hold within FRAMES frames

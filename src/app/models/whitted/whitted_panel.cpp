@@ -201,19 +201,17 @@ void ray_tree(ViewerState& state, TracedView& view) {
   std::vector<std::vector<int>> children(tree.nodes.size());
   for (const rt::RayTreeNode& n : tree.nodes)
     if (n.parent >= 0) children[size_t(n.parent)].push_back(n.id);
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_SizingStretchProp;
-  const float height = ImGui::GetTextLineHeightWithSpacing() * float(std::min<size_t>(tree.nodes.size() + 1, 14));
+  // Each column as wide as its text (the tree's indentation included): a panel narrower than
+  // the table scrolls it sideways rather than cutting "light 0: blocked".
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
+                                ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+  const float height = ImGui::GetTextLineHeightWithSpacing() * float(std::min<size_t>(tree.nodes.size() + 1, 14)) +
+                       ImGui::GetStyle().ScrollbarSize;
   // A narrower indent than the panel's: a tree of depth 5 still shows its kinds.
   ImGui::PushStyleVar(ImGuiStyleVar_IndentSpacing, 0.6f * ImGui::GetFontSize());
   if (ImGui::BeginTable("ray tree", 5, flags, ImVec2(0.0f, height))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    // Shares of the panel's width: the tree's indentation needs the most.
-    ImGui::TableSetupColumn(tr("ray"), ImGuiTableColumnFlags_WidthStretch, 2.1f);
-    ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch, 0.25f);
-    ImGui::TableSetupColumn(tr("hit"), ImGuiTableColumnFlags_WidthStretch, 1.3f);
-    ImGui::TableSetupColumn(tr("local"), ImGuiTableColumnFlags_WidthStretch, 0.5f);
-    ImGui::TableSetupColumn(tr("share"), ImGuiTableColumnFlags_WidthStretch, 0.5f);
+    for (const char* heading : {tr("ray"), "d", tr("hit"), tr("local"), tr("share")}) ImGui::TableSetupColumn(heading);
     ImGui::TableHeadersRow();
     for (const rt::RayTreeNode& n : tree.nodes)
       if (n.parent < 0) node_row(tree, children, n.id, state.exposure);
