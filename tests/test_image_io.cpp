@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "oiio_images.h"
 #include "support.h"
@@ -24,6 +27,39 @@ Image gradient() {
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 4; ++x) image.at(x, y) = Rgb(0.1f * float(x), 0.05f * float(y), 2.5f);
   return image;
+}
+
+std::string contents_of(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+size_t files_in(const std::filesystem::path& folder) {
+  return size_t(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()));
+}
+
+// Every file Luz writes (images, --csv, --ray-tree, the script's dumps) goes through this writer:
+// a reader sees the old file or the whole new one, and no temporary is left behind.
+TEST(AtomicFile, ReplacesWholeOrLeavesTheOldFileAndNoTemporary) {
+  test::ScratchDir dir;
+  const std::filesystem::path path = dir / "state.json";
+  EXPECT_EQ(io::write_atomically(path, [] { return std::string("{\"old\": 1}\n"); }), "");
+  EXPECT_EQ(io::write_atomically(path, [] { return std::string("{\"new\": 2}\n"); }), "");
+  EXPECT_EQ(contents_of(path), "{\"new\": 2}\n");
+  EXPECT_EQ(files_in(dir.path), 1u);
+
+  // The contents fail halfway (out of memory): the old file stays, the reason is given.
+  const std::string failure =
+      io::write_atomically(path, []() -> std::string { throw std::runtime_error("no memory left"); });
+  EXPECT_EQ(failure, "no memory left");
+  EXPECT_EQ(contents_of(path), "{\"new\": 2}\n");
+  EXPECT_EQ(files_in(dir.path), 1u);
+
+  // A folder that is not there: refused before the contents are made.
+  bool made = false;
+  EXPECT_NE(io::write_atomically(dir / "missing" / "x.csv", [&] { made = true; return std::string("a"); }), "");
+  EXPECT_FALSE(made);
+  EXPECT_EQ(files_in(dir.path), 1u);
 }
 
 TEST(ImageIo, ExrKeepsLinearRadianceAndRowOrder) {

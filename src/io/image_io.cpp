@@ -2,22 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <cerrno>
 #include <cstring>
 #include <cstdint>
 #include <fstream>
 #include <optional>
 #include <utility>
-#include <random>
-
-#include <signal.h>
-#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "io/atomic_file.h"
 #include "io/image_decoders.h"
 #include "io/image_encoders.h"
 
@@ -41,51 +37,6 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure) {
   srgb_bytes(image.pixels, scale, bytes);
   return bytes;
 }
-
-// A name beside the target, with the same extension.
-fs::path temporary_beside(const fs::path& path) {
-  std::random_device random;
-  return path.parent_path() /
-         fmt::format(".{}.tmp{:08x}{}", path.stem().string(), random(), path.extension().string());
-}
-
-// While the temporary file exists, SIGINT and SIGTERM remove it before the process ends as it
-// would have (the previous disposition is restored and the signal raised again). The handler
-// only calls async-signal-safe functions (unlink, sigaction, raise) on a fixed buffer.
-char g_temporary[4096];
-struct sigaction g_previous_int, g_previous_term;
-
-extern "C" void remove_temporary_and_reraise(int signal_number) {
-  unlink(g_temporary);
-  sigaction(SIGINT, &g_previous_int, nullptr);
-  sigaction(SIGTERM, &g_previous_term, nullptr);
-  raise(signal_number);
-}
-
-class TemporaryGuard {
- public:
-  explicit TemporaryGuard(const fs::path& temporary) {
-    const std::string name = temporary.string();
-    armed_ = name.size() < sizeof g_temporary;
-    if (!armed_) return;
-    std::memcpy(g_temporary, name.c_str(), name.size() + 1);
-    struct sigaction action {};
-    action.sa_handler = remove_temporary_and_reraise;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &g_previous_int);
-    sigaction(SIGTERM, &action, &g_previous_term);
-  }
-  ~TemporaryGuard() {
-    if (!armed_) return;
-    sigaction(SIGINT, &g_previous_int, nullptr);
-    sigaction(SIGTERM, &g_previous_term, nullptr);
-  }
-  TemporaryGuard(const TemporaryGuard&) = delete;
-  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
-
- private:
-  bool armed_ = false;
-};
 
 // The whole file: the decoders read the header's claimed size from these bytes, then the pixels.
 std::vector<unsigned char> read_file(const fs::path& path) {
@@ -125,29 +76,10 @@ void write_image(const Image& image, const fs::path& path, float exposure) {
                       i % size_t(std::max(image.width, 1)), i / size_t(std::max(image.width, 1)),
                       c.r, c.g, c.b));
   }
-  const fs::path temporary = temporary_beside(path);
-  const TemporaryGuard guard(temporary);
-  auto fail = [&](const std::string& why) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    return Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), why));
-  };
-
-  // The temporary is opened first: a folder that cannot be written to fails before the encoding.
-  std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-  if (!file) throw fail(std::strerror(errno));
-  std::string encoded;
-  try {
-    encoded = exr ? encode_exr(image) : encode_png(encode_png_pixels(image, exposure), image.width, image.height);
-  } catch (const std::exception& e) {  // out of memory
-    throw fail(e.what());
-  }
-  file.write(encoded.data(), std::streamsize(encoded.size()));
-  file.close();
-  if (!file) throw fail(std::strerror(errno));
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw fail(error.message());
+  const std::string failure = write_atomically(path, [&] {
+    return exr ? encode_exr(image) : encode_png(encode_png_pixels(image, exposure), image.width, image.height);
+  });
+  if (!failure.empty()) throw Error(ErrorKind::output, trf("{}: cannot write: {}", path.string(), failure));
 }
 
 Image read_image(const fs::path& path) {

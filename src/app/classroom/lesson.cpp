@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "app/common/json_file.h"
 #include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
 #include "app/common/radiosity_state.h"
@@ -191,12 +192,11 @@ private:
   std::map<std::string, int> lines_;
 };
 
-// The models a lesson can show: those the viewer has a view of.
+// The models a lesson can show: every model of the registry.
 const std::vector<std::string>& viewer_models() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> list;
-    for (const ModelEntry& m : models())
-      if (m.in_viewer()) list.push_back(m.name);
+    for (const ModelEntry& m : models()) list.push_back(m.name);
     return list;
   }();
   return names;
@@ -571,9 +571,7 @@ bool LessonPlayer::run(const ScriptCommand& c, std::vector<ScriptCommand>& to_ru
   } else if (c.verb == "lang") {
     i18n::set_language(*i18n::parse_language(a[0]));
   } else if (c.verb == "dump-lesson") {
-    std::ofstream out(a[0]);
-    out << to_json(i18n::language()).dump(2) << '\n';
-    if (!out) {
+    if (!write_json(a[0], to_json(i18n::language()))) {
       error = trf("{}: cannot write the lesson's step", a[0]);
       return false;
     }

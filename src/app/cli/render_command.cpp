@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 
 #include <fmt/format.h>
 
 #include "app/common/i18n.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "core/exposure.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
@@ -44,21 +44,10 @@ std::string camera_list(const Scene& scene) {
   return list;
 }
 
-// The ray tree's JSON, written beside its final name and renamed, like the image.
+// The ray tree's JSON, whole or not at all, like the image.
 void write_text(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary);
-    file << text;
-    if (!file.flush())
-      throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
+  if (!io::write_atomically(path, [&] { return text; }).empty())
     throw Error(ErrorKind::output, trf("{}: cannot be written", path.string()));
-  }
 }
 
 }  // namespace

@@ -80,17 +80,6 @@ std::string model_option_problem(const std::string& text) {
 
 GridLayout grid_layout(size_t panes) { return panes <= 2 ? GridLayout{int(panes), 1} : GridLayout{2, 2}; }
 
-std::string model_label(const std::string& model) {
-  if (model == "flat") return tr("flat");
-  if (model == "gouraud") return tr("Gouraud");
-  if (model == "phong") return tr("Phong");
-  if (model == "whitted") return tr("Whitted");
-  if (model == "radiosity") return tr("radiosity");
-  if (model == "hybrid") return tr("hybrid");
-  if (model == "path") return tr("path tracing");
-  return model;
-}
-
 // Big enough to read on a printed page, whatever the pane's size.
 float label_pixel_height(int pane_height) { return std::max(12.0f, float(pane_height) / 16.0f); }
 

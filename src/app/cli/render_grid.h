@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/common/label_text.h"
+#include "app/common/model_registry.h"  // model_label, each pane's label
 #include "app/cli/render_command.h"
 #include "core/camera.h"
 #include "core/scene.h"
@@ -34,9 +35,6 @@ GridLayout grid_layout(size_t panes);
 // The pane's size when --size is not given: 400 pixels high at the camera's aspect ratio, so that
 // four panes make a sheet of about 1070 x 800.
 inline constexpr int kDefaultPaneHeight = 400;
-
-// The model's name as the label shows it ("Phong", "radiosidad" in Spanish).
-std::string model_label(const std::string& model);
 
 // Where a pane's label box lies (top-left corner; everything else is the untouched picture).
 struct LabelBox {

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 
 #include "app/common/line_plot.h"
 #include "app/common/i18n.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "gl/offscreen_context.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
@@ -42,21 +42,16 @@ const char* method_label(Method method) {
 }
 namespace {
 
-// Written beside its final name and renamed: it appears whole or not at all.
 void write_csv(const std::string& path, const SolverComparison& race) {
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
-    out << "method,iteration,rows,seconds,residual,error\n";
+  const std::string failure = io::write_atomically(path, [&] {
+    std::string csv = "method,iteration,rows,seconds,residual,error\n";
     for (const Method m : kMethods)
       for (const SolverSample& s : race.curve(m))
-        out << fmt::format("{},{},{},{:.6f},{:.9g},{:.9g}\n", to_string(m), s.iteration, s.rows,
-                           s.seconds, s.residual, s.error);
-    if (!out.flush()) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
+        csv += fmt::format("{},{},{},{:.6f},{:.9g},{:.9g}\n", to_string(m), s.iteration, s.rows, s.seconds,
+                           s.residual, s.error);
+    return csv;
+  });
+  if (!failure.empty()) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
 // Two panels, residual and error against the rows used (log axes), one line per method.

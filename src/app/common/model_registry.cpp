@@ -11,6 +11,11 @@ const ModelEntry* find_model(std::string_view name) {
   return nullptr;
 }
 
+std::string model_label(const std::string& name) {
+  const ModelEntry* m = find_model(name);
+  return m ? std::string(tr(m->label)) : name;
+}
+
 const ModelEntry* model_on_key(int digit) {
   for (const ModelEntry& m : models())
     if (m.key == digit) return &m;

@@ -42,10 +42,8 @@ struct ModelEntry {
   std::span<const char* const> flag_groups;
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.
   Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
-  // The viewer's view; the scene and the GL context are the viewer's. nullptr: a model of
-  // `luz render` only (its key says so; the panel has no button for it).
+  // The viewer's view; the scene and the GL context are the viewer's.
   std::unique_ptr<ModelView> (*make_view)(ViewerServices& viewer);
-  bool in_viewer() const { return make_view != nullptr; }
   std::span<const ScriptVerb> verbs;  // its script verbs (script.h), beside the common ones
   // The view-independent solution its pictures show, solved once for several panes of a sheet
   // (radiosity's, which the hybrid shows too); nullptr for a model that has none.
@@ -53,11 +51,18 @@ struct ModelEntry {
 };
 
 std::span<const ModelEntry> models();
+// The difference view's reference: the model that solves slide 14's equation itself.
+const ModelEntry& reference_model();
+// The lecture's comparisons side by side (slide 44), as lists of model names.
+std::span<const std::vector<std::string>> lecture_comparisons();
 const ModelEntry* find_model(std::string_view name);  // nullptr when there is none
 const ModelEntry* model_on_key(int digit);            // nullptr when no model has that key
 // "flat, gouraud or phong": the models that accept a flag group, for messages.
 std::string models_accepting(std::string_view flag_group);
 // "flat, gouraud, phong, ...": every model's name.
 std::string model_names(const char* separator = ", ");
+// The model's label (its entry's, translated) for the name `luz render --model` takes; the name
+// itself when no model has it.
+std::string model_label(const std::string& name);
 
 }  // namespace luz::app

@@ -1,7 +1,7 @@
 #pragma once
 // Radiosity (model 5) in the viewer's state: what the panel, the keys and the script change, and
 // what the panel and the inspector show of the solver. Plain data, no GL: the solver itself lives
-// in RadiosityView (radiosity_view.h), which the viewer builds when the model is first shown and
+// in RadiositySession (radiosity_session.h), which the viewer builds when the model is first shown and
 // which fills `status` and `patch` every frame.
 #include <optional>
 #include <string>

@@ -1,16 +1,11 @@
 #include "app/handout/handout_command.h"
 
-#include <array>
 #include <charconv>
-#include <csignal>
-#include <cstring>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
-
-#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -21,6 +16,7 @@
 #include "app/models/radiosity/radiosity_session.h"
 #include "app/cli/render_grid.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
 
@@ -49,47 +45,6 @@ StepRange parse_steps(const std::string& text, size_t steps) {
     throw Error(ErrorKind::usage, trf("--steps {}: expected A-B with 1 <= A <= B <= {} (the lesson's steps)", text, steps));
   return range;
 }
-
-// While the temporary outputs exist, SIGINT and SIGTERM remove them before the process ends as it
-// would have (the previous disposition restored, the signal raised again), as io::write_image
-// does for its own temporary. The handler only calls async-signal-safe functions (unlink, rmdir,
-// sigaction, raise) on paths laid out before it is installed.
-std::vector<std::array<char, 4096>> g_temporaries;  // files, then the folder last
-struct sigaction g_previous_int, g_previous_term;
-
-extern "C" void remove_temporaries_and_reraise(int signal_number) {
-  for (const auto& path : g_temporaries) {
-    unlink(path.data());
-    rmdir(path.data());
-  }
-  sigaction(SIGINT, &g_previous_int, nullptr);
-  sigaction(SIGTERM, &g_previous_term, nullptr);
-  raise(signal_number);
-}
-
-class TemporariesGuard {
-public:
-  explicit TemporariesGuard(const std::vector<fs::path>& paths) {
-    for (const fs::path& path : paths) {
-      const std::string name = path.string();
-      if (name.size() >= 4096) continue;
-      std::array<char, 4096>& slot = g_temporaries.emplace_back();
-      std::memcpy(slot.data(), name.c_str(), name.size() + 1);
-    }
-    struct sigaction action {};
-    action.sa_handler = remove_temporaries_and_reraise;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &g_previous_int);
-    sigaction(SIGTERM, &action, &g_previous_term);
-  }
-  ~TemporariesGuard() {
-    sigaction(SIGINT, &g_previous_int, nullptr);
-    sigaction(SIGTERM, &g_previous_term, nullptr);
-    g_temporaries.clear();
-  }
-  TemporariesGuard(const TemporariesGuard&) = delete;
-  TemporariesGuard& operator=(const TemporariesGuard&) = delete;
-};
 
 std::string png_name(size_t number) { return fmt::format("step-{:02}.png", number); }
 
@@ -173,7 +128,7 @@ private:
   fs::path pdf_partial_, png_partial_;
   std::optional<HandoutPdf> pdf_;
   std::vector<std::string> pngs_;
-  std::optional<TemporariesGuard> guard_;  // last: gone first
+  std::optional<io::RemovedOnSignal> guard_;  // last: gone first
 };
 
 int write_handout(const HandoutSettings& settings, const Lesson& lesson, StepRange range) {

@@ -12,7 +12,7 @@
 namespace luz::app {
 namespace {
 
-// The window's radiosity solver as the step's commands drive it (radiosity_model.cpp's verbs).
+// The window's radiosity solver as the step's commands drive it (radiosity_view.cpp's verbs).
 struct SolverDrive {
   bool running = false;
   int shots = 0;

@@ -1,5 +1,5 @@
 // The registry: one line per model. A model brings its headless render (render_NAME.*) and its
-// viewer view (NAME_model.*); its line here names the flag groups it takes and its own script
+// viewer view (NAME_view.*); its line here names the flag groups it takes and its own script
 // verbs. The order is the keys' and the panel's.
 #include "app/common/model_registry.h"
 
@@ -40,7 +40,7 @@ Rendered render_shaded(const Scene& scene, const Camera& camera, int width, int 
 
 template <Shading shading>
 std::unique_ptr<ModelView> local_view(ViewerServices& viewer) {
-  return std::make_unique<LocalModel>(viewer, shading);
+  return std::make_unique<LocalView>(viewer, shading);
 }
 
 Rendered render_radiosity_model(const Scene& scene, const Camera& camera, int width, int height,
@@ -64,24 +64,33 @@ const ModelEntry table[] = {
      local_view<Shading::gouraud>, {}, nullptr},
     {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}, nullptr},
     {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags,
-     render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedModel>(v); },
+     render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedView>(v); },
      traced_verbs(), nullptr},
     {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags,
      render_radiosity_model,
-     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityModel>(v); },
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityView>(v); },
      radiosity_verbs(), solve_radiosity_model},
     {"hybrid", N_("hybrid"), 6, N_("hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"),
      hybrid_flags, render_hybrid,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> {
-       return std::make_unique<HybridModel>(v, static_cast<RadiosityModel&>(v.view("radiosity")));
+       return std::make_unique<HybridView>(v, static_cast<RadiosityView&>(v.view("radiosity")));
      },
      {}, nullptr},
     {"path", N_("path tracer"), 7, N_("path tracing of slide 14's equation, the reference (refines while the view stays)"),
      path_flags, render_path_model,
-     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathModel>(v); }, path_verbs(), nullptr},
+     [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathView>(v); }, path_verbs(), nullptr},
+};
+
+const std::vector<std::string> comparisons[] = {
+    {"flat", "gouraud", "phong", "whitted"},  // the local models against Whitted
+    {"radiosity", "hybrid"},                  // radiosity against the hybrid
 };
 
 }  // namespace
+
+const ModelEntry& reference_model() { return *find_model("path"); }
+
+std::span<const std::vector<std::string>> lecture_comparisons() { return comparisons; }
 
 std::span<const ModelEntry> models() { return table; }
 

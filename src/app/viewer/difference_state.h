@@ -1,5 +1,5 @@
 #pragma once
-// The difference view's switch and its latest figures (difference_view.h), in the ViewerState
+// The difference view's switch and its latest figures (difference_window.h), in the ViewerState
 // so that the panel, the script and the tests read the same numbers.
 #include <string>
 

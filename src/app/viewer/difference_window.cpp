@@ -2,14 +2,15 @@
 #include "app/viewer/difference_window.h"
 
 #include <cmath>
-#include <fstream>
 #include <vector>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
+#include "app/viewer/background_render.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/overlays.h"
 #include "app/viewer/viewer_window.h"
@@ -32,39 +33,20 @@ DifferenceFigures difference_figures(const ImageComparison& c, int width, int he
   return f;
 }
 
-namespace {
-
-// `image` (row 0 at the top) times `scale` into the colour texture of `picture`.
-void upload(const Image& image, float scale, gl::Framebuffer& picture) {
-  const int w = image.width, h = image.height;
-  std::vector<float> rows(size_t(w) * size_t(h) * 3);
-  for (int row = 0; row < h; ++row)  // GL's rows go bottom-up
-    for (int x = 0; x < w; ++x) {
-      const Rgb p = image.at(x, h - 1 - row) * scale;
-      float* out = &rows[(size_t(row) * size_t(w) + size_t(x)) * 3];
-      out[0] = p.r, out[1] = p.g, out[2] = p.b;
-    }
-  glBindTexture(GL_TEXTURE_2D, picture.colour_texture());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGB, GL_FLOAT, rows.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
-}
-
-}  // namespace
-
 void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const Camera& camera,
                      const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane) {
   ViewerState& state = viewer.state();
   DifferenceState& d = state.difference;
-  const bool reference_shown = std::string_view(compared.name) == "path";
+  const ModelEntry& reference_entry = reference_model();
+  const bool reference_shown = &compared == &reference_entry;
   if (!d.on || reference_shown) {
     // The reference ran for the comparison: it stops (when it is shown, the viewer drives it).
-    if (d.running && !reference_in_a_pane) viewer.view("path").hidden();
+    if (d.running && !reference_in_a_pane) viewer.view(reference_entry.name).hidden();
     d.running = d.refining = d.waiting = d.valid = false;
     d.why = d.on ? tr("the path tracer is the reference itself: choose another model to compare") : "";
     return;
   }
-  ModelView& reference = viewer.view("path");
+  ModelView& reference = viewer.view(reference_entry.name);
   reference.advance(camera, viewport);
   d.running = true;
   d.refining = reference.animating();
@@ -83,8 +65,13 @@ void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const C
   d.figures.reference_noise = pass->noise;
   d.valid = true;
   d.why.clear();
-  const Image heatmap = relative_difference_heatmap(comparison, model.width, model.height, d.figures.range);
-  upload(heatmap, std::exp2(-state.exposure), picture);
+  // Shown through the exposure, as every picture: divided by 2^exposure here, the heat map's
+  // colours reach the screen as they are.
+  Image heatmap = relative_difference_heatmap(comparison, model.width, model.height, d.figures.range);
+  const float scale = std::exp2(-state.exposure);
+  for (Rgb& p : heatmap.pixels) p = p * scale;
+  std::vector<float> scratch;
+  upload_pixels(picture, heatmap, 0, 0, heatmap.width, heatmap.height, scratch);
   picture.bind();
 }
 
@@ -208,11 +195,7 @@ bool run_dump_difference(ViewerServices& viewer, const ScriptCommand& c, std::st
     j["reference_spp"] = f.reference_spp;
     j["reference_noise"] = f.reference_noise;
   }
-  std::ofstream out(c.args[0]);
-  out << j.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the difference view's figures", c.args[0]);
-  return false;
+  return write_json(c.args[0], j, "the difference view's figures", error);
 }
 
 }  // namespace luz::app

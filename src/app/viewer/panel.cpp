@@ -137,15 +137,13 @@ void effects_section(LocalOptions& o) {
 }
 
 // ---- [model sections] --------------------------------------------------------------------------
-// The radio buttons of the registry's models the viewer shows, three to a row, then the shown
-// model's section. A `luz render` only model has no button: its key says where it is.
+// The radio buttons of the registry's models, three to a row, then the shown model's section.
 void model_header(ViewerState& state, ModelView& shown) {
   const bool section_open = ImGui::CollapsingHeader(tr("Model"), ImGuiTreeNodeFlags_DefaultOpen);
   name_widget("Model");  // a script folds a section to reach the ones below
   if (!section_open) return;
   int column = 0;
   for (const ModelEntry& m : models()) {
-    if (!m.in_viewer()) continue;
     const std::string label = fmt::format("{} [{}]", tr(m.label), m.key);
     if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
     name_widget(fmt::format("{} [{}]", m.label, m.key));  // named in English, as every widget

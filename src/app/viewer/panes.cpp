@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/common/label_text.h"
 #include "app/common/model_registry.h"
@@ -36,8 +36,6 @@ std::string pane_list_problem(const std::vector<std::string>& models) {
   for (size_t i = 0; i < models.size(); ++i) {
     const ModelEntry* entry = find_model(models[i]);
     if (!entry) return trf("unknown model \"{}\" ({})", models[i], model_names());
-    if (!entry->in_viewer())
-      return trf("{}: the window has no view of it (`luz render --model {}` draws it)", models[i], models[i]);
     if (std::find(models.begin(), models.begin() + long(i), models[i]) != models.begin() + long(i))
       return trf("{} is in the list twice: each pane shows another model", models[i]);
   }
@@ -143,7 +141,6 @@ void panes_section(ViewerState& state) {
   const std::vector<std::string> shown = state.panes.empty() ? std::vector<std::string>{state.model} : state.panes;
   int column = 0;
   for (const ModelEntry& m : models()) {
-    if (!m.in_viewer()) continue;
     const auto found = std::find(shown.begin(), shown.end(), m.name);
     bool in = found != shown.end();
     const bool locked = in ? shown.size() == 1 : shown.size() >= kMaxPanes;  // one picture at least, four at most
@@ -159,10 +156,8 @@ void panes_section(ViewerState& state) {
     if (++column % 3 != 0) ImGui::SameLine();
   }
   if (column % 3 != 0) ImGui::NewLine();
-  // The lecture's two comparisons: the local models against Whitted, radiosity against the hybrid.
   bool first = true;
-  for (const std::vector<std::string>& preset :
-       {std::vector<std::string>{"flat", "gouraud", "phong", "whitted"}, std::vector<std::string>{"radiosity", "hybrid"}}) {
+  for (const std::vector<std::string>& preset : lecture_comparisons()) {
     if (!pane_list_problem(preset).empty()) continue;
     if (flowing_button(joined_labels(preset).c_str(), first)) state.panes_request = preset;
     first = false;
@@ -209,11 +204,7 @@ bool run_dump_panes(Viewer& viewer, const ScriptCommand& c, std::string& error) 
     if (const char* trace = viewer.view(models[i]->name).trace_state()) panes.back()["trace"] = trace;
   }
   const nlohmann::json j = {{"active", viewer.active_pane()}, {"panes", panes}};
-  std::ofstream out(c.args[0]);
-  out << j.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the panes", c.args[0]);
-  return false;
+  return write_json(c.args[0], j, "the panes", error);
 }
 
 }  // namespace luz::app

@@ -15,8 +15,7 @@
 // - A click on a pane is that pane's model's click: a traced pane's ray tree, a local pane's
 //   inspector. Enter traces every traced pane (Whitted, the hybrid), Space runs radiosity in
 //   every pane that shows it.
-// Any model of the registry with a view (ModelEntry::make_view) may be a pane; a model of
-// `luz render` only may not, and the list says so.
+// Any model of the registry may be a pane.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -1,11 +1,11 @@
 // The script's common verbs, one table: name, usage, argument check, what the viewer does, and
 // whether the next command must see it drawn. A model's own verbs (radiosity's, the tracer's)
 // come with its registry entry.
-#include <fstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/classroom/lesson.h"
 #include "app/viewer/inspector.h"
@@ -23,14 +23,6 @@
 
 namespace luz::app {
 namespace {
-
-bool write_json(const std::string& path, const nlohmann::json& json, const char* what, std::string& error) {
-  std::ofstream out(path);
-  out << json.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write {}", path, what);
-  return false;
-}
 
 std::string check_none(const ScriptCommand& c) { return check_count(c, 0, 0); }
 

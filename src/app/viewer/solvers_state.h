@@ -1,7 +1,7 @@
 #pragma once
 // Slide 36's window in the viewer's state: the system (I - rho F) B = E solved four ways side by
 // side (Jacobi, Gauss-Seidel, Southwell, shooting), their curves plotted live. Plain data, no
-// GL: the comparison itself lives in SolversView (solvers_view.h), which fills `status`.
+// GL: the comparison itself lives in SolversWindow (solvers_window.h), which fills `status`.
 #include <cstddef>
 #include <string>
 

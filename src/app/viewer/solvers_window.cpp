@@ -41,7 +41,7 @@ bool all_done(const SolverComparison& race) {
 }  // namespace
 
 // ---- [stepping] --------------------------------------------------------------------------------
-void SolversView::build(SolversState& state) {
+void SolversWindow::build(SolversState& state) {
   race_.reset();  // the old comparison's GL objects go before the new ones are made
   mesh_.reset();
   SolversState::Status& s = state.status;
@@ -75,7 +75,7 @@ void SolversView::build(SolversState& state) {
   s.matrix_seconds = race_->matrix_seconds();
 }
 
-void SolversView::advance(SolversState& state) {
+void SolversWindow::advance(SolversState& state) {
   SolversState::Status& s = state.status;
   if (state.reset) {
     state.reset = false;
@@ -193,7 +193,7 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
 }  // namespace
 
 // ---- [the window] ------------------------------------------------------------------------------
-void SolversView::draw(SolversState& state, float x, float y, float width, float height, bool pinned) const {
+void SolversWindow::draw(SolversState& state, float x, float y, float width, float height, bool pinned) const {
   SolversState::Status& s = state.status;
   const ImGuiCond when = pinned ? ImGuiCond_Always : ImGuiCond_Appearing;
   ImGui::SetNextWindowPos(ImVec2(x, y), when);
@@ -264,7 +264,7 @@ void SolversView::draw(SolversState& state, float x, float y, float width, float
 }
 
 // ---- [json] ------------------------------------------------------------------------------------
-nlohmann::json to_json(const SolversState& state, const SolversView* view) {
+nlohmann::json to_json(const SolversState& state, const SolversWindow* view) {
   const SolversState::Status& s = state.status;
   nlohmann::json j;
   const char* phases[] = {"none", "building", "ready", "refused"};

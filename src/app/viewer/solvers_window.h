@@ -24,11 +24,11 @@
 
 namespace luz::app {
 
-class SolversView {
+class SolversWindow {
 public:
-  explicit SolversView(const Scene& scene) : scene_(scene) {}
-  SolversView(const SolversView&) = delete;
-  SolversView& operator=(const SolversView&) = delete;
+  explicit SolversWindow(const Scene& scene) : scene_(scene) {}
+  SolversWindow(const SolversWindow&) = delete;
+  SolversWindow& operator=(const SolversWindow&) = delete;
 
   void advance(SolversState& state);
   // The window (ImGui only); `open` is cleared by its close button.
@@ -48,6 +48,6 @@ private:
 };
 
 // For the script's dump-solvers: the status and every method's curve.
-nlohmann::json to_json(const SolversState& state, const SolversView* view);
+nlohmann::json to_json(const SolversState& state, const SolversWindow* view);
 
 }  // namespace luz::app

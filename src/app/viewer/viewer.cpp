@@ -329,7 +329,7 @@ ModelView& Viewer::view(std::string_view name) {
   auto found = views_.find(name);
   if (found != views_.end()) return *found->second;
   const ModelEntry* entry = find_model(name);
-  if (!entry || !entry->make_view) throw Error(ErrorKind::usage, fmt::format("no model \"{}\"", name));  // a programmer's slip
+  if (!entry) throw Error(ErrorKind::usage, fmt::format("no model \"{}\"", name));  // a programmer's slip
   std::unique_ptr<ModelView> made = entry->make_view(*this);
   ModelView& result = *made;
   views_.emplace(std::string(name), std::move(made));
@@ -337,11 +337,6 @@ ModelView& Viewer::view(std::string_view name) {
 }
 
 void Viewer::set_model(const ModelEntry& model) {
-  if (!model.make_view) {
-    state_.model = model_->name;
-    state_.note = trf("{}: `luz render --model {}` only", tr(model.label), model.name);
-    return;
-  }
   const auto pane = std::find(panes_.begin(), panes_.end(), &model);
   if (pane != panes_.end()) {
     active_pane_ = size_t(pane - panes_.begin());
@@ -582,7 +577,7 @@ void Viewer::apply(Action action) {
       for (ModelView* pane : pane_views()) taken = pane->act(action) || taken;  // every pane that traces or solves
       if (taken) break;
       for (const ModelEntry& m : models())
-        if (m.make_view && view(m.name).act(action)) {
+        if (view(m.name).act(action)) {
           set_model(m);
           break;
         }
@@ -708,7 +703,7 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
   pictures_.resize(panes_.size());
   drawn_cameras_.assign(panes_.size(), camera);
   const bool reference_in_a_pane =
-      std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return std::string_view(m->name) == "path"; });
+      std::any_of(panes_.begin(), panes_.end(), [](const ModelEntry* m) { return m == &reference_model(); });
   double models_ms = 0.0, exposure_ms = 0.0;  // summed over the panes
   copied_panes_ = direct_panes_ = 0;
   const bool checking_exposure = exposure_check_ && view(model_->name).shows_the_light();
@@ -995,7 +990,7 @@ void Viewer::frame() {
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
   const SolversState& s = state_.solvers;
   if (s.open || s.run_to_rows > 0 || s.reset) {
-    if (!solvers_) solvers_ = std::make_unique<SolversView>(*state_.scene);
+    if (!solvers_) solvers_ = std::make_unique<SolversWindow>(*state_.scene);
     solvers_->advance(state_.solvers);
   }
 

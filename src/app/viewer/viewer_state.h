@@ -68,7 +68,7 @@ struct ViewerState {
   SolversState solvers;
 
   // The difference view: the model shown against the path tracer's reference of the same view
-  // (difference_view.h), its switch and its latest figures.
+  // (difference_window.h), its switch and its latest figures.
   DifferenceState difference;
   // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
   // `model`); the panel asks for another list through panes_request, done between frames.

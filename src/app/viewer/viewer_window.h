@@ -110,7 +110,7 @@ public:
   nlohmann::json tables_json() const;   // every table's columns: their text's width and their room
   const ModelEntry& model() const override { return *model_; }
   ModelView& shown() override { return view(model_->name); }
-  SolversView* solvers() { return solvers_.get(); }
+  SolversWindow* solvers() { return solvers_.get(); }
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
   PanelCache& panel_cache() { return panel_cache_; }
@@ -180,7 +180,7 @@ private:
   std::vector<Camera> drawn_cameras_;                    // what each pane was drawn with
   std::map<std::string, std::unique_ptr<ModelView>, std::less<>> views_;  // made when first shown
   // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
-  std::unique_ptr<SolversView> solvers_;
+  std::unique_ptr<SolversWindow> solvers_;
 
   DragButton drag_ = DragButton::none;
   glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};

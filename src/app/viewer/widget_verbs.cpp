@@ -1,11 +1,11 @@
 #include "app/viewer/widget_verbs.h"
 
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "app/common/json_file.h"
 #include "app/viewer/model_view.h"
 #include "app/viewer/widget_registry.h"
 #include "app/viewer/viewer_window.h"
@@ -31,11 +31,7 @@ bool run_click_widget(Viewer& v, const ScriptCommand& c, std::string& error) {
 }
 
 bool run_dump_widgets(Viewer&, const ScriptCommand& c, std::string& error) {
-  std::ofstream out(c.args[0]);
-  out << widgets_json().dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the widgets' rectangles", c.args[0]);
-  return false;
+  return write_json(c.args[0], widgets_json(), "the widgets' rectangles", error);
 }
 
 namespace {

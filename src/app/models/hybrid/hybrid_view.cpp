@@ -9,8 +9,8 @@
 
 namespace luz::app {
 
-HybridModel::HybridModel(ViewerServices& viewer, RadiosityModel& radiosity)
-    : TracedModel(viewer), radiosity_(radiosity) {
+HybridView::HybridView(ViewerServices& viewer, RadiosityView& radiosity)
+    : TracedView(viewer), radiosity_(radiosity) {
   // The radiosity solution goes (a remesh, an edited Le): first the trace that reads it.
   radiosity_.on_drop([this] {
     cancel_trace();
@@ -19,17 +19,17 @@ HybridModel::HybridModel(ViewerServices& viewer, RadiosityModel& radiosity)
   });
 }
 
-HybridModel::~HybridModel() { cancel_trace(); }
+HybridView::~HybridView() { cancel_trace(); }
 
-void HybridModel::scene_changed() {
-  TracedModel::scene_changed();
+void HybridView::scene_changed() {
+  TracedView::scene_changed();
   diffuse_.reset();
 }
 
 // The radiosity picture, stepping as in model 5 (the first time, meshed and run to the stopping
 // rule: "computed first when there is none"). It shows B/pi as the trace will read it, so model
 // 5's heat map and shooter highlight are left out here.
-void HybridModel::draw_untraced(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void HybridView::draw_untraced(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   RadiosityState& r = viewer_.state().radiosity;
   const bool first = radiosity_.solution() == nullptr;
   const bool solved = radiosity_.step_and_draw(camera, viewport, picture, {.heat_map = false, .shooter = false});
@@ -39,8 +39,8 @@ void HybridModel::draw_untraced(const Camera& camera, const Viewport& viewport, 
 // The hybrid traces over the viewer's radiosity solution: while the solver is still running to
 // its stopping rule (the first solve, or a run asked for), the trace waits for it. The diffuse
 // part takes the solution as it is now, only while no trace runs (a running one reads it).
-std::optional<rt::WhittedOptions> HybridModel::options_for_trace(std::string& why) {
-  const RadiosityView* solution = radiosity_.solution();
+std::optional<rt::WhittedOptions> HybridView::options_for_trace(std::string& why) {
+  const RadiositySession* solution = radiosity_.solution();
   if (!solution) {
     why = tr("hybrid: no radiosity solution yet to trace with");
     return std::nullopt;
@@ -54,12 +54,12 @@ std::optional<rt::WhittedOptions> HybridModel::options_for_trace(std::string& wh
   return current_options();
 }
 
-rt::WhittedOptions HybridModel::current_options() const {
+rt::WhittedOptions HybridView::current_options() const {
   const ViewerState& state = viewer_.state();
   return tracer_options(state.whitted, state.local);
 }
 
-std::string HybridModel::hint() const {
+std::string HybridView::hint() const {
   const RadiosityState& r = viewer_.state().radiosity;
   if (requests.trace)
     // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
@@ -68,8 +68,8 @@ std::string HybridModel::hint() const {
   return tr("hybrid: the radiosity picture. Press Enter / click Render to trace its highlights");
 }
 
-std::string HybridModel::status() const {
-  std::string s = TracedModel::status();
+std::string HybridView::status() const {
+  std::string s = TracedView::status();
   if (progress().phase == TracePhase::raster) {
     const std::string solver = radiosity_.status();
     if (!solver.empty()) s += " " + solver;
@@ -77,7 +77,7 @@ std::string HybridModel::status() const {
   return s;
 }
 
-void HybridModel::panel() {
+void HybridView::panel() {
   ViewerState& state = viewer_.state();
   dim_text(tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
   ImGui::TextWrapped(tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));

@@ -10,17 +10,17 @@
 
 namespace luz::app {
 
-class HybridModel final : public TracedModel {
+class HybridView final : public TracedView {
 public:
-  HybridModel(ViewerServices& viewer, RadiosityModel& radiosity);
-  ~HybridModel() override;
+  HybridView(ViewerServices& viewer, RadiosityView& radiosity);
+  ~HybridView() override;
 
   void scene_changed() override;
   void panel() override;
   std::string status() const override;
   bool hybrid() const override { return true; }
-  bool animating() const override { return TracedModel::animating() || radiosity_.animating(); }
-  bool busy() const override { return TracedModel::busy() || radiosity_.busy(); }
+  bool animating() const override { return TracedView::animating() || radiosity_.animating(); }
+  bool busy() const override { return TracedView::busy() || radiosity_.busy(); }
   bool shows_the_light() const override { return radiosity_.shows_the_light(); }
 
 protected:
@@ -31,7 +31,7 @@ protected:
   std::string hint() const override;
 
 private:
-  RadiosityModel& radiosity_;
+  RadiosityView& radiosity_;
   // radiosity_'s solution as the tracer reads it (it refers to radiosity_'s mesh); refreshed
   // only while no trace runs, and let go (after the trace is cancelled) when the solution goes.
   std::unique_ptr<hybrid::RadiosityDiffuse> diffuse_;

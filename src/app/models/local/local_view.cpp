@@ -40,7 +40,7 @@ void draw_pick_cross(glm::vec2 at, float ui_scale) {
   draw->AddLine(ImVec2(at.x, at.y - r), ImVec2(at.x, at.y + r), IM_COL32(255, 60, 200, 255), 2.0f);
 }
 
-void LocalModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void LocalView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   ViewerState& state = viewer_.state();
   state.local.shading = shading_;
   LocalRenderer& renderer = viewer_.local_renderer();
@@ -73,7 +73,7 @@ void LocalModel::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
 
 // The inspector, when shown, reads the radiance GL drew at its pixel, and a transparent mesh
 // blends over radiance: both need the picture.
-bool LocalModel::draw_into_window(const Camera& camera, const Viewport& viewport, bool window_unseen) {
+bool LocalView::draw_into_window(const Camera& camera, const Viewport& viewport, bool window_unseen) {
   ViewerState& state = viewer_.state();
   LocalRenderer& renderer = viewer_.local_renderer();
   state.local.shading = shading_;
@@ -87,7 +87,7 @@ bool LocalModel::draw_into_window(const Camera& camera, const Viewport& viewport
   return true;
 }
 
-void LocalModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
+void LocalView::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
   ViewerState& state = viewer_.state();
   if (inspect(viewer_, camera, viewport, pixel)) {
     state.show_inspector = true;
@@ -98,12 +98,12 @@ void LocalModel::click(const Camera& camera, const Viewport& viewport, glm::ivec
 }
 
 // Side by side, each local pane sets the shading as it draws: the panel speaks of this one's.
-void LocalModel::panel() {
+void LocalView::panel() {
   viewer_.state().local.shading = shading_;
   local_section(viewer_.state());
 }
 
-void LocalModel::windows(const Viewport& viewport, WindowCorners& corners) {
+void LocalView::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
   const Inspection& in = viewer_.inspection();
   if (!in.pick || !reading_ || !state.show_inspector) return;

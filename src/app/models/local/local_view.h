@@ -11,9 +11,9 @@
 
 namespace luz::app {
 
-class LocalModel final : public ModelView {
+class LocalView final : public ModelView {
 public:
-  LocalModel(ViewerServices& viewer, Shading shading) : viewer_(viewer), shading_(shading) {}
+  LocalView(ViewerServices& viewer, Shading shading) : viewer_(viewer), shading_(shading) {}
 
   void scene_changed() override { reading_.reset(); }
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;

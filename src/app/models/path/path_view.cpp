@@ -3,18 +3,18 @@
 #include "app/models/path/path_view.h"
 
 #include <algorithm>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/viewer/difference_window.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
+#include "app/viewer/background_render.h"
 #include "app/viewer/overlays.h"
-#include "app/models/whitted/whitted_worker.h"
 #include "core/image_compare.h"
 #include "gl/functions.h"
 #include "local/local_renderer.h"
@@ -40,11 +40,11 @@ double relative_noise(const Image& mean, const Image& standard_error) {
 }
 
 // ---- [the film's worker] -------------------------------------------------------------------------
-PathModel::PathModel(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
+PathView::PathView(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
 
-PathModel::~PathModel() { cancel(); }
+PathView::~PathView() { cancel(); }
 
-void PathModel::scene_changed() {
+void PathView::scene_changed() {
   cancel();
   tracer_.reset();  // its BVH is of the old geometry
   copy_.reset();
@@ -52,17 +52,13 @@ void PathModel::scene_changed() {
   uploaded_ = -1;
 }
 
-void PathModel::hidden() {
+void PathView::hidden() {
   pause_ = true;  // the pass running finishes: the film keeps whole passes
   wait_for_ = 0;
 }
 
-void PathModel::cancel() {
-  if (worker_.joinable()) {
-    cancel_ = true;
-    worker_.join();
-  }
-  cancel_ = false;
+void PathView::cancel() {
+  worker_.stop();
   running_ = false;
   have_film_ = false;
   shown_ = PathPicture{};
@@ -71,7 +67,7 @@ void PathModel::cancel() {
   published_ = PathPicture{};
 }
 
-PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) const {
+PathFingerprint PathView::fingerprint(const Camera& camera, glm::ivec2 size) const {
   rt::PathOptions o = options;
   o.spp = 0;
   o.max_depth = rt::max_depth_of(o);
@@ -79,7 +75,7 @@ PathFingerprint PathModel::fingerprint(const Camera& camera, glm::ivec2 size) co
   return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
 }
 
-void PathModel::start(const Camera& camera, glm::ivec2 size) {
+void PathView::start(const Camera& camera, glm::ivec2 size) {
   const Scene& scene = *viewer_.state().scene;
   if (!tracer_) {
     copy_ = std::make_unique<Scene>(scene);
@@ -88,11 +84,7 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
   if (!have_film_) {
     // A new film: the tracer's copy takes the viewer's editable values (the geometry is the
     // same: a new geometry is a new scene).
-    copy_->lights = scene.lights;
-    copy_->materials = scene.materials;
-    copy_->area_lights = scene.area_lights;
-    copy_->ambient = scene.ambient;
-    copy_->background = scene.background;
+    copy_editable(scene, *copy_);
     film_ = rt::PathFilm(size.x, size.y);
     started_ = fingerprint(camera, size);
     have_film_ = true;
@@ -100,15 +92,13 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
     began_ = std::chrono::steady_clock::now();
   }
   pause_ = false;
-  finished_ = false;
   running_ = true;
   const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
   target_ = std::max(1, options.spp);
-  // GL stays on this thread; the worker only traces and copies pixels (DESIGN.md "Threads").
-  worker_ = std::jthread([this, camera, o] {
-    while (!cancel_ && !pause_ && film_.min_samples() < target_) {
-      tracer_->add_samples(film_, camera, o, 1, {}, &cancel_);
-      if (cancel_) break;  // an unfinished pass: the film is dropped
+  worker_.start([this, camera, o](const std::atomic<bool>& cancel) {
+    while (!cancel && !pause_ && film_.min_samples() < target_) {
+      tracer_->add_samples(film_, camera, o, 1, {}, &cancel);
+      if (cancel) break;  // an unfinished pass: the film is dropped
       PathPicture pass;
       pass.mean = film_.mean();
       pass.spp = film_.min_samples();
@@ -118,12 +108,11 @@ void PathModel::start(const Camera& camera, glm::ivec2 size) {
       pass.version = published_.version + 1;
       published_ = std::move(pass);
     }
-    finished_.store(true, std::memory_order_release);
   });
 }
 
-void PathModel::collect() {
-  if (running_ && finished_.load(std::memory_order_acquire)) {
+void PathView::collect() {
+  if (running_ && worker_.finished()) {
     worker_.join();
     running_ = false;
   }
@@ -131,7 +120,7 @@ void PathModel::collect() {
   if (published_.version != shown_.version) shown_ = published_;
 }
 
-void PathModel::advance(const Camera& camera, const Viewport& viewport) {
+void PathView::advance(const Camera& camera, const Viewport& viewport) {
   target_ = std::max(1, options.spp);  // a running worker stops there (or goes on to there)
   collect();
   const glm::ivec2 size = viewport.pixels;
@@ -144,19 +133,19 @@ void PathModel::advance(const Camera& camera, const Viewport& viewport) {
   }
   if (running_ && pause_) {
     pause_ = false;  // shown again before the pass ended: it goes on
-    if (finished_.load(std::memory_order_acquire)) collect();  // it had stopped already
+    if (worker_.finished()) collect();  // it had stopped already
   }
   if (!running_ && (!have_film_ || shown_.spp < std::max(1, options.spp))) start(camera, size);
   if (!busy()) wait_for_ = 0;  // a wait ends once: a later restart does not hold the script again
 }
 
-const PathPicture* PathModel::picture_for(const Camera& camera, glm::ivec2 size) const {
+const PathPicture* PathView::picture_for(const Camera& camera, glm::ivec2 size) const {
   if (!have_film_ || shown_.spp == 0 || started_ != fingerprint(camera, size)) return nullptr;
   return &shown_;
 }
 
 // ---- [the frame] ---------------------------------------------------------------------------------
-void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void PathView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   const glm::ivec2 size = viewport.pixels;
   if (!picture_for(camera, size)) {
     // Until the first pass: the raster (Phong) view, as Whitted's model shows before a trace.
@@ -171,18 +160,7 @@ void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebu
     uploaded_ = -1;
   }
   if (uploaded_ != shown_.version) {
-    // GL's rows go bottom-up: image row y is texture row height - 1 - y.
-    upload_.resize(size_t(size.x) * size_t(size.y) * 3);
-    for (int row = 0; row < size.y; ++row)
-      for (int x = 0; x < size.x; ++x) {
-        const Rgb& p = shown_.mean.at(x, size.y - 1 - row);
-        float* out = &upload_[(size_t(row) * size_t(size.x) + size_t(x)) * 3];
-        out[0] = p.r, out[1] = p.g, out[2] = p.b;
-      }
-    glBindTexture(GL_TEXTURE_2D, texture_->colour_texture());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGB, GL_FLOAT, upload_.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    upload_pixels(*texture_, shown_.mean, 0, 0, size.x, size.y, upload_);
     uploaded_ = shown_.version;
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, texture_->id());
@@ -191,7 +169,7 @@ void PathModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebu
   picture.bind();
 }
 
-bool PathModel::busy() const {
+bool PathView::busy() const {
   if (wait_for_ <= 0) return false;
   // What advance() publishes it draws in the same frame, so a pass seen here is on screen. A
   // worker that stopped short (hidden) ends the wait.
@@ -199,12 +177,12 @@ bool PathModel::busy() const {
   return shown_.spp < goal && (running_ || restart_ || !have_film_);
 }
 
-std::string PathModel::status() const {
+std::string PathView::status() const {
   if (shown_.spp == 0) return tr("(first pass)");
   return trf("{} spp, noise {:.2f}%{}", shown_.spp, 100.0 * shown_.noise, running_ ? tr(", refining") : "");
 }
 
-void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
+void PathView::windows(const Viewport& viewport, WindowCorners& corners) {
   begin_hint("path hint", viewport, corners, 8.0f * viewer_.ui_scale());
   const int target = std::max(1, options.spp);
   ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
@@ -217,7 +195,7 @@ void PathModel::windows(const Viewport& viewport, WindowCorners& corners) {
 }
 
 // ---- [panel] -------------------------------------------------------------------------------------
-void PathModel::panel() {
+void PathView::panel() {
   ImGui::TextDisabled("%s", tr("slide 14's equation by Monte Carlo: the reference"));
   ImGui::TextWrapped("L(x, V) = Le(x, V) + ∫ f(x, L, V) · L(x, L) · cos θ dL");
   // The ranges of `luz render`'s --spp and --depth (options_tables.h), which this model shares.
@@ -245,7 +223,7 @@ void PathModel::panel() {
 namespace luz::app {
 namespace {
 
-PathModel& path_model(ViewerServices& viewer) { return static_cast<PathModel&>(viewer.view("path")); }
+PathView& path_model(ViewerServices& viewer) { return static_cast<PathView&>(viewer.view("path")); }
 
 std::string check_path(const ScriptCommand& c) {
   const auto& a = c.args;
@@ -260,7 +238,7 @@ std::string check_path(const ScriptCommand& c) {
 }
 
 bool run_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
-  PathModel& path = path_model(viewer);
+  PathView& path = path_model(viewer);
   const auto& a = c.args;
   if (a[0] == "restart") path.restart();
   else if (a[0] == "spp") path.options.spp = std::stoi(a[1]);
@@ -284,7 +262,7 @@ bool run_wait_path(ViewerServices& viewer, const ScriptCommand& c, std::string&)
 }
 
 bool run_dump_path(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  const PathModel& path = path_model(viewer);
+  const PathView& path = path_model(viewer);
   const PathPicture& p = path.latest();
   nlohmann::json j = {{"spp", p.spp},
                       {"target", path.options.spp},
@@ -295,11 +273,7 @@ bool run_dump_path(ViewerServices& viewer, const ScriptCommand& c, std::string& 
                       {"seconds", p.seconds},
                       {"running", path.running()},
                       {"restarts", path.restarts()}};
-  std::ofstream out(c.args[0]);
-  out << j.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the path tracer's state", c.args[0]);
-  return false;
+  return write_json(c.args[0], j, "the path tracer's state", error);
 }
 
 constexpr ScriptVerb verbs[] = {

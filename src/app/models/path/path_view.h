@@ -15,17 +15,17 @@
 // --spp N --seed S` of the same view, bit for bit.
 //
 // Hidden (another model shown), the worker finishes its pass and stops; the film is kept and
-// goes on when the view is shown again or the difference view (difference_view.h) asks for the
-// reference. The worker reads its own copy of the scene, refreshed at every new film, as
-// WhittedView's does: the panel may edit the viewer's scene while a pass runs.
+// goes on when the view is shown again or the difference view (difference_window.h) asks for the
+// reference. The worker reads its own copy of the scene, refreshed at every new film
+// (background_render.h): the panel may edit the viewer's scene while a pass runs.
 #include <atomic>
 #include <chrono>
 #include <memory>
 #include <mutex>
 #include <span>
-#include <thread>
 #include <vector>
 
+#include "app/viewer/background_render.h"
 #include "app/viewer/model_view.h"
 #include "core/image.h"
 #include "core/scene.h"
@@ -35,16 +35,9 @@
 
 namespace luz::app {
 
-// Everything the path picture depends on: the view, its size, the tracer's options (but the
-// target number of samples, which only says how far to go) and the scene's editable numbers.
-struct PathFingerprint {
-  glm::mat4 to_world{1.0f};
-  float yfov = 0.0f;
-  int width = 0, height = 0;
-  rt::PathOptions options;  // spp set to 0
-  std::vector<float> scene;
-  bool operator==(const PathFingerprint&) const = default;
-};
+// The path picture's options in it have spp 0: the target number of samples only says how far
+// to go.
+using PathFingerprint = ViewFingerprint<rt::PathOptions>;
 
 // What one whole pass leaves: the mean so far and how good it is.
 // The noise estimate the panel and dump-path show: over the pixels lit in `mean` (luminance
@@ -53,14 +46,14 @@ struct PathFingerprint {
 // weights, Y(error) bounds the standard error of Y from above.
 double relative_noise(const Image& mean, const Image& standard_error);
 
-class PathModel final : public ModelView {
+class PathView final : public ModelView {
 public:
   // The target the viewer refines to unless the panel or the script says otherwise: enough for
   // a reference the difference view can trust to a few percent on the shipped scenes.
   static constexpr int default_target = 256;
 
-  explicit PathModel(ViewerServices& viewer);
-  ~PathModel() override;  // cancels and joins the worker before the scene copy goes
+  explicit PathView(ViewerServices& viewer);
+  ~PathView() override;  // cancels and joins the worker before the scene copy goes
 
   void scene_changed() override;
   void hidden() override;
@@ -106,12 +99,9 @@ private:
   // Shared with the worker.
   std::mutex mutex_;
   PathPicture published_;
-  std::atomic<bool> cancel_{false};  // stop now (the tiles not started are skipped)
   std::atomic<bool> pause_{false};   // stop after this pass
   std::atomic<int> target_{1};       // samples per pixel to stop at
-  std::atomic<bool> finished_{false};
-  std::jthread worker_;
-  std::chrono::steady_clock::time_point began_;
+  std::chrono::steady_clock::time_point began_;  // of the film
 
   // The GL thread's.
   bool running_ = false;
@@ -119,10 +109,11 @@ private:
   long uploaded_ = -1;
   std::unique_ptr<gl::Framebuffer> texture_;
   std::vector<float> upload_;
+  BackgroundWorker worker_;         // last: it stops before the members its job uses go
 };
 
 // The path model's script verbs (its registry entry): path spp|depth|seed N, path restart,
-// wait-path [N], dump-path FILE.json, and the difference view's (difference_view.h).
+// wait-path [N], dump-path FILE.json, and the difference view's (difference_window.h).
 std::span<const ScriptVerb> path_verbs();
 
 }  // namespace luz::app

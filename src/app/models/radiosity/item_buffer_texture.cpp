@@ -8,13 +8,13 @@
 
 namespace luz::app {
 
-RadiosityItemView::RadiosityItemView() { glGenVertexArrays(1, &empty_vertex_array_); }
+ItemBufferTexture::ItemBufferTexture() { glGenVertexArrays(1, &empty_vertex_array_); }
 
-RadiosityItemView::~RadiosityItemView() {
+ItemBufferTexture::~ItemBufferTexture() {
   if (empty_vertex_array_) glDeleteVertexArrays(1, &empty_vertex_array_);
 }
 
-void RadiosityItemView::update(const Hemicube& hemicube) {
+void ItemBufferTexture::update(const Hemicube& hemicube) {
   // Two top faces across (the cross is 4 half-widths wide), but never more than a panel shows.
   const int size = std::min(2 * hemicube.resolution(), 512);
   if (!target_ || target_->width() != size) target_ = std::make_unique<gl::Framebuffer>(size, size);

@@ -10,12 +10,12 @@
 
 namespace luz::app {
 
-class RadiosityItemView {
+class ItemBufferTexture {
 public:
-  RadiosityItemView();  // needs a current GL context
-  ~RadiosityItemView();
-  RadiosityItemView(const RadiosityItemView&) = delete;
-  RadiosityItemView& operator=(const RadiosityItemView&) = delete;
+  ItemBufferTexture();  // needs a current GL context
+  ~ItemBufferTexture();
+  ItemBufferTexture(const ItemBufferTexture&) = delete;
+  ItemBufferTexture& operator=(const ItemBufferTexture&) = delete;
 
   // Redraws the cross from the hemicube's item texture (what its last row() drew). Leaves the
   // default framebuffer bound and no program in use.

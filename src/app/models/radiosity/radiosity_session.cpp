@@ -14,20 +14,20 @@
 namespace luz::app {
 
 // ---- [construction] ----------------------------------------------------------------------------
-RadiosityView::RadiosityView(const Scene& scene, const RadiosityOptions& options)
+RadiositySession::RadiositySession(const Scene& scene, const RadiosityOptions& options)
     : scene_(scene), built_with_(options), mesh_(PatchMesh::build(scene, options)),
       solver_(scene, mesh_, options), renderer_(scene, mesh_), shown_with_(options) {
   for (const std::string& warning : solver_.warnings()) fmt::print(stderr, "{}\n", trf("warning: {}", warning));
 }
 
-bool RadiosityView::built_for(const RadiosityOptions& o) const {
+bool RadiositySession::built_for(const RadiosityOptions& o) const {
   return o.patch_size == built_with_.patch_size && o.target_patches == built_with_.target_patches &&
          o.hemicube_res == built_with_.hemicube_res && o.hemicube_passes == built_with_.hemicube_passes &&
          o.hemicube_sums == built_with_.hemicube_sums && o.elements_per_edge == built_with_.elements_per_edge;
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------
-void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map) {
+void RadiositySession::advance(RadiosityState& state, float exposure, bool heat_map) {
   RadiosityDrive& drive = state.drive;
   // Everything but the mesh and the hemicube may change between shots (shooting.h).
   RadiosityOptions& o = solver_.options();
@@ -143,7 +143,7 @@ void RadiosityView::advance(RadiosityState& state, float exposure, bool heat_map
   refresh_status(state);
 }
 
-std::string RadiosityView::shooter_name(int shooter, int shots) const {
+std::string RadiositySession::shooter_name(int shooter, int shots) const {
   if (shooter >= 0) {
     const Patch& p = mesh_.patches[mesh_.members[mesh_.shooters[size_t(shooter)].first]];
     return trf("patch {} ({})", shooter, scene_.meshes[size_t(p.mesh)].name);
@@ -155,7 +155,7 @@ std::string RadiosityView::shooter_name(int shooter, int shots) const {
   return {};
 }
 
-void RadiosityView::refresh_status(RadiosityState& state) const {
+void RadiositySession::refresh_status(RadiosityState& state) const {
   RadiosityStatus& s = state.status;
   s.built = true;
   s.remesh_pending = !built_for(state.options);
@@ -208,7 +208,7 @@ RadianceField unshot_heat_map(const ProgressiveSolver& solver) {
 }
 
 // ---- [drawing] ---------------------------------------------------------------------------------
-void RadiosityView::draw(const Camera& camera, int width, int height, bool show_shooter) {
+void RadiositySession::draw(const Camera& camera, int width, int height, bool show_shooter) {
   // The shooter in magenta while there is one to see: not once converged, where the picture is
   // the solution `luz render --model radiosity` draws.
   const int shooter = show_shooter && !solver_.done() ? solver_.last_shooter() : -1;
@@ -216,7 +216,7 @@ void RadiosityView::draw(const Camera& camera, int width, int height, bool show_
 }
 
 // ---- [the clicked patch] -----------------------------------------------------------------------
-PatchReading RadiosityView::read(const Pick& pick) const {
+PatchReading RadiositySession::read(const Pick& pick) const {
   const PatchMesh::Location where =
       mesh_.locate(pick.mesh, pick.triangle, glm::vec2(pick.barycentric[1], pick.barycentric[2]));
   const Patch& p = mesh_.patches[where.patch];

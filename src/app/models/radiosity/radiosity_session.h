@@ -26,12 +26,12 @@
 
 namespace luz::app {
 
-class RadiosityView {
+class RadiositySession {
 public:
   // Meshes the scene and starts the solver (slide 39 step 1); needs a current GL context.
-  RadiosityView(const Scene& scene, const RadiosityOptions& options);
-  RadiosityView(const RadiosityView&) = delete;
-  RadiosityView& operator=(const RadiosityView&) = delete;
+  RadiositySession(const Scene& scene, const RadiosityOptions& options);
+  RadiositySession(const RadiositySession&) = delete;
+  RadiositySession& operator=(const RadiositySession&) = delete;
 
   // True when this view's mesh and hemicube are those `options` ask for.
   bool built_for(const RadiosityOptions& options) const;
@@ -61,7 +61,7 @@ private:
   PatchMesh mesh_;             // before the solver and the renderer, which keep references to it
   ProgressiveSolver solver_;
   RadiosityRenderer renderer_;
-  RadiosityItemView item_view_;
+  ItemBufferTexture item_view_;
 
   bool colours_stale_ = true;     // the solution changed since the colours were uploaded
   bool heat_map_shown_ = false;   // what the uploaded colours are ...

@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <imgui.h>
 
-#include <fstream>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/inspector.h"
@@ -19,12 +19,12 @@
 
 namespace luz::app {
 
-void RadiosityModel::drop() {
+void RadiosityView::drop() {
   for (const auto& listener : drop_listeners_) listener();
   solution_.reset();
 }
 
-bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture,
+bool RadiosityView::step_and_draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture,
                                    Display display) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
@@ -39,7 +39,7 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
     r.status = RadiosityStatus{};
     r.patch.reset();
     try {
-      solution_ = std::make_unique<RadiosityView>(*state.scene, r.options);
+      solution_ = std::make_unique<RadiositySession>(*state.scene, r.options);
       const PatchMesh& mesh = solution_->mesh();
       state.note = trf("radiosity: {} patches of {} elements, hemicube {}", mesh.shooters.size(), mesh.size(),
                        r.options.hemicube_res);
@@ -68,7 +68,7 @@ bool RadiosityModel::step_and_draw(const Camera& camera, const Viewport& viewpor
 
 // The solver steps here, on the GL thread, within the frame's budget; the picture is the
 // solution so far (vertex colours uploaded after the shots), the shooter highlighted.
-void RadiosityModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void RadiosityView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   RadiosityState& r = viewer_.state().radiosity;
   step_and_draw(camera, viewport, picture, {r.drive.heat_map, r.drive.show_shooter});
   // The clicked patch's values, live as the shots go on.
@@ -78,7 +78,7 @@ void RadiosityModel::draw(const Camera& camera, const Viewport& viewport, gl::Fr
   else r.patch.reset();
 }
 
-void RadiosityModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
+void RadiosityView::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
   ViewerState& state = viewer_.state();
   if (inspect(viewer_, camera, viewport, pixel)) {
     state.show_inspector = true;
@@ -89,11 +89,11 @@ void RadiosityModel::click(const Camera& camera, const Viewport& viewport, glm::
   state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
-void RadiosityModel::panel() { radiosity_section(viewer_.state()); }
+void RadiosityView::panel() { radiosity_section(viewer_.state()); }
 
 // The patch inspector in the corner away from the clicked point, the shooter's hemicube in
 // another, and at shot 0 a hint saying how to start.
-void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
+void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
@@ -116,7 +116,7 @@ void RadiosityModel::windows(const Viewport& viewport, WindowCorners& corners) {
   }
 }
 
-std::string RadiosityModel::status() const {
+std::string RadiosityView::status() const {
   const RadiosityState& r = viewer_.state().radiosity;
   if (!r.status.built) return {};
   // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
@@ -125,7 +125,7 @@ std::string RadiosityModel::status() const {
 }
 
 // Running and stepping show model 5 (the viewer shows the model whose action it is).
-bool RadiosityModel::act(Action action) {
+bool RadiosityView::act(Action action) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
   switch (action) {
@@ -142,12 +142,12 @@ bool RadiosityModel::act(Action action) {
   }
 }
 
-bool RadiosityModel::busy() const {
+bool RadiosityView::busy() const {
   const RadiosityState& r = viewer_.state().radiosity;
   return r.steps > 0 || r.stop_at > 0 || r.remesh;
 }
 
-bool RadiosityModel::animating() const {
+bool RadiosityView::animating() const {
   const RadiosityState& r = viewer_.state().radiosity;
   return r.drive.running || busy() || r.reset;
 }
@@ -158,7 +158,7 @@ bool RadiosityModel::animating() const {
 namespace luz::app {
 namespace {
 
-RadiosityModel& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityModel&>(viewer.view("radiosity")); }
+RadiosityView& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityView&>(viewer.view("radiosity")); }
 
 // `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
 std::string check_radiosity(const ScriptCommand& c) {
@@ -247,11 +247,7 @@ bool run_wait_shots(ViewerServices& viewer, const ScriptCommand& c, std::string&
 }
 
 bool dump(const std::string& path, const nlohmann::json& json, std::string& error) {
-  std::ofstream out(path);
-  out << json.dump(2) << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write the radiosity values", path);
-  return false;
+  return write_json(path, json, "the radiosity values", error);
 }
 
 bool run_dump_patch(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {

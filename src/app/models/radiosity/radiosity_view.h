@@ -1,8 +1,8 @@
 #pragma once
-// Progressive radiosity (slides 29-40) in the viewer: the solver (RadiosityView) stepped on the
+// Progressive radiosity (slides 29-40) in the viewer: the solver (RadiositySession) stepped on the
 // GL thread within a per-frame budget while the model is shown, the solution drawn as it
 // spreads, the clicked patch in its inspector and the shooter's hemicube in a window. The
-// hybrid (hybrid_model.h) reads this view's solution.
+// hybrid (hybrid_view.h) reads this view's solution.
 #include <functional>
 #include <memory>
 #include <span>
@@ -14,9 +14,9 @@
 
 namespace luz::app {
 
-class RadiosityModel final : public ModelView {
+class RadiosityView final : public ModelView {
 public:
-  explicit RadiosityModel(ViewerServices& viewer) : viewer_(viewer) {}
+  explicit RadiosityView(ViewerServices& viewer) : viewer_(viewer) {}
 
   void scene_changed() override { drop(); }
   void emitters_changed() override { drop(); }  // the patches' E come from the scene's Le when meshed
@@ -41,7 +41,7 @@ public:
   bool step_and_draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture, Display display);
 
   // The solver of the solution shown; nullptr before the first step_and_draw (or after a drop).
-  const RadiosityView* solution() const { return solution_.get(); }
+  const RadiositySession* solution() const { return solution_.get(); }
   // Called before the solution goes (a remesh, an edited Le, a new scene): whoever reads it
   // (the hybrid's trace) lets go of it first.
   void on_drop(std::function<void()> listener) { drop_listeners_.push_back(std::move(listener)); }
@@ -50,7 +50,7 @@ public:
 
 private:
   ViewerServices& viewer_;
-  std::unique_ptr<RadiosityView> solution_;
+  std::unique_ptr<RadiositySession> solution_;
   std::vector<std::function<void()>> drop_listeners_;
 };
 

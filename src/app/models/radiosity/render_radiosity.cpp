@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
 
@@ -14,6 +13,7 @@
 #include "app/common/i18n.h"
 #include "core/error.h"
 #include "gl/offscreen_context.h"
+#include "io/atomic_file.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
 #include "radiosity/shooting.h"
@@ -46,17 +46,13 @@ void draw_progress(const ProgressiveSolver& solver, const RadiosityOptions& opti
 }
 
 void write_csv(const std::string& path, const ProgressiveSolver& solver) {
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
-    out << "shot,unshot_power,fraction,seconds\n";
+  const std::string failure = io::write_atomically(path, [&] {
+    std::string csv = "shot,unshot_power,fraction,seconds\n";
     for (const ShotRecord& r : solver.history())
-      out << fmt::format("{},{:.9g},{:.9g},{:.6f}\n", r.shot, r.unshot_power, r.fraction, r.seconds);
-    if (!out) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
+      csv += fmt::format("{},{:.9g},{:.9g},{:.6f}\n", r.shot, r.unshot_power, r.fraction, r.seconds);
+    return csv;
+  });
+  if (!failure.empty()) throw Error(ErrorKind::output, trf("--csv {}: cannot write the file", path));
 }
 
 // The work budget bounds a run at the defaults only: a stopping rule given on the command line

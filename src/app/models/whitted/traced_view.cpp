@@ -1,12 +1,12 @@
 #include "app/models/whitted/traced_view.h"
 
 #include <cmath>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/json_file.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/overlays.h"
@@ -14,18 +14,18 @@
 
 namespace luz::app {
 
-TracedModel::~TracedModel() { tracer_.reset(); }
+TracedView::~TracedView() { tracer_.reset(); }
 
-WhittedView& TracedModel::tracer() {
-  if (!tracer_) tracer_ = std::make_unique<WhittedView>(*viewer_.state().scene);
+WhittedWorker& TracedView::tracer() {
+  if (!tracer_) tracer_ = std::make_unique<WhittedWorker>(*viewer_.state().scene);
   return *tracer_;
 }
 
-void TracedModel::set_diffuse_source(const rt::DiffuseSource* source) {
+void TracedView::set_diffuse_source(const rt::DiffuseSource* source) {
   if (tracer_ || source) tracer().set_diffuse_source(source);
 }
 
-void TracedModel::scene_changed() {
+void TracedView::scene_changed() {
   tracer_.reset();  // cancels a trace; the tree below belongs to the old scene too
   ray_tree_.reset();
   picked_.reset();
@@ -33,13 +33,13 @@ void TracedModel::scene_changed() {
   progress_ = TraceProgress{};
 }
 
-bool TracedModel::cancel_trace() { return tracer_ && tracer_->cancel(); }
+bool TracedView::cancel_trace() { return tracer_ && tracer_->cancel(); }
 
-Fingerprint TracedModel::fingerprint(const Camera& camera, glm::ivec2 size) const {
+Fingerprint TracedView::fingerprint(const Camera& camera, glm::ivec2 size) const {
   return {camera.to_world, camera.yfov, size.x, size.y, current_options(), editable_values(*viewer_.state().scene)};
 }
 
-void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
+void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   ViewerState& state = viewer_.state();
   const glm::ivec2 size = viewport.pixels;
   if (requests.cancel) {
@@ -110,9 +110,9 @@ void TracedModel::draw(const Camera& camera, const Viewport& viewport, gl::Frame
 
 // Slide 24: the clicked pixel's ray tree, traced here on the GL thread (a few dozen rays), listed
 // in the panel and drawn over the picture until another click, X, or a new scene.
-void TracedModel::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
+void TracedView::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
   viewer_.inspection().pick.reset();  // the local model's inspector is not Whitted's
-  WhittedView& t = tracer();
+  WhittedWorker& t = tracer();
   if (t.showing() && t.fingerprint() != fingerprint(camera, viewport.pixels))
     t.cancel();  // an edit not seen yet by the frame: the trace must not read the old scene
   ViewerState& state = viewer_.state();
@@ -129,7 +129,7 @@ void TracedModel::click(const Camera& camera, const Viewport& viewport, glm::ive
                     pixel.x, pixel.y, tree.nodes.size());
 }
 
-bool TracedModel::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why) {
+bool TracedView::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why) {
   const ViewerState& state = viewer_.state();
   const std::optional<rt::WhittedOptions> options = options_for_trace(why);
   if (!options) return false;
@@ -141,7 +141,7 @@ bool TracedModel::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pi
   return true;
 }
 
-bool TracedModel::act(Action action) {
+bool TracedView::act(Action action) {
   switch (action) {
     case Action::trace_view: requests.trace = true; return true;
     case Action::cancel_trace: requests.cancel = true; return true;
@@ -150,14 +150,14 @@ bool TracedModel::act(Action action) {
   }
 }
 
-std::string TracedModel::status() const {
+std::string TracedView::status() const {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::raster) return hybrid() ? tr("(radiosity picture)") : tr("(raster view)");
   if (t.phase == TracePhase::tracing) return trf("tracing {}%", t.total > 0 ? 100 * t.done / t.total : 0);
   return trf("traced: {:.2f} s, {:.2f} Mrays/s", t.counters.seconds, t.counters.rays_per_second() / 1e6);
 }
 
-void TracedModel::windows(const Viewport& viewport, WindowCorners& corners) {
+void TracedView::windows(const Viewport& viewport, WindowCorners& corners) {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::done) return;
   begin_hint("trace hint", viewport, corners, 8.0f * viewer_.ui_scale());
@@ -181,13 +181,13 @@ namespace {
 
 // The traced panes shown (side by side, every one of them), or Whitted's, shown first in the
 // active pane as Enter shows it.
-std::vector<TracedModel*> traced(ViewerServices& viewer) {
-  std::vector<TracedModel*> panes;
+std::vector<TracedView*> traced(ViewerServices& viewer) {
+  std::vector<TracedView*> panes;
   for (ModelView* pane : viewer.pane_views())
-    if (auto* t = dynamic_cast<TracedModel*>(pane)) panes.push_back(t);
+    if (auto* t = dynamic_cast<TracedView*>(pane)) panes.push_back(t);
   if (panes.empty()) {
     viewer.set_model(*find_model("whitted"));
-    panes.push_back(&static_cast<TracedModel&>(viewer.shown()));
+    panes.push_back(&static_cast<TracedView&>(viewer.shown()));
   }
   return panes;
 }
@@ -200,35 +200,27 @@ std::string check_trace(const ScriptCommand& c) {
 
 // As Enter; without --no-wait the script waits for the end.
 bool run_trace(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
-  for (TracedModel* pane : traced(viewer)) pane->trace(c.args.empty(), !c.args.empty() && c.args[0] == "--held");
+  for (TracedView* pane : traced(viewer)) pane->trace(c.args.empty(), !c.args.empty() && c.args[0] == "--held");
   return true;
 }
 
 bool run_wait_trace(ViewerServices& viewer, const ScriptCommand&, std::string&) {
   for (ModelView* pane : viewer.pane_views())
-    if (auto* t = dynamic_cast<TracedModel*>(pane)) t->wait_for_trace();
+    if (auto* t = dynamic_cast<TracedView*>(pane)) t->wait_for_trace();
   return true;
 }
 
-bool write(const std::string& path, const std::string& text, const char* what, std::string& error) {
-  std::ofstream out(path);
-  out << text << '\n';
-  if (out) return true;
-  error = fmt::format("{}: cannot write {}", path, what);
-  return false;
-}
-
 bool run_dump_ray_tree(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  auto* shown = dynamic_cast<TracedModel*>(&viewer.shown());
+  auto* shown = dynamic_cast<TracedView*>(&viewer.shown());
   if (!shown || !shown->ray_tree()) {
     error = "there is no ray tree: click a pixel in the Whitted model first";
     return false;
   }
-  return write(c.args[0], shown->ray_tree()->to_json(), "the ray tree", error);
+  return write_text(c.args[0], shown->ray_tree()->to_json() + '\n', "the ray tree", error);
 }
 
 bool run_dump_trace(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  auto* shown = dynamic_cast<TracedModel*>(&viewer.shown());
+  auto* shown = dynamic_cast<TracedView*>(&viewer.shown());
   const TraceProgress t = shown ? shown->progress() : TraceProgress{};
   nlohmann::json j;
   j["phase"] = t.phase == TracePhase::raster ? "raster" : t.phase == TracePhase::tracing ? "tracing" : "done";
@@ -237,7 +229,7 @@ bool run_dump_trace(ViewerServices& viewer, const ScriptCommand& c, std::string&
   j["seconds"] = t.seconds;
   for (int k = 0; k < rt::kRayKinds; ++k) j["rays"][rt::to_string(rt::RayKind(k))] = t.counters.rays[size_t(k)];
   j["intersection_tests"] = t.counters.intersection_tests;
-  return write(c.args[0], j.dump(2), "the trace's state", error);
+  return write_json(c.args[0], j, "the trace's state", error);
 }
 
 constexpr ScriptVerb verbs[] = {

@@ -1,7 +1,7 @@
 #pragma once
 // What Whitted's model and the hybrid share in the viewer: the untraced picture until a trace is
 // asked for (Enter, the Render button, `trace`), then the traced tiles over it as they come from
-// the worker (WhittedView), back to the untraced picture when anything the trace depends on
+// the worker (WhittedWorker), back to the untraced picture when anything the trace depends on
 // changes; the ray tree of a clicked pixel (slide 24) drawn over either. The view that traces
 // owns its trace: it cancels it when it is hidden, when the view changes and when the scene goes.
 #include <memory>
@@ -25,10 +25,10 @@ struct TraceRequests {
   bool held = false;  // the trace asked for keeps its tiles back until cancelled (`trace --held`)
 };
 
-class TracedModel : public ModelView {
+class TracedView : public ModelView {
 public:
-  explicit TracedModel(ViewerServices& viewer) : viewer_(viewer) {}
-  ~TracedModel() override;  // cancels and joins the trace before what it reads goes
+  explicit TracedView(ViewerServices& viewer) : viewer_(viewer) {}
+  ~TracedView() override;  // cancels and joins the trace before what it reads goes
 
   void scene_changed() override;
   // A trace asked for and not started yet goes too: it would start by itself whenever the view
@@ -86,12 +86,12 @@ protected:
 
 private:
   Fingerprint fingerprint(const Camera& camera, glm::ivec2 size) const;
-  WhittedView& tracer();
+  WhittedWorker& tracer();
   // The pixel's ray tree, traced with the options and the scene as they are now; false (`why`
   // saying why, or empty while the hybrid's solver runs) when no trace can start yet.
   bool pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pixel, std::string& why);
 
-  std::unique_ptr<WhittedView> tracer_;  // made when first needed (it builds Embree's BVH)
+  std::unique_ptr<WhittedWorker> tracer_;  // made when first needed (it builds Embree's BVH)
   std::unique_ptr<RayTreeDrawing> tree_drawing_;
   std::optional<rt::RayTree> ray_tree_;
   // What the tree shown was traced from: a switch or an edit traces the same pixel's tree again,
@@ -109,7 +109,7 @@ private:
 
 // The panel's part shared by Whitted and the hybrid (panel_whitted.cpp): Render, progress,
 // counters, the ray tree and the tracer's switches.
-void traced_section(ViewerState& state, TracedModel& view);
+void traced_section(ViewerState& state, TracedView& view);
 
 // The tracer's script verbs (Whitted's registry entry): trace, wait-trace, dump-ray-tree,
 // dump-trace; they act on the traced model shown, or show Whitted's.

@@ -37,7 +37,7 @@ const char* kind_label(rt::RayKind kind) {
   return "?";
 }
 
-void progress_and_counters(TracedModel& view) {
+void progress_and_counters(TracedView& view) {
   const TraceProgress& t = view.progress();
   if (t.phase == TracePhase::tracing) {
     if (ImGui::Button(tr("cancel  [Backspace]"))) view.requests.cancel = true;
@@ -187,7 +187,7 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   }
 }
 
-void ray_tree(ViewerState& state, TracedModel& view) {
+void ray_tree(ViewerState& state, TracedView& view) {
   if (!ImGui::TreeNodeEx(tr("ray tree (slide 24)"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (!view.ray_tree()) {
     dim_text(tr("click a pixel: its rays are drawn over the scene"));
@@ -228,7 +228,7 @@ void ray_tree(ViewerState& state, TracedModel& view) {
 
 // What Whitted's and the hybrid's sections share: the trace's progress and counters, the ray
 // tree of the clicked pixel, and the tracer's switches.
-void traced_section(ViewerState& state, TracedModel& view) {
+void traced_section(ViewerState& state, TracedView& view) {
   ImGui::Spacing();
   progress_and_counters(view);
   ImGui::Spacing();

@@ -1,13 +1,13 @@
 #pragma once
 // Whitted's model (slides 20-27) in the viewer: the raster (Phong) view until Enter, then the
-// trace of that view tile by tile (traced_model.h).
+// trace of that view tile by tile (traced_view.h).
 #include "app/models/whitted/traced_view.h"
 
 namespace luz::app {
 
-class WhittedModel final : public TracedModel {
+class WhittedView final : public TracedView {
 public:
-  using TracedModel::TracedModel;
+  using TracedView::TracedView;
   void panel() override;
   bool hybrid() const override { return false; }
 

@@ -12,16 +12,14 @@
 // background are refreshed from the viewer's at every start (and before a ray tree is traced):
 // the panel can edit the viewer's scene while a trace runs without a data race, and the viewer
 // cancels the trace when it sees such an edit (see Fingerprint).
-#include <atomic>
-#include <chrono>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
+#include "app/viewer/background_render.h"
 #include "app/viewer/viewer_state.h"
 #include "gl/framebuffer.h"
 #include "raytracing/counters.h"
@@ -31,24 +29,14 @@
 
 namespace luz::app {
 
-// Everything a traced picture depends on, to tell when the picture on screen is no longer the
-// view's (the camera moved, the window was resized, an option or the scene was edited).
-struct Fingerprint {
-  glm::mat4 to_world{1.0f};
-  float yfov = 0.0f;
-  int width = 0, height = 0;
-  rt::WhittedOptions options;
-  std::vector<float> scene;  // the editable numbers of lights, materials and scene settings
-  bool operator==(const Fingerprint&) const = default;
-};
-std::vector<float> editable_values(const Scene& scene);
+using Fingerprint = ViewFingerprint<rt::WhittedOptions>;
 
-class WhittedView {
+class WhittedWorker {
 public:
-  explicit WhittedView(const Scene& scene);
-  ~WhittedView();  // cancels and joins
-  WhittedView(const WhittedView&) = delete;
-  WhittedView& operator=(const WhittedView&) = delete;
+  explicit WhittedWorker(const Scene& scene);
+  ~WhittedWorker();  // cancels and joins
+  WhittedWorker(const WhittedWorker&) = delete;
+  WhittedWorker& operator=(const WhittedWorker&) = delete;
 
   // Starts tracing (a running trace is cancelled first). `raster` holds the picture the local
   // model drew of the same view, w x h: the tiles not traced yet show it. A `held` trace keeps
@@ -80,8 +68,6 @@ public:
                           const rt::WhittedOptions& options);
 
 private:
-  void sync(const Scene& scene);  // the tracer's copy takes the viewer's editable values
-
   Scene copy_;
   rt::WhittedRenderer tracer_;
   TracePhase phase_ = TracePhase::raster;
@@ -94,15 +80,12 @@ private:
   Image pixels_;
   std::vector<rt::Tile> pending_;
   int done_ = 0;
-  std::atomic<bool> cancel_{false};
-  std::atomic<bool> finished_{false};
-  std::jthread worker_;
 
   int uploaded_done_ = 0, total_ = 0;
-  std::chrono::steady_clock::time_point began_;
   double seconds_ = 0.0;
   rt::Counters counters_;
-  std::vector<float> upload_;  // one tile's rows, bottom-up, for glTexSubImage2D
+  std::vector<float> upload_;  // one tile's rows, for upload_pixels
+  BackgroundWorker worker_;    // last: it stops before the members its job uses go
 };
 
 }  // namespace luz::app

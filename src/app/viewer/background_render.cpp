@@ -1,0 +1,80 @@
+#include "app/viewer/background_render.h"
+
+#include <initializer_list>
+
+#include "gl/functions.h"
+
+namespace luz::app {
+
+std::vector<float> editable_values(const Scene& scene) {
+  std::vector<float> v;
+  auto add = [&v](std::initializer_list<float> values) { v.insert(v.end(), values); };
+  auto rgb = [&add](const Rgb& c) { add({c.r, c.g, c.b}); };
+  for (const Light& l : scene.lights) {
+    add({float(l.enabled), float(l.type), l.inner_cone, l.outer_cone, l.warn_exponent,
+         float(l.attenuation.classroom), l.attenuation.c.x, l.attenuation.c.y, l.attenuation.c.z});
+    rgb(l.intensity);
+    rgb(l.position);
+    rgb(l.direction);
+  }
+  for (const Material& m : scene.materials) {
+    rgb(m.ka), rgb(m.kd), rgb(m.ks), rgb(m.kr), rgb(m.kt), rgb(m.emission);
+    add({m.shininess, m.ior});
+  }
+  rgb(scene.ambient);
+  rgb(scene.background);
+  v.push_back(float(scene.area_lights.size()));
+  return v;
+}
+
+void copy_editable(const Scene& from, Scene& copy) {
+  copy.lights = from.lights;
+  copy.materials = from.materials;
+  copy.area_lights = from.area_lights;
+  copy.ambient = from.ambient;
+  copy.background = from.background;
+}
+
+void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, int y0, int x1, int y1,
+                   std::vector<float>& scratch) {
+  // GL's rows go bottom-up: image row y is texture row height - 1 - y.
+  const int w = x1 - x0, h = y1 - y0;
+  scratch.resize(size_t(w) * size_t(h) * 3);
+  for (int row = 0; row < h; ++row)
+    for (int x = 0; x < w; ++x) {
+      const Rgb& p = image.at(x0 + x, y1 - 1 - row);
+      float* out = &scratch[(size_t(row) * size_t(w) + size_t(x)) * 3];
+      out[0] = p.r, out[1] = p.g, out[2] = p.b;
+    }
+  glBindTexture(GL_TEXTURE_2D, target.colour_texture());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, x0, image.height - y1, w, h, GL_RGB, GL_FLOAT, scratch.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void BackgroundWorker::start(Job job) {
+  stop();
+  cancel_ = false;
+  finished_ = false;
+  began_ = std::chrono::steady_clock::now();
+  thread_ = std::jthread([this, job = std::move(job)] {
+    job(cancel_);
+    finished_.store(true, std::memory_order_release);
+  });
+}
+
+void BackgroundWorker::stop() {
+  if (!thread_.joinable()) return;
+  cancel_ = true;
+  thread_.join();
+}
+
+void BackgroundWorker::join() {
+  if (thread_.joinable()) thread_.join();
+}
+
+double BackgroundWorker::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+}
+
+}  // namespace luz::app
