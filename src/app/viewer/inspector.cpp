@@ -133,6 +133,15 @@ namespace {
 
 void rgb_cell(const Rgb& c) { ImGui::Text("%.4g %.4g %.4g", double(c.r), double(c.g), double(c.b)); }
 
+// A row of a two-column table: a quantity's name and its RGB value.
+void row(const char* name, const Rgb& value) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  ImGui::TableNextColumn();
+  rgb_cell(value);
+}
+
 }  // namespace
 
 void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
@@ -182,13 +191,6 @@ void draw_inspector(const Scene& scene, const InspectorReading& r, bool& open) {
                        int(r.emitting_side && material.is_emissive()) + int(r.terms.reflection != Rgb(0.0f)) +
                        int(r.terms.fog < 1.0f) + int(r.transparent);
   if (ImGui::BeginTable("sum", 2, flags, ImVec2(0.0f, text_wide_table_height(sum_rows)))) {
-    auto row = [](const char* name, const Rgb& value) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name);
-      ImGui::TableNextColumn();
-      rgb_cell(value);
-    };
     row("I_A = Ia ka", r.terms.ambient);
     row(tr("sum I_D"), r.terms.diffuse);
     if (r.kd_texture != Rgb(1.0f)) row(tr("kd texture"), r.kd_texture);
@@ -228,13 +230,6 @@ void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open)
   // Each column as wide as its text: a window too narrow for the table scrolls it sideways.
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | kTextWideTable;
   if (ImGui::BeginTable("patch", 2, flags, ImVec2(0.0f, text_wide_table_height(7)))) {
-    auto row = [](const char* name, const Rgb& value) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name);
-      ImGui::TableNextColumn();
-      rgb_cell(value);
-    };
     row(tr("E = π Le (emitted)"), r.E);
     row("ρ = kd", r.rho);
     ImGui::TableNextRow();
