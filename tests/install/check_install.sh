@@ -41,6 +41,16 @@ mkdir -p "$scratch/elsewhere"
 
 # --- the installed luz, from another folder, the build and source trees out of reach --------
 hidden= hide=
+# Under the sanitizers (.ci/sanitize) LeakSanitizer reads its suppressions from the source tree,
+# which is about to be hidden: the installed luz reads a copy of them instead.
+case "${LSAN_OPTIONS:-}" in
+  *suppressions=*)
+    supp=$(printf '%s\n' "$LSAN_OPTIONS" | tr ':' '\n' | sed -n 's/^suppressions=//p')
+    cp "$supp" "$scratch/lsan.supp"
+    LSAN_OPTIONS=$(printf '%s' "$LSAN_OPTIONS" | sed "s|suppressions=[^:]*|suppressions=$scratch/lsan.supp|")
+    export LSAN_OPTIONS
+    ;;
+esac
 if unshare --user --map-root-user --mount sh -c 'mount -t tmpfs none "$1"' sh "$scratch" 2>/dev/null; then
   hidden="unshare --user --map-root-user --mount" hide=hide
 else
