@@ -30,6 +30,7 @@
 
 #include "core/i18n.h"
 #include "io/image_decoders.h"
+#include "io/jpeg_segments.h"
 
 namespace luz::io {
 using i18n::tr;
@@ -74,7 +75,7 @@ uint32_t big_endian(std::span<const unsigned char> bytes, size_t at) {
 
 // The size a PNG's IHDR claims (ISO/IEC 15948, 11.2.2: the first chunk; width and height at bytes
 // 16 and 20), for the message when stb_image refuses a header: it refuses more than 2^30 bytes of
-// pixels without saying what size it read.
+// pixels without saying what size it read. A JPEG's is its frame header's (jpeg_segments.h).
 std::optional<std::pair<int64_t, int64_t>> png_claimed_size(std::span<const unsigned char> bytes) {
   if (bytes.size() < 24 || std::string_view(reinterpret_cast<const char*>(bytes.data()) + 12, 4) != "IHDR")
     return std::nullopt;
@@ -96,30 +97,6 @@ std::string png_chunk_problem(std::span<const unsigned char> bytes) {
     at += 12 + length;
   }
   return tr("the file is cut short");
-}
-
-// stb_image 2.27 builds a JPEG Huffman table (DHT, ITU T.81 B.2.4.2) from its 16 counts of codes
-// without checking that they add up to at most 256, the symbols a table holds: more writes past
-// the table (a fuzzed 470-byte file). Every FF C4 in the bytes is read as the DHT segment it would
-// start, wherever stb_image might look for one, even inside another segment's data (where a
-// valid file may hold those two bytes: it would be refused if the table they start looked bad).
-std::string jpeg_huffman_problem(std::span<const unsigned char> bytes) {
-  for (size_t at = 0; at + 4 <= bytes.size(); ++at) {
-    if (bytes[at] != 0xff || bytes[at + 1] != 0xc4) continue;
-    // Tables follow while the segment's length says bytes remain, read as stb_image reads them:
-    // class and id, 16 counts, the symbols; zeros past the end of the bytes.
-    auto byte = [&](size_t i) { return i < bytes.size() ? bytes[i] : 0; };
-    int64_t remaining = int64_t(bytes[at + 2]) << 8 | bytes[at + 3];
-    remaining -= 2;
-    for (size_t table = at + 4; remaining > 0;) {
-      size_t symbols = 0;
-      for (size_t length = 0; length < 16; ++length) symbols += byte(table + 1 + length);
-      if (symbols > 256) return trf("a Huffman table of {} codes (at most 256)", symbols);
-      table += 17 + symbols;
-      remaining -= int64_t(17 + symbols);
-    }
-  }
-  return {};
 }
 
 // stb_image 2.27 decodes a Radiance scanline's run-length code (Ward, "Real Pixels", Graphics
@@ -166,16 +143,24 @@ std::optional<Image> decode_with_stb(std::span<const unsigned char> bytes, Image
     error = unreadable(format, tr("larger than 2 GB"));
     return std::nullopt;
   }
+  // The size the header claims, for the message when stb_image refuses the header.
+  std::optional<std::pair<int64_t, int64_t>> claimed = format == ImageFormat::png ? png_claimed_size(bytes) : std::nullopt;
   if (format == ImageFormat::jpeg) {  // before stbi_info, which builds the tables before the frame header
-    if (const std::string problem = jpeg_huffman_problem(bytes); !problem.empty()) {
-      error = unreadable(format, problem);
+    const JpegSegments segments = walk_jpeg_segments(bytes);
+    if (!segments.huffman_problem.empty()) {
+      error = unreadable(format, segments.huffman_problem);
       return std::nullopt;
     }
+    // T.81 lets a frame header leave the height to a DNL segment after the first scan (B.2.5).
+    if (segments.size && segments.size->second == 0) {
+      error = unreadable(format, tr("its height comes after the first scan (a DNL segment), which Luz does not read"));
+      return std::nullopt;
+    }
+    claimed = segments.size;
   }
   // The size the header claims, read without decoding (stb_image stops before it allocates).
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels)) {
-    const auto claimed = format == ImageFormat::png ? png_claimed_size(bytes) : std::nullopt;
     const std::string problem = claimed ? size_problem(claimed->first, claimed->second, 1, 0) : std::string();
     error = problem.empty() ? unreadable(format, tr("its header is cut or damaged")) : trf("header: {}", problem);
     return std::nullopt;
