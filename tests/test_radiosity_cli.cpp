@@ -1,5 +1,6 @@
 // `luz render --model radiosity` as a user calls it: its flags, their usage errors (exit 2),
 // the residual history in CSV, and `luz bench radiosity`'s table.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -211,7 +212,7 @@ double last_fraction(const std::filesystem::path& csv_path) {
 }
 
 // At the defaults a run is bounded by the work done, not by seconds: a budget set low stops the
-// shooting at the first shot that reaches it, the picture is written, and the message says it
+// shooting at the first shot that reaches it, the picture is written, and a warning says it
 // stopped early, how much power is left unshot (the history's last row) and how to go further.
 TEST(RadiosityCli, TheWorkBudgetStopsADefaultRunAndSaysHowFarItGot) {
   test::ScratchDir dir;
@@ -232,6 +233,12 @@ TEST(RadiosityCli, TheWorkBudgetStopsADefaultRunAndSaysHowFarItGot) {
     const double fraction = last_fraction(csv);
     EXPECT_NEAR(number_after(bounded.output, "elements): "), 100.0 * fraction, 0.006) << bounded.output;
     EXPECT_GT(fraction, 0.005) << "stopped before the default convergence";
+    // -q silences the summaries, never a warning: the picture falls short of the defaults' promise.
+    const auto quiet = run_luz({"render", cornell(), "--model", model, "--out", out.string(), "--size", "32x32",
+                                "--meshing", "uniform", "--work-budget", "100000", "-q"});
+    ASSERT_EQ(quiet.exit_code, 0) << model << ": " << quiet.output;
+    EXPECT_TRUE(quiet.output.starts_with("warning: radiosity: stopped early")) << quiet.output;
+    EXPECT_EQ(std::count(quiet.output.begin(), quiet.output.end(), '\n'), 1) << "the warning alone: " << quiet.output;
   }
   // A stopping rule given by the user lifts the budget: --converge runs to its threshold.
   const auto asked = run_luz({"render", cornell(), "--model", "radiosity", "--out", (dir / "c.png").string(),

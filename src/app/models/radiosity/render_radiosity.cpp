@@ -106,13 +106,17 @@ void run_radiosity_solver(ProgressiveSolver& solver, const RenderSettings& setti
                            100.0 * solver.unshot_fraction(), solving()));
   if (!settings.quiet && out_of_time)
     fmt::print("{}\n", trf("radiosity: stopped by --time {:g} before --converge or --shots", *settings.seconds));
-  if (out_of_work)
+  // A picture short of what the defaults promise is a warning: -q keeps it, as it keeps every warning.
+  if (out_of_work) {
     // xgettext:no-c-format
-    fmt::print(stderr, "{}\n", trf("radiosity: stopped early, at the work budget of {:.3g} element-shots ({} shots on {} elements): "
-                                   "{:.2f}% of the emitted power is still unshot (the defaults stop below {:.2g}%); to go "
-                                   "further give --time SECONDS or --converge EPS (or a larger --work-budget)",
-                                   options.work_budget, solver.shots(), mesh.size(), 100.0 * solver.unshot_fraction(),
-                                   100.0 * double(options.converge)));
+    const std::string stopped = trf("radiosity: stopped early, at the work budget of {:.3g} element-shots ({} shots on "
+                                    "{} elements): {:.2f}% of the emitted power is still unshot (the defaults stop "
+                                    "below {:.2g}%); to go further give --time SECONDS or --converge EPS (or a larger "
+                                    "--work-budget)",
+                                    options.work_budget, solver.shots(), mesh.size(), 100.0 * solver.unshot_fraction(),
+                                    100.0 * double(options.converge));
+    fmt::print(stderr, "{}\n", trf("warning: {}", stopped));
+  }
 }
 
 Image render_radiosity(const Scene& scene, const Camera& camera, int width, int height,
