@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "core/exposure.h"
 #include "core/image_compare.h"
 #include "gltf_fixture.h"
 #include "io/gltf_loader.h"
@@ -257,6 +258,42 @@ TEST(Exposure, TheTwoModelsOfAGridShareOneFittedExposure) {
         difference = std::max(difference, double(std::abs(pane.at(x, y).g - sheet.at(left + x, y).g)));
     EXPECT_LE(difference, 1e-6);
   }
+}
+
+// The EV a `luz render` run printed ("exposure +1.9 EV").
+float printed_exposure(const std::string& output) {
+  const size_t at = output.find("exposure ");
+  return at == std::string::npos ? NAN : std::stof(output.substr(at + 9));
+}
+
+TEST(Exposure, SeparateRunsOfTheModelsShareTheScenesFittedExposure) {
+  // Alone, each model's picture calls for its own exposure (the local model lacks the light the
+  // walls pass on, the path tracer has it). --exposure auto fits one picture of the scene, the
+  // same for every model, so separate runs come out at one exposure and compare, as a grid's
+  // panes do.
+  ScratchDir dir;
+  const std::string scene = (scene_dir() / "cornell_box.gltf").string();
+  std::vector<float> own, shared;
+  for (const char* model : {"phong", "whitted", "path"}) {
+    SCOPED_TRACE(model);
+    const std::string exr = (dir / (std::string(model) + ".exr")).string();
+    const CommandResult alone = run_luz({"render", scene, "--model", model, "--size", "40x30", "--out", exr});
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    const std::optional<float> fitted = fitted_exposure(picture_key(io::read_image(exr)));
+    ASSERT_TRUE(fitted);
+    own.push_back(*fitted);
+    const CommandResult run = run_luz({"render", scene, "--model", model, "--size", "40x30", "--exposure", "auto",
+                                       "--out", (dir / (std::string(model) + ".png")).string()});
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    shared.push_back(printed_exposure(run.output));
+  }
+  EXPECT_GE(*std::max_element(own.begin(), own.end()) - *std::min_element(own.begin(), own.end()), 0.3f)
+      << "the models' own fits differ";
+  for (const float ev : shared) EXPECT_EQ(ev, shared.front());
+  const CommandResult grid = run_luz({"render", scene, "--model", "phong,path", "--size", "80x30", "--exposure",
+                                      "auto", "--out", (dir / "grid.png").string()});
+  ASSERT_EQ(grid.exit_code, 0) << grid.output;
+  EXPECT_EQ(printed_exposure(grid.output), shared.front()) << grid.output;
 }
 
 }  // namespace

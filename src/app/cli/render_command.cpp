@@ -95,10 +95,21 @@ const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene) 
   return scene.cameras[size_t(index)];
 }
 
-float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture) {
+Image exposure_key_picture(const Scene& scene, const Camera& camera) {
+  RenderSettings reference;
+  reference.model = "path";
+  reference.quiet = true;
+  reference.whitted.spp = kExposureKeySamples;
+  reference.given_flags.push_back({"--spp", "sampling"});
+  const float aspect = camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f;
+  const int width = std::clamp(int(std::lround(float(kExposureKeyHeight) * aspect)), 1, 4 * kExposureKeyHeight);
+  return find_model("path")->render(scene, camera, width, kExposureKeyHeight, reference).image;
+}
+
+float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Camera& camera, const Image& picture) {
   if (settings.exposure) return *settings.exposure;
   if (settings.exposure_auto) {
-    const PictureKey key = picture_key(picture);
+    const PictureKey key = picture_key(exposure_key_picture(scene, camera));
     if (almost_no_light(key))
       fmt::print(stderr, "{}\n", trf("warning: {}: {}", settings.out, almost_no_light_note(key)));
     if (const std::optional<float> fitted = fitted_exposure(key)) return *fitted;
@@ -148,7 +159,7 @@ int run_render(const RenderSettings& settings) {
     const auto start = Clock::now();
     Rendered rendered = model->render(scene, camera, width, height, settings);
     const double model_seconds = seconds_since(start);
-    const float exposure = chosen_exposure(settings, scene, rendered.image);
+    const float exposure = chosen_exposure(settings, scene, camera, rendered.image);
     const auto writing = Clock::now();
     try {
       io::write_image(rendered.image, settings.out, exposure);

@@ -73,10 +73,20 @@ bool parse_rgb(const std::string& text, Rgb& colour);
 // scene's cameras when there is none of that name.
 const Camera& chosen_camera(const RenderSettings& settings, const Scene& scene);
 
-// The PNG's exposure: --exposure's number, the picture's fitted one with --exposure auto, else
-// the scene's. Where no number was given, a picture far off the exposure it gets is warned of on
-// stderr, with the way out.
-float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Image& picture);
+// What --exposure auto fits: one picture of the scene from `camera`, the same whichever model is
+// asked for, so that separate runs of the models (and a grid's panes) share one exposure and
+// compare. It is the reference model's, the path tracer's (seed 0), with the light every model
+// shows, direct and interreflected: kExposureKeyHeight rows of kExposureKeySamples samples, whose
+// fit is within 0.3 EV of a 4096-sample picture's on the shipped scenes (docs/scene_format.md);
+// fewer samples leave dark noisy pixels that pull the log-average down.
+inline constexpr int kExposureKeyHeight = 60;
+inline constexpr int kExposureKeySamples = 64;
+Image exposure_key_picture(const Scene& scene, const Camera& camera);
+
+// The PNG's exposure: --exposure's number, the one fitted to exposure_key_picture with --exposure
+// auto, else the scene's. Where no number was given, a `picture` far off the exposure it gets is
+// warned of on stderr, with the way out.
+float chosen_exposure(const RenderSettings& settings, const Scene& scene, const Camera& camera, const Image& picture);
 
 // Where --ray-tree's JSON goes: beside the image, `<out without extension>.ray-tree.json`.
 std::filesystem::path ray_tree_path(const std::filesystem::path& out);

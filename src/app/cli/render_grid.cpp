@@ -142,9 +142,10 @@ Sheet render_sheet(const RenderSettings& settings, const Scene& scene, const Cam
         std::copy_n(&panes[i].at(0, y), sheet.pane_width, &sheet.image.at(left, top + y));
     }
   };
-  // One exposure for all the panes, so that they compare, chosen before the labels go on.
+  // One exposure for all the panes, so that they compare (with --exposure auto the scene's, as
+  // each model alone gets it), chosen before the labels go on.
   assemble();
-  sheet.exposure = chosen_exposure(settings, scene, sheet.image);
+  sheet.exposure = chosen_exposure(settings, scene, camera, sheet.image);
   if (models.size() > 1) {
     const LabelFont font;
     for (size_t i = 0; i < panes.size(); ++i) draw_label(panes[i], font, model_label(models[i]), sheet.exposure);
