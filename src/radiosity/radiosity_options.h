@@ -77,7 +77,7 @@ struct RadiosityOptions {
   // a scene of tens of thousands of triangles meets it in about a minute and says how far it
   // got. `luz render` lifts it when --shots, --converge or --time is given; 0 = no bound. The
   // viewer shows how far the solution is and leaves the stopping to the user.
-  double work_budget = 1e8;
+  double work_budget = 3e8;
   // Overshooting (Feda & Purgathofer 1992, read as over-relaxation by Gortler, Cohen &
   // Slusallek 1993): a patch shoots `overshoot` times its unshot radiosity and keeps the
   // negative remainder (1 - overshoot) x unshot to shoot back later. 1 = plain shooting;
