@@ -47,7 +47,9 @@ float WindowCorners::docked_top() const {
   for (const ImGuiWindow* w : g.Windows) {
     const bool this_frame = w->LastFrameActive == g.FrameCount && !w->Hidden;
     const bool own = !(w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup));
-    if (this_frame && own && w->Pos.x >= dock_.origin.x && w->Pos.x < dock_.origin.x + dock_.size.x)
+    const bool in_dock = w->Pos.x >= dock_.origin.x && w->Pos.x < dock_.origin.x + dock_.size.x &&
+                         w->Pos.y >= dock_.origin.y && w->Pos.y < dock_.origin.y + dock_.size.y;
+    if (this_frame && own && in_dock)
       bottom = std::max(bottom, w->Pos.y + w->Size.y);
   }
   return bottom;

@@ -34,9 +34,10 @@ public:
   // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
   // Docked: the dock's room below the windows already in it.
   glm::vec4 take_left_half();
-  // A lesson's dock beside the picture (Layout::dock): every window placed from now on, hints
-  // included, goes there instead, one under the other below those already in it (the caption
-  // first), as wide as the dock. None covers the picture.
+  // A lesson's dock beside the picture (Layout::dock), or its windows' column right of the
+  // caption in a dock below it: every window placed from now on, hints included, goes there
+  // instead, one under the other below those already in it (the caption first, when it is
+  // there), as wide as the dock. None covers the picture.
   void dock_in(const Viewport& dock) { dock_ = dock; }
   bool docked() const { return !dock_.empty(); }
   const Viewport& dock() const { return dock_; }
