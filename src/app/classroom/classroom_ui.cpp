@@ -9,12 +9,16 @@ namespace luz::app {
 
 namespace {
 
-// `label`'s button on the current line when it fits there, else on the next (a narrow dock).
-bool button_on_this_line(const char* label) {
+// Whether `label`'s button fits on the current line, right of the last item.
+bool fits_on_this_line(const char* label) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float width = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * style.FramePadding.x;
-  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
-    ImGui::SameLine();
+  return ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+}
+
+// `label`'s button on the current line when it fits there, else on the next (a narrow dock).
+bool button_on_this_line(const char* label) {
+  if (fits_on_this_line(label)) ImGui::SameLine();
   return ImGui::Button(label);
 }
 
@@ -35,7 +39,12 @@ void draw_whole_caption(const LessonPlayer& player, i18n::Language language, flo
   ImGui::BeginDisabled(player.index() + 1 >= player.size());
   if (button_on_this_line(tr("next  [F8]"))) result.move = LessonMove::next;
   ImGui::EndDisabled();
-  if (button_on_this_line(tr("hide the text  [F9]"))) result.toggle_collapsed = true;
+  // Where it fits beside them: a line of its own would take the picture's windows' room in a
+  // narrow dock, and F9 is there anyway.
+  if (fits_on_this_line(tr("hide the text  [F9]"))) {
+    ImGui::SameLine();
+    if (ImGui::Button(tr("hide the text  [F9]"))) result.toggle_collapsed = true;
+  }
 }
 
 // One line: the button first, so that a long title is what the box's edge cuts.

@@ -72,8 +72,11 @@ void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGu
 // The status line's text: model, its state, frame time (`state.status_ms`), triangles, lights,
 // camera and the latest message.
 std::string status_line_text(const ViewerState& state, const std::string& model);
-// `text` in one line at `top` (the status line; wrapped to a second line when it does not fit).
+// `text` in one line at `top` (the status line), fitted to `width` by fit_status_line.
 void draw_status_line(const std::string& text, float top, float width, float height);
+// `text` (status_line_text's) without the figures that matter least until it is at most `width`
+// wide in the current font.
+std::string fit_status_line(const std::string& text, float width);
 
 // The shortcut table (shortcuts.h), the models' keys and the mouse gestures, in a window of at
 // most `max` window units centred on `centre`, scrolled when the list is longer; its close

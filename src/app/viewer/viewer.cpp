@@ -80,13 +80,14 @@ double cpu_seconds() {
 }
 
 // The caption's part of the dock and its windows' column: the same column beside the picture;
-// below it, the caption on the left and the windows on the right.
-std::pair<Viewport, Viewport> split_dock(const Viewport& dock) {
+// below it, the caption on the left and the windows on the right, their column `wanted` wide
+// when a table asks for it (measure_dock), up to half the row.
+std::pair<Viewport, Viewport> split_dock(const Viewport& dock, float wanted) {
   if (dock.origin.y == 0.0f) return {dock, dock};
   Viewport caption = dock, column = dock;
-  caption.size.x = std::round(below_caption_share * dock.size.x);
+  column.size.x = std::round(std::max((1.0f - below_caption_share) * dock.size.x, std::min(wanted, 0.5f * dock.size.x)));
+  caption.size.x = dock.size.x - column.size.x;
   column.origin.x += caption.size.x;
-  column.size.x -= caption.size.x;
   return {caption, column};
 }
 
@@ -285,9 +286,9 @@ Layout Viewer::with_dock_below(Layout l, float height) const {
 // camera's vertical field of view, so a wide scene (the plate of spheres) in a tall, narrow view
 // loses its sides. The frame's height in a pane is what the comparison reads; the dock beside is
 // taken at its least width, so that a docked window's width cannot move the dock. A caption
-// folded to one line goes below whatever the scene.
+// folded to one line goes below whatever the scene; slide 36's window keeps the dock beside.
 bool Viewer::dock_goes_below(const Layout& beside, const Layout& below) const {
-  if (caption_wanted_ <= 0.0f) return false;  // not measured yet
+  if (caption_wanted_ <= 0.0f || state_.solvers.open) return false;  // not measured yet, or slide 36's
   if (classroom_.caption_collapsed()) return true;
   const float aspect = state_.scene ? state_.scene->cameras[size_t(state_.scene_camera)].aspect : 0.0f;
   if (!(aspect > 0.0f)) return false;
@@ -704,17 +705,21 @@ nlohmann::json Viewer::windows_json() const {
     if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
     const std::string name = w->Name;
     if (name.starts_with("Debug##")) continue;  // ImGui's own
-    // content_width > visible_width: something in the window is cut at its right edge.
+    // content_width > visible_width: something in the window is cut at its right edge; the
+    // same for the heights, at its bottom (unless one scrolls to it).
     windows.push_back({{"name", name},
                        {"rect", {w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y}},
                        {"content_width", w->ContentSize.x},
                        {"visible_width", w->ContentRegionRect.GetWidth()},
+                       {"content_height", w->ContentSize.y},
+                       {"visible_height", w->ContentRegionRect.GetHeight()},
                        {"scrolls_sideways", w->ScrollbarX}});
   }
   const Viewport& v = last_layout_.view;
   const Viewport& d = last_layout_.dock;
   return {{"view", {v.origin.x, v.origin.y, v.origin.x + v.size.x, v.origin.y + v.size.y}},
           {"dock", {d.origin.x, d.origin.y, d.origin.x + d.size.x, d.origin.y + d.size.y}},
+          {"font_size", ImGui::GetFontSize()},
           {"windows", windows},
           {"tables", tables_json()}};
 }
@@ -881,7 +886,7 @@ void Viewer::draw_windows(const Layout& l) {
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
   if (!l.dock.empty()) {
-    const auto [caption, column] = split_dock(l.dock);
+    const auto [caption, column] = split_dock(l.dock, dock_wanted_);
     corners.dock_in(column);
     const float wanted = classroom_.draw_caption(caption.origin, caption.size, margin, ui_scale_);
     if (std::abs(wanted - caption_wanted_) > 0.5f) {
@@ -898,7 +903,7 @@ void Viewer::draw_windows(const Layout& l) {
     WindowCorners pane_corners(l.panes[active_pane_], margin);
     const PaneLabel label = pane_label(panes_[active_pane_]->name, l.panes[active_pane_]);
     pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
-    if (!l.dock.empty()) pane_corners.dock_in(split_dock(l.dock).second);
+    if (!l.dock.empty()) pane_corners.dock_in(split_dock(l.dock, dock_wanted_).second);
     shown().windows(l.panes[active_pane_], pane_corners);
     difference_windows(state_, l.panes[active_pane_], pane_corners);
   } else {
@@ -909,18 +914,18 @@ void Viewer::draw_windows(const Layout& l) {
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
   draw_quit_question(l.view);
-  measure_dock(l, margin);
+  if (!l.dock.empty()) measure_dock(split_dock(l.dock, dock_wanted_).second, margin);
 }
 
-// The dock widens when a docked window's content is wider than the room it had (a table's
-// columns keep the width of their text), up to half the picture's room; the next frame gives it
-// that room. It keeps that width while windows other than the caption stay docked.
-void Viewer::measure_dock(const Layout& l, float margin) {
-  if (l.dock.empty()) return;
+// The dock (or its windows' column, below the picture) widens when a docked window's content is
+// wider than the room it had (a table's columns keep the width of their text), up to half the
+// picture's room; the next frame gives it that room. It keeps that width while windows other
+// than the caption stay docked.
+void Viewer::measure_dock(const Viewport& column, float margin) {
   float wanted = dock_wanted_;
   int docked = 0;
   const ImGuiContext& g = *ImGui::GetCurrentContext();
-  const Viewport& d = l.dock;
+  const Viewport& d = column;
   for (const ImGuiWindow* w : g.Windows) {
     if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip))) continue;
     const bool in_dock = w->Pos.x >= d.origin.x + 0.5f * margin && w->Pos.x < d.origin.x + d.size.x &&

@@ -146,7 +146,7 @@ private:
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
-  void measure_dock(const Layout& l, float margin);
+  void measure_dock(const Viewport& column, float margin);
   Layout with_dock_beside(Layout l, float width) const;
   Layout with_dock_below(Layout l, float height) const;
   bool dock_goes_below(const Layout& beside, const Layout& below) const;

@@ -152,7 +152,7 @@ void mesh_settings(RadiosityState& r) {
   ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
   name_widget("patch size (m)");
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
-  if (o.patch_size == 0.0f) dim_text(tr("auto: about %d patches"), o.target_patches);
+  if (o.patch_size == 0.0f) dim_text(tr("auto: the scene's triangles and about %d patches more"), o.target_patches);
   const SliderRange elements = radiosity_range("elements");
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
   name_widget("elements per patch edge");
