@@ -143,7 +143,8 @@ const char* const presenter_dumps[] = {
     "presenter-28-1.json",   "presenter-45-1.json",   "presenter-46-1.json",   "presenter-58-1.json",
     "presenter-28-1.5.json", "presenter-45-1.5.json", "presenter-46-1.5.json", "presenter-58-1.5.json",
     "presenter-45-2.json",   "presenter-46-2.json",   "presenter-58-2.json",   "presenter-28-1120-1.5.json",
-    "presenter-5-1.json",    "presenter-5-folded.json", "presenter-46-folded.json", "presenter-46-unfolded.json"};
+    "presenter-5-1.json",    "presenter-5-folded.json", "presenter-46-folded.json", "presenter-46-unfolded.json",
+    "presenter-44-1.json"};
 
 std::string fmt_name(const std::string& stem, const std::string& scale) { return stem + scale + ".json"; }
 
@@ -153,8 +154,8 @@ bool has_window(const nlohmann::json& dump, const std::string& prefix) {
 }
 
 // At 1280x720 and UI scales 1, 1.5 and 2: the caption and every window the steps open (the ray
-// tree's hint, slide 36's solvers, the item buffer, the panes' hint) lie in the dock beside the
-// picture, none over it; the panel and the status line frame it as always.
+// tree's hint, slide 36's solvers, the item buffer, the heat map's legend, the panes' hint) lie
+// in the dock beside or below the picture, none over it; the panel and the status line frame it as always.
 TEST_F(ViewerSintesis, TheCaptionAndTheWindowsLeaveThePictureUncovered) {
   for (const char* name : presenter_dumps) {
     SCOPED_TRACE(name);
@@ -177,6 +178,7 @@ TEST_F(ViewerSintesis, TheCaptionAndTheWindowsLeaveThePictureUncovered) {
     EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-45-", scale))), "Slide 36")) << scale;
     EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-46-", scale))), "item buffer")) << scale;
   }
+  EXPECT_TRUE(has_window(json_of(file("presenter-44-1.json")), "heat map"));
 }
 
 const nlohmann::json& window_named(const nlohmann::json& dump, const std::string& prefix) {

@@ -326,4 +326,19 @@ void draw_item_buffer_window(ViewerState& state, float side) {
   ImGui::End();
 }
 
+// ---- [the heat map's legend] ------------------------------------------------------------------
+void draw_heat_map_legend_window(float width) {
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize;
+  ImGui::SetNextWindowContentSize(ImVec2(width, 0.0f));
+  if (ImGui::Begin(tr("heat map: the unshot power"), nullptr, flags)) {
+    ImGui::PushTextWrapPos(0.0f);
+    heat_map_legend();
+    ImGui::TextWrapped("%s", tr("Each patch shoots what it holds and keeps none: as the energy spreads and is absorbed, the map cools from yellow to red, blue and black."));
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
 }  // namespace luz::app
