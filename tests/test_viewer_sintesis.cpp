@@ -230,6 +230,18 @@ TEST_F(ViewerSintesis, FNineFoldsTheCaptionToOneLineBelowThePicture) {
   EXPECT_GT(rect_of(window_named(unfolded, "##lesson caption")["rect"]).height(), 4.0 * unfolded["font_size"].get<double>());
 }
 
+// The status line never runs past the window's edge, at any of those sizes and scales: it leaves
+// out its figures that matter least (the triangles, the camera, ...) instead, the model and the
+// latest message staying.
+TEST_F(ViewerSintesis, TheStatusLineFitsTheWindow) {
+  for (const char* name : presenter_dumps) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const nlohmann::json& status = window_named(dump, "status");
+    EXPECT_LE(status["content_width"].get<double>(), status["visible_width"].get<double>() + 1.0) << status.dump(2);
+  }
+}
+
 // Every table of every window at scales 1, 1.5 and 2 (the inspector's, slide 36's legend): no
 // column narrower than its widest cell, and none past its window's edge unless the window
 // scrolls sideways to it. Slide 36's exponents ("2.7e-02") are read whole.

@@ -145,7 +145,7 @@ std::string status_line_text(const ViewerState& state, const std::string& model)
 
 // A status line wider than the window (a large UI, a narrow window, a long note) leaves out its
 // figures that matter least, in this order: the triangles, the camera, the lights, the frame
-// time; the model and the note (what just happened) stay.
+// time; the model and the note (what just happened) stay, the note's end cut if need be.
 std::string fit_status_line(const std::string& text, float width) {
   constexpr std::string_view separator = "  |  ";
   std::vector<std::string> fields;
@@ -166,6 +166,15 @@ std::string fit_status_line(const std::string& text, float width) {
   for (const size_t drop : {2, 4, 3, 1}) {
     if (ImGui::CalcTextSize(line.c_str()).x <= width) break;
     fields[drop].clear();
+    line = joined();
+  }
+  // Still too wide: the note's end gives way, marked by "...", a whole UTF-8 character at a time.
+  std::string& note = fields[5];
+  while (ImGui::CalcTextSize(line.c_str()).x > width && !note.empty()) {
+    if (note.ends_with("...")) note.resize(note.size() - 3);
+    while (!note.empty() && (static_cast<unsigned char>(note.back()) & 0xC0) == 0x80) note.pop_back();
+    if (!note.empty()) note.pop_back();  // the last character's first byte
+    if (!note.empty()) note += "...";
     line = joined();
   }
   return line;
