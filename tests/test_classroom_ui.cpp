@@ -24,11 +24,12 @@ protected:
   void TearDown() override { ImGui::DestroyContext(); }
 
   // A few frames, as auto-resizing windows take two to settle.
-  app::CaptionResult draw(const app::LessonPlayer& player, i18n::Language language, float width, float scale) {
+  app::CaptionResult draw(const app::LessonPlayer& player, i18n::Language language, float width, float scale,
+                          float max_height = kWindowH, bool collapsed = false) {
     app::CaptionResult result;
     for (int frame = 0; frame < 3; ++frame) {
       ImGui::NewFrame();
-      result = app::draw_lesson_caption(player, language, ImVec2(440.0f, 8.0f), width, kWindowH, scale);
+      result = app::draw_lesson_caption(player, language, ImVec2(440.0f, 8.0f), width, max_height, scale, collapsed);
       ImGui::Render();
     }
     return result;
@@ -62,6 +63,23 @@ TEST_F(Caption, WrapsInsteadOfWidening) {
   const app::CaptionResult narrow = draw(player, i18n::Language::es, 300.0f, 1.0f);
   EXPECT_FLOAT_EQ(narrow.size.x, 300.0f);
   EXPECT_GT(narrow.size.y, wide.size.y);
+}
+
+// The height a caption asks for is that of its whole text, also when the box given is lower (the
+// viewer makes a dock below the picture that high); folded, it is one line, whatever the step.
+TEST_F(Caption, AsksForItsWholeTextAndFoldsToOneLine) {
+  app::LessonPlayer player(app::parse_lesson(std::filesystem::path(LUZ_LESSON_DIR) / "sintesis.json"));
+  const app::CaptionResult whole = draw(player, i18n::Language::es, 500.0f, 1.0f);
+  EXPECT_NEAR(whole.wanted_height, whole.size.y, 1.0f);
+  const app::CaptionResult cut = draw(player, i18n::Language::es, 500.0f, 1.0f, 0.5f * whole.size.y);
+  EXPECT_NEAR(cut.size.y, 0.5f * whole.size.y, 1.0f);
+  EXPECT_NEAR(cut.wanted_height, whole.size.y, 1.0f);
+  for (size_t i = 0; i < player.size(); ++i) {
+    player.go_to(i);
+    const app::CaptionResult folded = draw(player, i18n::Language::es, 500.0f, 1.0f, kWindowH, true);
+    EXPECT_LT(folded.size.y, 2.5f * ImGui::GetFontSize()) << "step " << i + 1;
+    EXPECT_FALSE(folded.toggle_collapsed);
+  }
 }
 
 // The glyph's coverage in the font atlas (alpha, row by row) and its size.

@@ -132,6 +132,7 @@ struct Rect {
   double x0, y0, x1, y1;
   bool meets(const Rect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
   double width() const { return x1 - x0; }
+  double height() const { return y1 - y0; }
 };
 
 Rect rect_of(const nlohmann::json& r) {
@@ -141,7 +142,9 @@ Rect rect_of(const nlohmann::json& r) {
 const char* const presenter_dumps[] = {
     "presenter-28-1.json",   "presenter-45-1.json",   "presenter-46-1.json",   "presenter-58-1.json",
     "presenter-28-1.5.json", "presenter-45-1.5.json", "presenter-46-1.5.json", "presenter-58-1.5.json",
-    "presenter-45-2.json",   "presenter-46-2.json",   "presenter-58-2.json",   "presenter-28-1120-1.5.json"};
+    "presenter-45-2.json",   "presenter-46-2.json",   "presenter-58-2.json",   "presenter-28-1120-1.5.json",
+    "presenter-5-1.json",    "presenter-5-folded.json", "presenter-46-folded.json", "presenter-46-unfolded.json",
+    "presenter-44-1.json"};
 
 std::string fmt_name(const std::string& stem, const std::string& scale) { return stem + scale + ".json"; }
 
@@ -151,8 +154,8 @@ bool has_window(const nlohmann::json& dump, const std::string& prefix) {
 }
 
 // At 1280x720 and UI scales 1, 1.5 and 2: the caption and every window the steps open (the ray
-// tree's hint, slide 36's solvers, the item buffer, the panes' hint) lie in the dock beside the
-// picture, none over it; the panel and the status line frame it as always.
+// tree's hint, slide 36's solvers, the item buffer, the heat map's legend, the panes' hint) lie
+// in the dock beside or below the picture, none over it; the panel and the status line frame it as always.
 TEST_F(ViewerSintesis, TheCaptionAndTheWindowsLeaveThePictureUncovered) {
   for (const char* name : presenter_dumps) {
     SCOPED_TRACE(name);
@@ -174,6 +177,68 @@ TEST_F(ViewerSintesis, TheCaptionAndTheWindowsLeaveThePictureUncovered) {
   for (const char* scale : {"1", "1.5", "2"}) {
     EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-45-", scale))), "Slide 36")) << scale;
     EXPECT_TRUE(has_window(json_of(file(fmt_name("presenter-46-", scale))), "item buffer")) << scale;
+  }
+  EXPECT_TRUE(has_window(json_of(file("presenter-44-1.json")), "heat map"));
+}
+
+const nlohmann::json& window_named(const nlohmann::json& dump, const std::string& prefix) {
+  for (const auto& w : dump["windows"])
+    if (w["name"].get<std::string>().starts_with(prefix)) return w;
+  ADD_FAILURE() << "no window " << prefix << " in " << dump.dump(2);
+  static const nlohmann::json none = {{"name", ""}, {"rect", {0, 0, 0, 0}}, {"content_height", 0}, {"visible_height", 0}};
+  return none;
+}
+
+bool below(const Rect& dock, const Rect& view) { return dock.y0 >= view.y1 - 0.5 && dock.x0 <= view.x0 + 0.5; }
+bool beside(const Rect& dock, const Rect& view) { return dock.x0 >= view.x1 - 0.5 && dock.y0 <= view.y0 + 0.5; }
+
+// Slide 6's plate of spheres (its camera 4:3, scenes/phong_spheres.gltf) at 1280x720 with the
+// panel open: beside a dock the picture would be narrower than 4:3 and lose the plate's outer
+// columns, so the caption goes below the picture, which is then at least 4:3, and the caption's
+// text is all in view. The Cornell box (1:1) at the same size keeps its dock beside.
+TEST_F(ViewerSintesis, AWideScenesCaptionGoesBelowThePictureAndTheWholeFrameShows) {
+  const nlohmann::json plate = json_of(file("presenter-5-1.json"));
+  const Rect view = rect_of(plate["view"]), dock = rect_of(plate["dock"]);
+  EXPECT_TRUE(below(dock, view)) << plate.dump(2);
+  EXPECT_GE(view.width() / view.height(), 4.0 / 3.0 - 1e-3) << plate.dump(2);
+  const nlohmann::json& caption = window_named(plate, "##lesson caption");
+  EXPECT_LE(caption["content_height"].get<double>(), caption["visible_height"].get<double>() + 1.0) << plate.dump(2);
+  const nlohmann::json box = json_of(file("presenter-46-1.json"));
+  EXPECT_TRUE(beside(rect_of(box["dock"]), rect_of(box["view"]))) << box.dump(2);
+}
+
+// F9 folds the caption to one line in a row below the picture, the plate's and the Cornell box's
+// alike; step 46's item buffer then sits right of the caption in that row, over neither it nor
+// the picture. F9 again brings the whole text back, in the dock beside the box.
+TEST_F(ViewerSintesis, FNineFoldsTheCaptionToOneLineBelowThePicture) {
+  const nlohmann::json whole = json_of(file("presenter-5-1.json"));
+  for (const char* name : {"presenter-5-folded.json", "presenter-46-folded.json"}) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const Rect view = rect_of(dump["view"]), dock = rect_of(dump["dock"]);
+    EXPECT_TRUE(below(dock, view)) << dump.dump(2);
+    const double font = dump["font_size"].get<double>();
+    EXPECT_LT(rect_of(window_named(dump, "##lesson caption")["rect"]).height(), 3.0 * font) << dump.dump(2);
+  }
+  EXPECT_GT(rect_of(json_of(file("presenter-5-folded.json"))["view"]).height(), rect_of(whole["view"]).height());
+  const nlohmann::json folded = json_of(file("presenter-46-folded.json"));
+  const Rect items = rect_of(window_named(folded, "item buffer")["rect"]);
+  EXPECT_FALSE(items.meets(rect_of(window_named(folded, "##lesson caption")["rect"]))) << folded.dump(2);
+  EXPECT_FALSE(items.meets(rect_of(folded["view"]))) << folded.dump(2);
+  const nlohmann::json unfolded = json_of(file("presenter-46-unfolded.json"));
+  EXPECT_TRUE(beside(rect_of(unfolded["dock"]), rect_of(unfolded["view"]))) << unfolded.dump(2);
+  EXPECT_GT(rect_of(window_named(unfolded, "##lesson caption")["rect"]).height(), 4.0 * unfolded["font_size"].get<double>());
+}
+
+// The status line never runs past the window's edge, at any of those sizes and scales: it leaves
+// out its figures that matter least (the triangles, the camera, ...) instead, the model and the
+// latest message staying.
+TEST_F(ViewerSintesis, TheStatusLineFitsTheWindow) {
+  for (const char* name : presenter_dumps) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const nlohmann::json& status = window_named(dump, "status");
+    EXPECT_LE(status["content_width"].get<double>(), status["visible_width"].get<double>() + 1.0) << status.dump(2);
   }
 }
 

@@ -38,6 +38,11 @@ bool Classroom::run_verb(const ScriptCommand& command, std::string& error) {
     error = tr("no lesson is open (luz --lesson [FILE])");
     return false;
   }
+  if (command.verb == "caption") {
+    const std::string& how = command.args[0];
+    caption_collapsed_ = how == "toggle" ? !caption_collapsed_ : how == "collapse";
+    return true;
+  }
   std::vector<ScriptCommand> commands;
   if (!player_->run(command, commands, error)) return false;
   if (command.verb == "lesson") queue(std::move(commands));
@@ -59,16 +64,18 @@ bool Classroom::step(ScriptTarget& viewer, std::string& error) {
 }
 
 float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale) {
-  if (!player_) return origin.y;
+  if (!player_) return 0.0f;
   const float width = std::max(size.x - 2.0f * margin, 1.0f);
   const ImVec2 top_left(origin.x + margin, origin.y + margin);
   // 1.25 times the panel's text at a UI scale of 1; an interface already enlarged for the back
   // row (--ui-scale 1.25 and up) is read there as it is, and leaves the picture its room.
   const float enlarged = std::max(1.25f / ui_scale, 1.0f);
   const CaptionResult result =
-      draw_lesson_caption(*player_, i18n::language(), top_left, width, size.y - 2.0f * margin, enlarged);
+      draw_lesson_caption(*player_, i18n::language(), top_left, width, size.y - 2.0f * margin, enlarged,
+                          caption_collapsed_);
   move(result.move);
-  return top_left.y + result.size.y;
+  if (result.toggle_collapsed) toggle_caption();
+  return result.wanted_height + 2.0f * margin;
 }
 
 }  // namespace luz::app

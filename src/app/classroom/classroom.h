@@ -28,7 +28,13 @@ public:
   // A key's or a button's move; nothing without a lesson.
   void move(LessonMove move);
 
-  // `lesson next|prev|goto N`, `lang es|en`, `dump-lesson FILE` (checked by lesson_verb_problem).
+  // The caption folded to one line (the step and its title), so that the picture has the room;
+  // `caption collapse|expand|toggle` and its key.
+  bool caption_collapsed() const { return caption_collapsed_; }
+  void toggle_caption() { caption_collapsed_ = !caption_collapsed_; }
+
+  // `lesson next|prev|goto N`, `lang es|en`, `dump-lesson FILE`, `caption collapse|expand|toggle`
+  // (checked by lesson_verb_problem).
   // False with `error` set when there is no lesson, N is not a step or the file cannot be written.
   bool run_verb(const ScriptCommand& command, std::string& error);
 
@@ -40,11 +46,12 @@ public:
   // viewer does, not for itself.
   bool moving() const { return !stepping_ && !moves_.empty(); }
 
-  // The step's caption box at the top of the dock beside the picture (origin and size: the
-  // dock's), `margin` from its edges, its text 1.25 times the panel's at `ui_scale` 1 (the UI
-  // scale is in the font already; a larger one is not enlarged further): the back row reads it,
-  // and it covers nothing of the picture. Moves asked by its buttons are queued. Returns where
-  // the box ends (window units), `origin.y` without a lesson.
+  // The step's caption box at the top of the dock beside or below the picture (origin and size:
+  // the dock's), `margin` from its edges, its text 1.25 times the panel's at `ui_scale` 1 (the
+  // UI scale is in the font already; a larger one is not enlarged further): the back row reads
+  // it, and it covers nothing of the picture. Moves asked by its buttons are queued. Returns the
+  // height the whole caption asks for (window units, margins included, however much of it the
+  // dock shows), 0 without a lesson: the next frame's dock below the picture is made that high.
   float draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale);
 
 private:
@@ -53,6 +60,7 @@ private:
   std::optional<LessonPlayer> player_;
   std::deque<ScriptRunner> moves_;
   bool stepping_ = false;
+  bool caption_collapsed_ = false;
 };
 
 }  // namespace luz::app

@@ -498,6 +498,9 @@ std::optional<std::string> lesson_verb_problem(const ScriptCommand& c) {
     return a.size() == 1 && i18n::parse_language(a[0]) ? "" : "`lang` takes es or en";
   if (c.verb == "dump-lesson")
     return a.size() == 1 && a[0].ends_with(".json") ? "" : "`dump-lesson` writes a .json file";
+  if (c.verb == "caption")
+    return a.size() == 1 && (a[0] == "collapse" || a[0] == "expand" || a[0] == "toggle")
+               ? "" : "`caption` takes collapse, expand or toggle";
   return std::nullopt;
 }
 

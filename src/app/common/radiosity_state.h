@@ -29,7 +29,8 @@ struct RadiosityDrive {
 
 // The clicked patch, for the inspector (exitances in W/m^2, as slide 39 keeps them).
 struct PatchReading {
-  size_t patch = 0;
+  size_t patch = 0;              // the element clicked (it receives and is drawn)
+  size_t shooter = 0;            // the shooting patch it belongs to
   int mesh = -1, triangle = -1;  // its source triangle in the scene
   std::string material;
   glm::vec3 centre{0.0f}, normal{0.0f};

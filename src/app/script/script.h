@@ -68,6 +68,7 @@
 //   dump-state FILE.json          exposure, model, UI scale, note, warnings: what a test checks
 //   lesson next|prev|goto N       the lesson's steps (luz --lesson; N counts from 1)
 //   lang es|en                    the window's language, from the next frame on
+//   caption collapse|expand|toggle  the lesson's caption folded to one line (F9) or whole
 //   dump-lesson FILE.json         the lesson's step, slide, title and text (current language), model
 //   quit
 // Blank lines are ignored, and so is everything from a word starting with #; a word in double

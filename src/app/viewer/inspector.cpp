@@ -222,7 +222,7 @@ void draw_patch_inspector(const Scene& scene, const PatchReading& r, bool& open)
     ImGui::End();
     return;
   }
-  ImGui::Text(tr("patch %zu of %s, triangle %d, material \"%s\""), r.patch,
+  ImGui::Text(tr("element %zu of patch %zu (%s), triangle %d, material \"%s\""), r.patch, r.shooter,
               scene.meshes[size_t(r.mesh)].name.c_str(), r.triangle, r.material.c_str());
   ImGui::Text(tr("centre (%.3f, %.3f, %.3f)   N = (%.3f, %.3f, %.3f)"), double(r.centre.x), double(r.centre.y),
               double(r.centre.z), double(r.normal.x), double(r.normal.y), double(r.normal.z));

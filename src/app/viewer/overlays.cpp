@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 #include <imgui.h>
@@ -47,7 +49,9 @@ float WindowCorners::docked_top() const {
   for (const ImGuiWindow* w : g.Windows) {
     const bool this_frame = w->LastFrameActive == g.FrameCount && !w->Hidden;
     const bool own = !(w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup));
-    if (this_frame && own && w->Pos.x >= dock_.origin.x && w->Pos.x < dock_.origin.x + dock_.size.x)
+    const bool in_dock = w->Pos.x >= dock_.origin.x && w->Pos.x < dock_.origin.x + dock_.size.x &&
+                         w->Pos.y >= dock_.origin.y && w->Pos.y < dock_.origin.y + dock_.size.y;
+    if (this_frame && own && in_dock)
       bottom = std::max(bottom, w->Pos.y + w->Size.y);
   }
   return bottom;
@@ -139,13 +143,50 @@ std::string status_line_text(const ViewerState& state, const std::string& model)
                      trnf("{} emitter", "{} emitters", emitters, emitters), camera, state.note);
 }
 
+// A status line wider than the window (a large UI, a narrow window, a long note) leaves out its
+// figures that matter least, in this order: the triangles, the camera, the lights, the frame
+// time; the model and the note (what just happened) stay, the note's end cut if need be.
+std::string fit_status_line(const std::string& text, float width) {
+  constexpr std::string_view separator = "  |  ";
+  std::vector<std::string> fields;
+  for (size_t start = 0;;) {
+    const size_t end = text.find(separator, start);
+    fields.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + separator.size();
+  }
+  const auto joined = [&] {
+    std::string line;
+    for (const std::string& f : fields)
+      if (!f.empty()) line += (line.empty() ? "" : std::string(separator)) + f;
+    return line;
+  };
+  std::string line = joined();
+  if (fields.size() != 6) return line;  // model, ms, triangles, lights, camera, note: status_line_text's
+  for (const size_t drop : {2, 4, 3, 1}) {
+    if (ImGui::CalcTextSize(line.c_str()).x <= width) break;
+    fields[drop].clear();
+    line = joined();
+  }
+  // Still too wide: the note's end gives way, marked by "...", a whole UTF-8 character at a time.
+  std::string& note = fields[5];
+  while (ImGui::CalcTextSize(line.c_str()).x > width && !note.empty()) {
+    if (note.ends_with("...")) note.resize(note.size() - 3);
+    while (!note.empty() && (static_cast<unsigned char>(note.back()) & 0xC0) == 0x80) note.pop_back();
+    if (!note.empty()) note.pop_back();  // the last character's first byte
+    if (!note.empty()) note += "...";
+    line = joined();
+  }
+  return line;
+}
+
 void draw_status_line(const std::string& text, float top, float width, float height) {
   const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   begin_frame_window("status", glm::vec2(0.0f, top), glm::vec2(width, height), fixed, Edge::top);
-  ImGui::TextUnformatted(text.c_str());
+  ImGui::TextUnformatted(fit_status_line(text, width - 2.0f * ImGui::GetStyle().WindowPadding.x).c_str());
   ImGui::End();
 }
 

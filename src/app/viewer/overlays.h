@@ -34,9 +34,10 @@ public:
   // hint at the top centre: x, y, width, height in window units. Its two corners are taken.
   // Docked: the dock's room below the windows already in it.
   glm::vec4 take_left_half();
-  // A lesson's dock beside the picture (Layout::dock): every window placed from now on, hints
-  // included, goes there instead, one under the other below those already in it (the caption
-  // first), as wide as the dock. None covers the picture.
+  // A lesson's dock beside the picture (Layout::dock), or its windows' column right of the
+  // caption in a dock below it: every window placed from now on, hints included, goes there
+  // instead, one under the other below those already in it (the caption first, when it is
+  // there), as wide as the dock. None covers the picture.
   void dock_in(const Viewport& dock) { dock_ = dock; }
   bool docked() const { return !dock_.empty(); }
   const Viewport& dock() const { return dock_; }
@@ -71,8 +72,11 @@ void begin_frame_window(const char* name, glm::vec2 origin, glm::vec2 size, ImGu
 // The status line's text: model, its state, frame time (`state.status_ms`), triangles, lights,
 // camera and the latest message.
 std::string status_line_text(const ViewerState& state, const std::string& model);
-// `text` in one line at `top` (the status line; wrapped to a second line when it does not fit).
+// `text` in one line at `top` (the status line), fitted to `width` by fit_status_line.
 void draw_status_line(const std::string& text, float top, float width, float height);
+// `text` (status_line_text's) without the figures that matter least until it is at most `width`
+// wide in the current font.
+std::string fit_status_line(const std::string& text, float width);
 
 // The shortcut table (shortcuts.h), the models' keys and the mouse gestures, in a window of at
 // most `max` window units centred on `centre`, scrolled when the list is longer; its close
@@ -87,6 +91,9 @@ void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewpor
 // per patch ID), `side` window units across, in a window placed by the caller (WindowCorners)
 // (radiosity_panel.cpp).
 void draw_item_buffer_window(ViewerState& state, float side);
+// Radiosity: the heat map's fixed scale, `width` window units wide, in a window placed by the
+// caller, while the heat map is shown: the class reads what its colours mean beside the picture.
+void draw_heat_map_legend_window(float width);
 
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);

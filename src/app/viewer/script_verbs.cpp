@@ -335,6 +335,7 @@ constexpr ScriptVerb verbs[] = {
     {"lesson", "lesson next|prev|goto N", check_lesson_verb, on_viewer<run_lesson_verb>, true},
     {"lang", "lang es|en", check_lesson_verb, on_viewer<run_lesson_verb>, true},
     {"dump-lesson", "dump-lesson FILE.json", check_lesson_verb, on_viewer<run_lesson_verb>, true},
+    {"caption", "caption collapse|expand|toggle", check_lesson_verb, on_viewer<run_lesson_verb>, true},
     {"quit", "quit", check_none, on_viewer<run_quit>, false},
     // Widgets and pixels addressed by name, states waited for (widget_verbs.h).
     {"click-widget", "click-widget \"LABEL\"", check_click_widget, on_viewer<run_click_widget>, true},

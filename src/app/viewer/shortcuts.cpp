@@ -19,7 +19,8 @@ namespace {
 // (one shot) and 0 (back to shot 0, slide 39 step 1); its display on U (Unshot heat map), L
 // (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
 // window of solvers on J, for Jacobi, the first of them. A lesson's steps on F8 (next) and F7
-// (previous): PageUp / PageDown and the arrows fly, and a held key must not walk the lecture.
+// (previous): PageUp / PageDown and the arrows fly, and a held key must not walk the lecture;
+// its caption folded beside them, on F9.
 constexpr Shortcut table[] = {
     // The digits show the models (model_registry.cpp says which is on which key).
     {GLFW_KEY_1, 0, 0, "1", Action::choose_model, ""}, {GLFW_KEY_2, 0, 0, "2", Action::choose_model, ""},
@@ -63,6 +64,7 @@ constexpr Shortcut table[] = {
     {GLFW_KEY_F1, 0, 0, "F1", Action::help, N_("this list")},
     {GLFW_KEY_F8, 0, 0, "F8", Action::lesson_next, N_("lesson: next step (luz --lesson)")},
     {GLFW_KEY_F7, 0, 0, "F7", Action::lesson_previous, N_("lesson: previous step")},
+    {GLFW_KEY_F9, 0, 0, "F9", Action::lesson_caption, N_("lesson: the caption's text hidden (one line) / shown")},
     {GLFW_KEY_ESCAPE, 0, 0, N_("Esc"), Action::quit, N_("quit")},
     {GLFW_KEY_UP, 0, 0, N_("Up / Down"), Action::none, N_("fly forward / back (Shift: faster)")},
     {GLFW_KEY_LEFT, 0, 0, N_("Left / Right"), Action::none, N_("fly left / right")},

@@ -23,7 +23,7 @@ enum class Action {
   radiosity_run, radiosity_step, radiosity_reset,
   toggle_heat_map, toggle_patches, toggle_ambient_estimate,
   toggle_solvers,
-  lesson_next, lesson_previous,
+  lesson_next, lesson_previous, lesson_caption,
 };
 
 // A shortcut is a key by its place (GLFW_KEY_*, named by the US layout: letters, Enter, F1) or,

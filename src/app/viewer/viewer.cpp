@@ -48,6 +48,7 @@ constexpr int default_height = 760;
 constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
 constexpr float dock_share = 0.3f;      // of the picture's room, a lesson's dock at the least
 constexpr float dock_ems = 20.0f;       // and at least this many font heights: the caption's lines
+constexpr float below_caption_share = 0.6f;  // of a dock below the picture, the caption's; its windows the rest
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
 constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
@@ -76,6 +77,18 @@ double cpu_seconds() {
   getrusage(RUSAGE_SELF, &usage);
   return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
          1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// The caption's part of the dock and its windows' column: the same column beside the picture;
+// below it, the caption on the left and the windows on the right, their column `wanted` wide
+// when a table asks for it (measure_dock), up to half the row.
+std::pair<Viewport, Viewport> split_dock(const Viewport& dock, float wanted) {
+  if (dock.origin.y == 0.0f) return {dock, dock};
+  Viewport caption = dock, column = dock;
+  column.size.x = std::round(std::max((1.0f - below_caption_share) * dock.size.x, std::min(wanted, 0.5f * dock.size.x)));
+  caption.size.x = dock.size.x - column.size.x;
+  column.origin.x += caption.size.x;
+  return {caption, column};
 }
 
 }  // namespace
@@ -224,22 +237,66 @@ Layout Viewer::layout() const {
   const int left = int(std::lround(l.panel * scale.x));
   v.pixels = glm::ivec2(std::max(l.framebuffer.x - left, 0), std::max(int(std::lround(v.size.y * scale.y)), 0));
   v.gl_origin = glm::ivec2(left, l.framebuffer.y - v.pixels.y);
-  if (classroom_.has_lesson() && v.size.x > 0.0f) {
+  if (classroom_.has_lesson() && v.size.x > 0.0f && v.size.y > 0.0f) {
     // A third of the picture's room, or more when the caption's font or a docked window asks for
     // it (a table keeps its columns as wide as their text), but never more than half of it.
     const float least = std::max(dock_share * v.size.x, dock_ems * ImGui::GetFontSize());
-    const float width = whole_pixels(std::min(std::max(least, dock_wanted_), 0.5f * v.size.x), scale.x);
-    Viewport& d = l.dock;
-    d.scale = scale;
-    d.pixels = glm::ivec2(int(std::lround(width * scale.x)), v.pixels.y);
-    v.pixels.x = std::max(v.pixels.x - d.pixels.x, 0);
-    v.size.x = std::max(v.size.x - width, 0.0f);
-    d.origin = glm::vec2(v.origin.x + v.size.x, 0.0f);
-    d.size = glm::vec2(width, v.size.y);
-    d.gl_origin = glm::ivec2(left + v.pixels.x, v.gl_origin.y);
+    const float narrowest = whole_pixels(std::min(least, 0.5f * v.size.x), scale.x);
+    // Below the picture, a row as high as the caption's text asks (at most half the room).
+    const Layout below = with_dock_below(l, whole_pixels(std::min(caption_wanted_, 0.5f * v.size.y), scale.y));
+    if (dock_goes_below(with_dock_beside(l, narrowest), below)) return below;
+    return with_dock_beside(l, whole_pixels(std::min(std::max(least, dock_wanted_), 0.5f * v.size.x), scale.x));
   }
   l.panes = pane_viewports(v, panes_.size());
   return l;
+}
+
+// The lesson's dock as a column right of the picture, `width` wide.
+Layout Viewer::with_dock_beside(Layout l, float width) const {
+  Viewport& v = l.view;
+  Viewport& d = l.dock;
+  d.scale = v.scale;
+  d.pixels = glm::ivec2(int(std::lround(width * v.scale.x)), v.pixels.y);
+  v.pixels.x = std::max(v.pixels.x - d.pixels.x, 0);
+  v.size.x = std::max(v.size.x - width, 0.0f);
+  d.origin = glm::vec2(v.origin.x + v.size.x, 0.0f);
+  d.size = glm::vec2(width, v.size.y);
+  d.gl_origin = glm::ivec2(v.gl_origin.x + v.pixels.x, v.gl_origin.y);
+  l.panes = pane_viewports(v, panes_.size());
+  return l;
+}
+
+// The lesson's dock as a row under the picture, above the status line, `height` high.
+Layout Viewer::with_dock_below(Layout l, float height) const {
+  Viewport& v = l.view;
+  Viewport& d = l.dock;
+  d.scale = v.scale;
+  d.pixels = glm::ivec2(v.pixels.x, std::min(int(std::lround(height * v.scale.y)), v.pixels.y));
+  v.pixels.y -= d.pixels.y;
+  v.size.y = float(v.pixels.y) / v.scale.y;
+  v.gl_origin.y += d.pixels.y;
+  d.origin = glm::vec2(v.origin.x, v.origin.y + v.size.y);
+  d.size = glm::vec2(v.size.x, float(d.pixels.y) / v.scale.y);
+  d.gl_origin = glm::ivec2(v.gl_origin.x, v.gl_origin.y - d.pixels.y);
+  l.panes = pane_viewports(v, panes_.size());
+  return l;
+}
+
+// Below the picture when the camera's whole frame comes out larger there: a view keeps the
+// camera's vertical field of view, so a wide scene (the plate of spheres) in a tall, narrow view
+// loses its sides. The frame's height in a pane is what the comparison reads; the dock beside is
+// taken at its least width, so that a docked window's width cannot move the dock. A caption
+// folded to one line goes below whatever the scene; slide 36's window keeps the dock beside.
+bool Viewer::dock_goes_below(const Layout& beside, const Layout& below) const {
+  if (caption_wanted_ <= 0.0f || state_.solvers.open) return false;  // not measured yet, or slide 36's
+  if (classroom_.caption_collapsed()) return true;
+  const float aspect = state_.scene ? state_.scene->cameras[size_t(state_.scene_camera)].aspect : 0.0f;
+  if (!(aspect > 0.0f)) return false;
+  const auto frame_height = [aspect](const Layout& l) {
+    const Viewport& pane = l.panes.front();
+    return std::min(pane.size.y, pane.size.x / aspect);
+  };
+  return frame_height(below) > frame_height(beside);
 }
 
 // ---- [loading] ---------------------------------------------------------------------------------
@@ -611,6 +668,7 @@ void Viewer::apply(Action action) {
       break;
     case Action::lesson_next: classroom_.move(LessonMove::next); break;
     case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
+    case Action::lesson_caption: classroom_.toggle_caption(); break;  // the verb `caption toggle`
   }
 }
 
@@ -647,17 +705,21 @@ nlohmann::json Viewer::windows_json() const {
     if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
     const std::string name = w->Name;
     if (name.starts_with("Debug##")) continue;  // ImGui's own
-    // content_width > visible_width: something in the window is cut at its right edge.
+    // content_width > visible_width: something in the window is cut at its right edge; the
+    // same for the heights, at its bottom (unless one scrolls to it).
     windows.push_back({{"name", name},
                        {"rect", {w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y}},
                        {"content_width", w->ContentSize.x},
                        {"visible_width", w->ContentRegionRect.GetWidth()},
+                       {"content_height", w->ContentSize.y},
+                       {"visible_height", w->ContentRegionRect.GetHeight()},
                        {"scrolls_sideways", w->ScrollbarX}});
   }
   const Viewport& v = last_layout_.view;
   const Viewport& d = last_layout_.dock;
   return {{"view", {v.origin.x, v.origin.y, v.origin.x + v.size.x, v.origin.y + v.size.y}},
           {"dock", {d.origin.x, d.origin.y, d.origin.x + d.size.x, d.origin.y + d.size.y}},
+          {"font_size", ImGui::GetFontSize()},
           {"windows", windows},
           {"tables", tables_json()}};
 }
@@ -824,8 +886,13 @@ void Viewer::draw_windows(const Layout& l) {
   const float margin = 8.0f * ui_scale_;
   WindowCorners corners(l.view, margin);
   if (!l.dock.empty()) {
-    corners.dock_in(l.dock);
-    classroom_.draw_caption(l.dock.origin, l.dock.size, margin, ui_scale_);
+    const auto [caption, column] = split_dock(l.dock, dock_wanted_);
+    corners.dock_in(column);
+    const float wanted = classroom_.draw_caption(caption.origin, caption.size, margin, ui_scale_);
+    if (std::abs(wanted - caption_wanted_) > 0.5f) {
+      caption_wanted_ = wanted;  // the next frame's dock below the picture
+      frames_to_draw_ = std::max(frames_to_draw_, 2);
+    }
   }
   state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
   if (state_.solvers.open && solvers_) {
@@ -836,7 +903,7 @@ void Viewer::draw_windows(const Layout& l) {
     WindowCorners pane_corners(l.panes[active_pane_], margin);
     const PaneLabel label = pane_label(panes_[active_pane_]->name, l.panes[active_pane_]);
     pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
-    if (!l.dock.empty()) pane_corners.dock_in(l.dock);
+    if (!l.dock.empty()) pane_corners.dock_in(split_dock(l.dock, dock_wanted_).second);
     shown().windows(l.panes[active_pane_], pane_corners);
     difference_windows(state_, l.panes[active_pane_], pane_corners);
   } else {
@@ -847,23 +914,26 @@ void Viewer::draw_windows(const Layout& l) {
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
   if (!state_.error.empty()) draw_load_error(state_, l.view.centre().x, l.view.centre().y, l.view.size.x);
   draw_quit_question(l.view);
-  measure_dock(l, margin);
+  if (!l.dock.empty()) measure_dock(split_dock(l.dock, dock_wanted_).second, margin);
 }
 
-// The dock widens when a docked window's content is wider than the room it had (a table's
-// columns keep the width of their text), up to half the picture's room; the next frame gives it
-// that room. It keeps that width while windows other than the caption stay docked.
-void Viewer::measure_dock(const Layout& l, float margin) {
-  if (l.dock.empty()) return;
+// The dock (or its windows' column, below the picture) widens when a docked window's content is
+// wider than the room it had (a table's columns keep the width of their text), up to half the
+// picture's room; the next frame gives it that room. It keeps that width while windows other
+// than the caption stay docked.
+void Viewer::measure_dock(const Viewport& column, float margin) {
   float wanted = dock_wanted_;
   int docked = 0;
   const ImGuiContext& g = *ImGui::GetCurrentContext();
+  const Viewport& d = column;
   for (const ImGuiWindow* w : g.Windows) {
     if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip))) continue;
-    if (w->Pos.x < l.dock.origin.x + 0.5f * margin || std::string_view(w->Name).starts_with("##lesson")) continue;
+    const bool in_dock = w->Pos.x >= d.origin.x + 0.5f * margin && w->Pos.x < d.origin.x + d.size.x &&
+                         w->Pos.y >= d.origin.y + 0.5f * margin && w->Pos.y < d.origin.y + d.size.y;
+    if (!in_dock || std::string_view(w->Name).starts_with("##lesson")) continue;
     ++docked;
     const float overflow = w->ContentSize.x - w->ContentRegionRect.GetWidth();
-    if (overflow > 0.5f) wanted = std::max(wanted, l.dock.size.x + overflow);
+    if (overflow > 0.5f) wanted = std::max(wanted, d.size.x + overflow);
   }
   if (docked == 0) wanted = 0.0f;
   if (std::abs(wanted - dock_wanted_) > 0.5f) {

@@ -53,8 +53,8 @@ struct Layout {
   Viewport view;
   std::vector<Viewport> panes;  // the view split side by side (panes.h); one pane: the view
   // With a lesson open, a column right of the picture for the caption and the picture's windows
-  // (WindowCorners docks them there), so that nothing covers what the class looks at; empty
-  // without a lesson.
+  // (WindowCorners docks them there), so that nothing covers what the class looks at, or a row
+  // under it for the caption alone (a wide scene, a folded caption); empty without a lesson.
   Viewport dock;
 };
 
@@ -146,7 +146,10 @@ private:
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
                        glm::vec4 background);
   void draw_windows(const Layout& l);
-  void measure_dock(const Layout& l, float margin);
+  void measure_dock(const Viewport& column, float margin);
+  Layout with_dock_beside(Layout l, float width) const;
+  Layout with_dock_below(Layout l, float height) const;
+  bool dock_goes_below(const Layout& beside, const Layout& below) const;
   void draw_quit_question(const Viewport& view);
   const std::string& status_shown(const std::string& text);
   void take_screenshots(const Layout& l);
@@ -204,6 +207,7 @@ private:
   bool show_whole_window_ = true;  // the next frame shows every pixel, kept or not (an expose)
   Layout last_layout_;
   float dock_wanted_ = 0.0f;  // the dock's width its windows asked for on the last frame (window units)
+  float caption_wanted_ = 0.0f;  // the caption's height with all its text on the last frame (window units)
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a
   // frame (the key callback in viewer.cpp says why).

@@ -152,7 +152,7 @@ void mesh_settings(RadiosityState& r) {
   ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
   name_widget("patch size (m)");
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
-  if (o.patch_size == 0.0f) dim_text(tr("auto: about %d patches"), o.target_patches);
+  if (o.patch_size == 0.0f) dim_text(tr("auto: the scene's triangles and about %d patches more"), o.target_patches);
   const SliderRange elements = radiosity_range("elements");
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
   name_widget("elements per patch edge");
@@ -322,6 +322,21 @@ void draw_item_buffer_window(ViewerState& state, float side) {
   } else {
     dim_text(tr("no patch has shot yet"));
     ImGui::Dummy(ImVec2(side, 0.0f));
+  }
+  ImGui::End();
+}
+
+// ---- [the heat map's legend] ------------------------------------------------------------------
+void draw_heat_map_legend_window(float width) {
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize;
+  ImGui::SetNextWindowContentSize(ImVec2(width, 0.0f));
+  if (ImGui::Begin(tr("heat map: the unshot power"), nullptr, flags)) {
+    ImGui::PushTextWrapPos(0.0f);
+    heat_map_legend();
+    ImGui::TextWrapped("%s", tr("Each patch shoots what it holds and keeps none: as the energy spreads and is absorbed, the map cools from yellow to red, blue and black."));
+    ImGui::PopTextWrapPos();
   }
   ImGui::End();
 }

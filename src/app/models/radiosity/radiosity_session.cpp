@@ -222,6 +222,7 @@ PatchReading RadiositySession::read(const Pick& pick) const {
   const Patch& p = mesh_.patches[where.patch];
   PatchReading r;
   r.patch = where.patch;
+  r.shooter = mesh_.shooter_of[where.patch];
   r.mesh = p.mesh;
   r.triangle = p.triangle;
   const int material = scene_.meshes[size_t(p.mesh)].material;

@@ -91,8 +91,8 @@ void RadiosityView::click(const Camera& camera, const Viewport& viewport, glm::i
 
 void RadiosityView::panel() { radiosity_section(viewer_.state()); }
 
-// The patch inspector in the corner away from the clicked point, the shooter's hemicube in
-// another, and at shot 0 a hint saying how to start.
+// The patch inspector in the corner away from the clicked point, the heat map's legend and the
+// shooter's hemicube in others, and at shot 0 a hint saying how to start.
 void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state.radiosity;
@@ -108,6 +108,10 @@ void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
     corners.place_away_from(at);
     draw_patch_inspector(*state.scene, *r.patch, state.show_inspector);
     draw_pick_cross(at, viewer_.ui_scale());
+  }
+  if (r.drive.heat_map) {
+    corners.place(WindowCorners::bottom_left);
+    draw_heat_map_legend_window(180.0f * viewer_.ui_scale());
   }
   r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
   if (r.drive.show_item_buffer) {
