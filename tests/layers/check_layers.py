@@ -21,7 +21,8 @@ def unit_of(relative: pathlib.PurePosixPath) -> str:
         if len(parts) == 2:
             return "models"
         model = parts[1]
-        return model if relative.stem == f"render_{model}" else f"{model}_view"
+        headless = (f"render_{model}", f"{model}_options")  # its render and its options table
+        return model if relative.stem in headless else f"{model}_view"
     if parts[0] == "cli" and len(parts) > 2:
         return parts[1]  # cli/bench
     return parts[0]
