@@ -268,12 +268,10 @@ void effects(const Reader& r, const json& step, const std::string& at, int line,
     const bool value = given.contains(name) ? r.boolean(given[name], at + "/effects/" + name, "effects: " + name) : on;
     out.push_back(command(line, "set", {name, on_off(value)}));
   }
-  const char* fog_default = defaults.fog.mode == FogMode::linear        ? "linear"
-                            : defaults.fog.mode == FogMode::exponential ? "exponential"
-                                                                        : "off";
-  const std::string fog = given.contains("fog") ? r.one_of(given["fog"], at + "/effects/fog", "effects: fog",
-                                                           {"off", "linear", "exponential"})
-                                                : fog_default;
+  // Slide 19's fog: the names and the default of --fog's row.
+  const OptionRow& fog_row = *find_row(local_table(), "fog");
+  const std::string fog = given.contains("fog") ? row_value(r, fog_row, given["fog"], at + "/effects/fog", "effects: fog")
+                                                : default_text(local_table(), fog_row);
   out.push_back(command(line, "set", {"fog", fog}));
 }
 
