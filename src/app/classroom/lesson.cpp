@@ -22,7 +22,6 @@
 #include "core/resources.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
-#include "raytracing/sampling.h"
 #include "raytracing/whitted_options.h"
 
 namespace luz::app {

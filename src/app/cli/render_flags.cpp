@@ -69,10 +69,10 @@ CLI::Option* add_flag(CLI::App& render, std::vector<FlagRow> rows, RenderSetting
 void add_rows(CLI::App& render, const OptionTable& table, RenderSettings& settings, RenderFlags& flags) {
   for (const OptionRow& row : table.rows) {
     if (!row.flag || render.get_option_no_throw(row.flag)) continue;
-    std::vector<FlagRow> rows;
+    std::vector<FlagRow> rows = {{&table, &row}};
     for (const OptionTable* other : option_tables())
       for (const OptionRow& r : other->rows)
-        if (r.flag && std::string_view(r.flag) == row.flag) rows.push_back({other, &r});
+        if (other != &table && r.flag && std::string_view(r.flag) == row.flag) rows.push_back({other, &r});
     flags.grouped.push_back({row.group, add_flag(render, rows, settings)});
   }
 }
