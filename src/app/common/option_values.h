@@ -3,6 +3,8 @@
 // the first time a table is asked for. `luz render`'s settings and the viewer's state each hold
 // one: a flag, a `set` line and a lesson's step write a row's field in it, and the model that
 // owns the table reads its struct from it. Copies are deep (a sheet's panes each get their own).
+// A struct stays where it was made while its OptionValues lives and is not assigned to, so a
+// view may keep a reference to its own (the path tracer's does).
 #include <cassert>
 #include <memory>
 #include <utility>
