@@ -16,7 +16,6 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <tbb/info.h>
-#include <tbb/parallel_for.h>
 
 #include "app/cli/bench/bench_scenes.h"
 #include "app/cli/bench/bench_table.h"
@@ -24,6 +23,7 @@
 #include "app/common/i18n.h"
 #include "app/common/options_tables.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "raytracing/renderer.h"
 #include "raytracing/sampling.h"
 
@@ -67,7 +67,7 @@ std::array<BareRays, rt::kRayKinds> bare_rays(std::span<const rt::RecordedRay> r
 // The rays of one kind traced bare in the renderer's calls: no shading, no recursion, no counters.
 double trace_bare(const rt::Intersector& embree, const BareRays& bare, rt::RayKind kind) {
   const auto start = Clock::now();
-  tbb::parallel_for(size_t(0), bare.calls.size(), [&](size_t c) {
+  parallel_for(size_t(0), bare.calls.size(), [&](size_t c) {
     thread_local std::vector<rt::Hit> hits;
     thread_local rt::BlockedFlags blocked;
     const BareRays::Call& call = bare.calls[c];
