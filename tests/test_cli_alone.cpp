@@ -12,6 +12,7 @@
 
 #include "app/cli/render_command.h"
 #include "app/common/model_registry.h"
+#include "app/common/options_tables.h"
 #include "app/models/local/render_local.h"
 #include "app/models/whitted/render_whitted.h"
 #include "support.h"
@@ -30,14 +31,17 @@ Rendered render_traced(const Scene& scene, const Camera& camera, int width, int 
   return render_whitted(scene, camera, width, height, settings);
 }
 
+constexpr OptionTableOf local_options[] = {local_table};
+constexpr OptionTableOf whitted_options[] = {local_table, whitted_table};
+
 const ModelEntry table[] = {
-    {"flat", "flat", 1, "flat shading", local_flags, render_flat, nullptr, {}, nullptr},
-    {"whitted", "Whitted", 4, "Whitted ray tracing", whitted_flags, render_traced, nullptr, {}, nullptr},
+    {"flat", "flat", 1, "flat shading", local_flags, local_options, render_flat, nullptr, {}, nullptr},
+    {"whitted", "Whitted", 4, "Whitted ray tracing", whitted_flags, whitted_options, render_traced, nullptr, {}, nullptr},
 };
 
 }  // namespace
 
-std::span<const ModelEntry> models() { return table; }
+std::span<const ModelEntry> catalogue() { return table; }
 
 }  // namespace luz::app
 

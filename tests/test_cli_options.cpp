@@ -1,4 +1,4 @@
-// `luz render`'s flags come from the options tables (src/app/common/options_tables.h): every float flag
+// `luz render`'s flags come from the options tables (src/app/common/option_row.h): every float flag
 // refuses nan and inf as a usage error naming the flag; the help quotes each option's default
 // as its struct has it; a range without an upper end is said in words.
 #include <string>
@@ -24,10 +24,9 @@ const char* model_for(const char* group) {
   return "phong";
 }
 
-template <class Options>
-std::vector<std::pair<std::string, std::string>> real_flags(std::span<const OptionRow<Options>> rows) {
+std::vector<std::pair<std::string, std::string>> real_flags(const OptionTable& table) {
   std::vector<std::pair<std::string, std::string>> flags;
-  for (const OptionRow<Options>& row : rows)
+  for (const OptionRow& row : table.rows)
     if (row.flag && row.kind == OptionKind::real) flags.emplace_back(row.flag, model_for(row.group));
   return flags;
 }
@@ -36,9 +35,8 @@ TEST(CliOptions, EveryFloatFlagRefusesNanAndInfinity) {
   test::ScratchDir dir;
   const std::string scene = (test::scene_dir() / "cornell_box.gltf").string(), out = (dir / "a.png").string();
   std::vector<std::pair<std::string, std::string>> flags = {{"--exposure", "phong"}};
-  for (const auto& f : real_flags(local_rows())) flags.push_back(f);
-  for (const auto& f : real_flags(whitted_rows())) flags.push_back(f);
-  for (const auto& f : real_flags(radiosity_rows())) flags.push_back(f);
+  for (const OptionTable* table : {&local_table(), &whitted_table(), &radiosity_table()})
+    for (const auto& f : real_flags(*table)) flags.push_back(f);
   EXPECT_GE(flags.size(), 9u);  // exposure, fog x3, shadow biases x3, converge, patch size, ...
   for (const auto& [flag, model] : flags)
     for (const char* value : {"nan", "inf", "-inf", "NaN"}) {
@@ -53,12 +51,11 @@ TEST(CliOptions, EveryFloatFlagRefusesNanAndInfinity) {
 TEST(CliOptions, TheHelpQuotesTheStructsDefaults) {
   const auto help = run_luz({"render", "--help"});
   ASSERT_EQ(help.exit_code, 0);
-  auto expect_default = [&](const auto& row) {
-    if (!row.flag || row.kind == OptionKind::on_off) return;
-    EXPECT_TRUE(contains(help.output, "default " + default_text(row))) << row.flag;
-  };
-  for (const auto& row : local_rows()) expect_default(row);
-  for (const auto& row : whitted_rows()) expect_default(row);
+  for (const OptionTable* table : {&local_table(), &whitted_table(), &radiosity_table()})
+    for (const OptionRow& row : table->rows)
+      if (row.flag && row.kind != OptionKind::on_off) {
+        EXPECT_TRUE(contains(help.output, "default " + default_text(*table, row))) << row.flag;
+      }
   EXPECT_TRUE(contains(help.output, "default " + std::to_string(RadiosityOptions{}.hemicube_res)));
   EXPECT_TRUE(contains(help.output, "default " + std::to_string(rt::WhittedOptions{}.max_depth)));
 }

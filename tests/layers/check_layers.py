@@ -21,7 +21,8 @@ def unit_of(relative: pathlib.PurePosixPath) -> str:
         if len(parts) == 2:
             return "models"
         model = parts[1]
-        return model if relative.stem == f"render_{model}" else f"{model}_view"
+        headless = (f"render_{model}", f"{model}_options")  # its render and its options table
+        return model if relative.stem in headless else f"{model}_view"
     if parts[0] == "cli" and len(parts) > 2:
         return parts[1]  # cli/bench
     return parts[0]
@@ -43,6 +44,18 @@ def read_layers(path: pathlib.Path):
     return allowed, never
 
 
+def model_rules(unit: str, allowed, never) -> None:
+    """A model folder that layers.txt does not name takes its MODEL and MODEL_view rules."""
+    if unit in allowed:
+        return
+    view = unit.endswith("_view")
+    model = unit[: -len("_view")] if view else unit
+    template = "MODEL_view" if view else "MODEL"
+    if template in allowed:
+        allowed[unit] = {u.replace("MODEL", model) for u in allowed[template]}
+        never[unit] = never.get(template, [])
+
+
 def main() -> int:
     layers, app = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     allowed, never = read_layers(layers)
@@ -53,6 +66,8 @@ def main() -> int:
     for path in files:
         relative = pathlib.PurePosixPath(path.relative_to(app).as_posix())
         unit = unit_of(relative)
+        if relative.parts[0] == "models" and len(relative.parts) > 2:
+            model_rules(unit, allowed, never)
         if unit not in allowed:
             problems.append(f"{relative}: its unit '{unit}' is not in {layers.name}")
             continue
@@ -66,8 +81,10 @@ def main() -> int:
                 if spelled.startswith(banned):
                     problems.append(f"{relative}:{number}: {unit} never includes {line.strip()[len('#include '):]}")
             if bracket == '"' and header.startswith("app/"):
-                target = unit_of(pathlib.PurePosixPath(header[len("app/"):]))
-                if target != unit and target not in allowed[unit]:
+                included = pathlib.PurePosixPath(header[len("app/"):])
+                target = unit_of(included)
+                any_model = "EVERY_MODEL" in allowed[unit] and included.parts[0] == "models" and len(included.parts) > 2
+                if target != unit and target not in allowed[unit] and not any_model:
                     problems.append(f"{relative}:{number}: {unit} may not include {header} ({target})")
     for folder in sorted({app, *(p for p in app.rglob("*") if p.is_dir())}):
         count = sum(1 for p in folder.iterdir() if p.is_file())

@@ -22,7 +22,6 @@
 #include "core/resources.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
-#include "raytracing/sampling.h"
 #include "raytracing/whitted_options.h"
 
 namespace luz::app {
@@ -214,6 +213,27 @@ const std::vector<std::string>& all_models() {
 
 std::string on_off(bool on) { return on ? "on" : "off"; }
 
+// A step's value for an options row, in the words `set` takes, checked by the row (the check the
+// flags and `set` make): true or false for a switch, a name for a choice, a number else.
+std::string row_value(const Reader& r, const OptionRow& row, const json& value, const std::string& pointer,
+                      const std::string& what) {
+  if (row.kind == OptionKind::on_off) return on_off(r.boolean(value, pointer, what));
+  std::string text;
+  if (row.kind == OptionKind::choice && value.is_string()) text = value.get<std::string>();
+  if (row.kind == OptionKind::integer && value.is_number_integer()) text = std::to_string(value.get<long long>());
+  if (row.kind == OptionKind::real && value.is_number()) text = fmt::format("{}", value.get<double>());
+  if (text.empty() || !parse_value(row, text, false))
+    r.fail(pointer, trf("{} must be {}", what, accepted_text(row, Wording::translated)));
+  if (!parse_value(row, text)) r.fail(pointer, trf("{} must be {}", what, tr(row.rule_text)));
+  return text;
+}
+
+// The options tables a lesson's step names by their own key ("path": {"seed": 3}): the models'
+// own tables. The shared ones have the lecture's groups below (terms, effects, whitted, radiosity).
+bool shared_table(const OptionTable& table) {
+  return &table == &local_table() || &table == &whitted_table() || &table == &radiosity_table();
+}
+
 ScriptCommand command(int line, std::string verb, std::vector<std::string> args) {
   return {line, std::move(verb), std::move(args)};
 }
@@ -247,12 +267,10 @@ void effects(const Reader& r, const json& step, const std::string& at, int line,
     const bool value = given.contains(name) ? r.boolean(given[name], at + "/effects/" + name, "effects: " + name) : on;
     out.push_back(command(line, "set", {name, on_off(value)}));
   }
-  const char* fog_default = defaults.fog.mode == FogMode::linear        ? "linear"
-                            : defaults.fog.mode == FogMode::exponential ? "exponential"
-                                                                        : "off";
-  const std::string fog = given.contains("fog") ? r.one_of(given["fog"], at + "/effects/fog", "effects: fog",
-                                                           {"off", "linear", "exponential"})
-                                                : fog_default;
+  // Slide 19's fog: the names and the default of --fog's row.
+  const OptionRow& fog_row = *find_row(local_table(), "fog");
+  const std::string fog = given.contains("fog") ? row_value(r, fog_row, given["fog"], at + "/effects/fog", "effects: fog")
+                                                : default_text(local_table(), fog_row);
   out.push_back(command(line, "set", {"fog", fog}));
 }
 
@@ -261,18 +279,14 @@ void whitted(const Reader& r, const json& step, const std::string& at, int line,
   const json given = step.value("whitted", json::object());
   const std::string w = at + "/whitted";
   r.only_keys(given, w, "whitted", {"depth", "spp", "light-samples", "fresnel", "adaptive", "brute-force", "shadow-rays"});
-  const long depth = given.contains("depth") ? r.integer(given["depth"], w + "/depth", "whitted: depth", 0, 64) : d.max_depth;
-  long spp = d.spp;
-  if (given.contains("spp")) {
-    spp = r.integer(given["spp"], w + "/spp", "whitted: spp", 1, 4096);
-    if (!rt::is_square(int(spp))) r.fail(w + "/spp", tr("whitted: spp must be a square: 1, 4, 9, 16, ..."));
+  // The numbers: the step's value, checked by its row, else the default.
+  for (const char* name : {"depth", "spp", "light-samples"}) {
+    const OptionRow& row = *find_row(whitted_table(), name);
+    const std::string value = given.contains(name)
+                                  ? row_value(r, row, given[name], w + "/" + name, std::string("whitted: ") + name)
+                                  : default_text(whitted_table(), row);
+    out.push_back(command(line, "set", {name, value}));
   }
-  const long samples = given.contains("light-samples")
-                           ? r.integer(given["light-samples"], w + "/light-samples", "whitted: light-samples", 1, 1024)
-                           : d.light_samples;
-  out.push_back(command(line, "set", {"depth", std::to_string(depth)}));
-  out.push_back(command(line, "set", {"spp", std::to_string(spp)}));
-  out.push_back(command(line, "set", {"light-samples", std::to_string(samples)}));
   const std::vector<std::pair<std::string, bool>> switches = {{"fresnel", d.fresnel},
                                                               {"adaptive", d.sampling == rt::Sampling::adaptive},
                                                               {"brute-force", d.brute_force},
@@ -299,29 +313,44 @@ void radiosity(const Reader& r, const json& step, const std::string& at, int lin
     const bool value = given.contains(name) ? r.boolean(given[name], p + "/" + name, "radiosity: " + name) : on;
     out.push_back(command(line, "radiosity", {name, on_off(value)}));
   }
-  const double size = given.contains("patch-size")
-                          ? r.number(given["patch-size"], p + "/patch-size", "radiosity: patch-size (metres, 0: auto)", 0.0, 100.0)
-                          : double(o.patch_size);
-  long hemicube = o.hemicube_res;
-  if (given.contains("hemicube")) {
-    hemicube = r.integer(given["hemicube"], p + "/hemicube", "radiosity: hemicube", kMinHemicubeRes, kMaxHemicubeRes);
-    if (hemicube % 2 != 0) r.fail(p + "/hemicube", tr("radiosity: hemicube must be even"));
+  for (const char* name : {"patch-size", "hemicube"}) {
+    const OptionRow& row = *find_row(radiosity_table(), name);
+    const std::string value = given.contains(name)
+                                  ? row_value(r, row, given[name], p + "/" + name, std::string("radiosity: ") + name)
+                                  : default_text(radiosity_table(), row);
+    out.push_back(command(line, "radiosity", {name, value}));
   }
-  out.push_back(command(line, "radiosity", {"patch-size", fmt::format("{}", float(size))}));
-  out.push_back(command(line, "radiosity", {"hemicube", std::to_string(hemicube)}));
   // Slide 40: uniform or adaptive meshing, and which of the form-factor methods; their names and
   // defaults are those of --meshing and --form-factors (the options table).
   for (const char* name : {"meshing", "form-factors"}) {
-    const RadiosityRow& row = *find_row(radiosity_rows(), name);
+    const OptionRow& row = *find_row(radiosity_table(), name);
     const std::vector<std::string> names(row.choices.begin(), row.choices.end());
     const std::string value = given.contains(name)
                                   ? r.one_of(given[name], p + "/" + name, std::string("radiosity: ") + name, names)
-                                  : default_text(row);
+                                  : default_text(radiosity_table(), row);
     out.push_back(command(line, "radiosity", {name, value}));
   }
   if (given.contains("budget"))
     out.push_back(command(line, "radiosity", {"budget", fmt::format("{}", float(r.number(given["budget"], p + "/budget",
                                                                                          "radiosity: budget (ms)", 0.0, 1000.0, true)))}));
+}
+
+// A model's own table: `set TABLE.NAME VALUE` for each row the step gives (the others are left
+// as they are: such a table's viewer start may differ from its defaults, as the path tracer's).
+void model_options(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
+  for (const OptionTable* table : option_tables()) {
+    if (shared_table(*table) || !step.contains(table->name)) continue;
+    const json& given = step[table->name];
+    const std::string p = at + "/" + table->name;
+    std::vector<std::string> names;
+    for (const OptionRow& row : table->rows) names.push_back(row.name);
+    r.only_keys(given, p, table->name, names);
+    for (const auto& [name, value] : given.items()) {
+      const OptionRow& row = *find_row(*table, name);
+      const std::string text = row_value(r, row, value, p + "/" + name, std::string(table->name) + ": " + name);
+      out.push_back(command(line, "set", {std::string(table->name) + "." + name, text}));
+    }
+  }
 }
 
 // What a step may ask of its models: solving needs radiosity or the hybrid shown, tracing a
@@ -381,9 +410,11 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
 LessonStep read_step(const Reader& r, const json& step, size_t index, const std::filesystem::path& folder,
                      const LessonStep* before) {
   const std::string at = fmt::format("/steps/{}", index);
-  r.only_keys(step, at, trf("step {}", index + 1),
-              {"slide", "title", "text", "scene", "camera", "model", "exposure", "terms", "effects", "whitted",
-               "radiosity", "panes", "actions"});
+  std::vector<std::string> keys = {"slide", "title", "text", "scene", "camera", "model", "exposure", "terms",
+                                   "effects", "whitted", "radiosity", "panes", "actions"};
+  for (const OptionTable* table : option_tables())
+    if (!shared_table(*table)) keys.push_back(table->name);
+  r.only_keys(step, at, trf("step {}", index + 1), keys);
   LessonStep out;
   if (!step.contains("slide")) r.fail(at, trf("step {}: \"slide\" is missing", index + 1));
   out.slide = int(r.integer(step["slide"], at + "/slide", "slide", 1, kLectureSlides));
@@ -428,6 +459,7 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
   effects(r, step, at, line, c);
   whitted(r, step, at, line, c);
   radiosity(r, step, at, line, c);
+  model_options(r, step, at, line, c);
   if (step.contains("panes")) {
     const json& panes = step["panes"];
     if (!panes.is_array() || (panes.size() != 2 && panes.size() != 4))

@@ -17,6 +17,7 @@
 #include "io/gltf_loader.h"
 #include "io/image_io.h"
 #include "app/common/model_registry.h"
+#include "app/common/options_tables.h"
 #include "app/cli/render_grid.h"
 
 namespace luz::app {
@@ -126,6 +127,20 @@ float chosen_exposure(const RenderSettings& settings, const Scene& scene, const 
 std::filesystem::path ray_tree_path(const std::filesystem::path& out) {
   std::filesystem::path path = out;
   return path.replace_extension(".ray-tree.json");
+}
+
+void* options_of(RenderSettings& settings, const OptionTable& table) {
+  if (&table == &local_table()) return &settings.local;
+  if (&table == &whitted_table()) return &settings.whitted;
+  if (&table == &radiosity_table()) return &settings.radiosity;
+  return settings.model_options.of(table);
+}
+
+const void* options_of(const RenderSettings& settings, const OptionTable& table) {
+  if (&table == &local_table()) return &settings.local;
+  if (&table == &whitted_table()) return &settings.whitted;
+  if (&table == &radiosity_table()) return &settings.radiosity;
+  return settings.model_options.of(table);
 }
 
 int run_render(const RenderSettings& settings) {

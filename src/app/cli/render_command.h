@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/common/option_values.h"
 #include "core/scene.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
@@ -18,11 +19,6 @@ namespace CLI { class App; class Option; }
 namespace luz::app {
 
 struct RadiositySolution;
-// The flags only --model path takes (--spp and --depth it shares with the Whitted tracer).
-struct PathFlags {
-  uint32_t seed = 0;
-  std::string error_out;  // --error-out FILE.exr: the standard error per pixel
-};
 
 struct RenderSettings {
   std::string scene;
@@ -43,8 +39,9 @@ struct RenderSettings {
   // and the pixel whose ray tree is written beside the image.
   rt::WhittedOptions whitted;
   std::optional<std::pair<int, int>> ray_tree;
-  // --model path: its own flags (it shares --spp and --depth with whitted).
-  PathFlags path;
+  // The options of a model's own table (the path tracer's, option_row.h): its flags write them.
+  OptionValues model_options;
+  std::string error_out;  // --model path --error-out FILE.exr: the standard error per pixel
   // The flags of a flag group that were given, with their group: a group the model does not
   // take (model_registry.h) is a usage error.
   struct GivenFlag {
@@ -57,9 +54,10 @@ struct RenderSettings {
   std::shared_ptr<const RadiositySolution> radiosity_solution;
 };
 
-// Declares --seed and --error-out on `render`; returns them so that the command can
-// tell which were given (a usage error with another model).
-std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags);
+// Where the struct of an options table is: the shared tables' (local, whitted, radiosity) are
+// fields above, a model's own is in model_options.
+void* options_of(RenderSettings& settings, const OptionTable& table);
+const void* options_of(const RenderSettings& settings, const OptionTable& table);
 
 // Parses "WxH"; false when malformed or out of range.
 bool parse_size(const std::string& text, int& width, int& height);

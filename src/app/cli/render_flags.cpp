@@ -1,7 +1,7 @@
-// `luz render`'s flags. The options' flags come from the options tables (options_tables.h):
-// each row's flag, its help with the struct's default, its range and its check (a float must be
-// finite: nan and inf are usage errors). The few flags that are not one number or switch (a
-// colour, a file, a pixel) are written out below.
+// `luz render`'s flags. The options' flags come from the registry's options tables
+// (option_row.h): each row's flag, its help with the struct's default, its range and its check
+// (a float must be finite: nan and inf are usage errors). The few flags that are not one number
+// or switch (a colour, a file, a pixel) are written out below.
 #include "app/cli/render_flags.h"
 
 #include <CLI/CLI.hpp>
@@ -10,6 +10,7 @@
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
+#include "app/common/option_values.h"
 #include "app/cli/render_grid.h"
 #include "app/common/numbers.h"
 #include "gl/offscreen_context.h"
@@ -17,58 +18,66 @@
 namespace luz::app {
 namespace {
 
-template <class Options>
-std::string help_of(const OptionRow<Options>& row) {
+std::string help_of(const OptionTable& table, const OptionRow& row) {
   if (row.kind == OptionKind::on_off) return tr(row.help);
-  return trf("{} ({}; default {})", tr(row.help), accepted_text(row, Wording::translated), default_text(row));
+  return trf("{} ({}; default {})", tr(row.help), accepted_text(row, Wording::translated), default_text(table, row));
 }
 
-// One flag from a row, writing into `options`.
-template <class Options>
-CLI::Option* add_row(CLI::App& render, const OptionRow<Options>& row, Options& options) {
-  if (row.kind == OptionKind::on_off) {
-    const bool off = row.get(Options{}) != 0.0;  // the flag turns the default around
-    return render.add_flag_callback(row.flag, [&row, &options, off] { row.set(options, off ? 0.0 : 1.0); },
-                                    help_of(row));
+// A flag's rows: one, or one in each table that shares the flag (the tracers' --spp).
+struct FlagRow {
+  const OptionTable* table;
+  const OptionRow* row;
+};
+
+// One flag from its rows, writing into each row's struct in `settings`. The first row gives the
+// help, the kind and the group (a shared flag's rows agree on them). A shared flag's rule (the
+// Whitted tracer's square --spp) is its model's render's check, since another model takes any
+// value in the range.
+CLI::Option* add_flag(CLI::App& render, std::vector<FlagRow> rows, RenderSettings& settings) {
+  const FlagRow first = rows.front();
+  if (first.row->kind == OptionKind::on_off) {
+    const bool off = first.row->get(first.table->defaults()) != 0.0;  // the flag turns the default around
+    return render.add_flag_callback(
+        first.row->flag,
+        [rows, &settings, off] {
+          for (const FlagRow& r : rows) r.row->set(options_of(settings, *r.table), off ? 0.0 : 1.0);
+        },
+        help_of(*first.table, *first.row));
   }
   CLI::Option* option = render.add_option_function<std::string>(
-      row.flag,
-      [&row, &options](const std::string& text) {
-        // The sampling flags are shared by the tracers: the Whitted tracer's square --spp is its
-        // render's check, since the path tracer takes any count.
-        const bool shared = std::string_view(row.group) == "sampling";
-        const std::optional<double> value = parse_value(row, text, !shared);
-        if (!value) throw CLI::ValidationError(row.flag, trf("{}: expected {}", text, accepted_text(row, Wording::translated)));
-        row.set(options, *value);
+      first.row->flag,
+      [rows, &settings](const std::string& text) {
+        for (const FlagRow& r : rows) {
+          const std::optional<double> value = parse_value(*r.row, text, rows.size() == 1);
+          if (!value)
+            throw CLI::ValidationError(r.row->flag, trf("{}: expected {}", text, accepted_text(*r.row, Wording::translated)));
+          r.row->set(options_of(settings, *r.table), *value);
+        }
       },
-      help_of(row));
-  if (row.kind == OptionKind::choice) {
+      help_of(*first.table, *first.row));
+  if (first.row->kind == OptionKind::choice) {
     std::string names;
-    for (const char* c : row.choices) names += (names.empty() ? "" : "|") + std::string(c);
+    for (const char* c : first.row->choices) names += (names.empty() ? "" : "|") + std::string(c);
     option->type_name(names);
   } else {
-    option->type_name(row.kind == OptionKind::integer ? "INT" : "NUMBER");
+    option->type_name(first.row->kind == OptionKind::integer ? "INT" : "NUMBER");
   }
   return option;
 }
 
-template <class Options>
-void add_rows(CLI::App& render, std::span<const OptionRow<Options>> rows, Options& options, RenderFlags& flags) {
-  for (const OptionRow<Options>& row : rows)
-    if (row.flag) flags.grouped.push_back({row.group, add_row(render, row, options)});
+// The flags of a table's rows, in its order; a flag a table already declared (shared) is left.
+void add_rows(CLI::App& render, const OptionTable& table, RenderSettings& settings, RenderFlags& flags) {
+  for (const OptionRow& row : table.rows) {
+    if (!row.flag || render.get_option_no_throw(row.flag)) continue;
+    std::vector<FlagRow> rows = {{&table, &row}};
+    for (const OptionTable* other : option_tables())
+      for (const OptionRow& r : other->rows)
+        if (other != &table && r.flag && std::string_view(r.flag) == row.flag) rows.push_back({other, &r});
+    flags.grouped.push_back({row.group, add_flag(render, rows, settings)});
+  }
 }
 
 }  // namespace
-
-std::vector<CLI::Option*> add_path_flags(CLI::App& render, PathFlags& flags) {
-  return {
-      render.add_option("--seed", flags.seed,
-                        tr("path: seed of the random numbers (the same seed gives the same picture)"))
-          ->capture_default_str(),
-      render.add_option("--error-out", flags.error_out,
-                        tr("path: write the per-pixel standard error of the mean to this .exr")),
-  };
-}
 
 RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   RenderFlags flags;
@@ -104,7 +113,9 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       tr("Headless OpenGL: egl or osmesa (default: $LUZ_GL, else EGL when it works, else OSMesa)"))
       ->check(CLI::IsMember({"egl", "osmesa", "auto"}));
 
-  add_rows(render, local_rows(), settings.local, flags);
+  // The shared options tables' rows, each beside the flags that go with its table, then the
+  // models' own tables.
+  add_rows(render, local_table(), settings, flags);
   flags.grouped.push_back({"local", render.add_option_function<std::string>(
       "--fog-colour",
       [&settings](const std::string& text) {
@@ -118,7 +129,7 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   flags.grouped.push_back({"local", render.add_option("--environment", settings.local.reflection.environment,
       tr("Equirectangular image of the surroundings, seen in reflections where no object is"))});
 
-  add_rows(render, whitted_rows(), settings.whitted, flags);
+  add_rows(render, whitted_table(), settings, flags);
   flags.grouped.push_back({"whitted", render.add_option_function<std::string>(
       "--ray-tree",
       [&settings](const std::string& text) {
@@ -128,16 +139,19 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       },
       tr("whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"))});
 
-  for (CLI::Option* option : add_path_flags(render, settings.path)) flags.grouped.push_back({"path", option});
+  flags.grouped.push_back({"path", render.add_option("--error-out", settings.error_out,
+      tr("path: write the per-pixel standard error of the mean to this .exr"))});
   flags.grouped.push_back({"time", render.add_option("--time", settings.seconds,
       tr("path: render passes of one sample per pixel until SECONDS are up (with --spp: at most that "
          "many samples); radiosity/hybrid: stop shooting when SECONDS of solving are up, if --shots or "
          "--converge has not stopped it first (0.001 .. 10000000)"))
       ->type_name("SECONDS")->check(CLI::Range(0.001, 1e7).description(""))});
 
-  add_rows(render, radiosity_rows(), settings.radiosity, flags);
+  add_rows(render, radiosity_table(), settings, flags);
   flags.grouped.push_back({"radiosity", render.add_option("--csv", settings.csv,
       tr("radiosity/hybrid: write the unshot power after every shot to this CSV file"))});
+  // The models' own tables (the path tracer's --seed; its --spp and --depth are Whitted's above).
+  for (const OptionTable* table : option_tables()) add_rows(render, *table, settings, flags);
   // One stopping rule: a number of shots or a threshold.
   CLI::Option* shots = render.get_option("--shots");
   shots->excludes(render.get_option("--converge"));

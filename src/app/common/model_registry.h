@@ -1,9 +1,10 @@
 #pragma once
 // The illumination models, one entry each: the name `luz render --model` and the script take,
-// the panel's label, the digit key, the command-line flag groups it accepts, its headless render
-// and its viewer view. `luz render`, `main`'s --help, the script's `model` verb, the panel's
-// radio buttons, F1 and the keys all read this table, so adding a model is one file pair (its
-// render function and its ModelView) and one line in model_registry.cpp.
+// the panel's label, the digit key, the command-line flag groups it accepts, its options tables,
+// its headless render and its viewer view. `luz render` (its flags and --help), `main`'s --help,
+// the script's `model` and `set` verbs, dump-state, the lessons, the panel's radio buttons, F1
+// and the keys all read these entries, so adding a model is one folder, one line in the
+// catalogue (models/model_catalogue.cpp) and one CMake line (docs/adding-a-model.md).
 #include <memory>
 #include <optional>
 #include <span>
@@ -11,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/common/option_row.h"
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/scene.h"
@@ -30,6 +32,9 @@ struct Rendered {
   std::optional<std::string> ray_tree;  // JSON, written beside the image when --ray-tree was given
 };
 
+// An options table of a model's, by the function that holds it (options_tables.h, a model's own).
+using OptionTableOf = const OptionTable& (*)();
+
 struct ModelEntry {
   const char* name;    // `luz render --model NAME`, `model NAME` in a script
   const char* label;   // the panel's radio button, the status line
@@ -40,6 +45,9 @@ struct ModelEntry {
   // "path", "radiosity", "radiosity-display", "time"); a flag of
   // another group is a usage error naming the models that take it.
   std::span<const char* const> flag_groups;
+  // The options tables it takes (option_row.h): their rows are its flags, its `set` names, its
+  // panel's ranges, its lessons' keys and its part of dump-state's settings.
+  std::span<const OptionTableOf> options;
   // Headless (OSMesa or CPU): makes its own GL context when it needs one.
   Rendered (*render)(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings);
   // The viewer's view; the scene and the GL context are the viewer's.
@@ -50,7 +58,27 @@ struct ModelEntry {
   std::shared_ptr<const RadiositySolution> (*solve)(const Scene& scene, const RenderSettings& settings);
 };
 
+// Every model: the catalogue's, in its order, then those registered (ModelRegistration).
 std::span<const ModelEntry> models();
+// The program's own table (models/model_catalogue.cpp; a program of the command line alone
+// writes its own).
+std::span<const ModelEntry> catalogue();
+// A model added to the catalogue's by a program that links it (a test's model, a plug-in): a
+// namespace-scope `const ModelRegistration toy{entry};` adds it before main, after the
+// catalogue's. A name or key already taken is a programmer's error (the program stops).
+struct ModelRegistration {
+  explicit ModelRegistration(const ModelEntry& entry);
+};
+
+// Every options table the models take, each once, in the models' order.
+std::vector<const OptionTable*> option_tables();
+// The row of a script name: "spp" (the first table's, in option_tables()' order, that has it) or
+// "TABLE.NAME" ("path.spp": that table's). Empty when there is none.
+struct FoundOption {
+  const OptionTable* table;
+  const OptionRow* row;
+};
+std::optional<FoundOption> find_option(std::string_view name);
 // The difference view's reference: the model that solves slide 14's equation itself.
 const ModelEntry& reference_model();
 // The lecture's comparisons side by side (slide 44), as lists of model names.

@@ -45,9 +45,9 @@ void set_radiosity(const std::vector<std::string>& a, RadiosityOptions& options,
     picture.heat_map = a[1] == "on";
     return;
   }
-  const RadiosityRow* row = find_row(radiosity_rows(), a[0]);
+  const OptionRow* row = find_row(radiosity_table(), a[0]);
   if (!row) return;
-  if (const std::optional<double> value = parse_value(*row, a[1])) row->set(options, *value);
+  if (const std::optional<double> value = parse_value(*row, a[1])) row->set(&options, *value);
   if (is_mesh_setting(a[0])) mesh += a[0] + "=" + a[1] + " ";
 }
 
@@ -60,6 +60,7 @@ bool StepPicture::shows_radiosity() const {
 std::vector<StepPicture> step_pictures(const Lesson& lesson) {
   std::vector<StepPicture> pictures;
   ViewerState state;  // the switches and settings the script's `set` verb changes
+  state.model_options = OptionValues(OptionValues::Start::render);  // luz render's defaults
   std::optional<float> exposure;
   bool exposure_auto = false;
   std::string scene;
@@ -102,6 +103,7 @@ std::vector<StepPicture> step_pictures(const Lesson& lesson) {
     picture.settings.local = state.local;
     picture.settings.whitted = state.whitted;
     picture.settings.radiosity = radiosity;
+    picture.settings.model_options = state.model_options;
     picture.settings.exposure = exposure;
     picture.settings.exposure_auto = exposure_auto;
     picture.settings.quiet = true;

@@ -1,13 +1,16 @@
-// The registry: one line per model. A model brings its headless render (render_NAME.*) and its
-// viewer view (NAME_view.*); its line here names the flag groups it takes and its own script
-// verbs. The order is the keys' and the panel's.
+// The catalogue: one line per model. A model brings its folder: its headless render
+// (render_NAME.*), its viewer view (NAME_view.*) and, when it has options of its own, its options
+// table; its line here names the flag groups and the options tables it takes and its own script
+// verbs. The order is the keys', the panel's and --help's.
 #include "app/common/model_registry.h"
 
 #include <fmt/format.h>
 
 #include "app/models/hybrid/hybrid_view.h"
 #include "app/common/i18n.h"
+#include "app/common/options_tables.h"
 #include "app/models/local/local_view.h"
+#include "app/models/path/path_options.h"
 #include "app/models/path/path_view.h"
 #include "app/models/radiosity/render_radiosity.h"
 #include "app/models/radiosity/radiosity_view.h"
@@ -32,6 +35,14 @@ constexpr const char* radiosity_flags[] = {"textures", "radiosity", "radiosity-d
 constexpr const char* hybrid_flags[] = {"terms", "textures", "whitted", "sampling", "radiosity", "time"};
 // The path tracer solves slide 14's equation: the lecture's term switches do not apply to it.
 constexpr const char* path_flags[] = {"sampling", "path", "time"};
+
+// The options tables each model takes: the local terms' switches are read by every model that
+// draws a texture or a term; the hybrid takes both the tracer's and the solver's.
+constexpr OptionTableOf local_options[] = {local_table};
+constexpr OptionTableOf whitted_options[] = {local_table, whitted_table};
+constexpr OptionTableOf radiosity_options[] = {local_table, radiosity_table};
+constexpr OptionTableOf hybrid_options[] = {local_table, whitted_table, radiosity_table};
+constexpr OptionTableOf path_options[] = {path_table};
 
 template <Shading shading>
 Rendered render_shaded(const Scene& scene, const Camera& camera, int width, int height, const RenderSettings& settings) {
@@ -59,25 +70,25 @@ Rendered render_whitted_model(const Scene& scene, const Camera& camera, int widt
 }
 
 const ModelEntry table[] = {
-    {"flat", N_("flat"), 1, N_("flat shading"), local_flags, render_shaded<Shading::flat>, local_view<Shading::flat>, {}, nullptr},
-    {"gouraud", N_("Gouraud"), 2, N_("Gouraud shading"), local_flags, render_shaded<Shading::gouraud>,
+    {"flat", N_("flat"), 1, N_("flat shading"), local_flags, local_options, render_shaded<Shading::flat>, local_view<Shading::flat>, {}, nullptr},
+    {"gouraud", N_("Gouraud"), 2, N_("Gouraud shading"), local_flags, local_options, render_shaded<Shading::gouraud>,
      local_view<Shading::gouraud>, {}, nullptr},
-    {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, render_shaded<Shading::phong>, local_view<Shading::phong>, {}, nullptr},
-    {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags,
+    {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, local_options, render_shaded<Shading::phong>, local_view<Shading::phong>, {}, nullptr},
+    {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags, whitted_options,
      render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedView>(v); },
      traced_verbs(), nullptr},
-    {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags,
+    {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags, radiosity_options,
      render_radiosity_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityView>(v); },
      radiosity_verbs(), solve_radiosity_model},
     {"hybrid", N_("hybrid"), 6, N_("hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"),
-     hybrid_flags, render_hybrid,
+     hybrid_flags, hybrid_options, render_hybrid,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> {
        return std::make_unique<HybridView>(v, static_cast<RadiosityView&>(v.view("radiosity")));
      },
      {}, nullptr},
     {"path", N_("path tracer"), 7, N_("path tracing of slide 14's equation, the reference (refines while the view stays)"),
-     path_flags, render_path_model,
+     path_flags, path_options, render_path_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<PathView>(v); }, path_verbs(), nullptr},
 };
 
@@ -92,6 +103,6 @@ const ModelEntry& reference_model() { return *find_model("path"); }
 
 std::span<const std::vector<std::string>> lecture_comparisons() { return comparisons; }
 
-std::span<const ModelEntry> models() { return table; }
+std::span<const ModelEntry> catalogue() { return table; }
 
 }  // namespace luz::app

@@ -86,12 +86,12 @@ void effects_section(LocalOptions& o) {
     ImGui::ColorEdit3(tr("fog colour"), &o.fog.colour.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     name_widget("fog colour");
     if (o.fog.mode == FogMode::linear) {
-      const SliderRange near = local_range("fog-near"), far = local_range("fog-far");
+      const SliderRange near = slider_range(local_table(), "fog-near"), far = slider_range(local_table(), "fog-far");
       ImGui::DragFloatRange2(tr("near, far (m)"), &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
       name_widget("near, far (m)");
       dim_text(tr("f = (far - d) / (far - near), clamped"));
     } else {
-      const SliderRange density = local_range("fog-density");
+      const SliderRange density = slider_range(local_table(), "fog-density");
       ImGui::DragFloat(tr("density (1/m)"), &o.fog.density, 0.002f, density.low, density.high, "%.3f");
       name_widget("density (1/m)");
       dim_text(tr("f = exp(-density d)"));
@@ -102,8 +102,8 @@ void effects_section(LocalOptions& o) {
   // Blocking of the sources by occlusion.
   term_checkbox(N_("shadows S_i (shadow maps)  [H]"), &o.shadows.on, shadow_colour);
   if (o.shadows.on) {
-    const SliderRange bias = local_range("shadow-bias"), slope = local_range("shadow-slope-bias"),
-                      offset = local_range("shadow-normal-offset");
+    const SliderRange bias = slider_range(local_table(), "shadow-bias"), slope = slider_range(local_table(), "shadow-slope-bias"),
+                      offset = slider_range(local_table(), "shadow-normal-offset");
     ImGui::DragFloat(tr("bias (m)"), &o.shadows.constant_bias, 0.0002f, bias.low, bias.high, "%.4f");
     name_widget("bias (m)");
     ImGui::DragFloat(tr("slope (texels)"), &o.shadows.slope_bias, 0.02f, slope.low, slope.high, "%.2f");

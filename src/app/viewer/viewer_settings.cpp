@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
 #include "app/script/script.h"
 
@@ -18,15 +19,12 @@ constexpr ViewerSetting switches[] = {
     {"inspector", [](ViewerState& s) { return &s.show_inspector; }},
 };
 
-template <class Options>
-std::string check_row(const OptionRow<Options>& row, const std::string& value) {
-  return parse_value(row, value) ? "" : fmt::format("`set {}` takes {}", row.name, accepted_text(row));
-}
-
 std::string all_names() {
   std::string names = "exposure, ui-scale, panel, inspector";
-  for (const LocalRow& row : local_rows()) names += fmt::format(", {}", row.name);
-  for (const WhittedRow& row : whitted_rows()) names += fmt::format(", {}", row.name);
+  for (const OptionTable* table : option_tables())
+    for (const OptionRow& row : table->rows)
+      if (find_option(row.name)->row == &row) names += fmt::format(", {}", row.name);
+      else names += fmt::format(", {}.{}", table->name, row.name);  // another table's comes first
   return names;
 }
 
@@ -40,8 +38,8 @@ std::string check_setting(const std::string& name, const std::string& value) {
                ? "" : fmt::format("`set ui-scale S` takes {} .. {}", kMinUiScale, kMaxUiScale);
   for (const ViewerSetting& s : switches)
     if (name == s.name) return value == "on" || value == "off" ? "" : fmt::format("`set {}` takes on or off", name);
-  if (const LocalRow* row = find_row(local_rows(), name)) return check_row(*row, value);
-  if (const WhittedRow* row = find_row(whitted_rows(), name)) return check_row(*row, value);
+  if (const std::optional<FoundOption> option = find_option(name))
+    return parse_value(*option->row, value) ? "" : fmt::format("`set {}` takes {}", name, accepted_text(*option->row));
   return fmt::format("cannot set \"{}\" ({})", name, all_names());
 }
 
@@ -57,31 +55,38 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
   }
   for (const ViewerSetting& s : switches)
     if (name == s.name) *s.field(state) = value == "on";
-  if (const LocalRow* row = find_row(local_rows(), name)) row->set(state.local, *parse_value(*row, value));
-  if (const WhittedRow* row = find_row(whitted_rows(), name)) row->set(state.whitted, *parse_value(*row, value));
+  if (const std::optional<FoundOption> option = find_option(name))
+    option->row->set(options_of(state, *option->table), *parse_value(*option->row, value));
   return true;
 }
 
-namespace {
-
-template <class Options>
-nlohmann::json rows_json(std::span<const OptionRow<Options>> rows, const Options& options) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const OptionRow<Options>& row : rows) {
-    const double v = row.get(options);
-    if (row.kind == OptionKind::on_off) out[row.name] = v != 0.0;
-    else if (row.kind == OptionKind::choice) out[row.name] = row.choices[size_t(v)];
-    else out[row.name] = v;
-  }
-  return out;
+void* options_of(ViewerState& state, const OptionTable& table) {
+  if (&table == &local_table()) return &state.local;
+  if (&table == &whitted_table()) return &state.whitted;
+  if (&table == &radiosity_table()) return &state.radiosity.options;
+  return state.model_options.of(table);
 }
 
-}  // namespace
+const void* options_of(const ViewerState& state, const OptionTable& table) {
+  if (&table == &local_table()) return &state.local;
+  if (&table == &whitted_table()) return &state.whitted;
+  if (&table == &radiosity_table()) return &state.radiosity.options;
+  return state.model_options.of(table);
+}
 
 nlohmann::json settings_json(const ViewerState& state) {
-  return {{"local", rows_json(local_rows(), state.local)},
-          {"whitted", rows_json(whitted_rows(), state.whitted)},
-          {"radiosity", rows_json(radiosity_rows(), state.radiosity.options)}};
+  nlohmann::json out = nlohmann::json::object();
+  for (const OptionTable* table : option_tables()) {
+    nlohmann::json& rows = out[table->name] = nlohmann::json::object();
+    const void* options = options_of(state, *table);
+    for (const OptionRow& row : table->rows) {
+      const double v = row.get(options);
+      if (row.kind == OptionKind::on_off) rows[row.name] = v != 0.0;
+      else if (row.kind == OptionKind::choice) rows[row.name] = row.choices[size_t(v)];
+      else rows[row.name] = v;
+    }
+  }
+  return out;
 }
 
 }  // namespace luz::app

@@ -1,6 +1,7 @@
 #pragma once
-// The script's `set NAME VALUE`: the options tables' rows (options_tables.h) of the local and
-// Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector).
+// The script's `set NAME VALUE`: the rows of the registry's options tables (option_row.h; NAME or
+// TABLE.NAME, model_registry.h's find_option), and the viewer's own settings (exposure, UI
+// scale, panel, inspector).
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -18,9 +19,14 @@ std::string check_setting(const std::string& name, const std::string& value);
 // Sets it; false (with `error`) when it cannot be set.
 bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
 
-// Every row of the local, Whitted and radiosity tables as the viewer holds it now, by the row's
-// name: {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...}}
-// (dump-state's "settings": what a lesson's step or a panel edit really set).
+// Where the viewer keeps an options table's struct: the shared tables' are ViewerState's fields
+// (local, whitted, radiosity.options), a model's own is in model_options.
+void* options_of(ViewerState& state, const OptionTable& table);
+const void* options_of(const ViewerState& state, const OptionTable& table);
+
+// Every row of the registry's tables as the viewer holds it now, by table and row name:
+// {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...},
+// "path": {...}} (dump-state's "settings": what a lesson's step or a panel edit really set).
 nlohmann::json settings_json(const ViewerState& state);
 
 }  // namespace luz::app

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "app/common/option_values.h"
 #include "app/viewer/difference_state.h"
 #include "app/common/radiosity_state.h"
 #include "app/viewer/solvers_state.h"
@@ -58,6 +59,10 @@ struct ViewerState {
   // whitted` fills (its local terms and Blinn come from `local`, as the command takes them from
   // the --no-TERM flags). The trace and the ray tree belong to the view that traces.
   rt::WhittedOptions whitted;
+
+  // The options of the models' own tables (the path tracer's, option_row.h), as `set` and the
+  // lessons write them and each model's view reads its own.
+  OptionValues model_options{OptionValues::Start::viewer};
 
   // Radiosity (model 5): the options `luz render --model radiosity` fills, how the viewer drives
   // the solver, what the panel shows of it and its requests (radiosity_state.h).

@@ -110,7 +110,7 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
   bench.add_option("--repeats", settings.repeats, tr("Best of this many runs"))
       ->check(CLI::Range(1, 100))->capture_default_str();
   // The render's own --renderer row (options_tables.cpp): the same names, help and check.
-  const WhittedRow& renderer = *find_row(whitted_rows(), "renderer");
+  const OptionRow& renderer = *find_row(whitted_table(), "renderer");
   bench.add_option_function<std::string>(
            "--renderer",
            [&settings, &renderer](const std::string& text) {
@@ -120,7 +120,7 @@ void add_bench_flags(CLI::App& bench, WhittedBenchSettings& settings) {
              settings.renderer = rt::RendererKind(int(*value));
            },
            trf("{} ({}; default {})", tr(renderer.help), accepted_text(renderer, Wording::translated),
-               default_text(renderer)))
+               default_text(whitted_table(), renderer)))
       ->type_name("wavefront|recursive");
   bench.add_option("--scenes", settings.scenes, tr("Shipped scene names or glTF paths"))
       ->delimiter(',')->capture_default_str();
@@ -141,7 +141,7 @@ int run_bench_whitted(const WhittedBenchSettings& settings) {
                             {.header = tr("bare s"), .width = 9},
                             {.header = tr("Mrays/s"), .width = 9, .bar_after = true},
                             {.header = tr("ratio"), .width = 6}});
-    fmt::print("{}\n", trf("renderer: {}", find_row(whitted_rows(), "renderer")->choices[size_t(settings.renderer)]));
+    fmt::print("{}\n", trf("renderer: {}", find_row(whitted_table(), "renderer")->choices[size_t(settings.renderer)]));
     fmt::print("{}", table.header());
     for (const auto& [name, loaded] : scenes) {
       const Scene& scene = loaded.scene;

@@ -12,7 +12,8 @@
 #include "app/viewer/difference_window.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
-#include "app/common/options_tables.h"
+#include "app/common/option_row.h"
+#include "app/models/path/path_options.h"
 #include "app/viewer/background_render.h"
 #include "app/viewer/overlays.h"
 #include "core/image_compare.h"
@@ -40,7 +41,8 @@ double relative_noise(const Image& mean, const Image& standard_error) {
 }
 
 // ---- [the film's worker] -------------------------------------------------------------------------
-PathView::PathView(ViewerServices& viewer) : viewer_(viewer) { options.spp = default_target; }
+PathView::PathView(ViewerServices& viewer)
+    : options(viewer.state().model_options.get<rt::PathOptions>(path_table())), viewer_(viewer) {}
 
 PathView::~PathView() { cancel(); }
 
@@ -198,8 +200,8 @@ void PathView::windows(const Viewport& viewport, WindowCorners& corners) {
 void PathView::panel() {
   ImGui::TextDisabled("%s", tr("slide 14's equation by Monte Carlo: the reference"));
   ImGui::TextWrapped("L(x, V) = Le(x, V) + ∫ f(x, L, V) · L(x, L) · cos θ dL");
-  // The ranges of `luz render`'s --spp and --depth (options_tables.h), which this model shares.
-  const SliderRange spp = whitted_range("spp"), depth = whitted_range("depth");
+  // The ranges of its options table's rows (path_options.h): --spp's and --depth's.
+  const SliderRange spp = slider_range(path_table(), "spp"), depth = slider_range(path_table(), "depth");
   int target = options.spp;
   if (ImGui::SliderInt(tr("samples per pixel (target)"), &target, int(spp.low), int(spp.high), "%d",
                        ImGuiSliderFlags_Logarithmic))
@@ -225,25 +227,24 @@ namespace {
 
 PathView& path_model(ViewerServices& viewer) { return static_cast<PathView&>(viewer.view("path")); }
 
+// `path NAME VALUE`: a row of its options table, with the row's check; `path restart`.
 std::string check_path(const ScriptCommand& c) {
   const auto& a = c.args;
   if (a.size() == 1 && a[0] == "restart") return "";
-  if (a.size() != 2 || (a[0] != "spp" && a[0] != "depth" && a[0] != "seed"))
-    return "`path` takes spp N, depth N, seed S or restart";
-  if (!is_int(a[1]) || std::stol(a[1]) < (a[0] == "seed" ? 0 : 1)) return fmt::format("`path {}` takes a whole number{}", a[0], a[0] == "seed" ? " >= 0" : " >= 1");
-  const SliderRange range = whitted_range(a[0] == "spp" ? "spp" : "depth");
-  if (a[0] != "seed" && std::stol(a[1]) > long(range.high))
-    return fmt::format("`path {}` takes at most {}", a[0], int(range.high));
-  return "";
+  const OptionRow* row = a.size() == 2 ? find_row(path_table(), a[0]) : nullptr;
+  if (!row) return "`path` takes spp N, depth N, seed S or restart";
+  return parse_value(*row, a[1]) ? "" : fmt::format("`path {}` takes {}", a[0], accepted_text(*row));
 }
 
 bool run_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
   PathView& path = path_model(viewer);
   const auto& a = c.args;
-  if (a[0] == "restart") path.restart();
-  else if (a[0] == "spp") path.options.spp = std::stoi(a[1]);
-  else if (a[0] == "depth") path.options.max_depth = std::stoi(a[1]);
-  else path.options.seed = uint32_t(std::stoul(a[1]));
+  if (a[0] == "restart") {
+    path.restart();
+    return true;
+  }
+  const OptionRow& row = *find_row(path_table(), a[0]);
+  row.set(&path.options, *parse_value(row, a[1]));
   return true;
 }
 

@@ -48,10 +48,6 @@ double relative_noise(const Image& mean, const Image& standard_error);
 
 class PathView final : public ModelView {
 public:
-  // The target the viewer refines to unless the panel or the script says otherwise: enough for
-  // a reference the difference view can trust to a few percent on the shipped scenes.
-  static constexpr int default_target = 256;
-
   explicit PathView(ViewerServices& viewer);
   ~PathView() override;  // cancels and joins the worker before the scene copy goes
 
@@ -65,8 +61,9 @@ public:
   bool busy() const override;
   bool animating() const override { return running_; }
 
-  // The settings the panel and the `path` verb change; the next advance() follows them.
-  rt::PathOptions options;  // options.spp: the target
+  // The settings the panel, `set path.NAME` and the `path` verb change, the viewer's struct of
+  // the path tracer's options table (path_options.h); the next advance() follows them.
+  rt::PathOptions& options;  // options.spp: the target
   void restart() { restart_ = true; }
   // The script's `wait-path [N]`: busy until N samples per pixel (the target when N <= 0, and
   // never more than it) are published and drawn.

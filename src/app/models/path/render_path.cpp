@@ -11,6 +11,7 @@
 #include "app/cli/render_command.h"
 #include "app/common/model_registry.h"
 #include "app/common/i18n.h"
+#include "app/models/path/path_options.h"
 #include "core/error.h"
 #include "io/image_io.h"
 #include "raytracing/path_tracer.h"
@@ -89,29 +90,25 @@ bool given(const RenderSettings& settings, std::string_view flag) {
 
 Rendered render_path_model(const Scene& scene, const Camera& camera, int width, int height,
                            const RenderSettings& settings) {
-  if (!settings.path.error_out.empty()) {
-    std::string extension = std::filesystem::path(settings.path.error_out).extension().string();
+  if (!settings.error_out.empty()) {
+    std::string extension = std::filesystem::path(settings.error_out).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".exr")
       throw Error(ErrorKind::usage, trf("--error-out {}: the standard error is written as "
-                                        ".exr (linear float)", settings.path.error_out));
+                                        ".exr (linear float)", settings.error_out));
   }
-  rt::PathOptions options;
+  rt::PathOptions options = settings.model_options.get<rt::PathOptions>(path_table());
   options.textures = settings.local.terms.textures;
-  options.seed = settings.path.seed;
-  // --spp and --depth are the Whitted tracer's flags too; unless given, the path tracer's
-  // own defaults hold.
+  // With --time, a given --spp caps the passes; else the time alone stops them.
   const bool spp_given = given(settings, "--spp");
-  if (spp_given) options.spp = settings.whitted.spp;
-  if (given(settings, "--depth")) options.max_depth = settings.whitted.max_depth;
   const PathResult path = render_path(scene, camera, width, height, options, settings.seconds,
                                       spp_given, !settings.quiet && isatty(STDERR_FILENO));
-  if (!settings.path.error_out.empty())
-    io::write_image(path.standard_error, settings.path.error_out, 0.0f);
+  if (!settings.error_out.empty())
+    io::write_image(path.standard_error, settings.error_out, 0.0f);
   Rendered result{path.mean, path.summary, std::nullopt};
-  if (!settings.path.error_out.empty())
-    result.summary += trf("standard error: {}", settings.path.error_out) + "\n";
+  if (!settings.error_out.empty())
+    result.summary += trf("standard error: {}", settings.error_out) + "\n";
   return result;
 }
 

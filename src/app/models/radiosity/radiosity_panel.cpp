@@ -129,7 +129,7 @@ void drive_settings(RadiosityState& r) {
   name_widget("after shots");
   if (by_shots == 1) {
     if (o.max_shots <= 0) o.max_shots = std::max(r.status.shots, 100);
-    const SliderRange shots = slider_range(*find_row(radiosity_rows(), "shots"), 1e6);
+    const SliderRange shots = slider_range(radiosity_table(), "shots", 1e6);
     ImGui::DragInt(tr("shots##stop"), &o.max_shots, 5.0f, int(shots.low), int(shots.high));
     name_widget("shots##stop");
     o.max_shots = std::max(o.max_shots, 1);
@@ -138,7 +138,7 @@ void drive_settings(RadiosityState& r) {
     if (o.converge <= 0.0f) o.converge = RadiosityOptions{}.converge;
     o.max_shots = 0;
     float percent = 100.0f * o.converge;
-    const SliderRange converge = radiosity_range("converge");
+    const SliderRange converge = slider_range(radiosity_table(), "converge");
     ImGui::SliderFloat(tr("percent of the emitted"), &percent, 100.0f * converge.low, 100.0f * converge.high, "%.2g %%",
                        ImGuiSliderFlags_Logarithmic);
     name_widget("% of the emitted");
@@ -148,12 +148,12 @@ void drive_settings(RadiosityState& r) {
 
 void mesh_settings(RadiosityState& r) {
   RadiosityOptions& o = r.options;
-  const SliderRange size = radiosity_range("patch-size");
+  const SliderRange size = slider_range(radiosity_table(), "patch-size");
   ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
   name_widget("patch size (m)");
   o.patch_size = std::clamp(o.patch_size, size.low, size.high);
   if (o.patch_size == 0.0f) dim_text(tr("auto: the scene's triangles and about %d patches more"), o.target_patches);
-  const SliderRange elements = radiosity_range("elements");
+  const SliderRange elements = slider_range(radiosity_table(), "elements");
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
   name_widget("elements per patch edge");
   dim_text(tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
@@ -162,18 +162,18 @@ void mesh_settings(RadiosityState& r) {
   name_widget("adaptive subdivision");
   o.meshing = adaptive ? Meshing::adaptive : Meshing::uniform;
   if (adaptive) {
-    const SliderRange threshold = radiosity_range("refine-threshold");
+    const SliderRange threshold = slider_range(radiosity_table(), "refine-threshold");
     ImGui::SliderFloat(tr("cut threshold"), &o.refine_threshold, threshold.low, 1.0f, tr("%.3f x mean"),
                        ImGuiSliderFlags_Logarithmic);
     name_widget("cut threshold");
-    const SliderRange levels = radiosity_range("refine-levels");
+    const SliderRange levels = slider_range(radiosity_table(), "refine-levels");
     ImGui::SliderInt(tr("cuts at most"), &o.refine_levels, int(levels.low), 8);
     name_widget("cuts at most");
     dim_text("%s", tr("cut where the light is off linear"));
     dim_text("%s", trf("+{} elements, {} passes", r.status.refined_elements, r.status.refinement_passes).c_str());
   }
   // The powers of two in the table's range.
-  const SliderRange res = radiosity_range("hemicube");
+  const SliderRange res = slider_range(radiosity_table(), "hemicube");
   std::vector<int> sizes;
   for (int n = int(res.low); n <= int(res.high); n *= 2) sizes.push_back(n);
   const std::string preview = fmt::format("{}", o.hemicube_res);
@@ -204,7 +204,7 @@ void mesh_settings(RadiosityState& r) {
     ImGui::SliderInt(tr("rays per element"), &o.visibility_rays, 1, 16);
     name_widget("rays per element");
   }
-  const SliderRange overshoot = radiosity_range("overshoot");
+  const SliderRange overshoot = slider_range(radiosity_table(), "overshoot");
   ImGui::SliderFloat(tr("overshoot"), &o.overshoot, overshoot.low, overshoot.high, "x%.2f");
   name_widget("overshoot");
   ImGui::Checkbox(tr("turn the hemicube at random each shot"), &o.random_rotation);

@@ -1,5 +1,8 @@
 #include "app/models/radiosity/radiosity_view.h"
 
+#include <algorithm>
+#include <iterator>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <imgui.h>
@@ -164,6 +167,19 @@ namespace {
 
 RadiosityView& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityView&>(viewer.view("radiosity")); }
 
+// The rows of the radiosity table `radiosity NAME VALUE` sets; the first four are the mesh's (a
+// new one, or other form factors, start the solution over).
+constexpr const char* row_settings[] = {"patch-size", "hemicube", "meshing", "form-factors",
+                                        "outlines", "flat-patches", "ambient-estimate", "rotation"};
+
+bool is_row_setting(const std::string& what) {
+  return std::find(std::begin(row_settings), std::end(row_settings), what) != std::end(row_settings);
+}
+
+bool is_mesh_setting(const std::string& what) {
+  return std::find(std::begin(row_settings), std::begin(row_settings) + 4, what) != std::begin(row_settings) + 4;
+}
+
 // `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
 std::string check_radiosity(const ScriptCommand& c) {
   const auto& a = c.args;
@@ -176,19 +192,14 @@ std::string check_radiosity(const ScriptCommand& c) {
   if (a.size() != 2) return fmt::format("`radiosity {}` takes one value", what);
   const std::string& value = a[1];
   if (what == "step") return is_int(value) && std::stoi(value) >= 1 ? "" : "`radiosity step N` takes N >= 1";
-  if (what == "patch-size")
-    return is_number(value) && std::stof(value) >= 0.0f ? "" : "`radiosity patch-size M` takes metres >= 0 (0: auto)";
-  if (what == "hemicube") {
-    const bool fits = is_int(value) && std::stoi(value) >= kMinHemicubeRes && std::stoi(value) <= kMaxHemicubeRes &&
-                      std::stoi(value) % 2 == 0;
-    return fits ? "" : fmt::format("`radiosity hemicube N` takes an even N in {} .. {}", kMinHemicubeRes, kMaxHemicubeRes);
-  }
   if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
-  if (what == "meshing" || what == "form-factors")  // slide 40's choices, as --meshing and --form-factors
-    return parse_value(*find_row(radiosity_rows(), what), value, true)
+  // The options table's rows this verb sets (slide 40's meshing and form factors, the mesh, the
+  // display switches): the row's check, as --patch-size, --meshing, ... have it.
+  if (is_row_setting(what))
+    return parse_value(*find_row(radiosity_table(), what), value)
                ? ""
-               : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_rows(), what)));
-  for (const char* name : {"heat-map", "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer", "rotation"})
+               : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_table(), what)));
+  for (const char* name : {"heat-map", "shooter", "item-buffer"})
     if (what == name) return value == "on" || value == "off" ? "" : fmt::format("`radiosity {}` takes on or off", name);
   return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, meshing, "
                      "form-factors, budget, heat-map, outlines, flat-patches, ambient-estimate, shooter, "
@@ -207,28 +218,18 @@ bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&)
   } else if (a[0] == "step") {
     r.drive.running = false;
     r.steps += std::stoi(a[1]);
-  } else if (a[0] == "patch-size") {
-    r.options.patch_size = std::stof(a[1]);
-    r.remesh = true;
-  } else if (a[0] == "hemicube") {
-    r.options.hemicube_res = std::stoi(a[1]);
-    r.remesh = true;
-  } else if (a[0] == "meshing" || a[0] == "form-factors") {
-    const RadiosityRow& row = *find_row(radiosity_rows(), a[0]);
-    row.set(r.options, *parse_value(row, a[1], true));
-    r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
+  } else if (is_row_setting(a[0])) {
+    const OptionRow& row = *find_row(radiosity_table(), a[0]);
+    row.set(&r.options, *parse_value(row, a[1]));
+    if (is_mesh_setting(a[0])) r.remesh = true;
   } else if (a[0] == "budget") {
     r.drive.by_time = true;
     r.drive.budget_ms = std::stof(a[1]);
   } else {
     const bool on = a[1] == "on";
     if (a[0] == "heat-map") r.drive.heat_map = on;
-    if (a[0] == "outlines") r.options.outlines = on;
-    if (a[0] == "flat-patches") r.options.flat_patches = on;
-    if (a[0] == "ambient-estimate") r.options.ambient_estimate = on;
     if (a[0] == "shooter") r.drive.show_shooter = on;
     if (a[0] == "item-buffer") r.drive.show_item_buffer = on;
-    if (a[0] == "rotation") r.options.random_rotation = on;
   }
   return true;
 }

@@ -76,13 +76,13 @@ void progress_and_counters(TracedView& view) {
 
 void options(ViewerState& state, bool hybrid) {
   rt::WhittedOptions& o = state.whitted;
-  const SliderRange depth = whitted_range("depth");
+  const SliderRange depth = slider_range(whitted_table(), "depth");
   ImGui::SliderInt(tr("max depth"), &o.max_depth, int(depth.low), int(depth.high));
   name_widget("max depth");
   dim_text(tr("primary ray: depth 1; a hit at depth d spawns R and T while d < max"));
   bool adaptive = o.sampling == rt::Sampling::adaptive;
   ImGui::BeginDisabled(adaptive);
-  const int max_root = int(std::lround(std::sqrt(whitted_range("spp").high)));
+  const int max_root = int(std::lround(std::sqrt(slider_range(whitted_table(), "spp").high)));
   int root = std::clamp(int(std::lround(std::sqrt(float(std::max(o.spp, 1))))), 1, max_root);
   const std::string spp = trf("{} ({}x{} jittered)", root * root, root, root);
   if (ImGui::SliderInt(tr("samples / pixel"), &root, 1, max_root, spp.c_str(), ImGuiSliderFlags_Logarithmic))
@@ -93,7 +93,7 @@ void options(ViewerState& state, bool hybrid) {
     o.sampling = adaptive ? rt::Sampling::adaptive : rt::Sampling::stratified;
   name_widget("adaptive supersampling (Whitted)");
   if (adaptive) {
-    const SliderRange levels = whitted_range("adaptive-levels"), threshold = whitted_range("adaptive-threshold");
+    const SliderRange levels = slider_range(whitted_table(), "adaptive-levels"), threshold = slider_range(whitted_table(), "adaptive-threshold");
     ImGui::SliderInt(tr("levels"), &o.adaptive_levels, int(levels.low), int(levels.high));
     name_widget("levels");
     ImGui::DragFloat(tr("threshold (sRGB)"), &o.adaptive_threshold, 0.002f, threshold.low, threshold.high, "%.3f");
@@ -103,7 +103,7 @@ void options(ViewerState& state, bool hybrid) {
   name_widget("Fresnel: kr + kt·F, kt·(1 - F)");
   ImGui::Checkbox(tr("shadow rays S_i"), &o.shadows);
   name_widget("shadow rays S_i");
-  const SliderRange samples = whitted_range("light-samples");
+  const SliderRange samples = slider_range(whitted_table(), "light-samples");
   ImGui::SliderInt(tr("samples per emitter"), &o.light_samples, int(samples.low), int(samples.high), "%d",
                    ImGuiSliderFlags_Logarithmic);
   name_widget("samples per emitter");

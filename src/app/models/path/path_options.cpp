@@ -1,0 +1,31 @@
+#include "app/models/path/path_options.h"
+
+#include <cstdint>
+#include <limits>
+
+#include "app/common/i18n.h"
+
+namespace luz::app {
+namespace {
+
+const OptionRow rows[] = {
+    {"spp", "--spp", "sampling", OptionKind::integer, N_("path: samples per pixel, any number"), 1, 4096,
+     LUZ_OPTION_FIELD(rt::PathOptions, spp)},
+    {"depth", "--depth", "sampling", OptionKind::integer,
+     N_("path: maximum ray depth as on slide 26 (primary rays have depth 1; 0 is taken as 1)"), 0, 64,
+     LUZ_OPTION_FIELD(rt::PathOptions, max_depth)},
+    {"seed", "--seed", "path", OptionKind::integer,
+     N_("path: seed of the random numbers (the same seed gives the same picture)"), 0,
+     double(std::numeric_limits<uint32_t>::max()), LUZ_OPTION_FIELD(rt::PathOptions, seed)},
+};
+
+void viewer_start(void* options) { static_cast<rt::PathOptions*>(options)->spp = kViewerTarget; }
+
+}  // namespace
+
+const OptionTable& path_table() {
+  static const OptionTable table = option_table<rt::PathOptions>("path", rows, viewer_start);
+  return table;
+}
+
+}  // namespace luz::app
