@@ -21,7 +21,7 @@
 
 #include "app/viewer/picking.h"
 #include "app/script/script.h"
-#include "app/viewer/shortcuts.h"
+#include "app/script/key_binding.h"
 #include "app/viewer/viewer_state.h"
 #include "core/camera.h"
 #include "core/image.h"
@@ -133,8 +133,6 @@ public:
   virtual void windows(const Viewport& /*viewport*/, WindowCorners& /*corners*/) {}
   // The status line's words about this model ("shot 12, 3.2% unshot, running").
   virtual std::string status() const { return {}; }
-  // A keyboard action of this model (Enter traces, Space runs the solver); false: not its own.
-  virtual bool act(Action /*action*/) { return false; }
   // A script command still playing out (a trace the script waits for, shots it asked for).
   virtual bool busy() const { return false; }
   // Something is running (a trace, the solver): the viewer keeps drawing frames for it.

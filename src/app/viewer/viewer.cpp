@@ -1,9 +1,9 @@
 // The viewer's loop: a window with the panel on the left, the picture on the right and the
-// status line under it. Every change comes in as an Action (shortcuts.h), a panel edit of the
-// ViewerState, a mouse gesture or a script line, and is drawn on the next frame; what the
+// status line under it. Every change comes in as a script line (a key runs its own, shortcuts.h),
+// a panel edit of the ViewerState or a mouse gesture, and is drawn on the next frame; what the
 // picture shows is the shown model's view (model_view.h, model_registry.h).
 //
-// Sections: [setup] [loading] [views] [input] [actions] [script] [the frame] [the loop]
+// Sections: [setup] [loading] [views] [input] [keys] [script] [the frame] [the loop]
 //           [run_viewer]
 #include "app/viewer/viewer_window.h"
 
@@ -50,7 +50,6 @@ constexpr float dock_share = 0.3f;      // of the picture's room, a lesson's doc
 constexpr float dock_ems = 20.0f;       // and at least this many font heights: the caption's lines
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
-constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
 constexpr glm::vec4 background{0.06f, 0.06f, 0.07f, 1.0f};  // the window where nothing is drawn
 const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
@@ -392,13 +391,7 @@ void Viewer::press_key(int key, int mods) {
     if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_N) asking_to_quit_ = false;
     return;
   }
-  const std::optional<Action> action = action_for(key, mods);
-  if (!action) return;
-  if (*action == Action::choose_model) {
-    if (const ModelEntry* m = model_on_key(key - GLFW_KEY_0)) set_model(*m);
-    return;
-  }
-  apply(*action);
+  if (const Shortcut* shortcut = shortcut_for(key, mods)) run_key(*shortcut);
 }
 
 void Viewer::on_char(unsigned codepoint) {
@@ -412,7 +405,7 @@ void Viewer::typed(unsigned codepoint) {
     ImGui::GetIO().AddInputCharacter(codepoint);
     return;
   }
-  if (const std::optional<Action> action = action_for_character(codepoint)) apply(*action);
+  if (const Shortcut* shortcut = shortcut_for_character(codepoint)) run_key(*shortcut);
 }
 
 void Viewer::on_mouse_button(int button, int action) {
@@ -505,113 +498,32 @@ bool Viewer::choose_camera(const std::string& name_or_index, std::string& error)
 
 void Viewer::resize(int width, int height) { glfwSetWindowSize(window_.handle(), width, height); }
 
-// ---- [actions] ---------------------------------------------------------------------------------
-void Viewer::apply(Action action) {
-  LocalOptions& o = state_.local;
-  // Every action says what it did; one that has nothing to say clears the last message, which
-  // would otherwise still read "emission Le on" after an exposure change.
-  state_.note.clear();
-  auto toggle = [this](bool& term, const char* name) {
-    term = !term;
-    state_.note = fmt::format("{} {}", tr(name), term ? tr("on") : tr("off"));
-  };
-  switch (action) {
-    case Action::none:
-    case Action::choose_model: break;
-    case Action::toggle_ambient: toggle(o.terms.ambient, N_("ambient I_A")); break;
-    case Action::toggle_diffuse: toggle(o.terms.diffuse, N_("diffuse I_D")); break;
-    case Action::toggle_specular: toggle(o.terms.specular, N_("specular I_S")); break;
-    case Action::toggle_emission: toggle(o.terms.emission, N_("emission Le")); break;
-    case Action::toggle_textures: toggle(o.terms.textures, N_("kd texture")); break;
-    case Action::toggle_blinn:
-      o.terms.blinn = !o.terms.blinn;
-      state_.note = o.terms.blinn ? tr("Blinn's N·H") : tr("Phong's R·V");
-      break;
-    case Action::cycle_attenuation: {
-      std::vector<Light>& lights = state_.scene->lights;
-      const bool all_classroom = std::all_of(lights.begin(), lights.end(),
-                                             [](const Light& l) { return l.attenuation.classroom; });
-      for (Light& light : lights) light.attenuation.classroom = !all_classroom;
-      state_.note = all_classroom ? "f_att = 1/d²" : "f_att = 1/(c0 + c1·d + c2·d²)";
-      break;
-    }
-    case Action::cycle_fog:
-      o.fog.mode = o.fog.mode == FogMode::off      ? FogMode::linear
-                   : o.fog.mode == FogMode::linear ? FogMode::exponential
-                                                   : FogMode::off;
-      state_.note = trf("fog {}", tr(to_string(o.fog.mode)));
-      break;
-    case Action::toggle_shadows: toggle(o.shadows.on, N_("shadows S_i")); break;
-    case Action::toggle_transparency: toggle(o.transparency.on, N_("transparency kt")); break;
-    case Action::toggle_reflection_map: toggle(o.reflection.on, N_("reflection map kr Ir")); break;
-    case Action::exposure_up:
-    case Action::exposure_down:
-      state_.exposure += action == Action::exposure_up ? 0.5f : -0.5f;
-      state_.note = trf("exposure {:+.1f} EV", state_.exposure);
-      break;
-    case Action::exposure_fit: state_.exposure_fit = true; break;
-    case Action::ui_larger: set_ui_scale(user_scale_ * ui_scale_step); break;
-    case Action::ui_smaller: set_ui_scale(user_scale_ / ui_scale_step); break;
-    case Action::scene_camera: to_scene_camera(); break;
-    case Action::next_camera:
-      state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
-      to_scene_camera();
-      state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
-      break;
-    case Action::reload: load(state_.scene_path); break;
-    case Action::screenshot:
-    case Action::screenshot_with_panel: {
-      const bool with_panel = action == Action::screenshot_with_panel;
-      screenshots_.push_back({next_screenshot_name(state_.scene_path, with_panel), with_panel, false, ""});
-      break;
-    }
-    case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
-    case Action::toggle_inspector: state_.show_inspector = !state_.show_inspector; break;
-    case Action::help: state_.show_help = !state_.show_help; break;
-    // A model's own keys go to the view shown; Enter (trace), Space and '.' (shoot) show the
-    // first model whose keys they are when the one shown has no use for them.
-    case Action::trace_view:
-    case Action::radiosity_run:
-    case Action::radiosity_step: {
-      bool taken = false;
-      for (ModelView* pane : pane_views()) taken = pane->act(action) || taken;  // every pane that traces or solves
-      if (taken) break;
-      for (const ModelEntry& m : models())
-        if (view(m.name).act(action)) {
-          set_model(m);
-          break;
-        }
-      break;
-    }
-    case Action::cancel_trace:
-    case Action::clear_ray_tree:
-      for (ModelView* pane : pane_views()) pane->act(action);
-      break;
-    // Radiosity's display switches and reset change what model 5 will show, whatever is shown.
-    case Action::radiosity_reset:
-      state_.radiosity.reset = true;
-      state_.note = tr("radiosity: reset (step 1: unshot = E)");
-      break;
-    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, N_("radiosity heat map")); break;
-    case Action::toggle_patches: {
-      RadiosityOptions& r = state_.radiosity.options;
-      r.flat_patches = r.outlines = !(r.flat_patches && r.outlines);
-      state_.note = r.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
-      break;
-    }
-    case Action::toggle_ambient_estimate:
-      toggle(state_.radiosity.options.ambient_estimate, N_("radiosity ambient estimate"));
-      break;
-    case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
-    case Action::quit:
-      // On a projector a stray Esc must not end the class: with a lesson open or work running,
-      // it asks first.
-      if (classroom_.has_lesson() || working()) asking_to_quit_ = true;
-      else quit_ = true;
-      break;
-    case Action::lesson_next: classroom_.move(LessonMove::next); break;
-    case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
-  }
+// ---- [keys] ------------------------------------------------------------------------------------
+// A key runs its line (shortcuts.h) as a script would; a line that cannot be done (a lesson's
+// step with no lesson open) says why in the status line.
+void Viewer::run_key(const Shortcut& shortcut) {
+  std::string error;
+  if (!run_line(shortcut.line, error)) state_.note = error;
+}
+
+bool Viewer::run_line(const std::string& line, std::string& error) {
+  const Script script = parse_script_text(line, "key");  // every bound line is checked by the tests
+  for (const ScriptCommand& command : script.commands)
+    if (!run(command, error)) return false;
+  return true;
+}
+
+void Viewer::next_camera() {
+  state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
+  to_scene_camera();
+  state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
+}
+
+// On a projector a stray Esc must not end the class: with a lesson open or work running, it asks
+// first.
+void Viewer::ask_to_quit() {
+  if (classroom_.has_lesson() || working()) asking_to_quit_ = true;
+  else quit_ = true;
 }
 
 // ---- [script] ----------------------------------------------------------------------------------

@@ -11,11 +11,12 @@ namespace {
 // The viewer's own settings beside the options tables' rows.
 struct ViewerSetting {
   const char* name;
-  bool* (*field)(ViewerState&);
+  bool ViewerState::*field;
 };
 constexpr ViewerSetting switches[] = {
-    {"panel", [](ViewerState& s) { return &s.show_panel; }},
-    {"inspector", [](ViewerState& s) { return &s.show_inspector; }},
+    {"panel", &ViewerState::show_panel},
+    {"inspector", &ViewerState::show_inspector},
+    {"help", &ViewerState::show_help},
 };
 
 template <class Options>
@@ -24,7 +25,7 @@ std::string check_row(const OptionRow<Options>& row, const std::string& value) {
 }
 
 std::string all_names() {
-  std::string names = "exposure, ui-scale, panel, inspector";
+  std::string names = "exposure, ui-scale, panel, inspector, help";
   for (const LocalRow& row : local_rows()) names += fmt::format(", {}", row.name);
   for (const WhittedRow& row : whitted_rows()) names += fmt::format(", {}", row.name);
   return names;
@@ -56,7 +57,7 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
     return true;
   }
   for (const ViewerSetting& s : switches)
-    if (name == s.name) *s.field(state) = value == "on";
+    if (name == s.name) state.*s.field = value == "on";
   if (const LocalRow* row = find_row(local_rows(), name)) row->set(state.local, *parse_value(*row, value));
   if (const WhittedRow* row = find_row(whitted_rows(), name)) row->set(state.whitted, *parse_value(*row, value));
   return true;
@@ -79,9 +80,12 @@ nlohmann::json rows_json(std::span<const OptionRow<Options>> rows, const Options
 }  // namespace
 
 nlohmann::json settings_json(const ViewerState& state) {
+  nlohmann::json viewer = nlohmann::json::object();
+  for (const ViewerSetting& s : switches) viewer[s.name] = state.*s.field;
   return {{"local", rows_json(local_rows(), state.local)},
           {"whitted", rows_json(whitted_rows(), state.whitted)},
-          {"radiosity", rows_json(radiosity_rows(), state.radiosity.options)}};
+          {"radiosity", rows_json(radiosity_rows(), state.radiosity.options)},
+          {"viewer", viewer}};
 }
 
 }  // namespace luz::app

@@ -1,6 +1,6 @@
 #pragma once
 // The script's `set NAME VALUE`: the options tables' rows (options_tables.h) of the local and
-// Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector).
+// Whitted options, and the viewer's own settings (exposure, UI scale, panel, inspector, help).
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +12,7 @@ namespace luz::app {
 // The interface's size (`--ui-scale`, `set ui-scale`, Ctrl+= / Ctrl+-): 1 is the default.
 inline constexpr float kMinUiScale = 0.5f;
 inline constexpr float kMaxUiScale = 4.0f;
+inline constexpr float kUiScaleStep = 1.25f;  // `interface larger|smaller` (Ctrl+= / Ctrl+-)
 
 // "" when NAME takes VALUE, else what is wrong (checked before any window opens).
 std::string check_setting(const std::string& name, const std::string& value);
@@ -19,8 +20,9 @@ std::string check_setting(const std::string& name, const std::string& value);
 bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
 
 // Every row of the local, Whitted and radiosity tables as the viewer holds it now, by the row's
-// name: {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...}}
-// (dump-state's "settings": what a lesson's step or a panel edit really set).
+// name: {"local": {"ambient": true, "fog": "linear", ...}, "whitted": {...}, "radiosity": {...},
+// "viewer": {"panel": true, "inspector": true, "help": false}} (dump-state's "settings": what a
+// lesson's step, a key or a panel edit really set).
 nlohmann::json settings_json(const ViewerState& state);
 
 }  // namespace luz::app

@@ -96,7 +96,12 @@ public:
   std::vector<ModelView*> pane_views() override;  // the views of the panes, in order
   const Layout& drawn_layout() const { return last_layout_; }
   const Camera& drawn_camera(size_t pane) const { return drawn_cameras_.at(pane); }  // this frame's
-  void apply(Action action);
+  // A key's line (shortcuts.h), run as the script runs it; what went wrong goes to the status line.
+  void run_key(const Shortcut& shortcut);
+  bool run_line(const std::string& line, std::string& error);
+  void to_scene_camera();  // back to the scene camera shown (C)
+  void next_camera();      // the scene's next camera (N)
+  void ask_to_quit();      // Esc: quits, or asks first with a lesson open or work running
   void resize(int width, int height);
   void load(const std::filesystem::path& path);
   void quit() { quit_ = true; }  // the script's `quit`: no question asked
@@ -125,7 +130,6 @@ private:
   void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
   void rebuild_renderer();
   Camera current_camera() const;
-  void to_scene_camera();
   void rebuild_fonts();
 
   void on_key(int key, int mods);
