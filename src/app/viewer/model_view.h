@@ -63,6 +63,7 @@ struct Inspection {
 };
 
 class ModelView;
+class DifferenceView;     // difference_window.h
 struct ModelEntry;        // common/model_registry.h
 struct InspectorReading;  // inspector.h
 
@@ -95,6 +96,11 @@ public:
   virtual void set_model(const ModelEntry& model) = 0;
   virtual ModelView& shown() = 0;
   virtual std::vector<ModelView*> pane_views() = 0;  // in order; one pane: the view shown
+  // The difference view against the reference (the path model's verbs switch it and wait for it).
+  virtual DifferenceView& difference() = 0;
+  // A line of the script language, run as a key runs its own (a panel button that does what a
+  // key does runs the key's line); what went wrong goes to the status line.
+  virtual void run_line(const std::string& line) = 0;
 };
 
 // Where a view may put its floating windows without covering the picture's centre or each

@@ -241,6 +241,20 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                        {"kept", v.panel_cache().kept}}},
                       {"present_parts", {{"on", s.present_parts}, {"window_keeps_back_buffer", v.window_keeps_back_buffer()}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
+  // What the keys change beyond the settings: the scene's camera, the lights' f_att, the panes
+  // and their traces, model 5's loop, slide 36's window, the lesson's step.
+  j["scene_camera"] = s.scene_camera;
+  j["classroom_attenuation"] = nlohmann::json::array();
+  for (const Light& light : s.scene->lights) j["classroom_attenuation"].push_back(light.attenuation.classroom);
+  j["panes"] = nlohmann::json::array();
+  for (ModelView* pane : v.pane_views()) {
+    const char* trace = pane->trace_state();
+    j["panes"].push_back({{"trace", trace ? nlohmann::json(trace) : nlohmann::json(nullptr)}});
+  }
+  j["radiosity_drive"] = {{"running", s.radiosity.drive.running}, {"heat_map", s.radiosity.drive.heat_map}};
+  j["solvers_open"] = v.solvers().state().open;
+  const LessonPlayer* lesson = v.classroom().player();
+  j["lesson_step"] = lesson ? nlohmann::json(lesson->index() + 1) : nlohmann::json(nullptr);
   return write_json(c.args[0], j, "the viewer's state", error);
 }
 
@@ -288,33 +302,31 @@ bool run_dump_windows(Viewer& v, const ScriptCommand& c, std::string& error) {
 
 bool run_solvers(Viewer& v, const ScriptCommand& c, std::string&) {
   const auto& a = c.args;
-  SolversState& s = v.state().solvers;
-  if (a[0] == "open") s.open = true;
-  if (a[0] == "close") s.open = false;
+  SolversWindow& s = v.solvers();
+  if (a[0] == "open") s.set_open(true);
+  if (a[0] == "close") s.set_open(false);
   if (a[0] == "toggle") {  // J
-    s.open = !s.open;
+    s.set_open(!s.state().open);
     v.state().note.clear();
   }
-  if (a[0] == "run") s.open = s.running = true;
-  if (a[0] == "pause") s.running = false;
-  if (a[0] == "reset") s.reset = true;
-  if (a[0] == "budget") s.budget_ms = std::stof(a[1]);
-  if (a[0] == "patches") {
-    s.target_patches = std::stoi(a[1]);
-    s.reset = true;
+  if (a[0] == "run") {
+    s.set_open(true);
+    s.set_running(true);
   }
+  if (a[0] == "pause") s.set_running(false);
+  if (a[0] == "reset") s.reset();
+  if (a[0] == "budget") s.set_budget(std::stof(a[1]));
+  if (a[0] == "patches") s.set_patches(std::stoi(a[1]));
   return true;
 }
 
 bool run_wait_solver_rows(Viewer& v, const ScriptCommand& c, std::string&) {
-  SolversState& s = v.state().solvers;
-  s.open = true;
-  s.run_to_rows = size_t(std::stoul(c.args[0]));
+  v.solvers().run_to_rows(size_t(std::stoul(c.args[0])));
   return true;
 }
 
 bool run_dump_solvers(Viewer& v, const ScriptCommand& c, std::string& error) {
-  return write_json(c.args[0], to_json(v.state().solvers, v.solvers()), "the solvers' curves", error);
+  return write_json(c.args[0], to_json(v.solvers()), "the solvers' curves", error);
 }
 
 // `quit --ask`: Esc's, which asks first with a lesson open or work running.

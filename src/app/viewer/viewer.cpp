@@ -160,7 +160,6 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
 
 Viewer::~Viewer() {
   views_.clear();  // a running trace reads the scene and radiosity's mesh: joined first
-  solvers_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -253,15 +252,12 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   for (auto& [name, view] : views_) view->scene_changed();  // before the scene they read goes
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
-  solvers_.reset();   // so does the comparison
-  state_.solvers.status = {};
-  state_.solvers.running = false;
-  state_.solvers.run_to_rows = 0;
   state_.radiosity.patch.reset();
   inspection_ = Inspection{};
   state_.scene = std::make_unique<Scene>(std::move(loaded.scene));
   state_.scene_path = path;
   const Scene& scene = *state_.scene;
+  solvers_.scene_changed(scene);  // the comparison on the old scene goes
   state_.light_edits.clear();
   for (const Light& light : scene.lights) {
     const float intensity = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
@@ -501,16 +497,14 @@ void Viewer::resize(int width, int height) { glfwSetWindowSize(window_.handle(),
 // ---- [keys] ------------------------------------------------------------------------------------
 // A key runs its line (shortcuts.h) as a script would; a line that cannot be done (a lesson's
 // step with no lesson open) says why in the status line.
-void Viewer::run_key(const Shortcut& shortcut) {
-  std::string error;
-  if (!run_line(shortcut.line, error)) state_.note = error;
-}
-
-bool Viewer::run_line(const std::string& line, std::string& error) {
+void Viewer::run_line(const std::string& line) {
   const Script script = parse_script_text(line, "key");  // every bound line is checked by the tests
+  std::string error;
   for (const ScriptCommand& command : script.commands)
-    if (!run(command, error)) return false;
-  return true;
+    if (!run(command, error)) {
+      state_.note = error;
+      return;
+    }
 }
 
 void Viewer::next_camera() {
@@ -535,14 +529,12 @@ bool Viewer::run(const ScriptCommand& command, std::string& error) {
 // A click's press and release, a `trace` the script waits for, radiosity shots it asked for
 // (`radiosity step N`, `wait-shots N`), slide 36's rows, or `idle`.
 bool Viewer::busy() const {
-  const SolversState& s = state_.solvers;
-  const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
   // Only the views shown work (a hidden one has stopped): their requests are what may be pending.
   bool view_busy = false;
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end()) view_busy = view_busy || found->second->busy();
-  const bool reference_busy = state_.difference.on && state_.difference.waiting;  // the difference view's
-  return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value() ||
+  const bool reference_busy = difference_.waiting();
+  return scripted_click_frames_ > 0 || view_busy || reference_busy || solvers_.busy() || idle_until_.has_value() ||
          classroom_.moving();
 }
 
@@ -621,7 +613,7 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
   const bool checking_exposure = exposure_check_ && view(model_->name).shows_the_light();
   const bool reading_exposure = state_.exposure_fit || checking_exposure;
   const bool radiance_wanted =
-      reading_exposure || state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
+      reading_exposure || difference_.on() || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
       std::any_of(screenshots_.begin(), screenshots_.end(), [](const PendingScreenshot& s) { return !s.with_panel; });
   auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
@@ -633,7 +625,7 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
     if (!radiance_wanted && pane_view.draw_into_window(camera, v, view_alone_shown && panes_.size() == 1)) {
-      if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+      if (i == active_pane_) difference_.draw(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
       ++direct_panes_;
       models_ms += finish_phase(phase_start);
       continue;
@@ -642,8 +634,8 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
     pane_view.draw(camera, v, *picture);
     // The heat map instead, when it is on, in the active pane: the panes are of one size, so
     // the reference's one film serves whichever pane is compared.
-    const bool heat_map = i == active_pane_ && state_.difference.on;
-    if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+    const bool heat_map = i == active_pane_ && difference_.on();
+    if (i == active_pane_) difference_.draw(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
     models_ms += finish_phase(phase_start);
 
     if (pane_view.drew_display() && !heat_map) {  // the model wrote what the window shows: a copy
@@ -739,10 +731,9 @@ void Viewer::draw_windows(const Layout& l) {
     corners.dock_in(l.dock);
     classroom_.draw_caption(l.dock.origin, l.dock.size, margin, ui_scale_);
   }
-  state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
-  if (state_.solvers.open && solvers_) {
+  if (solvers_.state().open) {
     const glm::vec4 half = corners.take_left_half();
-    solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w, corners.docked());
+    solvers_.draw(half.x, half.y, half.z, half.w, corners.docked());
   }
   if (panes_.size() > 1) {  // the active pane's windows, in its own corners
     WindowCorners pane_corners(l.panes[active_pane_], margin);
@@ -750,10 +741,10 @@ void Viewer::draw_windows(const Layout& l) {
     pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
     if (!l.dock.empty()) pane_corners.dock_in(l.dock);
     shown().windows(l.panes[active_pane_], pane_corners);
-    difference_windows(state_, l.panes[active_pane_], pane_corners);
+    difference_.windows(l.panes[active_pane_], pane_corners);
   } else {
     shown().windows(l.view, corners);
-    difference_windows(state_, l.view, corners);
+    difference_.windows(l.view, corners);
   }
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
@@ -900,11 +891,7 @@ void Viewer::frame() {
     to_scene_camera();
   }
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
-  const SolversState& s = state_.solvers;
-  if (s.open || s.run_to_rows > 0 || s.reset) {
-    if (!solvers_) solvers_ = std::make_unique<SolversWindow>(*state_.scene);
-    solvers_->advance(state_.solvers);
-  }
+  solvers_.advance();
 
   // The first frames (shaders compiled, maps drawn) are not the steady frame being measured.
   timing_phases_ = frame_number_ >= 16 && frame_number_ % 8 == 0;
@@ -920,7 +907,7 @@ void Viewer::frame() {
   ImGui::NewFrame();
   const Layout l = layout();
   last_layout_ = l;
-  if (state_.show_panel) draw_panel(state_, shown(), l.panel, l.window.y - l.status);
+  if (state_.show_panel) draw_panel(state_, shown(), difference_, l.panel, l.window.y - l.status);
   draw_windows(l);
   ImGui::Render();
   const double panel_building =
@@ -988,9 +975,8 @@ bool Viewer::needs_frames() const {
 // Work that changes what the window shows from frame to frame: a model running (a trace, the
 // solver), its reference refining, slide 36's methods stepping.
 bool Viewer::working() const {
-  const SolversState& s = state_.solvers;
-  if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
-  if (state_.difference.on && state_.difference.refining) return true;
+  if (solvers_.working()) return true;
+  if (difference_.refining()) return true;
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) return true;
   return false;

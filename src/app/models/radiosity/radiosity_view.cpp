@@ -90,7 +90,7 @@ void RadiosityView::click(const Camera& camera, const Viewport& viewport, glm::i
   state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
-void RadiosityView::panel() { radiosity_section(viewer_.state()); }
+void RadiosityView::panel() { radiosity_section(viewer_); }
 
 // The patch inspector in the corner away from the clicked point, the shooter's hemicube in
 // another, and at shot 0 a hint saying how to start.
