@@ -3,8 +3,15 @@
 # builds (Release) into build/, then
 #   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
 #   ./setup.sh test      runs the whole test suite with ctest
+#   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
+#                        emscripten and chromium, libdeflate's source package, puppeteer-core
+#   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
 set -euo pipefail
 cd "$(dirname "$0")"
+
+if [ "${1:-}" = web ] && [ "${2:-}" = serve ]; then
+  exec python3 src/app/web/serve.py build-web
+fi
 
 packages=(
   cmake ninja-build g++ pkg-config python3
@@ -17,16 +24,51 @@ packages=(
   libcairo2-dev poppler-utils
 )
 
+if [ "${1:-}" = web ]; then
+  packages+=(emscripten chromium)
+  command -v npm >/dev/null || packages+=(npm)
+fi
+
+sudo=()
+[ "$(id -u)" -eq 0 ] || sudo=(sudo)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}"
-  sudo=()
-  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
   "${sudo[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The web page: Emscripten's build of the libraries below src/app and the page's shell.
+if [ "${1:-}" = web ]; then
+  # Debian's source packages the page compiles (libdeflate), unpacked once into build-web/sources.
+  mkdir -p build-web/sources
+  if ! ls -d build-web/sources/libdeflate-*/lib >/dev/null 2>&1; then
+    if ! apt-get source --print-uris libdeflate >/dev/null 2>&1; then
+      echo "setup: adding deb-src lines to apt's sources (for apt-get source)"
+      if [ -f /etc/apt/sources.list.d/debian.sources ]; then
+        sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources |
+          "${sudo[@]}" tee /etc/apt/sources.list.d/luz-deb-src.sources >/dev/null
+      else
+        grep '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' |
+          "${sudo[@]}" tee /etc/apt/sources.list.d/luz-deb-src.list >/dev/null
+      fi
+      "${sudo[@]}" apt-get update -qq
+    fi
+    (cd build-web/sources && apt-get source -qq --download-only libdeflate 2>/dev/null &&
+       tar xzf libdeflate_*.orig.tar.gz)
+  fi
+  # The browser tests' driver of Debian's chromium, kept in the build folder.
+  [ -d build-web/npm/node_modules/puppeteer-core ] ||
+    npm install --silent --no-save --prefix build-web/npm puppeteer-core@23
+  # Emscripten's JavaScript tools find their modules in Debian's folder whatever node runs them.
+  export NODE_PATH=/usr/share/nodejs
+  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=OFF
+  cmake --build build-web --parallel "$(nproc)"
+  echo "setup: the page is build-web/luz.html; ./setup.sh web serve, then open http://127.0.0.1:8000/luz.html"
+  exit 0
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release

@@ -372,6 +372,11 @@ vec3 displayed(vec3 I) { return srgb_encode(I * u_display_scale); }
 // its display pass over it.
 layout(location = 0) out vec4 frag_radiance;
 layout(location = 1) out vec4 frag_display;
+#elif defined(LUZ_GLSL_ES)
+// GLSL ES (the page) has no dual-source blending: the radiance alone; the share of the pixel
+// behind is computed and dropped, so a transparent mesh hides what lies behind it there.
+layout(location = 0) out vec4 frag_radiance;
+vec4 frag_transmittance;
 #else
 // Two outputs for dual-source blending (GL 3.3 core): the radiance, and what share of the pixel
 // behind it comes through (kt, for a transparent mesh drawn with glBlendFunc(ONE, SRC1_COLOR)).

@@ -311,6 +311,18 @@ TEST(CliSpanish, UsageErrorsSpeakSpanishWithTheSameExitCode) {
   const auto after = run_luz({"render", "--lang", "es", cornell(), "--out", out, "--bogus"});
   EXPECT_EQ(after.exit_code, 2);
   EXPECT_TRUE(contains(after.output, spanish_start("The following argument was not expected: {}"))) << after.output;
+  // And after every other command's name (a missing file is bad input, in Spanish).
+  const std::string nope = (dir / "nope.gltf").string();
+  for (const std::vector<std::string>& command : std::vector<std::vector<std::string>>{
+           {"solvers", nope, "--csv", (dir / "s.csv").string()},
+           {"compare", nope, nope},
+           {"bench", "whitted", "--scenes", nope}}) {
+    std::vector<std::string> args = command;
+    args.insert(args.end(), {"--lang", "es"});
+    const auto spoken = run_luz(args);
+    EXPECT_EQ(spoken.exit_code, 1) << command.front() << ": " << spoken.output;
+    EXPECT_TRUE(contains(spoken.output, "no existe")) << command.front() << ": " << spoken.output;
+  }
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
 

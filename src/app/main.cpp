@@ -2,6 +2,7 @@
 // headless. Exit codes: 0 success, 1 bad input, 2 usage error.
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -212,6 +213,16 @@ int main(int argc, char** argv) {
   lesson->add_option_function<std::string>("--lang", lang, tr("Language of the titles, texts and labels: es or en"))
       ->check(CLI::IsMember({"es", "en"}));
   luz::app::add_handout_flags(*lesson, handout_settings);
+  // Every command takes --lang after its name too (`luz solvers SCENE --lang es`), as render does.
+  const std::function<void(CLI::App&)> take_lang_after = [&](CLI::App& command) {
+    for (CLI::App* sub : command.get_subcommands({})) {
+      if (!sub->get_option_no_throw("--lang"))
+        sub->add_option_function<std::string>("--lang", lang, tr("Language of the messages: es or en"))
+            ->check(CLI::IsMember({"es", "en"}));
+      take_lang_after(*sub);
+    }
+  };
+  take_lang_after(app);
 
   try {
     app.parse(argc, argv);

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
+
+#include "core/std_compat.h"
 
 namespace luz {
 
@@ -42,12 +43,12 @@ struct SrgbCodes {
       uint32_t below = 0, at = kOne;  // code_of(below) < k <= code_of(at)
       while (at - below > 1) {
         const uint32_t middle = below + (at - below) / 2;
-        (code_of(std::bit_cast<float>(middle)) >= k ? at : below) = middle;
+        (code_of(bit_cast<float>(middle)) >= k ? at : below) = middle;
       }
-      start[size_t(k)] = std::bit_cast<float>(at);
+      start[size_t(k)] = bit_cast<float>(at);
     }
     for (uint32_t b = 0; b < bucket.size(); ++b) {
-      const float least = std::bit_cast<float>(b << kBucketShift);
+      const float least = bit_cast<float>(b << kBucketShift);
       bucket[b] = uint8_t(std::upper_bound(start.begin() + 1, start.end(), least) - start.begin() - 1);
     }
   }
@@ -56,7 +57,7 @@ struct SrgbCodes {
   uint8_t operator()(float linear) const {
     if (!(linear > 0.0f)) return 0;
     if (linear >= 1.0f) return 255;
-    const uint8_t code = bucket[std::bit_cast<uint32_t>(linear) >> kBucketShift];
+    const uint8_t code = bucket[bit_cast<uint32_t>(linear) >> kBucketShift];
     return code < 255 && linear >= start[size_t(code) + 1] ? uint8_t(code + 1) : code;
   }
 };

@@ -81,4 +81,14 @@ bool window_is_multisampled() {
   return sample_buffers != 0;
 }
 
+KeptBinding::KeptBinding() {
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer_);
+  glGetIntegerv(GL_VIEWPORT, viewport_);
+}
+
+KeptBinding::~KeptBinding() {
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer_));
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+}
+
 }  // namespace luz::gl

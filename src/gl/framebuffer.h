@@ -34,6 +34,20 @@ private:
   GLuint display_ = 0;
 };
 
+// The framebuffer and viewport bound when it is made, bound again when it goes: a pass drawing
+// into a target of its own leaves its caller's as they were.
+class KeptBinding {
+public:
+  KeptBinding();
+  ~KeptBinding();
+  KeptBinding(const KeptBinding&) = delete;
+  KeptBinding& operator=(const KeptBinding&) = delete;
+
+private:
+  GLint framebuffer_ = 0;
+  GLint viewport_[4] = {};
+};
+
 // The window's framebuffer (0) bound so that a program's output 1, the displayed values, goes to
 // its back buffer and output 0, the radiance, nowhere: what LocalRenderer::draw_display draws
 // into. bind_window() binds it as usual again (output 0 to the back buffer).

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/i18n.h"
 #include "core/resources.h"
+#include "gl/glsl_dialect.h"
 
 namespace luz::gl {
 
@@ -41,7 +42,8 @@ Stage stage_of(const std::string& file) {
 }
 
 // Compiles one stage as several source strings, numbered for the driver's log:
-//   0 = the file's #version line and the stage define, 1..k = the shared files, k+1 = the file.
+//   0 = the dialect's header (glsl_dialect.h: the file's #version line on the desktop) and the
+//   stage define, 1..k = the shared files, k+1 = the file.
 // Each string restarts its line count with #line, so "2:14(3): error" reads as line 14 of
 // source 2; the message thrown lists which file each number is.
 GLuint compile(const std::string& file, const std::vector<std::string>& shared,
@@ -60,7 +62,8 @@ GLuint compile(const std::string& file, const std::vector<std::string>& shared,
 
   std::vector<std::string> sources;
   std::string legend = trf("source 0 = {} header", file);
-  sources.push_back(fmt::format("{}\n#define {} 1\n{}", version, stage.define, defines));
+  const GlslDialect dialect = current_glsl_dialect();
+  sources.push_back(fmt::format("{}\n#define {} 1\n{}", glsl_header(dialect, version), stage.define, defines));
   for (size_t i = 0; i < shared.size(); ++i) {
     const size_t number = i + 1;
     sources.push_back(fmt::format("#line 1 {}\n{}\n", number, read_text(dir / shared[i])));

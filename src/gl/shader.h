@@ -1,8 +1,9 @@
 #pragma once
-// A GLSL program built from files in shaders/ (DESIGN.md "GL"). GLSL 330 has no #include, so
-// shared files (e.g. lighting.glsl, the lecture's formula) are spliced in right after each
-// stage's #version line, together with `#define LUZ_VERTEX_SHADER` (GEOMETRY, FRAGMENT) so a
-// shared file can hold stage-specific helpers.
+// A GLSL program built from files in shaders/ (DESIGN.md "GL"), written in GLSL 330 core and
+// compiled as the context's dialect (glsl_dialect.h: GLSL ES 3.00 in the page). GLSL has no
+// #include, so shared files (e.g. lighting.glsl, the lecture's formula) are spliced in right
+// after each stage's #version line, together with `#define LUZ_VERTEX_SHADER` (GEOMETRY,
+// FRAGMENT) so a shared file can hold stage-specific helpers.
 #include <filesystem>
 #include <string>
 #include <unordered_map>

@@ -14,6 +14,7 @@ int largest_square_array(GLenum internal_format, GLenum format, GLenum type, int
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
   if (layers > max_layers) return 0;
   const auto fits = [&](int side) {
+    if (!glGetTexLevelParameteriv) return true;  // OpenGL ES has no proxy textures: the limits alone
     glTexImage3D(GL_PROXY_TEXTURE_2D_ARRAY, 0, GLint(internal_format), side, side, layers, 0, format,
                  type, nullptr);
     GLint width = 0;

@@ -10,7 +10,8 @@
 #include <stdexcept>
 
 #include <libdeflate.h>
-#include <tbb/parallel_for.h>
+
+#include "core/parallel_for.h"
 
 namespace luz::io {
 namespace {
@@ -75,9 +76,9 @@ std::string encode_png(const std::vector<uint8_t>& rgb, int width, int height) {
   const std::vector<uint8_t> zeros(length, 0);
   // Row by row on every core (TBB hands out ranges of rows): each row's filter reads only the
   // unfiltered picture.
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, 32), [&](const tbb::blocked_range<int>& rows) {
+  parallel_for_ranges(0, height, 32, [&](int first_row, int end_row) {
     std::vector<uint8_t> candidate(length + 1);
-    for (int y = rows.begin(); y < rows.end(); ++y) {
+    for (int y = first_row; y < end_row; ++y) {
       const uint8_t* row = rgb.data() + size_t(y) * length;
       const uint8_t* above = y > 0 ? row - length : zeros.data();
       uint8_t* out = filtered.data() + size_t(y) * (length + 1);
@@ -180,7 +181,7 @@ std::string encode_exr(const Image& image) {
   const int blocks = (height + kZipScanlines - 1) / kZipScanlines;
   std::vector<std::string> chunks(static_cast<size_t>(blocks));
   // Deflate is most of the time: the blocks are independent, each core takes blocks in turn.
-  tbb::parallel_for(0, blocks, [&](int b) {
+  parallel_for(0, blocks, [&](int b) {
     const int first = b * kZipScanlines, last = std::min(height, first + kZipScanlines);
     std::vector<float> values(size_t(last - first) * 3 * size_t(width));
     float* value = values.data();

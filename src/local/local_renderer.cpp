@@ -723,13 +723,10 @@ Image LocalRenderer::render(const Camera& camera, int width, int height,
   Impl& s = *impl_;
   if (!s.target || s.target->width() != width || s.target->height() != height)
     s.target = std::make_unique<gl::Framebuffer>(width, height);
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  const gl::KeptBinding kept;
   s.target->bind();
   draw(camera, width, height, options);
-  Image image = s.target->read();
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-  return image;
+  return s.target->read();
 }
 
 }  // namespace luz

@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "gl/framebuffer.h"
 #include "gl/functions.h"
 #include "gl/mesh_buffers.h"
 #include "gl/shader.h"
@@ -234,9 +235,7 @@ void ShadowMaps::update(const Scene& scene, std::span<const AreaLight> area_ligh
   allocate(size, layers);
 
   // The passes: every layer cleared to "nothing in the way", then the scene's depth drawn in.
-  GLint previous_framebuffer = 0, previous_viewport[4] = {};
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
-  glGetIntegerv(GL_VIEWPORT, previous_viewport);
+  const gl::KeptBinding kept;
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
   glViewport(0, 0, size, size);
@@ -281,8 +280,6 @@ void ShadowMaps::update(const Scene& scene, std::span<const AreaLight> area_ligh
     if (i == 0 || area_views_[i].layer != area_views_[i - 1].layer) draw_cube(area_views_[i], true);
 
   glUseProgram(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
-  glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 }
 
 ShadowLookup ShadowMaps::lookup(const Shadows& settings) const {

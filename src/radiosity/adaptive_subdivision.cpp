@@ -6,10 +6,9 @@
 #include <numeric>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "core/i18n.h"
+#include "core/parallel_for.h"
 #include "radiosity/mesh_bisection.h"
 #include "radiosity/shooting.h"
 
@@ -158,11 +157,9 @@ size_t ProgressiveSolver::refine() {
     }
 
     std::vector<Rgb> gathered(changed.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                        for (size_t k = range.begin(); k != range.end(); ++k)
-                          gathered[k] = gather(changed[k], senders, sent, emissions, parts);
-                      });
+    parallel_for_ranges(size_t(0), changed.size(), size_t(16), [&](size_t first, size_t end) {
+      for (size_t k = first; k != end; ++k) gathered[k] = gather(changed[k], senders, sent, emissions, parts);
+    });
     for (size_t k = 0; k < changed.size(); ++k) {
       const uint32_t e = changed[k];
       const Patch& p = mesh_.patches[e];

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 #include <glm/ext/matrix_clip_space.hpp>
@@ -16,6 +17,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "gl/framebuffer.h"
 #include "radiosity/gpu_row_sums.h"
 #include "radiosity/radiosity_options.h"
 
@@ -117,13 +119,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
     atlas[face] = {(face == 0 ? top_projection : side_projection) * view, r.x, r.y, r.width, r.height};
   }
 
-  GLint previous_fbo = 0, previous_viewport[4] = {};
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
-  glGetIntegerv(GL_VIEWPORT, previous_viewport);
-  const auto restore = [&] {
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
-  };
+  auto kept = std::make_optional<gl::KeptBinding>();  // the caller's target, back once read
   target_.bind_and_clear();
   items_.begin();
   if (passes_ == HemicubePasses::one) {
@@ -139,7 +135,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
   const auto t1 = Clock::now();
   if (gpu_sums_) {
     const std::vector<float>& sums = gpu_sums_->sum(target_.id_texture(), mesh_.size());
-    restore();
+    kept.reset();
     const auto t2 = Clock::now();
     row_.clear();
     for (size_t j = 0; j < sums.size(); ++j)
@@ -148,7 +144,7 @@ const std::vector<FormFactor>& Hemicube::row(const glm::vec3& centre, const glm:
     return row_;
   }
   target_.read(ids_);
-  restore();
+  kept.reset();
   const auto t2 = Clock::now();
 
   // F_ij = sum of the delta form factors of the pixels showing patch j.

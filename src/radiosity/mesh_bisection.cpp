@@ -2,9 +2,10 @@
 #include "radiosity/mesh_bisection.h"
 
 #include <algorithm>
-#include <bit>
 
 #include <glm/geometric.hpp>
+
+#include "core/std_compat.h"
 
 namespace luz {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 // follows already: they are not compared.
 constexpr float kSameSurface = 0.999f;
 
-uint32_t bits(float x) { return std::bit_cast<uint32_t>(x + 0.0f); }  // -0 and +0 alike
+uint32_t bits(float x) { return bit_cast<uint32_t>(x + 0.0f); }  // -0 and +0 alike
 
 bool less(const glm::vec3& p, const glm::vec3& q) {
   return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : p.z < q.z;

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "gl/framebuffer.h"
 #include "radiosity/radiosity_options.h"
 
 namespace luz {
@@ -52,21 +53,19 @@ const std::vector<FormFactor>& PointSource::solid_angles(const Light& light) {
                                glm::abs(bounds.min - light.position))) * 1.01f + 1e-3f;
   const float near = 1e-4f * far;
 
-  GLint previous_fbo = 0, previous_viewport[4] = {};
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
-  glGetIntegerv(GL_VIEWPORT, previous_viewport);
-  target_.bind_and_clear();
-  items_.begin();
-  const glm::mat4 projection = glm::frustum(-near, near, -near, near, near, far);
-  for (int face = 0; face < kFaces; ++face) {
-    glViewport((face % 3) * res_, (face / 3) * res_, res_, res_);
-    items_.draw(projection * glm::lookAt(light.position, light.position + kCube[face].forward,
-                                         kCube[face].up));
+  {
+    const gl::KeptBinding kept;
+    target_.bind_and_clear();
+    items_.begin();
+    const glm::mat4 projection = glm::frustum(-near, near, -near, near, near, far);
+    for (int face = 0; face < kFaces; ++face) {
+      glViewport((face % 3) * res_, (face / 3) * res_, res_, res_);
+      items_.draw(projection * glm::lookAt(light.position, light.position + kCube[face].forward,
+                                           kCube[face].up));
+    }
+    items_.end();
+    target_.read(ids_);
   }
-  items_.end();
-  target_.read(ids_);
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_fbo));
-  glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 
   // Sum spot(direction) * d_omega per patch, pixel by pixel.
   sums_.assign(mesh_.size(), 0.0);  // adaptive subdivision adds elements between shots

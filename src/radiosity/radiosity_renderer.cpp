@@ -227,8 +227,7 @@ Image RadiosityRenderer::render(const Camera& camera, int width, int height,
   Impl& s = *impl_;
   if (!s.target || s.target->width() != width || s.target->height() != height)
     s.target = std::make_unique<gl::Framebuffer>(width, height);
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  const gl::KeptBinding kept;
   s.target->bind();
   const int root = std::max(1, int(std::lround(std::sqrt(double(options.pixel_samples)))));
   Image image(width, height);
@@ -241,7 +240,6 @@ Image RadiosityRenderer::render(const Camera& camera, int width, int height,
     }
   const float weight = 1.0f / float(root * root);
   for (Rgb& p : image.pixels) p *= weight;
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   return image;
 }
 

@@ -6,9 +6,8 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
+#include "core/parallel_for.h"
 #include "radiosity/element_form_factor.h"
 #include "radiosity/radiosity_options.h"
 #include "raytracing/embree_scene.h"
@@ -94,17 +93,16 @@ RayFormFactors::RayFormFactors(const Scene& scene, const PatchMesh& mesh)
 
 RayFormFactors::~RayFormFactors() = default;
 
-// Every element's value on TBB's threads, then the elements with a positive one, in order.
+// Every element's value on parallel threads (core/parallel_for.h), then the elements with a positive one, in order.
 template <typename Value>
 const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& value) {
   std::atomic<uint64_t> traced{0};
   values_.resize(mesh_.size());  // adaptive subdivision adds elements between rows
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh_.size(), 256),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      uint64_t rays = 0;  // summed per range: one atomic add, not one per element
-                      for (size_t j = range.begin(); j != range.end(); ++j) values_[j] = float(value(j, rays));
-                      traced.fetch_add(rays, std::memory_order_relaxed);
-                    });
+  parallel_for_ranges(size_t(0), mesh_.size(), size_t(256), [&](size_t first, size_t end) {
+    uint64_t rays = 0;  // summed per range: one atomic add, not one per element
+    for (size_t j = first; j != end; ++j) values_[j] = float(value(j, rays));
+    traced.fetch_add(rays, std::memory_order_relaxed);
+  });
   row_.clear();
   for (size_t j = 0; j < values_.size(); ++j)
     if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});

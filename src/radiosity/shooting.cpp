@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "core/parallel_for.h"
 #include "radiosity/element_form_factor.h"
 #include "radiosity/polygon_form_factor.h"
 
@@ -15,8 +16,6 @@
 #include <numbers>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
 namespace luz {
@@ -203,8 +202,8 @@ Rgb ProgressiveSolver::take_unshot(size_t i) {
 void ProgressiveSolver::arriving_from(const ShootingPatch& shooter, const std::vector<FormFactor>& row,
                                       const Rgb& shot) {
   arriving_.resize(row.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, row.size(), 128), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t k = r.begin(); k != r.end(); ++k) {
+  parallel_for_ranges(size_t(0), row.size(), size_t(128), [&](size_t first, size_t end) {
+    for (size_t k = first; k != end; ++k) {
       const Patch& receiver = mesh_.patches[row[k].patch];
       const double F_ij = form_factor_to(shooter, row[k]);
       arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot, sent_);

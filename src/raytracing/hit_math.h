@@ -6,7 +6,6 @@
 // same bits (no fused multiply-adds: the tracer is built with -ffp-contract=off, so neither the
 // baseline nor the lanes' AVX2 and AVX-512 clones, vector_clones.h, fuse a*b+c).
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -14,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/color.h"
+#include "core/std_compat.h"
 #include "raytracing/optics.h"
 #include "raytracing/ray.h"
 
@@ -64,8 +64,8 @@ inline float cos_alpha(const glm::vec3& N, const glm::vec3& L, const glm::vec3& 
 // (test_whitted, CosPowerIsPow); 0^n = 0 for n > 0 and x^0 = 1, as std::pow gives them.
 inline float cos_power(float x, float n) {
   // log2 x = e + log2 m, where x = m 2^e and m lies in [sqrt(1/2), sqrt(2)).
-  const int32_t bits = std::bit_cast<int32_t>(x);
-  const float mantissa = std::bit_cast<float>((bits & 0x007fffff) | 0x3f800000);  // in [1, 2)
+  const int32_t bits = bit_cast<int32_t>(x);
+  const float mantissa = bit_cast<float>((bits & 0x007fffff) | 0x3f800000);  // in [1, 2)
   const bool halve = mantissa > 1.41421356f;
   const float m = halve ? 0.5f * mantissa : mantissa;
   const int32_t e = ((bits >> 23) & 0xff) - 127 + (halve ? 1 : 0);
@@ -82,7 +82,7 @@ inline float cos_power(float x, float n) {
   const float g = (y - i) * 0.693147181f;
   const float series = 1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f +
                                  g * (1.0f / 120.0f + g * (1.0f / 720.0f + g / 5040.0f))))));
-  const float power = series * std::bit_cast<float>((int32_t(i) + 127) << 23);
+  const float power = series * bit_cast<float>((int32_t(i) + 127) << 23);
   return n == 0.0f ? 1.0f : (x > 0.0f ? power : 0.0f);
 }
 

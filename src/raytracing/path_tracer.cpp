@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
-#include <tbb/parallel_for.h>
 
+#include "core/parallel_for.h"
 #include "raytracing/embree_scene.h"
 #include "raytracing/optics.h"
 #include "raytracing/path_bsdf.h"
@@ -263,7 +263,7 @@ void PathRenderer::add_samples(PathFilm& film, const Camera& camera, const PathO
   const std::vector<Tile> tiles = make_tiles(film.width(), film.height(), options.tile_size);
   std::mutex report;
   int done = 0;
-  tbb::parallel_for(size_t(0), tiles.size(), [&](size_t i) {
+  parallel_for(size_t(0), tiles.size(), [&](size_t i) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return;
     const Tile& tile = tiles[i];
     PathTracer tracer(scene_, *embree_, emitters, options);

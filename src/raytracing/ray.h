@@ -1,13 +1,14 @@
 #pragma once
 // A ray and what it hits: the two values every part of the tracer passes around; and where a ray
 // leaving a surface starts.
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "core/std_compat.h"
 
 namespace luz::rt {
 
@@ -58,8 +59,8 @@ inline glm::vec3 offset_origin(const glm::vec3& p, const glm::vec3& n) {
     // Adding k to a positive float's bits moves it k ULPs away from zero (k ULPs toward zero
     // for a negative float), so the step follows the coordinate's magnitude.
     const int32_t ulps = int32_t(ulp_scale * n[i]);
-    const int32_t bits = std::bit_cast<int32_t>(p[i]);
-    const float stepped = std::bit_cast<float>(bits + (p[i] < 0.0f ? -ulps : ulps));
+    const int32_t bits = bit_cast<int32_t>(p[i]);
+    const float stepped = bit_cast<float>(bits + (p[i] < 0.0f ? -ulps : ulps));
     moved[i] = std::abs(p[i]) < near_origin ? p[i] + fixed_scale * n[i] : stepped;
   }
   return moved;

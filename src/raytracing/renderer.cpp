@@ -3,15 +3,14 @@
 #include "raytracing/renderer.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <memory>
 #include <span>
 #include <cmath>
 #include <utility>
 
-#include <tbb/parallel_for.h>
-
+#include "core/parallel_for.h"
+#include "core/std_compat.h"
 #include "raytracing/brute_force.h"
 #include "raytracing/embree_scene.h"
 #include "raytracing/hit_lanes.h"
@@ -101,7 +100,7 @@ void adaptive_tile(const Tile& tile, const PrimaryRays& camera_rays, const Whitt
   const auto radiance = [&](float x, float y) {
     ++counters.samples;
     return whitted.trace(camera_rays.through({x, y}), 1, RayKind::primary,
-                         sample_seed(std::bit_cast<int>(x), std::bit_cast<int>(y), 1));
+                         sample_seed(bit_cast<int>(x), bit_cast<int>(y), 1));
   };
   const int cw = tile.width() + 1;
   std::vector<Rgb> corners(size_t(cw) * size_t(tile.height() + 1));
@@ -274,7 +273,7 @@ Image WhittedRenderer::render(const Camera& camera, int width, int height,
   std::vector<std::vector<RecordedRay>> tile_rays(keep_rays_ ? tiles.size() : 0);
   std::mutex report;
   int done = 0;
-  tbb::parallel_for(size_t(0), tiles.size(), [&](size_t i) {
+  parallel_for(size_t(0), tiles.size(), [&](size_t i) {
     if (cancel && cancel->load(std::memory_order_relaxed)) {
       for (int y = tiles[i].y0; y < tiles[i].y1; ++y)
         std::fill_n(&image.at(tiles[i].x0, y), tiles[i].width(), Rgb(0.0f));

@@ -1,8 +1,8 @@
 #pragma once
 // A tiny line plotter into a core::Image, for `luz solvers --png` (no plotting library is in the
 // Debian set Luz uses): panels with a log10 y axis and a linear or log10 x axis, grid lines at
-// the decades, labels in a 5x7 bitmap font (capitals, digits, a few signs), a legend of colour
-// swatches. Values are radiance, so io::write_image writes the picture at exposure 0.
+// the decades, labels in the TrueType font of label_text.h, a legend of colour swatches. Values
+// are radiance, so io::write_image writes the picture at exposure 0.
 #include <string>
 #include <vector>
 
@@ -26,12 +26,9 @@ struct PlotPanel {
   std::vector<PlotSeries> series;
 };
 
-// Each series is drawn as a staircase (a value holds until the next point). Panels side by side, each `panel_width` x `height` pixels, a legend of the first panel's
-// series under them.
+// Each series is drawn as a staircase (a value holds until the next point). Panels side by side,
+// each `panel_width` x `height` pixels, a legend of the first panel's series under them. Throws
+// luz::Error when the font is missing.
 Image plot(const std::vector<PlotPanel>& panels, int panel_width, int height);
-
-// Writes `text` with its top-left corner at (x, y), `scale` pixels per font pixel. Lower-case
-// letters are drawn as capitals; characters without a glyph as blanks.
-void draw_text(Image& image, int x, int y, const std::string& text, const Rgb& colour, int scale = 1);
 
 }  // namespace luz::app

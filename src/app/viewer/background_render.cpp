@@ -57,7 +57,7 @@ void BackgroundWorker::start(Job job) {
   cancel_ = false;
   finished_ = false;
   began_ = std::chrono::steady_clock::now();
-  thread_ = std::jthread([this, job = std::move(job)] {
+  thread_ = luz::jthread([this, job = std::move(job)] {
     job(cancel_);
     finished_.store(true, std::memory_order_release);
   });

@@ -6,13 +6,13 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/image.h"
 #include "core/scene.h"
+#include "core/std_compat.h"
 #include "gl/framebuffer.h"
 
 namespace luz::app {
@@ -68,7 +68,7 @@ private:
   std::atomic<bool> cancel_{false};
   std::atomic<bool> finished_{false};
   std::chrono::steady_clock::time_point began_;
-  std::jthread thread_;
+  luz::jthread thread_;
 };
 
 }  // namespace luz::app

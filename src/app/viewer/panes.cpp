@@ -17,6 +17,7 @@
 #include "app/viewer/viewer_window.h"
 #include "app/viewer/widget_registry.h"
 #include "core/error.h"
+#include "gl/framebuffer.h"
 #include "io/image_io.h"
 
 namespace luz::app {
@@ -100,15 +101,15 @@ void save_panes(const std::vector<const gl::Framebuffer*>& pictures, const std::
   const glm::ivec2 pane_pixels = panes.front().pixels;
   Image sheet(grid.columns * pane_pixels.x, grid.rows * pane_pixels.y);  // the headless grid's shape
   const LabelFont font;
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-  for (size_t i = 0; i < panes.size(); ++i) {
-    Image pane = pictures[i]->read();
-    draw_label(pane, font, model_label(models[i]), exposure);
-    const glm::ivec2 at = glm::ivec2(glm::round((panes[i].origin - view.origin) * view.scale));
-    for (int y = 0; y < pane.height; ++y) std::copy_n(&pane.at(0, y), pane.width, &sheet.at(at.x, at.y + y));
+  {
+    const gl::KeptBinding kept;
+    for (size_t i = 0; i < panes.size(); ++i) {
+      Image pane = pictures[i]->read();
+      draw_label(pane, font, model_label(models[i]), exposure);
+      const glm::ivec2 at = glm::ivec2(glm::round((panes[i].origin - view.origin) * view.scale));
+      for (int y = 0; y < pane.height; ++y) std::copy_n(&pane.at(0, y), pane.width, &sheet.at(at.x, at.y + y));
+    }
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   io::write_image(sheet, path, exposure);
 }
 

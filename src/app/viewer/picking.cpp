@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "gl/framebuffer.h"
 #include "gl/functions.h"
 
 namespace luz::app {
@@ -94,15 +95,14 @@ std::optional<Pick> Picker::pick(const Camera& camera, int width, int height, in
                          drawn_with_ && drawn_with_->to_world == camera.to_world &&
                          drawn_with_->yfov == camera.yfov && drawn_with_->znear == camera.znear &&
                          drawn_with_->zfar == camera.zfar;
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-  if (!same_view) draw_ids(camera, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, target_->id());
-
   float id[4] = {};
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(x, height - 1 - y, 1, 1, GL_RGBA, GL_FLOAT, id);  // GL rows go bottom-up
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+  {
+    const gl::KeptBinding kept;
+    if (!same_view) draw_ids(camera, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_->id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(x, height - 1 - y, 1, 1, GL_RGBA, GL_FLOAT, id);  // GL rows go bottom-up
+  }
   if (id[0] < 0.5f) return std::nullopt;
 
   Pick pick;

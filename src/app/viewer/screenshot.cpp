@@ -6,16 +6,17 @@
 #include <fmt/format.h>
 
 #include "core/image.h"
+#include "gl/framebuffer.h"
 #include "gl/functions.h"
 #include "io/image_io.h"
 
 namespace luz::app {
 
 void save_picture(const gl::Framebuffer& view, const std::filesystem::path& path, float exposure) {
-  GLint previous = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-  const Image image = view.read();
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+  const Image image = [&] {
+    const gl::KeptBinding kept;
+    return view.read();
+  }();
   io::write_image(image, path, exposure);
 }
 

@@ -10,14 +10,12 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <fstream>
 #include <optional>
 #include <span>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <tbb/info.h>
-#include <tbb/parallel_for.h>
 
 #include "app/cli/bench/bench_scenes.h"
 #include "app/cli/bench/bench_table.h"
@@ -25,6 +23,7 @@
 #include "app/common/i18n.h"
 #include "app/common/options_tables.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "raytracing/renderer.h"
 #include "raytracing/sampling.h"
 
@@ -36,14 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string cpu_model() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return tr("unknown CPU");
 }
 
 // Slide 24's ray kinds as the rows under a scene name them, indexed by RayKind.
@@ -76,7 +67,7 @@ std::array<BareRays, rt::kRayKinds> bare_rays(std::span<const rt::RecordedRay> r
 // The rays of one kind traced bare in the renderer's calls: no shading, no recursion, no counters.
 double trace_bare(const rt::Intersector& embree, const BareRays& bare, rt::RayKind kind) {
   const auto start = Clock::now();
-  tbb::parallel_for(size_t(0), bare.calls.size(), [&](size_t c) {
+  parallel_for(size_t(0), bare.calls.size(), [&](size_t c) {
     thread_local std::vector<rt::Hit> hits;
     thread_local rt::BlockedFlags blocked;
     const BareRays::Call& call = bare.calls[c];

@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "app/cli/bench/bench_command.h"
+#include "app/cli/bench/bench_table.h"
 #include "core/resources.h"
 #include "app/common/i18n.h"
 #include "core/error.h"
@@ -28,14 +28,6 @@
 
 namespace luz::app {
 namespace {
-
-std::string cpu_model() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return tr("unknown CPU");
-}
 
 // Mean over lit pixels (reference above 1% of its mean) of |L - R| / R, channels averaged.
 double mean_relative_error(const Image& image, const Image& reference) {

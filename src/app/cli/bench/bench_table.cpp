@@ -1,7 +1,10 @@
 #include "app/cli/bench/bench_table.h"
 
 #include <algorithm>
+#include <fstream>
 #include <utility>
+
+#include "app/common/i18n.h"
 
 namespace luz::app {
 
@@ -11,6 +14,14 @@ Timing best_and_median(std::vector<double> times) {
   const size_t half = times.size() / 2;
   const double median = times.size() % 2 ? times[half] : 0.5 * (times[half - 1] + times[half]);
   return {times.front(), median};
+}
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return tr("unknown CPU");
 }
 
 size_t shown_width(std::string_view utf8) {

@@ -16,6 +16,9 @@ struct Timing {
 };
 Timing best_and_median(std::vector<double> times);
 
+// The processor's name, from /proc/cpuinfo: every bench says which machine its figures are from.
+std::string cpu_model();
+
 // The characters a UTF-8 text shows: every byte starts one but the continuation bytes 10xxxxxx.
 size_t shown_width(std::string_view utf8);
 

@@ -1,0 +1,59 @@
+# The web page's dependencies (docs/web.md), under Emscripten: the same names the desktop's
+# find_package() gives, so src/core, src/io, src/gl and src/local link them unchanged.
+# - Header-only packages (GLM, fmt, nlohmann-json, tinygltf, stb) are Debian's headers, seen
+#   through a folder of links in the build tree: adding /usr/include itself would put the
+#   desktop's C library in front of Emscripten's.
+# - GL/glcorearb.h (the table of gl/functions.h: types, enums and function pointer types only)
+#   is Debian's too (libgl-dev); Emscripten ships the ES headers only.
+# - libdeflate (the PNG writer) is compiled from Debian's source (`apt-get source libdeflate`,
+#   unpacked by ./setup.sh web into LUZ_WEB_SOURCES).
+# - OpenEXR is not read in the page (tinyexr needs zlib, which Emscripten only downloads).
+# Where the page's packed files (shaders, scenes, catalogues) are in its file system.
+set(LUZ_WEB_DATA_DIR /luz)
+
+set(LUZ_WEB_SOURCES "${PROJECT_SOURCE_DIR}/build-web/sources" CACHE PATH
+    "Where ./setup.sh web unpacks the Debian source packages the page compiles")
+
+set(luz_web_include ${CMAKE_BINARY_DIR}/web-include)
+file(MAKE_DIRECTORY ${luz_web_include}/GL)
+foreach(entry glm fmt nlohmann tiny_gltf.h stb libdeflate.h GL/glcorearb.h)
+  if(NOT EXISTS /usr/include/${entry})
+    message(FATAL_ERROR "the web build needs /usr/include/${entry} (./setup.sh installs its package)")
+  endif()
+  file(CREATE_LINK /usr/include/${entry} ${luz_web_include}/${entry} SYMBOLIC)
+endforeach()
+
+# C++ exceptions are off by default in Emscripten (a throw aborts); Luz reports bad input with
+# them, and tinygltf's JSON reader uses them: every C++ target of the page links this.
+add_library(luz_web_exceptions INTERFACE)
+target_compile_options(luz_web_exceptions INTERFACE -fexceptions)
+target_link_options(luz_web_exceptions INTERFACE -fexceptions)
+
+add_library(luz_web_headers INTERFACE)
+target_include_directories(luz_web_headers SYSTEM INTERFACE ${luz_web_include})
+target_link_libraries(luz_web_headers INTERFACE luz_web_exceptions)
+
+add_library(glm::glm ALIAS luz_web_headers)
+add_library(nlohmann_json::nlohmann_json ALIAS luz_web_headers)
+
+add_library(luz_web_fmt INTERFACE)
+target_link_libraries(luz_web_fmt INTERFACE luz_web_headers)
+target_compile_definitions(luz_web_fmt INTERFACE FMT_HEADER_ONLY=1)
+add_library(fmt::fmt ALIAS luz_web_fmt)
+
+# tinygltf's implementation in one file; the loader gives it its own image reader.
+set(luz_tinygltf_source ${CMAKE_BINARY_DIR}/tinygltf_implementation.cpp)
+file(WRITE ${luz_tinygltf_source}.in "#define TINYGLTF_IMPLEMENTATION\n#include <tiny_gltf.h>\n")
+configure_file(${luz_tinygltf_source}.in ${luz_tinygltf_source} COPYONLY)
+add_library(luz_web_tinygltf STATIC ${luz_tinygltf_source})
+target_link_libraries(luz_web_tinygltf PUBLIC luz_web_headers)
+target_compile_definitions(luz_web_tinygltf PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
+add_library(TinyGLTF::TinyGLTF ALIAS luz_web_tinygltf)
+
+file(GLOB luz_libdeflate_sources ${LUZ_WEB_SOURCES}/libdeflate-*/lib/*.c)
+if(NOT luz_libdeflate_sources)
+  message(FATAL_ERROR "no libdeflate sources in ${LUZ_WEB_SOURCES}: ./setup.sh web unpacks them")
+endif()
+add_library(luz_web_libdeflate STATIC ${luz_libdeflate_sources})
+target_include_directories(luz_web_libdeflate PUBLIC ${luz_web_include})
+add_library(PkgConfig::libdeflate ALIAS luz_web_libdeflate)

@@ -1,0 +1,65 @@
+#pragma once
+// The one parallel loop of Luz (DESIGN.md "Two targets"): the tracers' tiles, the radiosity's
+// rows, the PNG encoder's rows all go through it. Which threads run it is chosen when Luz is
+// built (LUZ_PARALLEL in src/core/CMakeLists.txt):
+// - tbb: oneTBB's work-stealing scheduler (the desktop). The calls below are exactly the
+//   tbb::parallel_for calls the code would make itself, so the desktop build is unchanged.
+// - threads: threads_for below, plain std::threads sharing a counter of chunks (the web page,
+//   where oneTBB does not build; on one thread where the page cannot have threads).
+// The loop returns when every call of `body` has; an exception thrown by `body` comes out of the
+// loop (the first one thrown; the chunks not yet started are skipped).
+#include <cstddef>
+#include <functional>
+
+#if LUZ_PARALLEL_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace luz {
+
+namespace parallel {
+
+// Calls body(lo, hi) for consecutive chunks [lo, hi) of [begin, end), `grain` indices long (the
+// last one shorter), on up to `threads` threads: the calling thread and threads - 1 started
+// for this loop, each taking the next chunk not yet taken. threads <= 1 runs them in order on
+// the calling thread.
+void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
+                 const std::function<void(size_t lo, size_t hi)>& body);
+
+// The threads threads_for uses on this thread: every core natively; in the page every core the
+// browser offers on a worker, one on the browser's main thread (which must never wait for
+// another) and one in a build without threads.
+unsigned thread_count();
+
+}  // namespace parallel
+
+// body(i) for every i in [begin, end).
+template <class Index, class Body>
+void parallel_for(Index begin, Index end, const Body& body) {
+#if LUZ_PARALLEL_TBB
+  tbb::parallel_for(begin, end, body);
+#else
+  if (!(begin < end)) return;
+  parallel::threads_for(0, size_t(end - begin), 1, parallel::thread_count(), [&](size_t lo, size_t hi) {
+    for (size_t i = lo; i < hi; ++i) body(Index(begin + Index(i)));
+  });
+#endif
+}
+
+// body(lo, hi) for subranges [lo, hi) that cover [begin, end) once, each at most about `grain`
+// long (oneTBB may split a range down to grain / 2): for loops whose body is cheap, so that
+// each thread takes work in pieces worth their overhead.
+template <class Index, class Body>
+void parallel_for_ranges(Index begin, Index end, Index grain, const Body& body) {
+#if LUZ_PARALLEL_TBB
+  tbb::parallel_for(tbb::blocked_range<Index>(begin, end, size_t(grain)),
+                    [&](const tbb::blocked_range<Index>& range) { body(range.begin(), range.end()); });
+#else
+  if (!(begin < end)) return;
+  parallel::threads_for(0, size_t(end - begin), size_t(grain), parallel::thread_count(),
+                        [&](size_t lo, size_t hi) { body(Index(begin + Index(lo)), Index(begin + Index(hi))); });
+#endif
+}
+
+}  // namespace luz

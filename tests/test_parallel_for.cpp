@@ -1,0 +1,101 @@
+// core/parallel_for.h: the loop visits every index once, on every target's threads, and passes
+// the body's exception on. threads_for (the web page's loop) is checked here with several
+// threads, as the page runs it on a worker.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/parallel_for.h"
+
+namespace luz {
+namespace {
+
+// Each index of [begin, end) counted once, none outside it.
+void expect_each_once(const std::vector<std::atomic<int>>& seen, size_t begin, size_t end) {
+  for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].load(), i >= begin && i < end ? 1 : 0) << "index " << i;
+}
+
+TEST(ParallelFor, ThreadsForVisitsEachIndexOnceInChunksOfTheGrain) {
+  for (const unsigned threads : {1u, 2u, 7u})
+    for (const size_t grain : {size_t(1), size_t(3), size_t(64), size_t(1000)}) {
+      std::vector<std::atomic<int>> seen(200);
+      std::atomic<int> chunks{0};
+      parallel::threads_for(5, 190, grain, threads, [&](size_t lo, size_t hi) {
+        EXPECT_LT(lo, hi);
+        EXPECT_LE(hi - lo, grain);
+        EXPECT_EQ((lo - 5) % grain, 0u) << "chunks start at multiples of the grain";
+        for (size_t i = lo; i < hi; ++i) ++seen[i];
+        ++chunks;
+      });
+      expect_each_once(seen, 5, 190);
+      EXPECT_EQ(size_t(chunks), (185 + grain - 1) / grain) << threads << " threads, grain " << grain;
+    }
+}
+
+TEST(ParallelFor, ThreadsForRunsOnSeveralThreads) {
+  std::vector<std::thread::id> ids(64);
+  parallel::threads_for(0, ids.size(), 1, 4, [&](size_t lo, size_t) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    ids[lo] = std::this_thread::get_id();
+  });
+  std::sort(ids.begin(), ids.end());
+  EXPECT_GT(std::unique(ids.begin(), ids.end()) - ids.begin(), 1);
+}
+
+TEST(ParallelFor, ThreadsForOnOneThreadRunsInOrderOnTheCaller) {
+  std::vector<size_t> order;
+  const std::thread::id caller = std::this_thread::get_id();
+  parallel::threads_for(0, 10, 3, 1, [&](size_t lo, size_t hi) {
+    EXPECT_EQ(std::this_thread::get_id(), caller);
+    order.push_back(lo);
+    order.push_back(hi);
+  });
+  EXPECT_EQ(order, (std::vector<size_t>{0, 3, 3, 6, 6, 9, 9, 10}));
+}
+
+TEST(ParallelFor, ThreadsForPassesTheBodysExceptionOn) {
+  for (const unsigned threads : {1u, 4u}) {
+    std::atomic<int> calls{0};
+    EXPECT_THROW(parallel::threads_for(0, 1000, 1, threads,
+                                       [&](size_t lo, size_t) {
+                                         ++calls;
+                                         if (lo == 3) throw std::runtime_error("index 3");
+                                       }),
+                 std::runtime_error);
+    EXPECT_LT(calls.load(), 1000) << "the chunks after the failure are skipped";
+  }
+}
+
+TEST(ParallelFor, EmptyAndSingleRanges) {
+  int calls = 0;
+  parallel::threads_for(4, 4, 1, 4, [&](size_t, size_t) { ++calls; });
+  parallel_for(size_t(4), size_t(4), [&](size_t) { ++calls; });
+  parallel_for_ranges(7, 7, 2, [&](int, int) { ++calls; });
+  EXPECT_EQ(calls, 0);
+  std::vector<std::atomic<int>> seen(3);
+  parallel_for(1, 2, [&](int i) { ++seen[size_t(i)]; });
+  expect_each_once(seen, 1, 2);
+}
+
+// The loops the renderers call, on whichever threads this build chose (TBB on the desktop).
+TEST(ParallelFor, BuildsLoopsVisitEachIndexOnce) {
+  std::vector<std::atomic<int>> seen(5000);
+  parallel_for(size_t(10), size_t(4990), [&](size_t i) { ++seen[i]; });
+  expect_each_once(seen, 10, 4990);
+
+  std::vector<std::atomic<int>> rows(1000);
+  parallel_for_ranges(-3, 997, 32, [&](int lo, int hi) {
+    EXPECT_LT(lo, hi);
+    for (int i = lo; i < hi; ++i) ++rows[size_t(i + 3)];
+  });
+  expect_each_once(rows, 0, 1000);
+  EXPECT_GT(parallel::thread_count(), 0u);
+}
+
+}  // namespace
+}  // namespace luz
