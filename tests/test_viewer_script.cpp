@@ -145,23 +145,47 @@ TEST(ViewerScript, AFailingCommandNamesItsLine) {
   EXPECT_EQ(error, "d.txt:3: no camera \"nowhere\"");
 }
 
-TEST(ViewerShortcuts, KeysMapToActions) {
+// The line a key press runs, or "" when the key runs nothing.
+std::string line_of(int key, int mods) {
+  const Shortcut* s = shortcut_for(key, mods);
+  return s ? s->line : "";
+}
+
+TEST(ViewerShortcuts, KeysRunScriptLines) {
   int key = 0, mods = 0;
   ASSERT_TRUE(parse_key("Shift+p", key, mods));
   EXPECT_EQ(key, GLFW_KEY_P);
   EXPECT_EQ(mods, GLFW_MOD_SHIFT);
-  EXPECT_EQ(action_for(GLFW_KEY_P, GLFW_MOD_SHIFT), Action::screenshot_with_panel);
-  EXPECT_EQ(action_for(GLFW_KEY_P, 0), Action::screenshot);
+  EXPECT_EQ(line_of(GLFW_KEY_P, GLFW_MOD_SHIFT), "screenshot --with-panel");
+  EXPECT_EQ(line_of(GLFW_KEY_P, 0), "screenshot");
   ASSERT_TRUE(parse_key("F1", key, mods));
-  EXPECT_EQ(action_for(key, mods), Action::help);
-  EXPECT_EQ(action_for(GLFW_KEY_4, 0), Action::choose_model);
-  EXPECT_FALSE(action_for(GLFW_KEY_Z, 0).has_value());
-  // Every model and every term has its key, and no key does two things.
+  EXPECT_EQ(line_of(key, mods), "toggle help");
+  EXPECT_EQ(line_of(GLFW_KEY_4, 0), "model whitted");  // the registry's digit
+  EXPECT_EQ(line_of(GLFW_KEY_MINUS, GLFW_MOD_CONTROL), "interface smaller");
+  EXPECT_EQ(line_of(GLFW_KEY_Z, 0), "");
+  EXPECT_EQ(line_of(GLFW_KEY_UP, 0), "");  // held to fly, listed for help only
+  ASSERT_NE(shortcut_for_character('+'), nullptr);
+  EXPECT_EQ(shortcut_for_character('+')->line, "exposure +0.5");
+  // Every model has its digit, and no key does two things.
+  for (const ModelEntry& m : models()) EXPECT_EQ(line_of(GLFW_KEY_0 + m.key, 0), std::string("model ") + m.name);
   for (const Shortcut& a : shortcuts())
     for (const Shortcut& b : shortcuts())
-      if (&a != &b && a.action != Action::none) {
-        EXPECT_FALSE(a.key == b.key && a.mods == b.mods && a.character == b.character) << a.keys;
+      if (&a != &b && !a.line.empty()) {
+        EXPECT_FALSE(a.key == b.key && a.mods == b.mods && a.character == b.character) << a.name;
       }
+}
+
+// Every key names a key `key NAME` takes and runs a line the script accepts: a bad line would
+// only show when the key is pressed.
+TEST(ViewerShortcuts, EveryKeyIsAKeyAndEveryLineAScriptLine) {
+  for (const Shortcut& s : shortcuts()) {
+    int key = 0, mods = 0;
+    unsigned character = 0;
+    EXPECT_TRUE(parse_key(s.name, key, mods, character)) << s.name;
+    EXPECT_TRUE(key != 0 || character != 0) << s.name;
+    if (s.line.empty()) continue;
+    EXPECT_EQ(error_of(s.line + "\n"), "") << s.name << ": " << s.line;
+  }
 }
 
 TEST(ViewerScript, RadiosityCommandsAreCheckedBeforeAnyWindow) {
@@ -177,7 +201,7 @@ TEST(ViewerScript, RadiosityCommandsAreCheckedBeforeAnyWindow) {
   EXPECT_NE(error_of("radiosity hemicube 63\n").find("even"), std::string::npos);
   EXPECT_NE(error_of("radiosity hemicube 2048\n").find("64 .. 1024"), std::string::npos);
   EXPECT_NE(error_of("radiosity run now\n").find("takes no value"), std::string::npos);
-  EXPECT_NE(error_of("radiosity heat-map maybe\n").find("on or off"), std::string::npos);
+  EXPECT_NE(error_of("radiosity heat-map maybe\n").find("on, off or toggle"), std::string::npos);
   EXPECT_NE(error_of("radiosity sparkle on\n").find("unknown radiosity setting"), std::string::npos);
   EXPECT_EQ(error_of("radiosity meshing uniform\nradiosity form-factors hemicube\n"), "");
   EXPECT_NE(error_of("radiosity meshing fine\n").find("`radiosity meshing` takes one of uniform, adaptive"),
@@ -190,12 +214,13 @@ TEST(ViewerScript, RadiosityCommandsAreCheckedBeforeAnyWindow) {
 TEST(ViewerShortcuts, RadiositysKeys) {
   int key = 0, mods = 0;
   ASSERT_TRUE(parse_key(".", key, mods));
-  EXPECT_EQ(action_for(key, mods), Action::radiosity_step);
+  EXPECT_EQ(line_of(key, mods), "radiosity shot");
   ASSERT_TRUE(parse_key("space", key, mods));
-  EXPECT_EQ(action_for(key, mods), Action::radiosity_run);
-  EXPECT_EQ(action_for(GLFW_KEY_0, 0), Action::radiosity_reset);
-  EXPECT_EQ(action_for(GLFW_KEY_A, GLFW_MOD_SHIFT), Action::toggle_ambient_estimate);
-  EXPECT_EQ(action_for(GLFW_KEY_A, 0), Action::toggle_ambient);  // A stays the local ambient term
+  EXPECT_EQ(line_of(key, mods), "radiosity run-pause");
+  EXPECT_EQ(line_of(GLFW_KEY_0, 0), "radiosity reset");
+  EXPECT_EQ(line_of(GLFW_KEY_U, 0), "radiosity heat-map toggle");
+  EXPECT_EQ(line_of(GLFW_KEY_A, GLFW_MOD_SHIFT), "radiosity ambient-estimate toggle");
+  EXPECT_EQ(line_of(GLFW_KEY_A, 0), "toggle ambient");  // A stays the local ambient term
 }
 
 TEST(ViewerCommand, ABadScriptIsAUsageErrorBeforeAnyWindow) {
@@ -269,9 +294,9 @@ TEST(ViewerOrbit, TheWheelZoomsByATenthAStep) {
 // The keys that are characters on every layout ('+', '-') are bound by the character; the
 // digits show the registry's models.
 TEST(ViewerShortcuts, PlusAndMinusAreCharactersAndTheDigitsShowTheModels) {
-  EXPECT_EQ(action_for_character('+'), Action::exposure_up);
-  EXPECT_EQ(action_for_character('-'), Action::exposure_down);
-  EXPECT_FALSE(action_for(GLFW_KEY_EQUAL, 0).has_value());  // the US position of '+' is not it
+  EXPECT_EQ(shortcut_for_character('+')->line, "exposure +0.5");
+  EXPECT_EQ(shortcut_for_character('-')->line, "exposure -0.5");
+  EXPECT_EQ(shortcut_for(GLFW_KEY_EQUAL, 0), nullptr);  // the US position of '+' is not it
   int key = 0, mods = 0;
   unsigned character = 0;
   ASSERT_TRUE(parse_key("+", key, mods, character));
@@ -279,7 +304,7 @@ TEST(ViewerShortcuts, PlusAndMinusAreCharactersAndTheDigitsShowTheModels) {
   ASSERT_TRUE(parse_key("KP_Add", key, mods, character));
   EXPECT_EQ(key, GLFW_KEY_KP_ADD);
   for (const ModelEntry& m : models()) {
-    EXPECT_EQ(action_for(GLFW_KEY_0 + m.key, 0), Action::choose_model) << m.name;
+    EXPECT_EQ(line_of(GLFW_KEY_0 + m.key, 0), std::string("model ") + m.name) << m.name;
     EXPECT_EQ(model_on_key(m.key), &m);
   }
 }

@@ -22,6 +22,7 @@ namespace luz::app {
 struct RenderSettings;
 struct RadiositySolution;
 struct ScriptVerb;
+struct KeyBinding;
 class ModelView;
 class ViewerServices;
 
@@ -56,6 +57,9 @@ struct ModelEntry {
   // The view-independent solution its pictures show, solved once for several panes of a sheet
   // (radiosity's, which the hybrid shows too); nullptr for a model that has none.
   std::shared_ptr<const RadiositySolution> (*solve)(const Scene& scene, const RenderSettings& settings);
+  // Its keys, each bound to a line of its verbs (key_binding.h): F1 lists them, pressed they
+  // run that line.
+  std::span<const KeyBinding> keys = {};
 };
 
 // Every model: the catalogue's, in its order, then those registered (ModelRegistration).

@@ -76,11 +76,11 @@ const ModelEntry table[] = {
     {"phong", N_("Phong"), 3, N_("Phong shading"), local_flags, local_options, render_shaded<Shading::phong>, local_view<Shading::phong>, {}, nullptr},
     {"whitted", N_("Whitted"), 4, N_("Whitted ray tracing (the raster view until Enter)"), whitted_flags, whitted_options,
      render_whitted_model, [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<WhittedView>(v); },
-     traced_verbs(), nullptr},
+     traced_verbs(), nullptr, traced_keys()},
     {"radiosity", N_("radiosity"), 5, N_("radiosity (progressive refinement; Space runs it)"), radiosity_flags, radiosity_options,
      render_radiosity_model,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> { return std::make_unique<RadiosityView>(v); },
-     radiosity_verbs(), solve_radiosity_model},
+     radiosity_verbs(), solve_radiosity_model, radiosity_keys()},
     {"hybrid", N_("hybrid"), 6, N_("hybrid: radiosity + ray-traced highlights (the radiosity picture until Enter)"),
      hybrid_flags, hybrid_options, render_hybrid,
      [](ViewerServices& v) -> std::unique_ptr<ModelView> {

@@ -2,7 +2,8 @@
 // `luz --script FILE`: a prepared demo, or a test, fed to the viewer one command per line. The
 // verbs (every one, with its arguments; `luz --script-help` prints this list from the table):
 //   key 2 | key Shift+P | key +   press a key (shortcuts.h names; + and - are typed characters,
-//                                 KP_Add / KP_Subtract the keypad's keys)
+//                                 KP_Add / KP_Subtract the keypad's keys): it runs the line it is
+//                                 bound to, one of those below (F1 and docs/viewer.md list them)
 //   type TEXT                     type characters (a panel field being edited gets them)
 //   click X Y                     left click at window coordinates (the inspector, the panel;
 //                                 in Whitted's model the pixel's ray tree)
@@ -26,7 +27,9 @@
 //   idle SECONDS                  let the viewer sit idle (no frames unless an event comes),
 //                                 measuring its CPU use (dump-state's idle_cpu_fraction)
 //   screenshot FILE.png [--with-panel]
-//   camera N|NAME                 a scene camera by index or name
+//   screenshot [--with-panel]     P's and Shift+P's: a new luz-SCENE-N.png in the working folder
+//   camera N|NAME                 a scene camera by index or name; `camera` alone: back to the
+//                                 scene camera (C); `camera next`: the scene's next camera (N)
 //   model NAME                    a model of the registry: flat, gouraud, phong, whitted,
 //                                 radiosity, hybrid, ...
 //   panes MODEL[,MODEL...] | panes off   2 to 4 models side by side (panes.h); one, or off:
@@ -36,19 +39,28 @@
 //                                 local terms (ambient, diffuse, ... on|off), fog, exposure,
 //                                 Whitted's depth, spp, light-samples, fresnel, adaptive,
 //                                 brute-force, shadow-rays, and panel, inspector on|off,
-//                                 ui-scale S
+//                                 ui-scale S, help on|off
+//   toggle NAME | cycle NAME      a switch of `set` to its other value (ambient, ..., panel,
+//                                 inspector, help), a choice to its next (fog): the keys' lines
+//   attenuation toggle|inverse-square|classroom   f_att of every light (F)
+//   exposure +EV | exposure -EV   the exposure moved by that many stops (+ and -)
+//   interface larger|smaller      the interface's size by one step (Ctrl+= / Ctrl+-)
 //   trace [--no-wait|--held]      trace the view in Whitted's model (as Enter) and wait for the
 //                                 last tile, or go on at once (the hybrid's when it is shown);
 //                                 --held: go on at once with no tile landing until the trace is
 //                                 cancelled (a trace that is surely still running, for a test)
 //   wait-trace                    wait until the trace running has finished
+//   cancel-trace | clear-ray-tree  every traced pane's trace cancelled / ray tree let go of
+//                                 (Backspace, X)
 //   dump-ray-tree FILE.json       the ray tree of the last pixel clicked in Whitted's model, as
 //                                 `luz render --ray-tree X,Y` writes it
 //   dump-trace FILE.json          the trace's phase, tiles done and counters
-//   radiosity run|pause|reset     model 5's loop (as Space, and 0); `radiosity step N`: N shots
+//   radiosity run|pause|reset     model 5's loop; `radiosity step N`: N shots; run-pause and shot,
+//                                 Space's and '.', show model 5 too where no pane shows it
 //   radiosity patch-size M | hemicube N   a new mesh / hemicube (remesh: the solve restarts)
 //   radiosity budget MS           shooting time per frame
-//   radiosity heat-map|outlines|flat-patches|ambient-estimate|shooter|item-buffer|rotation on|off
+//   radiosity heat-map|outlines|flat-patches|ambient-estimate|shooter|item-buffer|rotation on|off|toggle
+//   radiosity patches outlined|gouraud|toggle   flat patches with their outlines, or Gouraud (L)
 //   wait-shots N                  run the solver and pause at exactly N shots (or when it is done)
 //   dump-patch FILE.json          the clicked patch (E, rho, area, radiosity, unshot, B, B/pi)
 //   dump-radiosity FILE.json      shots, unshot fraction, patches, where the plot is, ...
@@ -58,7 +70,7 @@
 //   dump-path FILE.json           spp, target, noise, size, restarts, ...
 //   difference on|off             the model shown against the path tracer, as a heat map
 //   dump-difference FILE.json     its figures (those `luz compare` prints)
-//   solvers open|close|run|pause|reset | solvers budget MS | solvers patches N   slide 36's window
+//   solvers open|close|toggle|run|pause|reset | solvers budget MS | solvers patches N   slide 36's window
 //   wait-solver-rows N            run slide 36's methods until each has used N rows
 //   dump-solvers FILE.json        their curves
 //   resize W H                    the window, in window coordinates
@@ -70,7 +82,7 @@
 //   lang es|en                    the window's language, from the next frame on
 //   caption collapse|expand|toggle  the lesson's caption folded to one line (F9) or whole
 //   dump-lesson FILE.json         the lesson's step, slide, title and text (current language), model
-//   quit
+//   quit [--ask]                  --ask: Esc's, which asks first with a lesson open or work running
 // Blank lines are ignored, and so is everything from a word starting with #; a word in double
 // quotes may hold spaces (type "0.5"). Paths are relative to the working folder. The whole file is checked
 // before the window opens: a bad line is an error naming FILE:LINE.

@@ -33,10 +33,10 @@ DifferenceFigures difference_figures(const ImageComparison& c, int width, int he
   return f;
 }
 
-void draw_difference(ViewerServices& viewer, const ModelEntry& compared, const Camera& camera,
-                     const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane) {
-  ViewerState& state = viewer.state();
-  DifferenceState& d = state.difference;
+void DifferenceView::draw(ViewerServices& viewer, const ModelEntry& compared, const Camera& camera,
+                          const Viewport& viewport, gl::Framebuffer& picture, bool reference_in_a_pane) {
+  const ViewerState& state = viewer.state();
+  DifferenceState& d = state_;
   const ModelEntry& reference_entry = reference_model();
   const bool reference_shown = &compared == &reference_entry;
   if (!d.on || reference_shown) {
@@ -86,8 +86,8 @@ std::string percent(double fraction) { return fmt::format("{:.2f}%", 100.0 * fra
 
 }  // namespace
 
-void difference_windows(const ViewerState& state, const Viewport& viewport, WindowCorners& corners) {
-  const DifferenceState& d = state.difference;
+void DifferenceView::windows(const Viewport& viewport, WindowCorners& corners) const {
+  const DifferenceState& d = state_;
   if (!d.on) return;
   // As wide as its corner allows (WindowCorners keeps the quarter), the text wrapped to it.
   const float width = std::min(24.0f * ImGui::GetFontSize(), std::max(0.5f * viewport.size.x - 24.0f, 80.0f));
@@ -149,8 +149,8 @@ void difference_windows(const ViewerState& state, const Viewport& viewport, Wind
   ImGui::End();
 }
 
-void difference_panel(ViewerState& state) {
-  DifferenceState& d = state.difference;
+void DifferenceView::panel() {
+  DifferenceState& d = state_;
   // On the model buttons' last row when it fits there (in the language shown), else below.
   const char* label = tr("difference against the path tracer");
   const float width = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
@@ -174,12 +174,12 @@ std::string check_difference(const ScriptCommand& c) {
 }
 
 bool run_difference(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
-  viewer.state().difference.on = c.args[0] == "on";
+  viewer.difference().set_on(c.args[0] == "on");
   return true;
 }
 
 bool run_dump_difference(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  const DifferenceState& d = viewer.state().difference;
+  const DifferenceState& d = viewer.difference().state();
   const DifferenceFigures& f = d.figures;
   auto rgb = [](const Rgb& v) { return nlohmann::json::array({v.r, v.g, v.b}); };
   nlohmann::json j = {{"on", d.on}, {"valid", d.valid}, {"why", d.why}};

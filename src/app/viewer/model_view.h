@@ -21,7 +21,7 @@
 
 #include "app/viewer/picking.h"
 #include "app/script/script.h"
-#include "app/viewer/shortcuts.h"
+#include "app/script/key_binding.h"
 #include "app/viewer/viewer_state.h"
 #include "core/camera.h"
 #include "core/image.h"
@@ -63,6 +63,7 @@ struct Inspection {
 };
 
 class ModelView;
+class DifferenceView;     // difference_window.h
 struct ModelEntry;        // common/model_registry.h
 struct InspectorReading;  // inspector.h
 
@@ -95,6 +96,11 @@ public:
   virtual void set_model(const ModelEntry& model) = 0;
   virtual ModelView& shown() = 0;
   virtual std::vector<ModelView*> pane_views() = 0;  // in order; one pane: the view shown
+  // The difference view against the reference (the path model's verbs switch it and wait for it).
+  virtual DifferenceView& difference() = 0;
+  // A line of the script language, run as a key runs its own (a panel button that does what a
+  // key does runs the key's line); what went wrong goes to the status line.
+  virtual void run_line(const std::string& line) = 0;
 };
 
 // Where a view may put its floating windows without covering the picture's centre or each
@@ -133,8 +139,6 @@ public:
   virtual void windows(const Viewport& /*viewport*/, WindowCorners& /*corners*/) {}
   // The status line's words about this model ("shot 12, 3.2% unshot, running").
   virtual std::string status() const { return {}; }
-  // A keyboard action of this model (Enter traces, Space runs the solver); false: not its own.
-  virtual bool act(Action /*action*/) { return false; }
   // A script command still playing out (a trace the script waits for, shots it asked for).
   virtual bool busy() const { return false; }
   // Something is running (a trace, the solver): the viewer keeps drawing frames for it.

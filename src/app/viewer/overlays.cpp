@@ -11,7 +11,6 @@
 #include <imgui_internal.h>  // the windows drawn in the dock so far this frame
 
 #include "app/common/i18n.h"
-#include "app/common/model_registry.h"
 #include "app/viewer/shortcuts.h"
 
 namespace luz::app {
@@ -210,9 +209,7 @@ void draw_help(bool& open, glm::vec2 centre, glm::vec2 max) {
       ImGui::TableNextColumn();
       ImGui::TextWrapped("%s", what);
     };
-    for (const ModelEntry& m : models()) row(std::to_string(m.key), tr(m.help));
-    for (const Shortcut& s : shortcuts())
-      if (s.action != Action::choose_model) row(tr(s.keys), tr(s.what));
+    for (const Shortcut& s : shortcuts()) row(tr(s.shown.c_str()), tr(s.what));
     row(tr("left drag"), tr("orbit around the scene"));
     row(tr("right drag"), tr("pan"));
     row(tr("wheel"), tr("zoom"));

@@ -138,7 +138,7 @@ void effects_section(LocalOptions& o) {
 
 // ---- [model sections] --------------------------------------------------------------------------
 // The radio buttons of the registry's models, three to a row, then the shown model's section.
-void model_header(ViewerState& state, ModelView& shown) {
+void model_header(ViewerState& state, ModelView& shown, DifferenceView& difference) {
   const bool section_open = ImGui::CollapsingHeader(tr("Model"), ImGuiTreeNodeFlags_DefaultOpen);
   name_widget("Model");  // a script folds a section to reach the ones below
   if (!section_open) return;
@@ -149,7 +149,7 @@ void model_header(ViewerState& state, ModelView& shown) {
     name_widget(fmt::format("{} [{}]", m.label, m.key));  // named in English, as every widget
     if (++column % 3 != 0) ImGui::SameLine();
   }
-  difference_panel(state);  // on the radio buttons' last row when it has room
+  difference.panel();  // on the radio buttons' last row when it has room
   shown.panel();
 }
 
@@ -368,14 +368,14 @@ void draw_local_formula(const LocalOptions& o, const Scene& scene) {
 }
 
 // ---- [the panel] -------------------------------------------------------------------------------
-void draw_panel(ViewerState& state, ModelView& shown, float width, float height) {
+void draw_panel(ViewerState& state, ModelView& shown, DifferenceView& difference, float width, float height) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   begin_frame_window("Luz", glm::vec2(0.0f), glm::vec2(width, height), flags, Edge::right);
   // Widgets take 58 % of the width, their labels the rest: a label is never cut at the edge.
   ImGui::PushItemWidth(-0.42f * width);
-  model_header(state, shown);
+  model_header(state, shown, difference);
   lights_header(state);
   material_header(state);
   scene_header(state);

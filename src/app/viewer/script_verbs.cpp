@@ -19,7 +19,9 @@
 #include "app/viewer/solvers_window.h"
 #include "app/viewer/viewer_settings.h"
 #include "app/viewer/viewer_window.h"
+#include "app/viewer/switch_verbs.h"
 #include "app/viewer/widget_verbs.h"
+#include "app/viewer/screenshot.h"
 
 namespace luz::app {
 namespace {
@@ -55,14 +57,24 @@ std::string check_wait(const ScriptCommand& c) {
   return parse_wait(c.args[0]) ? "" : "`wait` takes frames (30), seconds (2s) or milliseconds (500ms)";
 }
 
+// `screenshot` and `screenshot --with-panel` alone: P's and Shift+P's, a new luz-SCENE-N.png.
 std::string check_screenshot(const ScriptCommand& c) {
-  if (auto e = check_count(c, 1, 2); !e.empty()) return e;
+  if (auto e = check_count(c, 0, 2); !e.empty()) return e;
+  if (c.args.empty() || (c.args.size() == 1 && c.args[0] == "--with-panel")) return "";
   if (c.args.size() == 2 && c.args[1] != "--with-panel" && c.args[1] != "--shown")
     return fmt::format("unknown option \"{}\"", c.args[1]);
   return c.args[0].ends_with(".png") ? "" : "screenshots are .png files";
 }
 
 std::string check_one(const ScriptCommand& c) { return check_count(c, 1, 1); }
+
+// `camera` alone: back to the scene camera shown (C); `camera next`: the scene's next (N).
+std::string check_camera(const ScriptCommand& c) { return check_count(c, 0, 1); }
+
+std::string check_quit(const ScriptCommand& c) {
+  if (auto e = check_count(c, 0, 1); !e.empty()) return e;
+  return c.args.empty() || c.args[0] == "--ask" ? "" : fmt::format("unknown option \"{}\" (--ask)", c.args[0]);
+}
 
 std::string check_model(const ScriptCommand& c) {
   if (auto e = check_count(c, 1, 1); !e.empty()) return e;
@@ -82,14 +94,14 @@ std::string check_resize(const ScriptCommand& c) {
 
 std::string check_solvers(const ScriptCommand& c) {
   const auto& a = c.args;
-  if (a.empty()) return "`solvers` takes open, close, run, pause, reset, budget MS or patches N";
+  if (a.empty()) return "`solvers` takes open, close, toggle, run, pause, reset, budget MS or patches N";
   const std::string& what = a[0];
-  if (what == "open" || what == "close" || what == "run" || what == "pause" || what == "reset")
+  if (what == "open" || what == "close" || what == "toggle" || what == "run" || what == "pause" || what == "reset")
     return a.size() == 1 ? "" : fmt::format("`solvers {}` takes no value", what);
   if (a.size() != 2) return fmt::format("`solvers {}` takes one value", what);
   if (what == "budget") return is_number(a[1]) && std::stof(a[1]) > 0.0f ? "" : "`solvers budget MS` takes milliseconds > 0";
   if (what == "patches") return is_int(a[1]) && std::stoi(a[1]) >= 10 ? "" : "`solvers patches N` takes N >= 10";
-  return fmt::format("unknown solvers setting \"{}\" (open, close, run, pause, reset, budget, patches)", what);
+  return fmt::format("unknown solvers setting \"{}\" (open, close, toggle, run, pause, reset, budget, patches)", what);
 }
 
 std::string check_rows(const ScriptCommand& c) {
@@ -146,12 +158,29 @@ bool run_scroll(Viewer& v, const ScriptCommand& c, std::string&) {
 }
 
 bool run_screenshot(Viewer& v, const ScriptCommand& c, std::string&) {
+  if (c.args.empty() || c.args[0] == "--with-panel") {  // named as P names it; a failure is said, not fatal
+    const bool with_panel = !c.args.empty();
+    v.state().note.clear();
+    v.screenshot({next_screenshot_name(v.state().scene_path, with_panel), with_panel, false, ""});
+    return true;
+  }
   const bool shown = c.args.size() == 2 && c.args[1] == "--shown";
   v.screenshot({c.args[0], c.args.size() == 2, shown, fmt::format("{}:{}", c.line, c.args[0])});
   return true;
 }
 
-bool run_camera(Viewer& v, const ScriptCommand& c, std::string& error) { return v.choose_camera(c.args[0], error); }
+bool run_camera(Viewer& v, const ScriptCommand& c, std::string& error) {
+  if (c.args.empty()) {
+    v.state().note.clear();
+    v.to_scene_camera();
+    return true;
+  }
+  if (c.args[0] == "next") {
+    v.next_camera();
+    return true;
+  }
+  return v.choose_camera(c.args[0], error);
+}
 
 bool run_model(Viewer& v, const ScriptCommand& c, std::string&) {
   v.set_model(*find_model(c.args[0]));
@@ -212,6 +241,20 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
                                        {"kept", v.panel_cache().kept}}},
                       {"present_parts", {{"on", s.present_parts}, {"window_keeps_back_buffer", v.window_keeps_back_buffer()}}}};
   if (s.selected_material >= 0) j["material"] = s.scene->materials[size_t(s.selected_material)].name;
+  // What the keys change beyond the settings: the scene's camera, the lights' f_att, the panes
+  // and their traces, model 5's loop, slide 36's window, the lesson's step.
+  j["scene_camera"] = s.scene_camera;
+  j["classroom_attenuation"] = nlohmann::json::array();
+  for (const Light& light : s.scene->lights) j["classroom_attenuation"].push_back(light.attenuation.classroom);
+  j["panes"] = nlohmann::json::array();
+  for (ModelView* pane : v.pane_views()) {
+    const char* trace = pane->trace_state();
+    j["panes"].push_back({{"trace", trace ? nlohmann::json(trace) : nlohmann::json(nullptr)}});
+  }
+  j["radiosity_drive"] = {{"running", s.radiosity.drive.running}, {"heat_map", s.radiosity.drive.heat_map}};
+  j["solvers_open"] = v.solvers().state().open;
+  const LessonPlayer* lesson = v.classroom().player();
+  j["lesson_step"] = lesson ? nlohmann::json(lesson->index() + 1) : nlohmann::json(nullptr);
   return write_json(c.args[0], j, "the viewer's state", error);
 }
 
@@ -259,40 +302,47 @@ bool run_dump_windows(Viewer& v, const ScriptCommand& c, std::string& error) {
 
 bool run_solvers(Viewer& v, const ScriptCommand& c, std::string&) {
   const auto& a = c.args;
-  SolversState& s = v.state().solvers;
-  if (a[0] == "open") s.open = true;
-  if (a[0] == "close") s.open = false;
-  if (a[0] == "run") s.open = s.running = true;
-  if (a[0] == "pause") s.running = false;
-  if (a[0] == "reset") s.reset = true;
-  if (a[0] == "budget") s.budget_ms = std::stof(a[1]);
-  if (a[0] == "patches") {
-    s.target_patches = std::stoi(a[1]);
-    s.reset = true;
+  SolversWindow& s = v.solvers();
+  if (a[0] == "open") s.set_open(true);
+  if (a[0] == "close") s.set_open(false);
+  if (a[0] == "toggle") {  // J
+    s.set_open(!s.state().open);
+    v.state().note.clear();
   }
+  if (a[0] == "run") {
+    s.set_open(true);
+    s.set_running(true);
+  }
+  if (a[0] == "pause") s.set_running(false);
+  if (a[0] == "reset") s.reset();
+  if (a[0] == "budget") s.set_budget(std::stof(a[1]));
+  if (a[0] == "patches") s.set_patches(std::stoi(a[1]));
   return true;
 }
 
 bool run_wait_solver_rows(Viewer& v, const ScriptCommand& c, std::string&) {
-  SolversState& s = v.state().solvers;
-  s.open = true;
-  s.run_to_rows = size_t(std::stoul(c.args[0]));
+  v.solvers().run_to_rows(size_t(std::stoul(c.args[0])));
   return true;
 }
 
 bool run_dump_solvers(Viewer& v, const ScriptCommand& c, std::string& error) {
-  return write_json(c.args[0], to_json(v.state().solvers, v.solvers()), "the solvers' curves", error);
+  return write_json(c.args[0], to_json(v.solvers()), "the solvers' curves", error);
 }
 
-bool run_quit(Viewer& v, const ScriptCommand&, std::string&) {
-  v.quit();
+// `quit --ask`: Esc's, which asks first with a lesson open or work running.
+bool run_quit(Viewer& v, const ScriptCommand& c, std::string&) {
+  if (c.args.empty()) v.quit();
+  else v.ask_to_quit();
   return true;
 }
 
 // The lesson's verbs: the classroom (classroom.h) moves and the viewer plays the step's commands.
 std::string check_lesson_verb(const ScriptCommand& c) { return lesson_verb_problem(c).value_or(""); }
 
-bool run_lesson_verb(Viewer& v, const ScriptCommand& c, std::string& error) { return v.classroom().run_verb(c, error); }
+bool run_lesson_verb(Viewer& v, const ScriptCommand& c, std::string& error) {
+  if (c.verb == "lesson") v.state().note.clear();  // the step says what it shows
+  return v.classroom().run_verb(c, error);
+}
 
 // `wait` is the runner's own (it counts frames or time); it never reaches the viewer.
 bool run_nothing(Viewer&, const ScriptCommand&, std::string&) { return true; }
@@ -312,8 +362,8 @@ constexpr ScriptVerb verbs[] = {
     {"drag", "drag X0 Y0 X1 Y1 [left|right]", check_drag, on_viewer<run_drag>, true},
     {"scroll", "scroll STEPS", check_number, on_viewer<run_scroll>, false},
     {"wait", "wait N|Ns|Nms", check_wait, on_viewer<run_nothing>, true},
-    {"screenshot", "screenshot FILE.png [--with-panel|--shown]", check_screenshot, on_viewer<run_screenshot>, true},
-    {"camera", "camera N|NAME", check_one, on_viewer<run_camera>, true},
+    {"screenshot", "screenshot [FILE.png] [--with-panel|--shown]", check_screenshot, on_viewer<run_screenshot>, true},
+    {"camera", "camera [N|NAME|next]", check_camera, on_viewer<run_camera>, true},
     {"model", "model NAME", check_model, on_viewer<run_model>, false},
     {"set", "set NAME VALUE", check_set, on_viewer<run_set>, false},
     {"resize", "resize W H", check_resize, on_viewer<run_resize>, true},
@@ -327,7 +377,7 @@ constexpr ScriptVerb verbs[] = {
     {"display-direct", "display-direct on|off", check_on_off, on_viewer<run_display_direct>, true},
     {"present-parts", "present-parts on|off", check_on_off, on_viewer<run_present_parts>, true},
     {"status-time", "status-time on|off", check_on_off, on_viewer<run_status_time>, true},
-    {"solvers", "solvers open|close|run|pause|reset|budget MS|patches N", check_solvers, on_viewer<run_solvers>, true},
+    {"solvers", "solvers open|close|toggle|run|pause|reset|budget MS|patches N", check_solvers, on_viewer<run_solvers>, true},
     {"wait-solver-rows", "wait-solver-rows N", check_rows, on_viewer<run_wait_solver_rows>, true},
     {"dump-solvers", "dump-solvers FILE.json", check_json_file, on_viewer<run_dump_solvers>, true},
     {"panes", "panes MODEL[,MODEL...]|off", check_panes, on_viewer<run_panes>, true},
@@ -336,7 +386,13 @@ constexpr ScriptVerb verbs[] = {
     {"lang", "lang es|en", check_lesson_verb, on_viewer<run_lesson_verb>, true},
     {"dump-lesson", "dump-lesson FILE.json", check_lesson_verb, on_viewer<run_lesson_verb>, true},
     {"caption", "caption collapse|expand|toggle", check_lesson_verb, on_viewer<run_lesson_verb>, true},
-    {"quit", "quit", check_none, on_viewer<run_quit>, false},
+    {"quit", "quit [--ask]", check_quit, on_viewer<run_quit>, false},
+    // The switches the keys flip (switch_verbs.h).
+    {"toggle", "toggle NAME", check_toggle, on_viewer<run_toggle>, false},
+    {"cycle", "cycle NAME", check_cycle, on_viewer<run_cycle>, false},
+    {"attenuation", "attenuation toggle|inverse-square|classroom", check_attenuation, on_viewer<run_attenuation>, false},
+    {"exposure", "exposure +EV|-EV", check_exposure_step, on_viewer<run_exposure_step>, false},
+    {"interface", "interface larger|smaller", check_interface, on_viewer<run_interface>, false},
     // Widgets and pixels addressed by name, states waited for (widget_verbs.h).
     {"click-widget", "click-widget \"LABEL\"", check_click_widget, on_viewer<run_click_widget>, true},
     {"click-picture", "click-picture X Y", check_click_picture, on_viewer<run_click_picture>, true},

@@ -7,68 +7,55 @@
 #include <GLFW/glfw3.h>
 
 #include "app/common/i18n.h"
+#include "app/common/model_registry.h"
 
 namespace luz::app {
 namespace {
 
 // Terms on the initials of their names (Ambient, Diffuse, Specular, Emission, Textures, Blinn);
 // flying on the arrows so that A, D and S stay the terms. Slide 19's switches where a letter of
-// their name is free: foG, sHadows, Opacity (transparency), Mirror (reflection map). Whitted's
-// trace on Enter; Esc stays quit, so the trace is cancelled by Backspace (any camera move
-// cancels it too), and X crosses out the ray tree. Radiosity's loop on Space (run / pause), '.'
-// (one shot) and 0 (back to shot 0, slide 39 step 1); its display on U (Unshot heat map), L
-// (patch outLines) and Shift+A (the Ambient estimate, beside A's ambient term). Slide 36's
-// window of solvers on J, for Jacobi, the first of them. A lesson's steps on F8 (next) and F7
-// (previous): PageUp / PageDown and the arrows fly, and a held key must not walk the lecture;
-// its caption folded beside them, on F9.
-constexpr Shortcut table[] = {
-    // The digits show the models (model_registry.cpp says which is on which key).
-    {GLFW_KEY_1, 0, 0, "1", Action::choose_model, ""}, {GLFW_KEY_2, 0, 0, "2", Action::choose_model, ""},
-    {GLFW_KEY_3, 0, 0, "3", Action::choose_model, ""}, {GLFW_KEY_4, 0, 0, "4", Action::choose_model, ""},
-    {GLFW_KEY_5, 0, 0, "5", Action::choose_model, ""}, {GLFW_KEY_6, 0, 0, "6", Action::choose_model, ""},
-    {GLFW_KEY_7, 0, 0, "7", Action::choose_model, ""}, {GLFW_KEY_8, 0, 0, "8", Action::choose_model, ""},
-    {GLFW_KEY_9, 0, 0, "9", Action::choose_model, ""},
-    {GLFW_KEY_A, 0, 0, "A", Action::toggle_ambient, N_("ambient term I_A on / off")},
-    {GLFW_KEY_D, 0, 0, "D", Action::toggle_diffuse, N_("diffuse term I_D on / off")},
-    {GLFW_KEY_S, 0, 0, "S", Action::toggle_specular, N_("specular term I_S on / off")},
-    {GLFW_KEY_E, 0, 0, "E", Action::toggle_emission, N_("emitted radiance Le on / off")},
-    {GLFW_KEY_T, 0, 0, "T", Action::toggle_textures, N_("kd texture on / off")},
-    {GLFW_KEY_B, 0, 0, "B", Action::toggle_blinn, N_("Phong's R·V / Blinn's N·H")},
-    {GLFW_KEY_F, 0, 0, "F", Action::cycle_attenuation, N_("f_att of every light: 1/d² / 1/(c0 + c1·d + c2·d²)")},
-    {GLFW_KEY_G, 0, 0, "G", Action::cycle_fog, N_("fog: off / linear / exponential")},
-    {GLFW_KEY_H, 0, 0, "H", Action::toggle_shadows, N_("shadows (S_i, shadow maps) on / off")},
-    {GLFW_KEY_O, 0, 0, "O", Action::toggle_transparency, N_("non-refractive transparency (kt) on / off")},
-    {GLFW_KEY_M, 0, 0, "M", Action::toggle_reflection_map, N_("reflection map (kr Ir) on / off")},
-    {GLFW_KEY_ENTER, 0, 0, N_("Enter"), Action::trace_view, N_("Whitted / hybrid: trace this view, tile by tile")},
-    {GLFW_KEY_BACKSPACE, 0, 0, N_("Backspace"), Action::cancel_trace, N_("Whitted / hybrid: cancel the trace (back to the raster / radiosity view)")},
-    {GLFW_KEY_X, 0, 0, "X", Action::clear_ray_tree, N_("Whitted / hybrid: clear the ray tree")},
-    {GLFW_KEY_SPACE, 0, 0, N_("Space"), Action::radiosity_run, N_("radiosity: run / pause the shooting")},
-    {GLFW_KEY_PERIOD, 0, 0, ".", Action::radiosity_step, N_("radiosity: one shot")},
-    {GLFW_KEY_0, 0, 0, "0", Action::radiosity_reset, N_("radiosity: reset (shot 0: unshot = E)")},
-    {GLFW_KEY_U, 0, 0, "U", Action::toggle_heat_map, N_("radiosity: heat map of the unshot power on / off")},
-    {GLFW_KEY_L, 0, 0, "L", Action::toggle_patches, N_("radiosity: flat patches with outlines / Gouraud")},
-    {GLFW_KEY_A, GLFW_MOD_SHIFT, 0, N_("Shift+A"), Action::toggle_ambient_estimate, N_("radiosity: ambient estimate on / off")},
-    {GLFW_KEY_J, 0, 0, "J", Action::toggle_solvers, N_("slide 36: the system solved four ways, curves live (window)")},
-    {0, 0, '+', "+", Action::exposure_up, N_("exposure +0.5 EV (any '+' key, the keypad's too)")},
-    {0, 0, '-', "-", Action::exposure_down, N_("exposure -0.5 EV (any '-' key, the keypad's too)")},
-    {GLFW_KEY_K, 0, 0, "K", Action::exposure_fit, N_("exposure fitted to the picture: its mid-tones middle grey (the Key)")},
-    {GLFW_KEY_EQUAL, GLFW_MOD_CONTROL, 0, N_("Ctrl+="), Action::ui_larger, N_("larger interface (a projector); Ctrl+- smaller")},
-    {GLFW_KEY_MINUS, GLFW_MOD_CONTROL, 0, N_("Ctrl+-"), Action::ui_smaller, N_("smaller interface")},
-    {GLFW_KEY_C, 0, 0, "C", Action::scene_camera, N_("back to the scene camera")},
-    {GLFW_KEY_N, 0, 0, "N", Action::next_camera, N_("next scene camera")},
-    {GLFW_KEY_R, 0, 0, "R", Action::reload, N_("reload the scene file")},
-    {GLFW_KEY_P, 0, 0, "P", Action::screenshot, N_("screenshot of the picture (PNG)")},
-    {GLFW_KEY_P, GLFW_MOD_SHIFT, 0, N_("Shift+P"), Action::screenshot_with_panel, N_("screenshot with the panel")},
-    {GLFW_KEY_TAB, 0, 0, N_("Tab"), Action::toggle_panel, N_("hide / show the panel")},
-    {GLFW_KEY_I, 0, 0, "I", Action::toggle_inspector, N_("hide / show the inspector")},
-    {GLFW_KEY_F1, 0, 0, "F1", Action::help, N_("this list")},
-    {GLFW_KEY_F8, 0, 0, "F8", Action::lesson_next, N_("lesson: next step (luz --lesson)")},
-    {GLFW_KEY_F7, 0, 0, "F7", Action::lesson_previous, N_("lesson: previous step")},
-    {GLFW_KEY_F9, 0, 0, "F9", Action::lesson_caption, N_("lesson: the caption's text hidden (one line) / shown")},
-    {GLFW_KEY_ESCAPE, 0, 0, N_("Esc"), Action::quit, N_("quit")},
-    {GLFW_KEY_UP, 0, 0, N_("Up / Down"), Action::none, N_("fly forward / back (Shift: faster)")},
-    {GLFW_KEY_LEFT, 0, 0, N_("Left / Right"), Action::none, N_("fly left / right")},
-    {GLFW_KEY_PAGE_UP, 0, 0, N_("PageUp / PageDown"), Action::none, N_("fly up / down")},
+// their name is free: foG, sHadows, Opacity (transparency), Mirror (reflection map). The models'
+// own keys come between these and the window's (their registry entries: Whitted's trace on
+// Enter, radiosity's loop on Space). Slide 36's window of solvers on J, for Jacobi, the first of
+// them. A lesson's steps on F8 (next) and F7 (previous): PageUp / PageDown and the arrows fly,
+// and a held key must not walk the lecture; its caption folds beside them, on F9. Esc stays quit
+// (it asks first in a class).
+constexpr KeyBinding switches[] = {
+    {"A", nullptr, "toggle ambient", N_("ambient term I_A on / off")},
+    {"D", nullptr, "toggle diffuse", N_("diffuse term I_D on / off")},
+    {"S", nullptr, "toggle specular", N_("specular term I_S on / off")},
+    {"E", nullptr, "toggle emission", N_("emitted radiance Le on / off")},
+    {"T", nullptr, "toggle textures", N_("kd texture on / off")},
+    {"B", nullptr, "toggle blinn", N_("Phong's R·V / Blinn's N·H")},
+    {"F", nullptr, "attenuation toggle", N_("f_att of every light: 1/d² / 1/(c0 + c1·d + c2·d²)")},
+    {"G", nullptr, "cycle fog", N_("fog: off / linear / exponential")},
+    {"H", nullptr, "toggle shadows", N_("shadows (S_i, shadow maps) on / off")},
+    {"O", nullptr, "toggle transparency", N_("non-refractive transparency (kt) on / off")},
+    {"M", nullptr, "toggle reflection-map", N_("reflection map (kr Ir) on / off")},
+};
+
+constexpr KeyBinding window[] = {
+    {"J", nullptr, "solvers toggle", N_("slide 36: the system solved four ways, curves live (window)")},
+    {"+", nullptr, "exposure +0.5", N_("exposure +0.5 EV (any '+' key, the keypad's too)")},
+    {"-", nullptr, "exposure -0.5", N_("exposure -0.5 EV (any '-' key, the keypad's too)")},
+    {"K", nullptr, "set exposure auto", N_("exposure fitted to the picture: its mid-tones middle grey (the Key)")},
+    {"Ctrl+=", N_("Ctrl+="), "interface larger", N_("larger interface (a projector); Ctrl+- smaller")},
+    {"Ctrl+minus", N_("Ctrl+-"), "interface smaller", N_("smaller interface")},
+    {"C", nullptr, "camera", N_("back to the scene camera")},
+    {"N", nullptr, "camera next", N_("next scene camera")},
+    {"R", nullptr, "reload", N_("reload the scene file")},
+    {"P", nullptr, "screenshot", N_("screenshot of the picture (PNG)")},
+    {"Shift+P", N_("Shift+P"), "screenshot --with-panel", N_("screenshot with the panel")},
+    {"Tab", N_("Tab"), "toggle panel", N_("hide / show the panel")},
+    {"I", nullptr, "toggle inspector", N_("hide / show the inspector")},
+    {"F1", nullptr, "toggle help", N_("this list")},
+    {"F8", nullptr, "lesson next", N_("lesson: next step (luz --lesson)")},
+    {"F7", nullptr, "lesson prev", N_("lesson: previous step")},
+    {"F9", nullptr, "caption toggle", N_("lesson: the caption's text hidden (one line) / shown")},
+    {"Esc", N_("Esc"), "quit --ask", N_("quit")},
+    {"Up", N_("Up / Down"), nullptr, N_("fly forward / back (Shift: faster)")},
+    {"Left", N_("Left / Right"), nullptr, N_("fly left / right")},
+    {"PageUp", N_("PageUp / PageDown"), nullptr, N_("fly up / down")},
 };
 
 struct NamedKey {
@@ -91,25 +78,52 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-}  // namespace
-
-std::span<const Shortcut> shortcuts() { return table; }
-
-std::optional<Action> action_for(int key, int mods) {
-  // The entry with the most required modifiers that are all held wins (Shift+P over P).
-  const Shortcut* best = nullptr;
-  for (const Shortcut& s : table)
-    if (s.key != 0 && s.key == key && s.action != Action::none && (mods & s.mods) == s.mods &&
-        (!best || s.mods > best->mods))
-      best = &s;
-  if (!best) return std::nullopt;
-  return best->action;
+Shortcut resolved(const KeyBinding& binding) {
+  Shortcut s;
+  parse_key(binding.key, s.key, s.mods, s.character);
+  s.name = binding.key;
+  s.shown = binding.shown ? binding.shown : binding.key;
+  s.line = binding.line ? binding.line : "";
+  s.what = binding.what;
+  return s;
 }
 
-std::optional<Action> action_for_character(unsigned character) {
-  for (const Shortcut& s : table)
-    if (s.key == 0 && s.character == character) return s.action;
-  return std::nullopt;
+std::vector<Shortcut> all_shortcuts() {
+  std::vector<Shortcut> list;
+  for (const ModelEntry& m : models()) {
+    const std::string digit = std::to_string(m.key);
+    const std::string line = std::string("model ") + m.name;
+    list.push_back(resolved({digit.c_str(), nullptr, line.c_str(), m.help}));
+  }
+  for (const KeyBinding& b : switches) list.push_back(resolved(b));
+  for (const ModelEntry& m : models())
+    for (const KeyBinding& b : m.keys) list.push_back(resolved(b));
+  for (const KeyBinding& b : window) list.push_back(resolved(b));
+  return list;
+}
+
+}  // namespace
+
+std::span<const KeyBinding> switch_keys() { return switches; }
+std::span<const KeyBinding> window_keys() { return window; }
+
+const std::vector<Shortcut>& shortcuts() {
+  static const std::vector<Shortcut> list = all_shortcuts();
+  return list;
+}
+
+const Shortcut* shortcut_for(int key, int mods) {
+  const Shortcut* best = nullptr;
+  for (const Shortcut& s : shortcuts())
+    if (s.key != 0 && s.key == key && !s.line.empty() && (mods & s.mods) == s.mods && (!best || s.mods > best->mods))
+      best = &s;
+  return best;
+}
+
+const Shortcut* shortcut_for_character(unsigned character) {
+  for (const Shortcut& s : shortcuts())
+    if (s.key == 0 && s.character == character && !s.line.empty()) return &s;
+  return nullptr;
 }
 
 bool parse_key(std::string_view text, int& key, int& mods, unsigned& character) {

@@ -41,7 +41,23 @@ bool all_done(const SolverComparison& race) {
 }  // namespace
 
 // ---- [stepping] --------------------------------------------------------------------------------
-void SolversWindow::build(SolversState& state) {
+void SolversWindow::scene_changed(const Scene& scene) {
+  race_.reset();
+  mesh_.reset();
+  scene_ = &scene;
+  state_.status = {};
+  state_.running = false;
+  state_.run_to_rows = 0;
+}
+
+bool SolversWindow::busy() const {
+  return state_.run_to_rows > 0 || state_.reset || state_.status.phase == SolversState::Phase::building;
+}
+
+bool SolversWindow::working() const { return state_.running || busy(); }
+
+void SolversWindow::build() {
+  SolversState& state = state_;
   race_.reset();  // the old comparison's GL objects go before the new ones are made
   mesh_.reset();
   SolversState::Status& s = state.status;
@@ -51,7 +67,7 @@ void SolversWindow::build(SolversState& state) {
   options.hemicube_res = SolversSettings{}.hemicube_res;
   options.target_patches = state.target_patches;
   options.elements_per_edge = 1;  // the matrix methods solve on the patches themselves
-  auto mesh = std::make_unique<PatchMesh>(PatchMesh::build(scene_, options));
+  auto mesh = std::make_unique<PatchMesh>(PatchMesh::build(*scene_, options));
   s.patches = mesh->size();
   if (mesh->size() > kMaxSolverPatches) {
     s.phase = SolversState::Phase::refused;
@@ -61,7 +77,7 @@ void SolversWindow::build(SolversState& state) {
   }
   try {
     mesh_ = std::move(mesh);
-    race_ = std::make_unique<SolverComparison>(scene_, *mesh_, options, size_t(state.sweeps) * mesh_->size());
+    race_ = std::make_unique<SolverComparison>(*scene_, *mesh_, options, size_t(state.sweeps) * mesh_->size());
   } catch (const Error& error) {
     race_.reset();
     mesh_.reset();
@@ -75,8 +91,11 @@ void SolversWindow::build(SolversState& state) {
   s.matrix_seconds = race_->matrix_seconds();
 }
 
-void SolversWindow::advance(SolversState& state) {
+void SolversWindow::advance() {
+  SolversState& state = state_;
   SolversState::Status& s = state.status;
+  s.plot_min = s.plot_max = glm::vec2(0.0f);  // until this frame's draw() draws them
+  if (!state.open && state.run_to_rows == 0 && !state.reset) return;
   if (state.reset) {
     state.reset = false;
     state.running = false;
@@ -92,7 +111,7 @@ void SolversWindow::advance(SolversState& state) {
                             "and B* ...", state.target_patches);
     return;
   }
-  if (s.phase == SolversState::Phase::building) build(state);
+  if (s.phase == SolversState::Phase::building) build();
   if (!race_) {
     state.running = false;
     state.run_to_rows = 0;
@@ -193,8 +212,10 @@ void log_plot(const SolverComparison& race, bool residual, ImVec2 size, glm::vec
 }  // namespace
 
 // ---- [the window] ------------------------------------------------------------------------------
-void SolversWindow::draw(SolversState& state, float x, float y, float width, float height, bool pinned) const {
+void SolversWindow::draw(float x, float y, float width, float height, bool pinned) {
+  SolversState& state = state_;
   SolversState::Status& s = state.status;
+  if (!state.open || !scene_) return;
   const ImGuiCond when = pinned ? ImGuiCond_Always : ImGuiCond_Appearing;
   ImGui::SetNextWindowPos(ImVec2(x, y), when);
   ImGui::SetNextWindowSize(ImVec2(width, height), when);
@@ -264,7 +285,8 @@ void SolversWindow::draw(SolversState& state, float x, float y, float width, flo
 }
 
 // ---- [json] ------------------------------------------------------------------------------------
-nlohmann::json to_json(const SolversState& state, const SolversWindow* view) {
+nlohmann::json to_json(const SolversWindow& window) {
+  const SolversState& state = window.state();
   const SolversState::Status& s = state.status;
   nlohmann::json j;
   const char* phases[] = {"none", "building", "ready", "refused"};
@@ -277,7 +299,7 @@ nlohmann::json to_json(const SolversState& state, const SolversWindow* view) {
   j["done"] = s.done;
   j["plot"] = {s.plot_min.x, s.plot_min.y, s.plot_max.x, s.plot_max.y};
   j["curves"] = nlohmann::json::object();
-  if (const SolverComparison* race = view ? view->comparison() : nullptr)
+  if (const SolverComparison* race = window.comparison())
     for (const Method m : kMethods) {
       nlohmann::json curve = nlohmann::json::array();
       for (const SolverSample& p : race->curve(m))

@@ -1,9 +1,9 @@
 // The viewer's loop: a window with the panel on the left, the picture on the right and the
-// status line under it. Every change comes in as an Action (shortcuts.h), a panel edit of the
-// ViewerState, a mouse gesture or a script line, and is drawn on the next frame; what the
+// status line under it. Every change comes in as a script line (a key runs its own, shortcuts.h),
+// a panel edit of the ViewerState or a mouse gesture, and is drawn on the next frame; what the
 // picture shows is the shown model's view (model_view.h, model_registry.h).
 //
-// Sections: [setup] [loading] [views] [input] [actions] [script] [the frame] [the loop]
+// Sections: [setup] [loading] [views] [input] [keys] [script] [the frame] [the loop]
 //           [run_viewer]
 #include "app/viewer/viewer_window.h"
 
@@ -51,7 +51,6 @@ constexpr float dock_ems = 20.0f;       // and at least this many font heights: 
 constexpr float below_caption_share = 0.6f;  // of a dock below the picture, the caption's; its windows the rest
 constexpr float font_size = 16.0f;      // pixels at a content scale of 1
 constexpr float drag_threshold = 3.0f;  // window units a press may move and still be a click
-constexpr float ui_scale_step = 1.25f;  // Ctrl+= / Ctrl+-
 constexpr glm::vec4 background{0.06f, 0.06f, 0.07f, 1.0f};  // the window where nothing is drawn
 const char* const font_file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
@@ -174,7 +173,6 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
 
 Viewer::~Viewer() {
   views_.clear();  // a running trace reads the scene and radiosity's mesh: joined first
-  solvers_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -288,7 +286,7 @@ Layout Viewer::with_dock_below(Layout l, float height) const {
 // taken at its least width, so that a docked window's width cannot move the dock. A caption
 // folded to one line goes below whatever the scene; slide 36's window keeps the dock beside.
 bool Viewer::dock_goes_below(const Layout& beside, const Layout& below) const {
-  if (caption_wanted_ <= 0.0f || state_.solvers.open) return false;  // not measured yet, or slide 36's
+  if (caption_wanted_ <= 0.0f || solvers_.state().open) return false;  // not measured yet, or slide 36's
   if (classroom_.caption_collapsed()) return true;
   const float aspect = state_.scene ? state_.scene->cameras[size_t(state_.scene_camera)].aspect : 0.0f;
   if (!(aspect > 0.0f)) return false;
@@ -311,15 +309,12 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   for (auto& [name, view] : views_) view->scene_changed();  // before the scene they read goes
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
-  solvers_.reset();   // so does the comparison
-  state_.solvers.status = {};
-  state_.solvers.running = false;
-  state_.solvers.run_to_rows = 0;
   state_.radiosity.patch.reset();
   inspection_ = Inspection{};
   state_.scene = std::make_unique<Scene>(std::move(loaded.scene));
   state_.scene_path = path;
   const Scene& scene = *state_.scene;
+  solvers_.scene_changed(scene);  // the comparison on the old scene goes
   state_.light_edits.clear();
   for (const Light& light : scene.lights) {
     const float intensity = std::max({light.intensity.r, light.intensity.g, light.intensity.b});
@@ -449,13 +444,7 @@ void Viewer::press_key(int key, int mods) {
     if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_N) asking_to_quit_ = false;
     return;
   }
-  const std::optional<Action> action = action_for(key, mods);
-  if (!action) return;
-  if (*action == Action::choose_model) {
-    if (const ModelEntry* m = model_on_key(key - GLFW_KEY_0)) set_model(*m);
-    return;
-  }
-  apply(*action);
+  if (const Shortcut* shortcut = shortcut_for(key, mods)) run_key(*shortcut);
 }
 
 void Viewer::on_char(unsigned codepoint) {
@@ -469,7 +458,7 @@ void Viewer::typed(unsigned codepoint) {
     ImGui::GetIO().AddInputCharacter(codepoint);
     return;
   }
-  if (const std::optional<Action> action = action_for_character(codepoint)) apply(*action);
+  if (const Shortcut* shortcut = shortcut_for_character(codepoint)) run_key(*shortcut);
 }
 
 void Viewer::on_mouse_button(int button, int action) {
@@ -562,114 +551,30 @@ bool Viewer::choose_camera(const std::string& name_or_index, std::string& error)
 
 void Viewer::resize(int width, int height) { glfwSetWindowSize(window_.handle(), width, height); }
 
-// ---- [actions] ---------------------------------------------------------------------------------
-void Viewer::apply(Action action) {
-  LocalOptions& o = state_.local;
-  // Every action says what it did; one that has nothing to say clears the last message, which
-  // would otherwise still read "emission Le on" after an exposure change.
-  state_.note.clear();
-  auto toggle = [this](bool& term, const char* name) {
-    term = !term;
-    state_.note = fmt::format("{} {}", tr(name), term ? tr("on") : tr("off"));
-  };
-  switch (action) {
-    case Action::none:
-    case Action::choose_model: break;
-    case Action::toggle_ambient: toggle(o.terms.ambient, N_("ambient I_A")); break;
-    case Action::toggle_diffuse: toggle(o.terms.diffuse, N_("diffuse I_D")); break;
-    case Action::toggle_specular: toggle(o.terms.specular, N_("specular I_S")); break;
-    case Action::toggle_emission: toggle(o.terms.emission, N_("emission Le")); break;
-    case Action::toggle_textures: toggle(o.terms.textures, N_("kd texture")); break;
-    case Action::toggle_blinn:
-      o.terms.blinn = !o.terms.blinn;
-      state_.note = o.terms.blinn ? tr("Blinn's N·H") : tr("Phong's R·V");
-      break;
-    case Action::cycle_attenuation: {
-      std::vector<Light>& lights = state_.scene->lights;
-      const bool all_classroom = std::all_of(lights.begin(), lights.end(),
-                                             [](const Light& l) { return l.attenuation.classroom; });
-      for (Light& light : lights) light.attenuation.classroom = !all_classroom;
-      state_.note = all_classroom ? "f_att = 1/d²" : "f_att = 1/(c0 + c1·d + c2·d²)";
-      break;
+// ---- [keys] ------------------------------------------------------------------------------------
+// A key runs its line (shortcuts.h) as a script would; a line that cannot be done (a lesson's
+// step with no lesson open) says why in the status line.
+void Viewer::run_line(const std::string& line) {
+  const Script script = parse_script_text(line, "key");  // every bound line is checked by the tests
+  std::string error;
+  for (const ScriptCommand& command : script.commands)
+    if (!run(command, error)) {
+      state_.note = error;
+      return;
     }
-    case Action::cycle_fog:
-      o.fog.mode = o.fog.mode == FogMode::off      ? FogMode::linear
-                   : o.fog.mode == FogMode::linear ? FogMode::exponential
-                                                   : FogMode::off;
-      state_.note = trf("fog {}", tr(to_string(o.fog.mode)));
-      break;
-    case Action::toggle_shadows: toggle(o.shadows.on, N_("shadows S_i")); break;
-    case Action::toggle_transparency: toggle(o.transparency.on, N_("transparency kt")); break;
-    case Action::toggle_reflection_map: toggle(o.reflection.on, N_("reflection map kr Ir")); break;
-    case Action::exposure_up:
-    case Action::exposure_down:
-      state_.exposure += action == Action::exposure_up ? 0.5f : -0.5f;
-      state_.note = trf("exposure {:+.1f} EV", state_.exposure);
-      break;
-    case Action::exposure_fit: state_.exposure_fit = true; break;
-    case Action::ui_larger: set_ui_scale(user_scale_ * ui_scale_step); break;
-    case Action::ui_smaller: set_ui_scale(user_scale_ / ui_scale_step); break;
-    case Action::scene_camera: to_scene_camera(); break;
-    case Action::next_camera:
-      state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
-      to_scene_camera();
-      state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
-      break;
-    case Action::reload: load(state_.scene_path); break;
-    case Action::screenshot:
-    case Action::screenshot_with_panel: {
-      const bool with_panel = action == Action::screenshot_with_panel;
-      screenshots_.push_back({next_screenshot_name(state_.scene_path, with_panel), with_panel, false, ""});
-      break;
-    }
-    case Action::toggle_panel: state_.show_panel = !state_.show_panel; break;
-    case Action::toggle_inspector: state_.show_inspector = !state_.show_inspector; break;
-    case Action::help: state_.show_help = !state_.show_help; break;
-    // A model's own keys go to the view shown; Enter (trace), Space and '.' (shoot) show the
-    // first model whose keys they are when the one shown has no use for them.
-    case Action::trace_view:
-    case Action::radiosity_run:
-    case Action::radiosity_step: {
-      bool taken = false;
-      for (ModelView* pane : pane_views()) taken = pane->act(action) || taken;  // every pane that traces or solves
-      if (taken) break;
-      for (const ModelEntry& m : models())
-        if (view(m.name).act(action)) {
-          set_model(m);
-          break;
-        }
-      break;
-    }
-    case Action::cancel_trace:
-    case Action::clear_ray_tree:
-      for (ModelView* pane : pane_views()) pane->act(action);
-      break;
-    // Radiosity's display switches and reset change what model 5 will show, whatever is shown.
-    case Action::radiosity_reset:
-      state_.radiosity.reset = true;
-      state_.note = tr("radiosity: reset (step 1: unshot = E)");
-      break;
-    case Action::toggle_heat_map: toggle(state_.radiosity.drive.heat_map, N_("radiosity heat map")); break;
-    case Action::toggle_patches: {
-      RadiosityOptions& r = state_.radiosity.options;
-      r.flat_patches = r.outlines = !(r.flat_patches && r.outlines);
-      state_.note = r.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
-      break;
-    }
-    case Action::toggle_ambient_estimate:
-      toggle(state_.radiosity.options.ambient_estimate, N_("radiosity ambient estimate"));
-      break;
-    case Action::toggle_solvers: state_.solvers.open = !state_.solvers.open; break;
-    case Action::quit:
-      // On a projector a stray Esc must not end the class: with a lesson open or work running,
-      // it asks first.
-      if (classroom_.has_lesson() || working()) asking_to_quit_ = true;
-      else quit_ = true;
-      break;
-    case Action::lesson_next: classroom_.move(LessonMove::next); break;
-    case Action::lesson_previous: classroom_.move(LessonMove::previous); break;
-    case Action::lesson_caption: classroom_.toggle_caption(); break;  // the verb `caption toggle`
-  }
+}
+
+void Viewer::next_camera() {
+  state_.scene_camera = (state_.scene_camera + 1) % int(state_.scene->cameras.size());
+  to_scene_camera();
+  state_.note = trf("camera {}", state_.scene->cameras[size_t(state_.scene_camera)].name);
+}
+
+// On a projector a stray Esc must not end the class: with a lesson open or work running, it asks
+// first.
+void Viewer::ask_to_quit() {
+  if (classroom_.has_lesson() || working()) asking_to_quit_ = true;
+  else quit_ = true;
 }
 
 // ---- [script] ----------------------------------------------------------------------------------
@@ -681,14 +586,12 @@ bool Viewer::run(const ScriptCommand& command, std::string& error) {
 // A click's press and release, a `trace` the script waits for, radiosity shots it asked for
 // (`radiosity step N`, `wait-shots N`), slide 36's rows, or `idle`.
 bool Viewer::busy() const {
-  const SolversState& s = state_.solvers;
-  const bool solving_system = s.run_to_rows > 0 || s.reset || s.status.phase == SolversState::Phase::building;
   // Only the views shown work (a hidden one has stopped): their requests are what may be pending.
   bool view_busy = false;
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end()) view_busy = view_busy || found->second->busy();
-  const bool reference_busy = state_.difference.on && state_.difference.waiting;  // the difference view's
-  return scripted_click_frames_ > 0 || view_busy || reference_busy || solving_system || idle_until_.has_value() ||
+  const bool reference_busy = difference_.waiting();
+  return scripted_click_frames_ > 0 || view_busy || reference_busy || solvers_.busy() || idle_until_.has_value() ||
          classroom_.moving();
 }
 
@@ -771,7 +674,7 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
   const bool checking_exposure = exposure_check_ && view(model_->name).shows_the_light();
   const bool reading_exposure = state_.exposure_fit || checking_exposure;
   const bool radiance_wanted =
-      reading_exposure || state_.difference.on || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
+      reading_exposure || difference_.on() || !state_.display_copy || !state_.display_direct || !window_takes_blits_ ||
       std::any_of(screenshots_.begin(), screenshots_.end(), [](const PendingScreenshot& s) { return !s.with_panel; });
   auto phase_start = FrameClock::now();
   for (size_t i = 0; i < panes_.size(); ++i) {
@@ -783,7 +686,7 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
     ModelView& pane_view = view(panes_[i]->name);
     pane_view.advance(camera, v);
     if (!radiance_wanted && pane_view.draw_into_window(camera, v, view_alone_shown && panes_.size() == 1)) {
-      if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+      if (i == active_pane_) difference_.draw(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
       ++direct_panes_;
       models_ms += finish_phase(phase_start);
       continue;
@@ -792,8 +695,8 @@ void Viewer::draw_picture(const Layout& l, bool view_alone_shown) {
     pane_view.draw(camera, v, *picture);
     // The heat map instead, when it is on, in the active pane: the panes are of one size, so
     // the reference's one film serves whichever pane is compared.
-    const bool heat_map = i == active_pane_ && state_.difference.on;
-    if (i == active_pane_) draw_difference(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
+    const bool heat_map = i == active_pane_ && difference_.on();
+    if (i == active_pane_) difference_.draw(*this, *panes_[i], camera, v, *picture, reference_in_a_pane);
     models_ms += finish_phase(phase_start);
 
     if (pane_view.drew_display() && !heat_map) {  // the model wrote what the window shows: a copy
@@ -894,10 +797,9 @@ void Viewer::draw_windows(const Layout& l) {
       frames_to_draw_ = std::max(frames_to_draw_, 2);
     }
   }
-  state_.solvers.status.plot_min = state_.solvers.status.plot_max = glm::vec2(0.0f);
-  if (state_.solvers.open && solvers_) {
+  if (solvers_.state().open) {
     const glm::vec4 half = corners.take_left_half();
-    solvers_->draw(state_.solvers, half.x, half.y, half.z, half.w, corners.docked());
+    solvers_.draw(half.x, half.y, half.z, half.w, corners.docked());
   }
   if (panes_.size() > 1) {  // the active pane's windows, in its own corners
     WindowCorners pane_corners(l.panes[active_pane_], margin);
@@ -905,10 +807,10 @@ void Viewer::draw_windows(const Layout& l) {
     pane_corners.reserve_top(label.origin.y + label.size.y);  // the hints go below the pane's name
     if (!l.dock.empty()) pane_corners.dock_in(split_dock(l.dock, dock_wanted_).second);
     shown().windows(l.panes[active_pane_], pane_corners);
-    difference_windows(state_, l.panes[active_pane_], pane_corners);
+    difference_.windows(l.panes[active_pane_], pane_corners);
   } else {
     shown().windows(l.view, corners);
-    difference_windows(state_, l.view, corners);
+    difference_.windows(l.view, corners);
   }
   draw_warnings(warnings_, show_warnings_, l.view, margin);
   if (state_.show_help) draw_help(state_.show_help, l.view.centre(), 0.9f * l.view.size);
@@ -1058,11 +960,7 @@ void Viewer::frame() {
     to_scene_camera();
   }
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
-  const SolversState& s = state_.solvers;
-  if (s.open || s.run_to_rows > 0 || s.reset) {
-    if (!solvers_) solvers_ = std::make_unique<SolversWindow>(*state_.scene);
-    solvers_->advance(state_.solvers);
-  }
+  solvers_.advance();
 
   // The first frames (shaders compiled, maps drawn) are not the steady frame being measured.
   timing_phases_ = frame_number_ >= 16 && frame_number_ % 8 == 0;
@@ -1078,7 +976,7 @@ void Viewer::frame() {
   ImGui::NewFrame();
   const Layout l = layout();
   last_layout_ = l;
-  if (state_.show_panel) draw_panel(state_, shown(), l.panel, l.window.y - l.status);
+  if (state_.show_panel) draw_panel(state_, shown(), difference_, l.panel, l.window.y - l.status);
   draw_windows(l);
   ImGui::Render();
   const double panel_building =
@@ -1146,9 +1044,8 @@ bool Viewer::needs_frames() const {
 // Work that changes what the window shows from frame to frame: a model running (a trace, the
 // solver), its reference refining, slide 36's methods stepping.
 bool Viewer::working() const {
-  const SolversState& s = state_.solvers;
-  if (s.running || s.reset || s.run_to_rows > 0 || s.status.phase == SolversState::Phase::building) return true;
-  if (state_.difference.on && state_.difference.refining) return true;
+  if (solvers_.working()) return true;
+  if (difference_.refining()) return true;
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) return true;
   return false;

@@ -12,15 +12,16 @@ namespace {
 // The viewer's own settings beside the options tables' rows.
 struct ViewerSetting {
   const char* name;
-  bool* (*field)(ViewerState&);
+  bool ViewerState::*field;
 };
 constexpr ViewerSetting switches[] = {
-    {"panel", [](ViewerState& s) { return &s.show_panel; }},
-    {"inspector", [](ViewerState& s) { return &s.show_inspector; }},
+    {"panel", &ViewerState::show_panel},
+    {"inspector", &ViewerState::show_inspector},
+    {"help", &ViewerState::show_help},
 };
 
 std::string all_names() {
-  std::string names = "exposure, ui-scale, panel, inspector";
+  std::string names = "exposure, ui-scale, panel, inspector, help";
   for (const OptionTable* table : option_tables())
     for (const OptionRow& row : table->rows)
       if (find_option(row.name)->row == &row) names += fmt::format(", {}", row.name);
@@ -54,7 +55,7 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
     return true;
   }
   for (const ViewerSetting& s : switches)
-    if (name == s.name) *s.field(state) = value == "on";
+    if (name == s.name) state.*s.field = value == "on";
   if (const std::optional<FoundOption> option = find_option(name))
     option->row->set(options_of(state, *option->table), *parse_value(*option->row, value));
   return true;
@@ -86,6 +87,8 @@ nlohmann::json settings_json(const ViewerState& state) {
       else rows[row.name] = v;
     }
   }
+  nlohmann::json& viewer = out["viewer"] = nlohmann::json::object();
+  for (const ViewerSetting& s : switches) viewer[s.name] = state.*s.field;
   return out;
 }
 

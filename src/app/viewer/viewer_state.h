@@ -11,9 +11,7 @@
 
 #include "core/scene.h"
 #include "app/common/option_values.h"
-#include "app/viewer/difference_state.h"
 #include "app/common/radiosity_state.h"
-#include "app/viewer/solvers_state.h"
 #include "local/local_options.h"
 #include "raytracing/counters.h"
 #include "raytracing/ray_tree.h"
@@ -68,13 +66,6 @@ struct ViewerState {
   // the solver, what the panel shows of it and its requests (radiosity_state.h).
   RadiosityState radiosity;
 
-  // Slide 36 (the J window): the system solved by Jacobi, Gauss-Seidel, Southwell and shooting
-  // side by side, on a coarse mesh of its own (solvers_state.h).
-  SolversState solvers;
-
-  // The difference view: the model shown against the path tracer's reference of the same view
-  // (difference_window.h), its switch and its latest figures.
-  DifferenceState difference;
   // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
   // `model`); the panel asks for another list through panes_request, done between frames.
   std::vector<std::string> panes;

@@ -23,6 +23,7 @@
 #include "app/viewer/panel_cache.h"
 #include "app/script/script.h"
 #include "app/viewer/shortcuts.h"
+#include "app/viewer/difference_window.h"
 #include "app/viewer/solvers_window.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/viewer_state.h"
@@ -96,7 +97,12 @@ public:
   std::vector<ModelView*> pane_views() override;  // the views of the panes, in order
   const Layout& drawn_layout() const { return last_layout_; }
   const Camera& drawn_camera(size_t pane) const { return drawn_cameras_.at(pane); }  // this frame's
-  void apply(Action action);
+  // A key's line (shortcuts.h), run as the script runs it; what went wrong goes to the status line.
+  void run_key(const Shortcut& shortcut) { run_line(shortcut.line); }
+  void run_line(const std::string& line) override;
+  void to_scene_camera();  // back to the scene camera shown (C)
+  void next_camera();      // the scene's next camera (N)
+  void ask_to_quit();      // Esc: quits, or asks first with a lesson open or work running
   void resize(int width, int height);
   void load(const std::filesystem::path& path);
   void quit() { quit_ = true; }  // the script's `quit`: no question asked
@@ -110,7 +116,8 @@ public:
   nlohmann::json tables_json() const;   // every table's columns: their text's width and their room
   const ModelEntry& model() const override { return *model_; }
   ModelView& shown() override { return view(model_->name); }
-  SolversWindow* solvers() { return solvers_.get(); }
+  SolversWindow& solvers() { return solvers_; }
+  DifferenceView& difference() override { return difference_; }
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
   PanelCache& panel_cache() { return panel_cache_; }
@@ -125,7 +132,6 @@ private:
   void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
   void rebuild_renderer();
   Camera current_camera() const;
-  void to_scene_camera();
   void rebuild_fonts();
 
   void on_key(int key, int mods);
@@ -182,8 +188,10 @@ private:
   size_t active_pane_ = 0;
   std::vector<Camera> drawn_cameras_;                    // what each pane was drawn with
   std::map<std::string, std::unique_ptr<ModelView>, std::less<>> views_;  // made when first shown
-  // Slide 36's window: its own mesh, matrix and four solvers, made when first opened.
-  std::unique_ptr<SolversWindow> solvers_;
+  // Slide 36's window: its own mesh, matrix and four solvers, built when first opened.
+  SolversWindow solvers_;
+  // The shown model against the reference, as a heat map (difference_window.h).
+  DifferenceView difference_;
 
   DragButton drag_ = DragButton::none;
   glm::vec2 press_at_{0.0f}, last_cursor_{0.0f};

@@ -256,9 +256,9 @@ std::string check_wait_path(const ScriptCommand& c) {
 // Waits for the path picture shown, or for the difference view's reference; with neither, the
 // path model is shown first.
 bool run_wait_path(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
-  if (!viewer.state().difference.on && viewer.state().model != "path") viewer.set_model(*find_model("path"));
+  if (!viewer.difference().on() && viewer.state().model != "path") viewer.set_model(*find_model("path"));
   path_model(viewer).wait_for(c.args.empty() ? 0 : std::stoi(c.args[0]));
-  viewer.state().difference.waiting = viewer.state().difference.on;
+  viewer.difference().wait_for_reference();
   return true;
 }
 

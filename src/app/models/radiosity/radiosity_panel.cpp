@@ -273,7 +273,8 @@ void display_settings(RadiosityState& r, bool& textures) {
 }  // namespace
 
 // ---- [the section] -----------------------------------------------------------------------------
-void radiosity_section(ViewerState& state) {
+void radiosity_section(ViewerServices& viewer) {
+  ViewerState& state = viewer.state();
   RadiosityState& r = state.radiosity;
   dim_text(tr("progressive refinement, slide 39; B/π drawn (slide 39 step 3)"));
   ImGui::TextWrapped(tr("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j"));
@@ -290,7 +291,7 @@ void radiosity_section(ViewerState& state) {
     ImGui::TreePop();
   }
   // Slide 36 beside slide 39: why shooting shows a usable picture first.
-  if (ImGui::Button(tr("slide 36: the system solved four ways  [J]"))) state.solvers.open = !state.solvers.open;
+  if (ImGui::Button(tr("slide 36: the system solved four ways  [J]"))) viewer.run_line("solvers toggle");
   name_widget("slide 36: the system solved four ways  [J]");
 }
 

@@ -16,6 +16,7 @@
 #include "app/common/options_tables.h"
 #include "app/viewer/overlays.h"
 #include "app/viewer/panel.h"
+#include "app/script/key_binding.h"
 #include "core/error.h"
 #include "gl/functions.h"
 #include "radiosity/texture_detail.h"
@@ -92,7 +93,7 @@ void RadiosityView::click(const Camera& camera, const Viewport& viewport, glm::i
   state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
-void RadiosityView::panel() { radiosity_section(viewer_.state()); }
+void RadiosityView::panel() { radiosity_section(viewer_); }
 
 // The patch inspector in the corner away from the clicked point, the heat map's legend and the
 // shooter's hemicube in others, and at shot 0 a hint saying how to start.
@@ -131,24 +132,6 @@ std::string RadiosityView::status() const {
                      r.drive.running ? tr(", running") : r.status.done ? tr(", done") : tr(", paused"));
 }
 
-// Running and stepping show model 5 (the viewer shows the model whose action it is).
-bool RadiosityView::act(Action action) {
-  ViewerState& state = viewer_.state();
-  RadiosityState& r = state.radiosity;
-  switch (action) {
-    case Action::radiosity_run:
-      r.drive.running = !r.drive.running;
-      state.note = r.drive.running ? tr("radiosity: running") : tr("radiosity: paused");
-      return true;
-    case Action::radiosity_step:
-      r.drive.running = false;
-      r.steps += 1;
-      state.note = tr("radiosity: one shot");
-      return true;
-    default: return false;
-  }
-}
-
 bool RadiosityView::busy() const {
   const RadiosityState& r = viewer_.state().radiosity;
   return r.steps > 0 || r.stop_at > 0 || r.remesh;
@@ -167,17 +150,36 @@ namespace {
 
 RadiosityView& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityView&>(viewer.view("radiosity")); }
 
-// The rows of the radiosity table `radiosity NAME VALUE` sets; the first four are the mesh's (a
-// new one, or other form factors, start the solution over).
-constexpr const char* row_settings[] = {"patch-size", "hemicube", "meshing", "form-factors",
-                                        "outlines", "flat-patches", "ambient-estimate", "rotation"};
-
-bool is_row_setting(const std::string& what) {
-  return std::find(std::begin(row_settings), std::end(row_settings), what) != std::end(row_settings);
-}
+// The rows of the radiosity table that make a new mesh (or other form factors) when
+// `radiosity NAME VALUE` sets them: the solution starts over.
+constexpr const char* mesh_settings[] = {"patch-size", "hemicube", "meshing", "form-factors"};
 
 bool is_mesh_setting(const std::string& what) {
-  return std::find(std::begin(row_settings), std::begin(row_settings) + 4, what) != std::begin(row_settings) + 4;
+  return std::find(std::begin(mesh_settings), std::end(mesh_settings), what) != std::end(mesh_settings);
+}
+
+// Model 5's display switches, `radiosity NAME on|off|toggle`; those on a key say what they did.
+struct RadiositySwitch {
+  const char* name;
+  bool& (*field)(RadiosityState&);
+  const char* note;  // "radiosity heat map" (+ on / off), a message id; nullptr: nothing said
+};
+constexpr RadiositySwitch switches[] = {
+    {"heat-map", [](RadiosityState& r) -> bool& { return r.drive.heat_map; }, N_("radiosity heat map")},
+    {"outlines", [](RadiosityState& r) -> bool& { return r.options.outlines; }, nullptr},
+    {"flat-patches", [](RadiosityState& r) -> bool& { return r.options.flat_patches; }, nullptr},
+    {"ambient-estimate", [](RadiosityState& r) -> bool& { return r.options.ambient_estimate; },
+     N_("radiosity ambient estimate")},
+    {"shooter", [](RadiosityState& r) -> bool& { return r.drive.show_shooter; }, nullptr},
+    {"item-buffer", [](RadiosityState& r) -> bool& { return r.drive.show_item_buffer; }, nullptr},
+    {"rotation", [](RadiosityState& r) -> bool& { return r.options.random_rotation; }, nullptr},
+};
+
+// Whether a pane shows model 5 itself (the hybrid's radiosity is not its loop's keys' place).
+bool radiosity_shown(ViewerServices& viewer) {
+  for (ModelView* pane : viewer.pane_views())
+    if (dynamic_cast<RadiosityView*>(pane)) return true;
+  return false;
 }
 
 // `radiosity WHAT [VALUE]`: the loop's controls, the mesh and the display switches of model 5.
@@ -187,49 +189,72 @@ std::string check_radiosity(const ScriptCommand& c) {
     return "`radiosity` takes run, pause, reset, step N, patch-size M, hemicube N, meshing M, form-factors F, "
            "budget MS or a switch";
   const std::string& what = a[0];
-  if (what == "run" || what == "pause" || what == "reset")
+  if (what == "run" || what == "pause" || what == "run-pause" || what == "shot" || what == "reset")
     return a.size() == 1 ? "" : fmt::format("`radiosity {}` takes no value", what);
   if (a.size() != 2) return fmt::format("`radiosity {}` takes one value", what);
   const std::string& value = a[1];
   if (what == "step") return is_int(value) && std::stoi(value) >= 1 ? "" : "`radiosity step N` takes N >= 1";
   if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
-  // The options table's rows this verb sets (slide 40's meshing and form factors, the mesh, the
-  // display switches): the row's check, as --patch-size, --meshing, ... have it.
-  if (is_row_setting(what))
+  // The options table's rows of the mesh and its form factors (slide 40): the row's check, as
+  // --patch-size, --meshing, ... have it.
+  if (is_mesh_setting(what))
     return parse_value(*find_row(radiosity_table(), what), value)
                ? ""
                : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_table(), what)));
-  for (const char* name : {"heat-map", "shooter", "item-buffer"})
-    if (what == name) return value == "on" || value == "off" ? "" : fmt::format("`radiosity {}` takes on or off", name);
-  return fmt::format("unknown radiosity setting \"{}\" (run, pause, reset, step, patch-size, hemicube, meshing, "
-                     "form-factors, budget, heat-map, outlines, flat-patches, ambient-estimate, shooter, "
-                     "item-buffer, rotation)", what);
+  if (what == "patches")
+    return value == "outlined" || value == "gouraud" || value == "toggle"
+               ? "" : "`radiosity patches` takes outlined, gouraud or toggle";
+  for (const RadiositySwitch& sw : switches)
+    if (what == sw.name)
+      return value == "on" || value == "off" || value == "toggle" ? "" : fmt::format("`radiosity {}` takes on, off or toggle", sw.name);
+  return fmt::format("unknown radiosity setting \"{}\" (run, pause, run-pause, shot, reset, step, patch-size, hemicube, "
+                     "meshing, form-factors, budget, patches, heat-map, outlines, flat-patches, ambient-estimate, "
+                     "shooter, item-buffer, rotation)", what);
 }
 
 bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
   const auto& a = c.args;
-  RadiosityState& r = viewer.state().radiosity;
+  ViewerState& state = viewer.state();
+  RadiosityState& r = state.radiosity;
   if (a[0] == "run") {
     r.drive.running = true;
   } else if (a[0] == "pause") {
     r.drive.running = false;
+  } else if (a[0] == "run-pause" || a[0] == "shot") {
+    // Space and '.': the loop's keys, which show model 5 where no pane shows it.
+    if (a[0] == "run-pause") {
+      r.drive.running = !r.drive.running;
+      state.note = r.drive.running ? tr("radiosity: running") : tr("radiosity: paused");
+    } else {
+      r.drive.running = false;
+      r.steps += 1;
+      state.note = tr("radiosity: one shot");
+    }
+    if (!radiosity_shown(viewer)) viewer.set_model(*find_model("radiosity"));
   } else if (a[0] == "reset") {
     r.reset = true;
+    state.note = tr("radiosity: reset (step 1: unshot = E)");
   } else if (a[0] == "step") {
     r.drive.running = false;
     r.steps += std::stoi(a[1]);
-  } else if (is_row_setting(a[0])) {
+  } else if (is_mesh_setting(a[0])) {
     const OptionRow& row = *find_row(radiosity_table(), a[0]);
     row.set(&r.options, *parse_value(row, a[1]));
-    if (is_mesh_setting(a[0])) r.remesh = true;
+    r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
   } else if (a[0] == "budget") {
     r.drive.by_time = true;
     r.drive.budget_ms = std::stof(a[1]);
+  } else if (a[0] == "patches") {  // L: flat patches with their outlines, or Gouraud
+    RadiosityOptions& o = r.options;
+    o.flat_patches = o.outlines = a[1] == "toggle" ? !(o.flat_patches && o.outlines) : a[1] == "outlined";
+    state.note = o.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
   } else {
-    const bool on = a[1] == "on";
-    if (a[0] == "heat-map") r.drive.heat_map = on;
-    if (a[0] == "shooter") r.drive.show_shooter = on;
-    if (a[0] == "item-buffer") r.drive.show_item_buffer = on;
+    for (const RadiositySwitch& sw : switches) {
+      if (a[0] != sw.name) continue;
+      bool& field = sw.field(r);
+      field = a[1] == "toggle" ? !field : a[1] == "on";
+      if (sw.note) state.note = fmt::format("{} {}", tr(sw.note), field ? tr("on") : tr("off"));
+    }
   }
   return true;
 }
@@ -270,15 +295,27 @@ bool run_dump_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::str
 }
 
 constexpr ScriptVerb verbs[] = {
-    {"radiosity", "radiosity run|pause|reset|step N|patch-size M|hemicube N|budget MS|SWITCH on|off", check_radiosity,
+    {"radiosity", "radiosity run|pause|run-pause|shot|reset|step N|patch-size M|hemicube N|budget MS|patches outlined|gouraud|toggle|SWITCH on|off|toggle", check_radiosity,
      run_radiosity, true},
     {"wait-shots", "wait-shots N", check_shots, run_wait_shots, true},
     {"dump-patch", "dump-patch FILE.json", check_json_file, run_dump_patch, true},
     {"dump-radiosity", "dump-radiosity FILE.json", check_json_file, run_dump_radiosity, true},
 };
 
+// Space runs or pauses, '.' shoots once, 0 starts over (slide 39 step 1); U shows the Unshot
+// heat map, L the patches' outLines, Shift+A the Ambient estimate (beside A's ambient term).
+constexpr KeyBinding keys[] = {
+    {"space", N_("Space"), "radiosity run-pause", N_("radiosity: run / pause the shooting")},
+    {".", nullptr, "radiosity shot", N_("radiosity: one shot")},
+    {"0", nullptr, "radiosity reset", N_("radiosity: reset (shot 0: unshot = E)")},
+    {"U", nullptr, "radiosity heat-map toggle", N_("radiosity: heat map of the unshot power on / off")},
+    {"L", nullptr, "radiosity patches toggle", N_("radiosity: flat patches with outlines / Gouraud")},
+    {"Shift+A", N_("Shift+A"), "radiosity ambient-estimate toggle", N_("radiosity: ambient estimate on / off")},
+};
+
 }  // namespace
 
 std::span<const ScriptVerb> radiosity_verbs() { return verbs; }
+std::span<const KeyBinding> radiosity_keys() { return keys; }
 
 }  // namespace luz::app

@@ -25,7 +25,6 @@ public:
   void panel() override;
   void windows(const Viewport& viewport, WindowCorners& corners) override;
   std::string status() const override;
-  bool act(Action action) override;
   bool busy() const override;
   bool animating() const override;
   bool shows_the_light() const override { return solution_ && solution_->solver().shots() > 0; }
@@ -56,5 +55,7 @@ private:
 
 // Its script verbs: radiosity ..., wait-shots, dump-patch, dump-radiosity.
 std::span<const ScriptVerb> radiosity_verbs();
+// Its keys (key_binding.h): Space, '.', 0, U, L, Shift+A, each bound to a `radiosity` line.
+std::span<const KeyBinding> radiosity_keys();
 
 }  // namespace luz::app

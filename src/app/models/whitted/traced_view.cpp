@@ -1,5 +1,7 @@
 #include "app/models/whitted/traced_view.h"
 
+#include "app/script/key_binding.h"
+
 #include <cmath>
 
 #include <fmt/format.h>
@@ -141,15 +143,6 @@ bool TracedView::pick_tree(const Camera& camera, glm::ivec2 size, glm::ivec2 pix
   return true;
 }
 
-bool TracedView::act(Action action) {
-  switch (action) {
-    case Action::trace_view: requests.trace = true; return true;
-    case Action::cancel_trace: requests.cancel = true; return true;
-    case Action::clear_ray_tree: requests.clear_tree = true; return true;
-    default: return false;
-  }
-}
-
 std::string TracedView::status() const {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::raster) return hybrid() ? tr("(radiosity picture)") : tr("(raster view)");
@@ -198,11 +191,30 @@ std::string check_trace(const ScriptCommand& c) {
              ? "" : fmt::format("unknown option \"{}\" (--no-wait, --held)", c.args[0]);
 }
 
-// As Enter; without --no-wait the script waits for the end.
+// Enter's, with --no-wait; without it the script waits for the end.
 bool run_trace(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
+  viewer.state().note.clear();
   for (TracedView* pane : traced(viewer)) pane->trace(c.args.empty(), !c.args.empty() && c.args[0] == "--held");
   return true;
 }
+
+// Backspace and X: every traced pane shown cancels its trace, or lets go of its ray tree; no
+// other model is shown for them.
+bool run_cancel_trace(ViewerServices& viewer, const ScriptCommand&, std::string&) {
+  viewer.state().note.clear();
+  for (ModelView* pane : viewer.pane_views())
+    if (auto* t = dynamic_cast<TracedView*>(pane)) t->requests.cancel = true;
+  return true;
+}
+
+bool run_clear_ray_tree(ViewerServices& viewer, const ScriptCommand&, std::string&) {
+  viewer.state().note.clear();
+  for (ModelView* pane : viewer.pane_views())
+    if (auto* t = dynamic_cast<TracedView*>(pane)) t->requests.clear_tree = true;
+  return true;
+}
+
+std::string check_none(const ScriptCommand& c) { return check_count(c, 0, 0); }
 
 bool run_wait_trace(ViewerServices& viewer, const ScriptCommand&, std::string&) {
   for (ModelView* pane : viewer.pane_views())
@@ -234,13 +246,25 @@ bool run_dump_trace(ViewerServices& viewer, const ScriptCommand& c, std::string&
 
 constexpr ScriptVerb verbs[] = {
     {"trace", "trace [--no-wait|--held]", check_trace, run_trace, true},
-    {"wait-trace", "wait-trace", [](const ScriptCommand& c) { return check_count(c, 0, 0); }, run_wait_trace, true},
+    {"wait-trace", "wait-trace", check_none, run_wait_trace, true},
+    {"cancel-trace", "cancel-trace", check_none, run_cancel_trace, false},
+    {"clear-ray-tree", "clear-ray-tree", check_none, run_clear_ray_tree, false},
     {"dump-ray-tree", "dump-ray-tree FILE.json", check_json_file, run_dump_ray_tree, true},
     {"dump-trace", "dump-trace FILE.json", check_json_file, run_dump_trace, true},
+};
+
+// Enter traces (Esc stays quit, so Backspace cancels; any camera move cancels too), X crosses
+// out the ray tree.
+constexpr KeyBinding keys[] = {
+    {"enter", N_("Enter"), "trace --no-wait", N_("Whitted / hybrid: trace this view, tile by tile")},
+    {"backspace", N_("Backspace"), "cancel-trace",
+     N_("Whitted / hybrid: cancel the trace (back to the raster / radiosity view)")},
+    {"X", nullptr, "clear-ray-tree", N_("Whitted / hybrid: clear the ray tree")},
 };
 
 }  // namespace
 
 std::span<const ScriptVerb> traced_verbs() { return verbs; }
+std::span<const KeyBinding> traced_keys() { return keys; }
 
 }  // namespace luz::app

@@ -41,7 +41,6 @@ public:
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void windows(const Viewport& viewport, WindowCorners& corners) override;
   std::string status() const override;
-  bool act(Action action) override;
   bool busy() const override { return waiting_ && (requests.trace || progress_.phase == TracePhase::tracing); }
   bool animating() const override { return requests.trace || progress_.phase == TracePhase::tracing; }
 
@@ -114,5 +113,8 @@ void traced_section(ViewerState& state, TracedView& view);
 // The tracer's script verbs (Whitted's registry entry): trace, wait-trace, dump-ray-tree,
 // dump-trace; they act on the traced model shown, or show Whitted's.
 std::span<const ScriptVerb> traced_verbs();
+// Its keys (key_binding.h): Enter, Backspace and X, bound to trace --no-wait, cancel-trace and
+// clear-ray-tree.
+std::span<const KeyBinding> traced_keys();
 
 }  // namespace luz::app
