@@ -16,7 +16,7 @@
 #include "app/common/json_file.h"
 #include "app/common/model_registry.h"
 #include "app/common/options_tables.h"
-#include "app/common/radiosity_state.h"
+#include "app/common/radiosity_drive.h"
 #include "app/cli/render_command.h"
 #include "core/error.h"
 #include "core/resources.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/viewer/picking.h"
-#include "app/common/radiosity_state.h"
+#include "app/common/patch_reading.h"
 #include "core/scene.h"
 #include "local/local_options.h"
 #include "local/local_terms.h"

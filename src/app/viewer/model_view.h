@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <glm/common.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <glm/vec2.hpp>
 
 #include "app/viewer/picking.h"
@@ -148,8 +149,10 @@ public:
   virtual bool shows_the_light() const { return true; }
   // The scene's emitters were edited (the panel's Le): what was made from them goes.
   virtual void emitters_changed() {}
-  // Whether a script's `wait-until` condition of this model holds (trace-done).
+  // Whether a script's `wait-until` condition of this model holds (trace-done, radiosity-done).
   virtual bool holds(std::string_view /*condition*/) const { return false; }
+  // What the keys change of this model beyond the settings, into `dump-state`'s `out`.
+  virtual void dump_state(nlohmann::json& /*out*/) const {}
   // A traced view's trace: "raster" (not asked for), "tracing" or "done"; nullptr for a view
   // that does not trace.
   virtual const char* trace_state() const { return nullptr; }

@@ -87,13 +87,6 @@ void draw_help(bool& open, glm::vec2 centre, glm::vec2 max);
 // the picture until closed.
 void draw_warnings(std::vector<std::string>& warnings, bool& open, const Viewport& viewport, float margin);
 
-// Radiosity: the last shooter's hemicube (its five item-buffer faces, unfolded, a false colour
-// per patch ID), `side` window units across, in a window placed by the caller (WindowCorners)
-// (radiosity_panel.cpp).
-void draw_item_buffer_window(ViewerState& state, float side);
-// Radiosity: the heat map's fixed scale, `width` window units wide, in a window placed by the
-// caller, while the heat map is shown: the class reads what its colours mean beside the picture.
-void draw_heat_map_legend_window(float width);
 
 // state.error in a red-titled window centred on (x, y); its OK button clears the error.
 void draw_load_error(ViewerState& state, float x, float y, float max_width);

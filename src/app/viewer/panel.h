@@ -18,11 +18,6 @@ void draw_panel(ViewerState& state, ModelView& shown, DifferenceView& difference
 // and slide 19's other possibilities.
 void local_section(ViewerState& state);
 
-// Radiosity's section (radiosity_panel.cpp): run, pause, one shot, reset; counters and the plot
-// of unshot power against shots; the time budget, stopping rule, mesh, hemicube and display; the
-// button of slide 36's window, which runs J's line.
-void radiosity_section(ViewerServices& viewer);
-
 // A remark in the disabled colour, wrapped at the panel's edge (never cut off).
 void dim_text(const char* format, ...) IM_FMTARGS(1);
 

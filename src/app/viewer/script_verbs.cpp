@@ -251,7 +251,7 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
     const char* trace = pane->trace_state();
     j["panes"].push_back({{"trace", trace ? nlohmann::json(trace) : nlohmann::json(nullptr)}});
   }
-  j["radiosity_drive"] = {{"running", s.radiosity.drive.running}, {"heat_map", s.radiosity.drive.heat_map}};
+  v.view("radiosity").dump_state(j);
   j["solvers_open"] = v.solvers().state().open;
   const LessonPlayer* lesson = v.classroom().player();
   j["lesson_step"] = lesson ? nlohmann::json(lesson->index() + 1) : nlohmann::json(nullptr);

@@ -309,7 +309,6 @@ void Viewer::adopt(io::LoadedScene loaded, const std::filesystem::path& path, bo
   for (auto& [name, view] : views_) view->scene_changed();  // before the scene they read goes
   picker_.reset();
   renderer_.reset();  // both refer to the old scene
-  state_.radiosity.patch.reset();
   inspection_ = Inspection{};
   state_.scene = std::make_unique<Scene>(std::move(loaded.scene));
   state_.scene_path = path;

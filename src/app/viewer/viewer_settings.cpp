@@ -64,14 +64,14 @@ bool apply_setting(ViewerState& state, const std::string& name, const std::strin
 void* options_of(ViewerState& state, const OptionTable& table) {
   if (&table == &local_table()) return &state.local;
   if (&table == &whitted_table()) return &state.whitted;
-  if (&table == &radiosity_table()) return &state.radiosity.options;
+  if (&table == &radiosity_table()) return &state.radiosity;
   return state.model_options.of(table);
 }
 
 const void* options_of(const ViewerState& state, const OptionTable& table) {
   if (&table == &local_table()) return &state.local;
   if (&table == &whitted_table()) return &state.whitted;
-  if (&table == &radiosity_table()) return &state.radiosity.options;
+  if (&table == &radiosity_table()) return &state.radiosity;
   return state.model_options.of(table);
 }
 

@@ -21,7 +21,7 @@ std::string check_setting(const std::string& name, const std::string& value);
 bool apply_setting(ViewerState& state, const std::string& name, const std::string& value, std::string& error);
 
 // Where the viewer keeps an options table's struct: the shared tables' are ViewerState's fields
-// (local, whitted, radiosity.options), a model's own is in model_options.
+// (local, whitted, radiosity), a model's own is in model_options.
 void* options_of(ViewerState& state, const OptionTable& table);
 const void* options_of(const ViewerState& state, const OptionTable& table);
 

@@ -11,7 +11,7 @@
 
 #include "core/scene.h"
 #include "app/common/option_values.h"
-#include "app/common/radiosity_state.h"
+#include "radiosity/radiosity_options.h"
 #include "local/local_options.h"
 #include "raytracing/counters.h"
 #include "raytracing/ray_tree.h"
@@ -62,9 +62,10 @@ struct ViewerState {
   // lessons write them and each model's view reads its own.
   OptionValues model_options{OptionValues::Start::viewer};
 
-  // Radiosity (model 5): the options `luz render --model radiosity` fills, how the viewer drives
-  // the solver, what the panel shows of it and its requests (radiosity_state.h).
-  RadiosityState radiosity;
+  // Radiosity (model 5): the options `luz render --model radiosity` fills. Patch size and
+  // hemicube resolution take effect at the next remesh, the rest at once; the loop and the
+  // solver's status are its view's (models/radiosity/radiosity_state.h).
+  RadiosityOptions radiosity;
 
   // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
   // `model`); the panel asks for another list through panes_request, done between frames.

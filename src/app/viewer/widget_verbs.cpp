@@ -109,8 +109,8 @@ bool condition_holds(Viewer& v, const std::string& condition) {
       }
     return traced_pane;
   }
-  const RadiosityStatus& r = v.state().radiosity.status;  // the solution models 5 and 6 show
-  return condition == "radiosity-done" && r.built && r.done;
+  // The solution models 5 and 6 show is the radiosity view's.
+  return condition == "radiosity-done" && v.view("radiosity").holds(condition);
 }
 
 bool Viewer::holds(const std::string& condition) { return condition_holds(*this, condition); }

@@ -30,7 +30,7 @@ void HybridView::scene_changed() {
 // rule: "computed first when there is none"). It shows B/pi as the trace will read it, so model
 // 5's heat map and shooter highlight are left out here.
 void HybridView::draw_untraced(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
-  RadiosityState& r = viewer_.state().radiosity;
+  RadiosityState& r = radiosity_.state();
   const bool first = radiosity_.solution() == nullptr;
   const bool solved = radiosity_.step_and_draw(camera, viewport, picture, {.heat_map = false, .shooter = false});
   if (first && solved && !radiosity_.solution()->solver().done()) r.drive.running = true;
@@ -45,7 +45,7 @@ std::optional<rt::WhittedOptions> HybridView::options_for_trace(std::string& why
     why = tr("hybrid: no radiosity solution yet to trace with");
     return std::nullopt;
   }
-  if (viewer_.state().radiosity.drive.running) return std::nullopt;  // the hint says it waits
+  if (radiosity_.state().drive.running) return std::nullopt;  // the hint says it waits
   if (progress().phase != TracePhase::tracing || !diffuse_) {
     if (diffuse_) diffuse_->update(RadianceField::of(solution->solver()));
     else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(solution->mesh(), RadianceField::of(solution->solver()));
@@ -60,7 +60,7 @@ rt::WhittedOptions HybridView::current_options() const {
 }
 
 std::string HybridView::hint() const {
-  const RadiosityState& r = viewer_.state().radiosity;
+  const RadiosityState& r = radiosity_.state();
   if (requests.trace)
     // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
     return trf("hybrid: solving radiosity first (shot {}, {:.2f} % unshot); the trace starts when it stops",
@@ -82,11 +82,11 @@ void HybridView::panel() {
   dim_text(tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
   ImGui::TextWrapped(tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));
   // Which radiosity solution the trace reads: the viewer's, as model 5 left it.
-  const RadiosityStatus& r = state.radiosity.status;
+  const RadiosityStatus& r = radiosity_.state().status;
   if (!r.built) dim_text(tr("radiosity: not solved yet (solved to the stopping rule first)"));
   else
     ImGui::TextWrapped(tr("radiosity: %zu patches, %d shots, %.2f %% unshot%s"), r.patches, r.shots, 100.0 * r.unshot_fraction,
-                       state.radiosity.drive.running ? tr(", running") : r.done ? tr(", done") : tr(", paused"));
+                       radiosity_.state().drive.running ? tr(", running") : r.done ? tr(", done") : tr(", paused"));
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped(tr("model 5 [5] steps, resets and remeshes it; a trace reads it as it is"));
   ImGui::PopStyleColor();

@@ -27,7 +27,7 @@ protected:
   void draw_untraced(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   std::optional<rt::WhittedOptions> options_for_trace(std::string& why) override;
   rt::WhittedOptions current_options() const override;
-  bool must_cancel() const override { return viewer_.state().radiosity.remesh; }
+  bool must_cancel() const override { return radiosity_.state().remesh; }
   std::string hint() const override;
 
 private:

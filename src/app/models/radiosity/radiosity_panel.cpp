@@ -18,6 +18,7 @@
 #include "app/viewer/overlays.h"
 #include "app/common/options_tables.h"
 #include "app/viewer/panel.h"
+#include "app/models/radiosity/radiosity_panel.h"
 #include "app/models/radiosity/radiosity_session.h"
 #include "core/image.h"
 
@@ -62,9 +63,9 @@ void loop_controls(RadiosityState& r) {
 // log10 of the unshot fraction against the shots: the straight-ish fall of progressive
 // refinement reads better on a log scale, with a faint line at every decade (100 %, 10 %, ...)
 // and the stopping level dashed.
-void unshot_plot(RadiosityState& r) {
+void unshot_plot(RadiosityState& r, const RadiosityOptions& o) {
   RadiosityStatus& s = r.status;
-  const float stop = r.options.converge > 0.0f ? std::log10(r.options.converge) : -3.0f;
+  const float stop = o.converge > 0.0f ? std::log10(o.converge) : -3.0f;
   float low = stop;
   for (const float v : s.plot) low = std::min(low, v);
   low = std::floor(low * 2.0f - 0.25f) / 2.0f;  // a little room under the lowest point
@@ -91,7 +92,7 @@ void unshot_plot(RadiosityState& r) {
     draw->AddText(ImVec2(min.x + style.FramePadding.x, std::max(y - ImGui::GetFontSize(), min.y)),
                   IM_COL32(200, 200, 200, 160), label.c_str());
   }
-  if (r.options.converge > 0.0f) {
+  if (o.converge > 0.0f) {
     const float y = y_of(stop);
     for (float x = min.x; x < max.x; x += 8.0f)
       draw->AddLine(ImVec2(x, y), ImVec2(std::min(x + 4.0f, max.x), y), IM_COL32(120, 220, 120, 200), 1.5f);
@@ -99,7 +100,7 @@ void unshot_plot(RadiosityState& r) {
 }
 
 // ---- [settings] --------------------------------------------------------------------------------
-void drive_settings(RadiosityState& r) {
+void drive_settings(RadiosityState& r, RadiosityOptions& o) {
   RadiosityDrive& d = r.drive;
   int by_time = d.by_time ? 1 : 0;
   ImGui::TextUnformatted(tr("each frame:"));
@@ -118,7 +119,6 @@ void drive_settings(RadiosityState& r) {
     name_widget("shots / frame");
   }
 
-  RadiosityOptions& o = r.options;
   int by_shots = o.max_shots > 0 ? 1 : 0;
   ImGui::TextUnformatted(tr("stop:"));
   ImGui::SameLine();
@@ -146,8 +146,7 @@ void drive_settings(RadiosityState& r) {
   }
 }
 
-void mesh_settings(RadiosityState& r) {
-  RadiosityOptions& o = r.options;
+void mesh_settings(RadiosityState& r, RadiosityOptions& o) {
   const SliderRange size = slider_range(radiosity_table(), "patch-size");
   ImGui::DragFloat(tr("patch size (m)"), &o.patch_size, 0.002f, size.low, size.high, o.patch_size > 0.0f ? "%.3f" : tr("auto"));
   name_widget("patch size (m)");
@@ -239,8 +238,7 @@ void heat_map_legend() {
   dim_text(tr("black: nothing left to shoot"));
 }
 
-void display_settings(RadiosityState& r, bool& textures) {
-  RadiosityOptions& o = r.options;
+void display_settings(RadiosityState& r, RadiosityOptions& o, bool& textures) {
   RadiosityDrive& d = r.drive;
   int flat = o.flat_patches ? 1 : 0;
   ImGui::RadioButton(tr("Gouraud (vertex B/π)"), &flat, 0);
@@ -273,21 +271,21 @@ void display_settings(RadiosityState& r, bool& textures) {
 }  // namespace
 
 // ---- [the section] -----------------------------------------------------------------------------
-void radiosity_section(ViewerServices& viewer) {
+void radiosity_section(ViewerServices& viewer, RadiosityState& r) {
   ViewerState& state = viewer.state();
-  RadiosityState& r = state.radiosity;
+  RadiosityOptions& o = state.radiosity;
   dim_text(tr("progressive refinement, slide 39; B/π drawn (slide 39 step 3)"));
   ImGui::TextWrapped(tr("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j"));
   ImGui::Spacing();
   loop_controls(r);
-  unshot_plot(r);
+  unshot_plot(r, o);
   if (ImGui::TreeNodeEx(tr("shooting, stopping, mesh"), ImGuiTreeNodeFlags_DefaultOpen)) {
-    drive_settings(r);
-    mesh_settings(r);
+    drive_settings(r, o);
+    mesh_settings(r, o);
     ImGui::TreePop();
   }
   if (ImGui::TreeNodeEx(tr("display"), ImGuiTreeNodeFlags_DefaultOpen)) {
-    display_settings(r, state.local.terms.textures);
+    display_settings(r, o, state.local.terms.textures);
     ImGui::TreePop();
   }
   // Slide 36 beside slide 39: why shooting shows a usable picture first.
@@ -296,8 +294,7 @@ void radiosity_section(ViewerServices& viewer) {
 }
 
 // ---- [the item-buffer window] ------------------------------------------------------------------
-void draw_item_buffer_window(ViewerState& state, float side) {
-  RadiosityState& r = state.radiosity;
+void draw_item_buffer_window(RadiosityState& r, const RadiosityOptions& options, float side) {
   r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
   if (!r.drive.show_item_buffer) return;
   ImGui::SetNextWindowBgAlpha(0.85f);
@@ -315,7 +312,7 @@ void draw_item_buffer_window(ViewerState& state, float side) {
     r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
     dim_text(tr("top face, 4 half faces folded out; a colour per patch"));
     dim_text(tr("black: no patch (an open side) or a patch's back"));
-    if (r.options.form_factors == FormFactorMethod::rays)
+    if (options.form_factors == FormFactorMethod::rays)
       dim_text(tr("(form factors by rays: this hemicube is drawn for the window only)"));
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     ImGui::TextUnformatted(s.shooter.c_str());

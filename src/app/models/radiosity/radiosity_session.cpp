@@ -27,23 +27,24 @@ bool RadiositySession::built_for(const RadiosityOptions& o) const {
 }
 
 // ---- [a frame's shooting] ----------------------------------------------------------------------
-void RadiositySession::advance(RadiosityState& state, float exposure, bool heat_map) {
+void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& options, float exposure,
+                               bool heat_map) {
   RadiosityDrive& drive = state.drive;
   // Everything but the mesh and the hemicube may change between shots (shooting.h).
   RadiosityOptions& o = solver_.options();
-  o.random_rotation = state.options.random_rotation;
-  o.seed = state.options.seed;  // used from the next reset on
-  o.max_shots = state.options.max_shots;
-  o.converge = state.options.converge;
-  o.overshoot = state.options.overshoot;
-  o.form_factors = state.options.form_factors;
-  o.visibility_rays = state.options.visibility_rays;
-  o.meshing = state.options.meshing;  // from the next pass on; restart to refine from the start
-  o.refine_threshold = state.options.refine_threshold;
-  o.refine_levels = state.options.refine_levels;
-  o.ambient_estimate = state.options.ambient_estimate;
-  o.flat_patches = state.options.flat_patches;
-  o.outlines = state.options.outlines;
+  o.random_rotation = options.random_rotation;
+  o.seed = options.seed;  // used from the next reset on
+  o.max_shots = options.max_shots;
+  o.converge = options.converge;
+  o.overshoot = options.overshoot;
+  o.form_factors = options.form_factors;
+  o.visibility_rays = options.visibility_rays;
+  o.meshing = options.meshing;  // from the next pass on; restart to refine from the start
+  o.refine_threshold = options.refine_threshold;
+  o.refine_levels = options.refine_levels;
+  o.ambient_estimate = options.ambient_estimate;
+  o.flat_patches = options.flat_patches;
+  o.outlines = options.outlines;
 
   if (state.reset) {  // slide 39 step 1; paused, so the class can follow the first shots
     state.reset = false;
@@ -140,7 +141,7 @@ void RadiositySession::advance(RadiosityState& state, float exposure, bool heat_
     const auto drawn = clock::now();
     item_view_due_ = drawn + 4 * (drawn - began);
   }
-  refresh_status(state);
+  refresh_status(state, options);
 }
 
 std::string RadiositySession::shooter_name(int shooter, int shots) const {
@@ -155,10 +156,10 @@ std::string RadiositySession::shooter_name(int shooter, int shots) const {
   return {};
 }
 
-void RadiositySession::refresh_status(RadiosityState& state) const {
+void RadiositySession::refresh_status(RadiosityState& state, const RadiosityOptions& options) const {
   RadiosityStatus& s = state.status;
   s.built = true;
-  s.remesh_pending = !built_for(state.options);
+  s.remesh_pending = !built_for(options);
   s.patches = mesh_.shooters.size();
   s.elements = mesh_.size();
   s.refined_elements = solver_.refined_elements();
@@ -255,7 +256,7 @@ nlohmann::json to_json(const PatchReading& r) {
           {"shots", r.shots}};
 }
 
-nlohmann::json to_json(const RadiosityState& state) {
+nlohmann::json to_json(const RadiosityState& state, const RadiosityOptions& options) {
   const RadiosityStatus& s = state.status;
   return {{"built", s.built},
           {"patches", s.patches},
@@ -275,7 +276,7 @@ nlohmann::json to_json(const RadiosityState& state) {
           {"item_view_shown", s.item_view_texture != 0},
           {"item_view_shooter", s.item_view_shooter},
           {"item_view_rect", {s.item_view_min.x, s.item_view_min.y, s.item_view_max.x, s.item_view_max.y}},
-          {"options", state.options.to_string()}};
+          {"options", options.to_string()}};
 }
 
 }  // namespace luz::app

@@ -17,7 +17,7 @@
 
 #include "app/viewer/picking.h"
 #include "app/models/radiosity/item_buffer_texture.h"
-#include "app/common/radiosity_state.h"
+#include "app/models/radiosity/radiosity_state.h"
 #include "core/camera.h"
 #include "core/scene.h"
 #include "radiosity/patch_mesh.h"
@@ -36,10 +36,11 @@ public:
   // True when this view's mesh and hemicube are those `options` ask for.
   bool built_for(const RadiosityOptions& options) const;
 
-  // This frame's shooting (see above). Fills state.status; clears the requests it did.
+  // This frame's shooting (see above), with the viewer's `options`. Fills state.status; clears
+  // the requests it did.
   // `exposure`: the viewer's, taken out of the heat map so its ramp shows as it is;
   // `heat_map`: the vertex colours show the unshot power instead of B/pi.
-  void advance(RadiosityState& state, float exposure, bool heat_map);
+  void advance(RadiosityState& state, const RadiosityOptions& options, float exposure, bool heat_map);
 
   // The picture into the bound framebuffer, width x height pixels; the last shooter in magenta
   // when `show_shooter`.
@@ -52,7 +53,7 @@ public:
   const ProgressiveSolver& solver() const { return solver_; }
 
 private:
-  void refresh_status(RadiosityState& state) const;
+  void refresh_status(RadiosityState& state, const RadiosityOptions& options) const;
   // "patch 12 (floor)" for shooter 12, "light 0 (key)" for -1 - 0 once shot, "" before any shot.
   std::string shooter_name(int shooter, int shots) const;
 
@@ -87,6 +88,6 @@ RadianceField unshot_heat_map(const ProgressiveSolver& solver);
 
 // For the script's dump-patch and dump-radiosity (tests, handouts).
 nlohmann::json to_json(const PatchReading& reading);
-nlohmann::json to_json(const RadiosityState& state);
+nlohmann::json to_json(const RadiosityState& state, const RadiosityOptions& options);
 
 }  // namespace luz::app

@@ -16,6 +16,7 @@
 #include "app/common/options_tables.h"
 #include "app/viewer/overlays.h"
 #include "app/viewer/panel.h"
+#include "app/models/radiosity/radiosity_panel.h"
 #include "app/script/key_binding.h"
 #include "core/error.h"
 #include "gl/functions.h"
@@ -31,11 +32,12 @@ void RadiosityView::drop() {
 bool RadiosityView::step_and_draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture,
                                    Display display) {
   ViewerState& state = viewer_.state();
-  RadiosityState& r = state.radiosity;
+  RadiosityState& r = state_;
+  RadiosityOptions& options = state.radiosity;
   // The kd texture follows T, as in every model. It is the patches' reflectance, so switching
   // it starts the solution over, where the scene shows a texture at all.
-  r.options.textures = state.local.terms.textures;
-  if (solution_ && solution_->mesh().detail.textures() != r.options.textures && TextureDetail::any_shown(*state.scene))
+  options.textures = state.local.terms.textures;
+  if (solution_ && solution_->mesh().detail.textures() != options.textures && TextureDetail::any_shown(*state.scene))
     r.remesh = true;
   if (!solution_ || r.remesh) {
     r.remesh = false;
@@ -43,10 +45,10 @@ bool RadiosityView::step_and_draw(const Camera& camera, const Viewport& viewport
     r.status = RadiosityStatus{};
     r.patch.reset();
     try {
-      solution_ = std::make_unique<RadiositySession>(*state.scene, r.options);
+      solution_ = std::make_unique<RadiositySession>(*state.scene, options);
       const PatchMesh& mesh = solution_->mesh();
       state.note = trf("radiosity: {} patches of {} elements, hemicube {}", mesh.shooters.size(), mesh.size(),
-                       r.options.hemicube_res);
+                       options.hemicube_res);
       for (const std::string& warning : solution_->solver().warnings()) viewer_.warn(warning);
     } catch (const Error& error) {
       state.note = error.what();
@@ -60,7 +62,7 @@ bool RadiosityView::step_and_draw(const Camera& camera, const Viewport& viewport
     }
   }
   const bool was_running = r.drive.running;
-  solution_->advance(r, state.exposure, display.heat_map);
+  solution_->advance(r, options, state.exposure, display.heat_map);
   if (was_running && !r.drive.running && r.status.done)
     // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
     state.note = trf("radiosity: done after {} shots, {:.2f} % unshot", r.status.shots,
@@ -73,7 +75,7 @@ bool RadiosityView::step_and_draw(const Camera& camera, const Viewport& viewport
 // The solver steps here, on the GL thread, within the frame's budget; the picture is the
 // solution so far (vertex colours uploaded after the shots), the shooter highlighted.
 void RadiosityView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
-  RadiosityState& r = viewer_.state().radiosity;
+  RadiosityState& r = state_;
   step_and_draw(camera, viewport, picture, {r.drive.heat_map, r.drive.show_shooter});
   // The clicked patch's values, live as the shots go on.
   const bool inspected = refresh_inspection(viewer_, camera, viewport);
@@ -86,20 +88,20 @@ void RadiosityView::click(const Camera& camera, const Viewport& viewport, glm::i
   ViewerState& state = viewer_.state();
   if (inspect(viewer_, camera, viewport, pixel)) {
     state.show_inspector = true;
-    if (solution_) state.radiosity.patch = solution_->read(*viewer_.inspection().pick);
+    if (solution_) state_.patch = solution_->read(*viewer_.inspection().pick);
     return;
   }
-  state.radiosity.patch.reset();
+  state_.patch.reset();
   state.note = trf("pixel ({}, {}): background", pixel.x, pixel.y);
 }
 
-void RadiosityView::panel() { radiosity_section(viewer_); }
+void RadiosityView::panel() { radiosity_section(viewer_, state_); }
 
 // The patch inspector in the corner away from the clicked point, the heat map's legend and the
 // shooter's hemicube in others, and at shot 0 a hint saying how to start.
 void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
-  RadiosityState& r = state.radiosity;
+  RadiosityState& r = state_;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
     begin_hint("radiosity hint", viewport, corners, 8.0f * viewer_.ui_scale());
     ImGui::TextUnformatted(tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."));
@@ -120,12 +122,12 @@ void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
   r.status.item_view_min = r.status.item_view_max = glm::vec2(0.0f);
   if (r.drive.show_item_buffer) {
     corners.place(WindowCorners::top_right);
-    draw_item_buffer_window(state, 200.0f * viewer_.ui_scale());
+    draw_item_buffer_window(r, state.radiosity, 200.0f * viewer_.ui_scale());
   }
 }
 
 std::string RadiosityView::status() const {
-  const RadiosityState& r = viewer_.state().radiosity;
+  const RadiosityState& r = state_;
   if (!r.status.built) return {};
   // xgettext:no-c-format (a fmt string, where "% u" is not a printf directive)
   return trf("shot {}, {:.2f}% unshot{}", r.status.shots, 100.0 * r.status.unshot_fraction,
@@ -133,13 +135,21 @@ std::string RadiosityView::status() const {
 }
 
 bool RadiosityView::busy() const {
-  const RadiosityState& r = viewer_.state().radiosity;
+  const RadiosityState& r = state_;
   return r.steps > 0 || r.stop_at > 0 || r.remesh;
 }
 
 bool RadiosityView::animating() const {
-  const RadiosityState& r = viewer_.state().radiosity;
+  const RadiosityState& r = state_;
   return r.drive.running || busy() || r.reset;
+}
+
+bool RadiosityView::holds(std::string_view condition) const {
+  return condition == "radiosity-done" && state_.status.built && state_.status.done;
+}
+
+void RadiosityView::dump_state(nlohmann::json& out) const {
+  out["radiosity_drive"] = {{"running", state_.drive.running}, {"heat_map", state_.drive.heat_map}};
 }
 
 }  // namespace luz::app
@@ -161,18 +171,18 @@ bool is_mesh_setting(const std::string& what) {
 // Model 5's display switches, `radiosity NAME on|off|toggle`; those on a key say what they did.
 struct RadiositySwitch {
   const char* name;
-  bool& (*field)(RadiosityState&);
+  bool& (*field)(RadiosityState&, RadiosityOptions&);
   const char* note;  // "radiosity heat map" (+ on / off), a message id; nullptr: nothing said
 };
 constexpr RadiositySwitch switches[] = {
-    {"heat-map", [](RadiosityState& r) -> bool& { return r.drive.heat_map; }, N_("radiosity heat map")},
-    {"outlines", [](RadiosityState& r) -> bool& { return r.options.outlines; }, nullptr},
-    {"flat-patches", [](RadiosityState& r) -> bool& { return r.options.flat_patches; }, nullptr},
-    {"ambient-estimate", [](RadiosityState& r) -> bool& { return r.options.ambient_estimate; },
+    {"heat-map", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.heat_map; }, N_("radiosity heat map")},
+    {"outlines", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.outlines; }, nullptr},
+    {"flat-patches", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.flat_patches; }, nullptr},
+    {"ambient-estimate", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.ambient_estimate; },
      N_("radiosity ambient estimate")},
-    {"shooter", [](RadiosityState& r) -> bool& { return r.drive.show_shooter; }, nullptr},
-    {"item-buffer", [](RadiosityState& r) -> bool& { return r.drive.show_item_buffer; }, nullptr},
-    {"rotation", [](RadiosityState& r) -> bool& { return r.options.random_rotation; }, nullptr},
+    {"shooter", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.show_shooter; }, nullptr},
+    {"item-buffer", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.show_item_buffer; }, nullptr},
+    {"rotation", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.random_rotation; }, nullptr},
 };
 
 // Whether a pane shows model 5 itself (the hybrid's radiosity is not its loop's keys' place).
@@ -215,7 +225,8 @@ std::string check_radiosity(const ScriptCommand& c) {
 bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&) {
   const auto& a = c.args;
   ViewerState& state = viewer.state();
-  RadiosityState& r = state.radiosity;
+  RadiosityState& r = radiosity_of(viewer).state();
+  RadiosityOptions& options = state.radiosity;
   if (a[0] == "run") {
     r.drive.running = true;
   } else if (a[0] == "pause") {
@@ -239,19 +250,19 @@ bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&)
     r.steps += std::stoi(a[1]);
   } else if (is_mesh_setting(a[0])) {
     const OptionRow& row = *find_row(radiosity_table(), a[0]);
-    row.set(&r.options, *parse_value(row, a[1]));
+    row.set(&options, *parse_value(row, a[1]));
     r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
   } else if (a[0] == "budget") {
     r.drive.by_time = true;
     r.drive.budget_ms = std::stof(a[1]);
   } else if (a[0] == "patches") {  // L: flat patches with their outlines, or Gouraud
-    RadiosityOptions& o = r.options;
+    RadiosityOptions& o = options;
     o.flat_patches = o.outlines = a[1] == "toggle" ? !(o.flat_patches && o.outlines) : a[1] == "outlined";
     state.note = o.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
   } else {
     for (const RadiositySwitch& sw : switches) {
       if (a[0] != sw.name) continue;
-      bool& field = sw.field(r);
+      bool& field = sw.field(r, options);
       field = a[1] == "toggle" ? !field : a[1] == "on";
       if (sw.note) state.note = fmt::format("{} {}", tr(sw.note), field ? tr("on") : tr("off"));
     }
@@ -270,7 +281,7 @@ bool run_wait_shots(ViewerServices& viewer, const ScriptCommand& c, std::string&
     error = "`wait-shots` runs the radiosity solver: choose it first (`model radiosity` or `model hybrid`)";
     return false;
   }
-  RadiosityState& r = viewer.state().radiosity;
+  RadiosityState& r = radiosity_of(viewer).state();
   r.stop_at = std::stoi(c.args[0]);
   r.drive.running = true;
   return true;
@@ -281,7 +292,7 @@ bool dump(const std::string& path, const nlohmann::json& json, std::string& erro
 }
 
 bool run_dump_patch(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  const RadiosityState& r = viewer.state().radiosity;
+  const RadiosityState& r = radiosity_of(viewer).state();
   if (!r.patch) {
     error = "no patch is inspected: click a surface in the radiosity model first";
     return false;
@@ -290,8 +301,8 @@ bool run_dump_patch(ViewerServices& viewer, const ScriptCommand& c, std::string&
 }
 
 bool run_dump_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string& error) {
-  radiosity_of(viewer);  // the status is the view's, even before it is shown
-  return dump(c.args[0], to_json(viewer.state().radiosity), error);
+  // The status is the view's, even before it is shown.
+  return dump(c.args[0], to_json(radiosity_of(viewer).state(), viewer.state().radiosity), error);
 }
 
 constexpr ScriptVerb verbs[] = {

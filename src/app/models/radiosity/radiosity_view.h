@@ -18,7 +18,10 @@ class RadiosityView final : public ModelView {
 public:
   explicit RadiosityView(ViewerServices& viewer) : viewer_(viewer) {}
 
-  void scene_changed() override { drop(); }
+  void scene_changed() override {
+    drop();
+    state_.patch.reset();
+  }
   void emitters_changed() override { drop(); }  // the patches' E come from the scene's Le when meshed
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
@@ -28,6 +31,13 @@ public:
   bool busy() const override;
   bool animating() const override;
   bool shows_the_light() const override { return solution_ && solution_->solver().shots() > 0; }
+  bool holds(std::string_view condition) const override;  // radiosity-done
+  void dump_state(nlohmann::json& out) const override;    // radiosity_drive: running, heat_map
+
+  // The loop, its requests and what the panel shows of the solver: the keys, the script, the
+  // panel and the hybrid change and read it here (the options are the viewer's settings).
+  RadiosityState& state() { return state_; }
+  const RadiosityState& state() const { return state_; }
 
   // What model 5 displays, and what the hybrid reads (B/pi only: no heat map, no shooter).
   struct Display {
@@ -49,6 +59,7 @@ public:
 
 private:
   ViewerServices& viewer_;
+  RadiosityState state_;
   std::unique_ptr<RadiositySession> solution_;
   std::vector<std::function<void()>> drop_listeners_;
 };

@@ -1,48 +1,19 @@
 #pragma once
-// Radiosity (model 5) in the viewer's state: what the panel, the keys and the script change, and
-// what the panel and the inspector show of the solver. Plain data, no GL: the solver itself lives
-// in RadiositySession (radiosity_session.h), which the viewer builds when the model is first shown and
-// which fills `status` and `patch` every frame.
+// Radiosity (model 5) as its view holds it: what the panel, the keys and the script change of
+// the loop, and what the panel and the inspector show of the solver. Plain data, no GL: the
+// solver itself lives in RadiositySession (radiosity_session.h), which the view builds when the
+// model is first shown and which fills `status` and `patch` every frame. The options (patch
+// size, hemicube, ...) are the viewer's settings, the radiosity table's row values.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
 
-#include "core/color.h"
-#include "radiosity/radiosity_options.h"
+#include "app/common/patch_reading.h"
+#include "app/common/radiosity_drive.h"
 
 namespace luz::app {
-
-// How the viewer drives the solver: it shoots on the GL thread, a share per frame, so the window
-// stays interactive while the light spreads (DESIGN.md, Threads).
-struct RadiosityDrive {
-  bool running = false;
-  bool by_time = true;        // a time budget per frame (else a number of shots per frame)
-  float budget_ms = 15.0f;    // shooting time per frame while running
-  int shots_per_frame = 10;
-  bool heat_map = false;      // show the unshot power per patch instead of B/pi
-  bool show_shooter = true;   // the last shooter in magenta
-  bool show_item_buffer = true;  // the small window with its hemicube's five faces
-};
-
-// The clicked patch, for the inspector (exitances in W/m^2, as slide 39 keeps them).
-struct PatchReading {
-  size_t patch = 0;              // the element clicked (it receives and is drawn)
-  size_t shooter = 0;            // the shooting patch it belongs to
-  int mesh = -1, triangle = -1;  // its source triangle in the scene
-  std::string material;
-  glm::vec3 centre{0.0f}, normal{0.0f};
-  float area = 0.0f;     // m^2
-  Rgb E{0.0f};           // emitted exitance, pi * Le
-  Rgb rho{0.0f};         // kd
-  Rgb radiosity{0.0f};   // shot so far ("radiosidad")
-  Rgb unshot{0.0f};      // still to shoot ("carga emisora")
-  Rgb B{0.0f};           // radiosity + unshot: what step 3 displays
-  Rgb radiance{0.0f};    // B / pi
-  int shots = 0;         // the solver's shots when read
-};
 
 // What the panel shows of the solver, refreshed by the view every frame.
 struct RadiosityStatus {
@@ -71,9 +42,6 @@ struct RadiosityStatus {
 };
 
 struct RadiosityState {
-  // The options `luz render --model radiosity` fills from its flags. Patch size and hemicube
-  // resolution take effect at the next remesh; the rest at once.
-  RadiosityOptions options;
   RadiosityDrive drive;
   RadiosityStatus status;
   std::optional<PatchReading> patch;  // the clicked patch
