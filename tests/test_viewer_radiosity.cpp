@@ -148,6 +148,15 @@ TEST_F(ViewerRadiosity, TheExposureIsCheckedOnceAShotHasBroughtLight) {
   EXPECT_EQ(exposure_warnings(json_of(file("bright-after.json"))), 1) << "bright.gltf after it";
 }
 
+TEST_F(ViewerRadiosity, AnotherModelShownPausesTheLoopTheHybridKeepsIt) {
+  EXPECT_TRUE(json_of(file("switched-to-hybrid.json"))["radiosity_drive"]["running"].get<bool>());
+  EXPECT_FALSE(json_of(file("switched-away.json"))["radiosity_drive"]["running"].get<bool>());
+  // Shown again, it stays where it was paused until it is run.
+  const nlohmann::json back = json_of(file("back.json")), later = json_of(file("back-later.json"));
+  EXPECT_FALSE(back["running"].get<bool>());
+  EXPECT_EQ(later["shots"], back["shots"]);
+}
+
 TEST_F(ViewerRadiosity, WaitShotsPausesAtExactlyThatCount) {
   EXPECT_EQ(json_of(file("start.json"))["shots"], 0);
   const nlohmann::json early = json_of(file("early.json")), later = json_of(file("later.json"));

@@ -389,13 +389,16 @@ ModelView& Viewer::view(std::string_view name) {
 
 void Viewer::set_model(const ModelEntry& model) {
   const auto pane = std::find(panes_.begin(), panes_.end(), &model);
+  const ModelEntry* leaving = nullptr;
   if (pane != panes_.end()) {
     active_pane_ = size_t(pane - panes_.begin());
   } else {
-    view(model_->name).hidden();  // it leaves the window: a trace running there stops
+    leaving = model_;
     panes_[active_pane_] = &model;
   }
   model_ = &model;
+  // It leaves the window (a trace running there stops), told once the panes show the new model.
+  if (leaving) view(leaving->name).hidden();
   state_.model = model.name;
   if (panes_.size() > 1)
     for (size_t i = 0; i < panes_.size(); ++i) state_.panes[i] = panes_[i]->name;
@@ -405,12 +408,14 @@ void Viewer::set_model(const ModelEntry& model) {
 void Viewer::set_panes(const std::vector<std::string>& models) {
   std::vector<const ModelEntry*> wanted;
   for (const std::string& name : models) wanted.push_back(find_model(name));
-  for (const ModelEntry* shown_before : panes_)
-    if (std::find(wanted.begin(), wanted.end(), shown_before) == wanted.end()) view(shown_before->name).hidden();
+  const std::vector<const ModelEntry*> before = panes_;
   const auto keep = std::find(wanted.begin(), wanted.end(), model_);  // the active model stays active
   active_pane_ = keep != wanted.end() ? size_t(keep - wanted.begin()) : 0;
   panes_ = wanted;
   model_ = panes_[active_pane_];
+  // Those that leave the window are told once the panes show the new ones.
+  for (const ModelEntry* shown_before : before)
+    if (std::find(wanted.begin(), wanted.end(), shown_before) == wanted.end()) view(shown_before->name).hidden();
   state_.model = model_->name;
   state_.panes = panes_.size() > 1 ? models : std::vector<std::string>{};
   std::string names;

@@ -17,9 +17,15 @@ HybridView::HybridView(ViewerServices& viewer, RadiosityView& radiosity)
     set_diffuse_source(nullptr);
     diffuse_.reset();
   });
+  radiosity_.shown_through(*this);
 }
 
 HybridView::~HybridView() { cancel_trace(); }
+
+void HybridView::hidden() {
+  TracedView::hidden();
+  radiosity_.hidden();
+}
 
 void HybridView::scene_changed() {
   TracedView::scene_changed();

@@ -16,6 +16,7 @@ public:
   ~HybridView() override;
 
   void scene_changed() override;
+  void hidden() override;  // its trace stops; radiosity's loop too where no pane shows it
   void panel() override;
   std::string status() const override;
   bool hybrid() const override { return true; }

@@ -144,6 +144,15 @@ bool RadiosityView::animating() const {
   return r.drive.running || busy() || r.reset;
 }
 
+// Left with no pane showing the solution, the loop pauses and its requests go: it shoots only
+// when drawn, so it would say "running" while nothing shoots, and run on when shown again.
+void RadiosityView::hidden() {
+  for (const ModelView* pane : viewer_.pane_views())
+    if (pane == this || std::find(readers_.begin(), readers_.end(), pane) != readers_.end()) return;
+  state_.drive.running = false;
+  state_.steps = state_.stop_at = 0;
+}
+
 bool RadiosityView::holds(std::string_view condition) const {
   return condition == "radiosity-done" && state_.status.built && state_.status.done;
 }

@@ -22,7 +22,8 @@ public:
     drop();
     state_.patch.reset();
   }
-  void emitters_changed() override { drop(); }  // the patches' E come from the scene's Le when meshed
+  void emitters_changed() override { drop(); }
+  void hidden() override;  // the patches' E come from the scene's Le when meshed
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void panel() override;
@@ -54,6 +55,9 @@ public:
   // Called before the solution goes (a remesh, an edited Le, a new scene): whoever reads it
   // (the hybrid's trace) lets go of it first.
   void on_drop(std::function<void()> listener) { drop_listeners_.push_back(std::move(listener)); }
+  // `reader` shows this view's solution too (the hybrid): while a pane shows either, the loop
+  // goes on.
+  void shown_through(const ModelView& reader) { readers_.push_back(&reader); }
   // The solution goes now (the emitters were edited: the patches' E are read when meshing).
   void drop();
 
@@ -62,6 +66,7 @@ private:
   RadiosityState state_;
   std::unique_ptr<RadiositySession> solution_;
   std::vector<std::function<void()>> drop_listeners_;
+  std::vector<const ModelView*> readers_;  // compared with the panes, never read
 };
 
 // Its script verbs: radiosity ..., wait-shots, dump-patch, dump-radiosity.
