@@ -153,6 +153,7 @@ TEST_F(ViewerRadiosity, AnotherModelShownPausesTheLoopTheHybridKeepsIt) {
   EXPECT_FALSE(json_of(file("switched-away.json"))["radiosity_drive"]["running"].get<bool>());
   // Shown again, it stays where it was paused until it is run.
   const nlohmann::json back = json_of(file("back.json")), later = json_of(file("back-later.json"));
+  EXPECT_FALSE(back["done"].get<bool>()) << "a solution still to converge, or a pause proves nothing";
   EXPECT_FALSE(back["running"].get<bool>());
   EXPECT_EQ(later["shots"], back["shots"]);
 }
