@@ -76,6 +76,8 @@ std::string url_parameter(const char* name) {
 // the page shows when there will be none (the shell defines both callbacks).
 EM_JS(void, report_ready, (), { if (window.luzReady) window.luzReady.resolve(); });
 EM_JS(void, report_failure, (const char* text), {
+  const canvas = document.getElementById("canvas");
+  if (canvas) canvas.style.display = "none";  // the error in words, not an empty picture
   if (window.luzReady) window.luzReady.reject(new Error(UTF8ToString(text)));
 });
 
