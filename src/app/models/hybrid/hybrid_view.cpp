@@ -87,7 +87,7 @@ void HybridView::panel() {
   ViewerState& state = viewer_.state();
   dim_text(tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
   ImGui::TextWrapped(tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));
-  // Which radiosity solution the trace reads: the viewer's, as model 5 left it.
+  // Which radiosity solution the trace reads: model 5's, as it left it.
   const RadiosityStatus& r = radiosity_.state().status;
   if (!r.built) dim_text(tr("radiosity: not solved yet (solved to the stopping rule first)"));
   else

@@ -22,8 +22,8 @@ public:
     drop();
     state_.patch.reset();
   }
-  void emitters_changed() override { drop(); }
-  void hidden() override;  // the patches' E come from the scene's Le when meshed
+  void emitters_changed() override { drop(); }  // the patches' E come from the scene's Le when meshed
+  void hidden() override;  // the loop pauses where no pane shows its solution
   void draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) override;
   void click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) override;
   void panel() override;
