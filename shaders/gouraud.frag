@@ -15,8 +15,8 @@ in vec3 v_back_mirror;
 
 void main() {
   bool back = viewer_sees_back(v_position, v_normal);  // two-sided lighting
-  Terms terms = back ? Terms(v_ambient, v_back_diffuse, v_back_specular)
-                     : Terms(v_ambient, v_front_diffuse, v_front_specular);
+  // Per component: GLSL ES forbids ?: on structures.
+  Terms terms = Terms(v_ambient, back ? v_back_diffuse : v_front_diffuse, back ? v_back_specular : v_front_specular);
   kd_colour = v_colour;
   write_fragment(terms, v_uv, gl_FrontFacing, back ? v_back_mirror : v_front_mirror, v_position);
 }

@@ -1,0 +1,56 @@
+// Drives the page's script entry point in Debian's chromium, headless on SwiftShader:
+// opens BASE/luz.html?QUERY, waits for window.luz.ready and writes window.luz.picture() to a PNG
+// (for `luz compare` against `luz render`), or, with --expect-error, checks that ready rejects and
+// the page shows that error in words (not a blank canvas).
+// Usage: node tests/web/page_api.mjs URL PICTURE.png [SCREENSHOT.png]
+//        node tests/web/page_api.mjs --expect-error URL SCREENSHOT.png
+//        (NODE_PATH=build-web/npm/node_modules)
+import { writeFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+
+const require = createRequire(import.meta.url);
+const puppeteer = require('puppeteer-core');
+
+const args = process.argv.slice(2);
+const expectError = args[0] === '--expect-error';
+if (expectError) args.shift();
+const [url, output, screenshot] = args;
+if (!url || !output) {
+  console.error('usage: page_api.mjs [--expect-error] URL OUTPUT.png [SCREENSHOT.png]');
+  process.exit(2);
+}
+
+const browser = await puppeteer.launch({
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+let failed = false;
+try {
+  const page = await browser.newPage();
+  page.on('console', (message) => console.log(`page: ${message.text()}`));
+  page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); failed = true; });
+  const opened = Date.now();
+  await page.goto(url);
+  const outcome = await page.evaluate(() =>
+    window.luz.ready.then(() => ({ ok: true }), (error) => ({ ok: false, message: error.message })));
+  const status = await page.$eval('#status', (s) => s.textContent);
+  console.log(`ready after ${Date.now() - opened} ms: ${outcome.ok ? 'picture' : 'error'}; status: ${status}`);
+  if (expectError) {
+    // The rejection's text is what the page shows, and it is a sentence, not "Loading".
+    if (outcome.ok || status !== outcome.message || status.length < 20) failed = true;
+    await page.screenshot({ path: output });
+  } else {
+    if (!outcome.ok) failed = true;
+    else {
+      const dataUrl = await page.evaluate(() => window.luz.picture());
+      if (!dataUrl.startsWith('data:image/png;base64,')) failed = true;
+      writeFileSync(output, Buffer.from(dataUrl.split(',')[1], 'base64'));
+    }
+    if (screenshot) await page.screenshot({ path: screenshot });
+  }
+} finally {
+  await browser.close();
+}
+console.log(failed ? 'page: FAILED' : 'page: as expected');
+process.exit(failed ? 1 : 0);
