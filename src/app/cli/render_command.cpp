@@ -192,7 +192,7 @@ int run_render(const RenderSettings& settings) {
     const double seconds = seconds_since(start);
     if (!settings.quiet) {
       fmt::print("{}\n", trf("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
-                             settings.model, width, height, camera.name, exposure, seconds));
+                             model_labels(settings.model), width, height, camera.name, exposure, seconds));
       fmt::print("{}", rendered.summary);
       fmt::print("{}\n", trf("phases: scene loaded in {:.3f} s, the model's picture (its set-up included) {:.3f} s, "
                              "written in {:.3f} s", load_seconds, model_seconds, write_seconds));
