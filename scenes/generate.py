@@ -584,12 +584,12 @@ CORNELL_SPHERE_SEGMENTS, CORNELL_SPHERE_RINGS = 32, 20
 
 def cornell_spheres():
     g = cornell_box("cornell_spheres", blocks=False)
-    # Mirror: kd + kr = 0.95, a tight highlight of the lamp.
-    mirror = g.material("mirror", (0.05, 0.05, 0.05), ks=0.4, shininess=300.0,
-                        roughness=roughness_for_shininess(300.0), kr=0.9)
-    # Glass: kd + kr + kt = 0.97, eta 1.5 (the --fresnel switch splits kt further).
-    glass = g.material("glass", (0.02, 0.02, 0.02), ks=0.5, shininess=400.0,
-                       roughness=roughness_for_shininess(400.0), kr=0.05, kt=0.9, ior=1.5,
+    # Mirror: kd + ks + kr = 1, a tight highlight of the lamp.
+    mirror = g.material("mirror", (0.05, 0.05, 0.05), ks=0.15, shininess=300.0,
+                        roughness=roughness_for_shininess(300.0), kr=0.8)
+    # Glass: kd + ks + kr + kt = 1, eta 1.5 (the --fresnel switch splits kt further).
+    glass = g.material("glass", (0.0, 0.0, 0.0), ks=0.1, shininess=400.0,
+                       roughness=roughness_for_shininess(400.0), kr=0.05, kt=0.85, ior=1.5,
                        transmission_extension=True)
     radius = SPHERES_RADIUS_MM * MM
     for name, centre, material in (("mirror_sphere", MIRROR_SPHERE_MM, mirror),
@@ -665,12 +665,12 @@ def whitted():
     g = GltfBuilder("whitted")
     red = g.material("checker_red", CHECK_RED, ks=0.0)
     yellow = g.material("checker_yellow", CHECK_YELLOW, ks=0.0)
-    # Mirror: kd + kr = 0.95; a highlight from ks.
-    mirror = g.material("mirror", (0.15, 0.15, 0.15), ks=0.5, shininess=100.0,
-                        roughness=roughness_for_shininess(100.0), kr=0.8)
-    # Glass: kd + kr + kt = 0.98; eta 1.5. With the Fresnel switch, kt's share splits further.
-    glass = g.material("glass", (0.03, 0.03, 0.03), ks=0.6, shininess=200.0,
-                       roughness=roughness_for_shininess(200.0), kr=0.05, kt=0.9, ior=1.5,
+    # Mirror: kd + ks + kr = 1; a highlight from ks.
+    mirror = g.material("mirror", (0.1, 0.1, 0.1), ks=0.15, shininess=100.0,
+                        roughness=roughness_for_shininess(100.0), kr=0.75)
+    # Glass: kd + ks + kr + kt = 1; eta 1.5. With the Fresnel switch, kt's share splits further.
+    glass = g.material("glass", (0.0, 0.0, 0.0), ks=0.1, shininess=200.0,
+                       roughness=roughness_for_shininess(200.0), kr=0.05, kt=0.85, ior=1.5,
                        transmission_extension=True)
 
     # The checkerboard as geometry, one primitive per colour: every model sees the squares,
@@ -772,15 +772,15 @@ def local_effects():
     white = g.material("white", (0.75, 0.75, 0.75), ks=0.0)
     red = g.material("red", (0.7, 0.08, 0.06), ks=0.2, shininess=40.0,
                      roughness=roughness_for_shininess(40.0))
-    yellow = g.material("yellow", (0.75, 0.6, 0.08), ks=0.3, shininess=60.0,
+    yellow = g.material("yellow", (0.7, 0.56, 0.075), ks=0.3, shininess=60.0,
                         roughness=roughness_for_shininess(60.0))
     green = g.material("green", (0.1, 0.5, 0.12), ks=0.0)
     blue = g.material("pillar_blue", (0.12, 0.25, 0.7), ks=0.0)
     orange = g.material("pillar_orange", (0.8, 0.4, 0.08), ks=0.0)
-    # kd + kt = 0.7 and kd + kr = 0.9: within the SCENES.md budget of 1.
-    pane = g.material("pane", (0.05, 0.08, 0.1), ks=0.4, shininess=200.0,
+    # kd + ks + kt and kd + ks + kr at most 1: within the budget of 1 (see check_scene).
+    pane = g.material("pane", (0.05, 0.08, 0.1), ks=0.3, shininess=200.0,
                       roughness=roughness_for_shininess(200.0), kt=0.6)
-    mirror = g.material("mirror", (0.1, 0.1, 0.1), ks=0.5, shininess=200.0,
+    mirror = g.material("mirror", (0.05, 0.05, 0.05), ks=0.15, shininess=200.0,
                         roughness=roughness_for_shininess(200.0), kr=0.8)
 
     g.mesh_node("floor", g.mesh("floor", [(g.geometry(*grid_floor(*EFFECTS_FLOOR, EFFECTS_CELL)), floor)]))
@@ -962,7 +962,11 @@ def check_scene(path):
                     problem(where, "triangle %d is wound against its normals" % (t // 3))
                     break
 
-    # Materials: kd + kr + kt <= 1 per channel, with SCENES.md's defaults.
+    # Materials: kd + ks + kr + kt <= 1 per channel, with SCENES.md's defaults. The path tracer's
+    # normalised Phong lobe ks (n + 2)/(2 pi) cos^n reflects at most ks of the light arriving
+    # (all of it at normal incidence; Lafortune and Willems 1994, "Using the modified Phong
+    # reflectance model for physically based rendering"), so this sum bounds what a surface
+    # gives back and the reference picture stays energy-conserving.
     for i, mat in enumerate(materials):
         where = "material %d %r" % (i, mat.get("name"))
         pbr = mat.get("pbrMetallicRoughness", {})
@@ -986,10 +990,11 @@ def check_scene(path):
             kt = rgb(extras["kt"])
         else:
             kt = [c * (1.0 - metallic) * transmission for c in base]
+        ks = rgb(extras["ks"]) if "ks" in extras else [0.0] * 3
         for ch in range(3):
-            if kd[ch] + kr[ch] + kt[ch] > 1.0 + 1e-9:
-                problem(where, "kd + kr + kt = %g > 1 in channel %d"
-                        % (kd[ch] + kr[ch] + kt[ch], ch))
+            total = kd[ch] + ks[ch] + kr[ch] + kt[ch]
+            if total > 1.0 + 1e-9:
+                problem(where, "kd + ks + kr + kt = %g > 1 in channel %d" % (total, ch))
         for key in ("ks", "ka", "kr", "kt"):
             if key in extras and any(c < 0 for c in rgb(extras[key])):
                 problem(where, "negative extras.%s" % key)

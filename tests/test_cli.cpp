@@ -489,6 +489,20 @@ std::string lit_triangle(const test::ScratchDir& dir, double candela, double z, 
   return path.string();
 }
 
+// A Spanish run names in Spanish what it names itself: the models of the summary and the camera
+// it frames a scene without one with.
+TEST(CliSpanish, TheNamesItGivesSpeakSpanish) {
+  test::ScratchDir dir;
+  const std::string scene = lit_triangle(dir, 10.0, 1.0, "test");
+  const auto result = run_luz({"--lang", "es", "render", scene, "--model", "path", "--spp", "1", "--size", "8x6",
+                               "--out", (dir / "x.png").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  ASSERT_NE(spanish("path tracer"), "path tracer");
+  EXPECT_TRUE(contains(result.output, ": " + spanish("path tracer") + " 8x6, ")) << result.output;
+  EXPECT_TRUE(contains(result.output, "\"" + spanish("framing") + "\"")) << result.output;
+  EXPECT_FALSE(contains(result.output, "\"framing\"")) << result.output;
+}
+
 std::string fmt_ev(float ev) {
   std::ostringstream text;
   text << ev;

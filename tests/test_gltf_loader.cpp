@@ -1082,6 +1082,29 @@ TEST(Error, MessagesSpeakTheChosenLanguage) {
             (dir / "array.gltf").string() + ": not glTF: the JSON is not an object");
 }
 
+// What the loader names for a scene that leaves it unnamed (the framing camera, the default
+// lights, "mesh 0") reads in the language the scene was loaded in.
+TEST(Error, GivenNamesSpeakTheChosenLanguage) {
+  const i18n::Catalogue& spanish = i18n::catalogue(i18n::Language::es);
+  auto translation = [&](const char* id) {
+    const std::string* text = spanish.find(id);
+    EXPECT_NE(text, nullptr) << id;
+    return text ? *text : std::string(id);
+  };
+  ScratchDir dir;
+  const std::filesystem::path bare = one_triangle(diffuse(1, 1, 1)).write_gltf(dir);
+  i18n::set_language(i18n::Language::es);
+  const Scene scene = io::load_gltf(bare).scene;
+  i18n::set_language(i18n::Language::en);
+  EXPECT_EQ(scene.cameras.at(0).name, translation("framing"));
+  EXPECT_NE(scene.cameras.at(0).name, "framing");
+  ASSERT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(scene.lights[0].name, translation("default key light"));
+  EXPECT_EQ(scene.lights[1].name, translation("default fill light"));
+  EXPECT_EQ(scene.meshes.at(0).name, fmt::format(fmt::runtime(translation("mesh {}")), 0));
+  EXPECT_EQ(io::load_gltf(bare).scene.cameras.at(0).name, "framing");  // English again
+}
+
 TEST(Error, JsonThatIsNotGltf) {
   ScratchDir dir;
   write_file(dir / "array.gltf", std::string("[1, 2, 3]"));

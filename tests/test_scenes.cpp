@@ -1,6 +1,7 @@
 // The shipped scenes: each loads without a warning, has a camera, and holds what its plate is
 // for (SCENES.md materials read back from the files the generator wrote).
 #include <algorithm>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,6 +31,26 @@ TEST(ShippedScenes, LoadWithoutWarningsAndHaveTheirOwnCamera) {
     for (const Material& m : loaded.scene.materials)
       for (int c = 0; c < 3; ++c) EXPECT_LE(m.kd[c] + m.kr[c] + m.kt[c], 1.0f + 1e-6f) << name << " " << m.name;
   }
+}
+
+// The path tracer's BRDF is kd/pi plus the normalised Phong lobe ks (n + 2)/(2 pi) cos^n, which
+// reflects at most ks of the light arriving (all of it at normal incidence; Lafortune and
+// Willems 1994), with kr and kt on top: kd + ks + kr + kt <= 1 per channel keeps the reference
+// from giving back more light than a surface receives. Every scene in the folder, so a new one
+// is held to it too.
+TEST(ShippedScenes, EveryMaterialConservesEnergy) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::scene_dir())) {
+    if (entry.path().extension() != ".gltf") continue;
+    ++scenes;
+    const Scene scene = io::load_gltf(entry.path()).scene;
+    for (const Material& m : scene.materials) {
+      const Rgb total = m.kd + m.ks + m.kr + m.kt;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_LE(total[c], 1.0f + 1e-6f) << entry.path().filename() << " " << m.name << " channel " << c;
+    }
+  }
+  EXPECT_GE(scenes, 5);  // the folder was found and read
 }
 
 TEST(ShippedScenes, CornellBoxIsLitByItsLampOnly) {

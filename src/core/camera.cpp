@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/i18n.h"
 #include "core/scene.h"
 
 namespace luz {
@@ -41,7 +42,7 @@ float Camera::framing_elevation(const Bounds& bounds) {
 
 Camera Camera::framing(const Bounds& bounds) {
   Camera camera;
-  camera.name = "framing";
+  camera.name = i18n::tr("framing");
   const glm::vec3 centre = bounds.centre();
   const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
   // Far enough back that the bounding sphere fits the vertical field of view, from +Z raised by

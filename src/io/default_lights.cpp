@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "core/i18n.h"
+
 namespace luz::io {
 
 bool has_no_lights(const Scene& scene) { return scene.lights.empty() && scene.area_lights.empty(); }
@@ -30,10 +32,10 @@ void add_default_lights(Scene& scene) {
   const glm::vec3 back = glm::normalize(glm::vec3(camera.to_world[2]));
 
   Light key;
-  key.name = "default key light";
+  key.name = i18n::tr("default key light");
   key.type = LightType::point;
   Light fill = key;
-  fill.name = "default fill light";
+  fill.name = i18n::tr("default fill light");
   const glm::vec3 eye = camera.position();
   if (inside(bounds, eye)) {
     // An interior: lights outside would be behind its walls. The key hangs halfway from the

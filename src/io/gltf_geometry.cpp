@@ -497,7 +497,7 @@ void add_mesh_instance(const Context& ctx, int mesh_index, const glm::dmat4& to_
     }
 
     Mesh mesh;
-    mesh.name = gltf_mesh.name.empty() ? fmt::format("mesh {}", mesh_index) : gltf_mesh.name;
+    mesh.name = gltf_mesh.name.empty() ? trf("mesh {}", mesh_index) : gltf_mesh.name;
     if (primitive.material == -1) {
       mesh.material = default_material;
     } else {

@@ -37,7 +37,7 @@ void add_camera(const Context& ctx, const tinygltf::Node& node, const glm::dmat4
   Camera camera;
   camera.name = !source.name.empty() ? source.name
                 : !node.name.empty() ? node.name
-                                     : fmt::format("camera {}", scene.cameras.size());
+                                     : trf("camera {}", scene.cameras.size());
   camera.yfov = finite_float(ctx, p.yfov, what + ": yfov");
   camera.aspect = finite_float(ctx, p.aspectRatio, what + ": aspectRatio");
   camera.znear = finite_float(ctx, p.znear, what + ": znear");
@@ -77,7 +77,7 @@ void add_light(const Context& ctx, const tinygltf::Node& node, const std::string
   Light light;
   light.name = !source.name.empty() ? source.name
                : !node.name.empty() ? node.name
-                                    : fmt::format("light {}", index);
+                                    : trf("light {}", index);
   if (source.type == "point") light.type = LightType::point;
   else if (source.type == "spot") light.type = LightType::spot;
   else if (source.type == "directional") light.type = LightType::directional;

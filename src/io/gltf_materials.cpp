@@ -124,7 +124,7 @@ int texture_for_image(const Context& ctx, int index, std::map<int, int>& texture
   texture.name = !image.name.empty() ? image.name
                  : !image.uri.empty() && !is_data_uri(image.uri)
                      ? image.uri
-                     : fmt::format("image {}", index);
+                     : trf("image {}", index);
   scene.textures.push_back(std::move(texture));
   textures[index] = int(scene.textures.size() - 1);
   return textures[index];
@@ -165,7 +165,7 @@ Material map_material(Context& ctx, size_t index, std::map<int, int>& textures, 
   auto field = [&](const std::string& name) { return what + ": " + name; };
 
   Material m;
-  m.name = source.name.empty() ? fmt::format("material {}", index) : source.name;
+  m.name = source.name.empty() ? trf("material {}", index) : source.name;
 
   const Rgb base = clamp_to_one(ctx, to_rgb(ctx, pbr.baseColorFactor, 4, field("baseColorFactor")),
                                 field("baseColorFactor"));

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "core/i18n.h"
+
 namespace luz {
 namespace {
 
@@ -84,7 +86,7 @@ TermValues evaluate_terms(const Scene& scene, const Material& material, const gl
   for (size_t i = 0; i < area_lights.size(); ++i) {
     const AreaLight& light = area_lights[i];
     LightTerm term;
-    term.name = fmt::format("emitter {}", i);
+    term.name = i18n::trf("emitter {}", i);
     const glm::vec3 to_light = light.centroid - P;
     term.d = glm::length(to_light);
     glm::vec3 L(0.0f);

@@ -26,6 +26,9 @@ namespace {
 constexpr int kDefaultHeight = 600;
 constexpr int kMaxSide = 16384;
 
+// Width over height: the camera's, else 4:3 (a glTF camera may leave it to the viewport).
+float aspect_of(const Camera& camera) { return camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f; }
+
 // The output keeps the camera's aspect ratio unless --size says otherwise.
 void output_size(const RenderSettings& settings, const Camera& camera, int& width, int& height) {
   if (settings.width > 0) {
@@ -33,9 +36,8 @@ void output_size(const RenderSettings& settings, const Camera& camera, int& widt
     height = settings.height;
     return;
   }
-  const float aspect = camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f;
   height = kDefaultHeight;
-  width = std::max(1, int(std::lround(float(height) * aspect)));
+  width = std::max(1, int(std::lround(float(height) * aspect_of(camera))));
 }
 
 std::string camera_list(const Scene& scene) {
@@ -100,10 +102,11 @@ Image exposure_key_picture(const Scene& scene, const Camera& camera) {
   RenderSettings reference;
   reference.model = "path";
   reference.quiet = true;
-  reference.whitted.spp = kExposureKeySamples;
+  const FoundOption spp = *find_option("path.spp");
+  spp.row->set(options_of(reference, *spp.table), kExposureKeySamples);
   reference.given_flags.push_back({"--spp", "sampling"});
-  const float aspect = camera.aspect > 0.0f ? camera.aspect : 4.0f / 3.0f;
-  const int width = std::clamp(int(std::lround(float(kExposureKeyHeight) * aspect)), 1, 4 * kExposureKeyHeight);
+  const int width = std::clamp(int(std::lround(float(kExposureKeyHeight) * aspect_of(camera))), 1,
+                               4 * kExposureKeyHeight);
   return find_model("path")->render(scene, camera, width, kExposureKeyHeight, reference).image;
 }
 
@@ -189,7 +192,7 @@ int run_render(const RenderSettings& settings) {
     const double seconds = seconds_since(start);
     if (!settings.quiet) {
       fmt::print("{}\n", trf("{}: {} {}x{}, camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
-                             settings.model, width, height, camera.name, exposure, seconds));
+                             model_labels(settings.model), width, height, camera.name, exposure, seconds));
       fmt::print("{}", rendered.summary);
       fmt::print("{}\n", trf("phases: scene loaded in {:.3f} s, the model's picture (its set-up included) {:.3f} s, "
                              "written in {:.3f} s", load_seconds, model_seconds, write_seconds));

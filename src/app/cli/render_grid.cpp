@@ -174,7 +174,7 @@ int run_render_grid(const RenderSettings& settings) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!settings.quiet)
       fmt::print("{}\n", trf("{}: {} {}x{} panes ({}x{} each), camera \"{}\", exposure {:+g} EV, {:.3f} s", settings.out,
-                              settings.model, sheet.layout.columns, sheet.layout.rows, sheet.pane_width,
+                              model_labels(settings.model), sheet.layout.columns, sheet.layout.rows, sheet.pane_width,
                               sheet.pane_height, camera.name, sheet.exposure, seconds));
     return 0;
   } catch (const Error& error) {

@@ -74,6 +74,18 @@ std::string model_label(const std::string& name) {
   return m ? std::string(tr(m->label)) : name;
 }
 
+std::string model_labels(const std::string& names) {
+  std::string labels;
+  size_t start = 0;
+  while (start <= names.size()) {
+    const size_t comma = std::min(names.find(',', start), names.size());
+    if (!labels.empty()) labels += ", ";
+    labels += model_label(names.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return labels;
+}
+
 const ModelEntry* model_on_key(int digit) {
   for (const ModelEntry& m : models())
     if (m.key == digit) return &m;

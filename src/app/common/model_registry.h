@@ -96,5 +96,8 @@ std::string model_names(const char* separator = ", ");
 // The model's label (its entry's, translated) for the name `luz render --model` takes; the name
 // itself when no model has it.
 std::string model_label(const std::string& name);
+// model_label of each name in a comma-separated list ("radiosity,hybrid"), joined by ", ": the
+// models a run summary names, in the user's language.
+std::string model_labels(const std::string& names);
 
 }  // namespace luz::app
