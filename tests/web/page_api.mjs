@@ -6,10 +6,7 @@
 //        node tests/web/page_api.mjs --expect-error URL SCREENSHOT.png
 //        (NODE_PATH=build-web/npm/node_modules)
 import { writeFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-
-const require = createRequire(import.meta.url);
-const puppeteer = require('puppeteer-core');
+import { openPage } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const expectError = args[0] === '--expect-error';
@@ -20,16 +17,9 @@ if (!url || !output) {
   process.exit(2);
 }
 
-const browser = await puppeteer.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
 let failed = false;
+const { browser, page } = await openPage(() => { failed = true; });
 try {
-  const page = await browser.newPage();
-  page.on('console', (message) => console.log(`page: ${message.text()}`));
-  page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); failed = true; });
   const opened = Date.now();
   await page.goto(url);
   const outcome = await page.evaluate(() =>

@@ -3,10 +3,7 @@
 // Usage: node tests/web/page_smoke.mjs URL SCREENSHOT.png [CANVAS.png]
 //        (NODE_PATH=build-web/npm/node_modules): the page's screenshot, and the canvas's pixels.
 import { writeFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-
-const require = createRequire(import.meta.url);
-const puppeteer = require('puppeteer-core');
+import { openPage } from './browser.mjs';
 
 const [url, screenshot, canvasFile] = process.argv.slice(2);
 if (!url || !screenshot) {
@@ -14,16 +11,9 @@ if (!url || !screenshot) {
   process.exit(2);
 }
 
-const browser = await puppeteer.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
 let failed = false;
+const { browser, page } = await openPage(() => { failed = true; });
 try {
-  const page = await browser.newPage();
-  page.on('console', (message) => console.log(`page: ${message.text()}`));
-  page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); failed = true; });
   await page.goto(url);
   const started = Date.now();
   await page.waitForFunction(

@@ -1,0 +1,19 @@
+// The browser every web test drives: Debian's chromium, headless, drawing WebGL 2 through
+// SwiftShader (the software path many students' machines and CI have), the page's console and
+// errors echoed. `onError` is called for an uncaught error in the page.
+import { createRequire } from 'node:module';
+
+const require = createRequire(import.meta.url);
+const puppeteer = require('puppeteer-core');
+
+export async function openPage(onError) {
+  const browser = await puppeteer.launch({
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  const page = await browser.newPage();
+  page.on('console', (message) => console.log(`page: ${message.text()}`));
+  page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); onError(); });
+  return { browser, page };
+}
