@@ -6,6 +6,8 @@
 #   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
 #                        emscripten and chromium, libdeflate's source package, puppeteer-core
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
+#   ./setup.sh web test  builds the page and the desktop's luz, then runs the page's tests in
+#                        headless Chromium against `luz render` (tests/web/run_page_tests.sh)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -68,7 +70,11 @@ if [ "${1:-}" = web ]; then
   emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=OFF
   cmake --build build-web --parallel "$(nproc)"
   echo "setup: the page is build-web/luz.html; ./setup.sh web serve, then open http://127.0.0.1:8000/luz.html"
-  exit 0
+  [ "${2:-}" = test ] || exit 0
+  # The page's tests hold its pictures to the desktop's `luz render`.
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake --build build --parallel "$(nproc)" --target luz
+  exec sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release

@@ -140,10 +140,7 @@ void* options_of(RenderSettings& settings, const OptionTable& table) {
 }
 
 const void* options_of(const RenderSettings& settings, const OptionTable& table) {
-  if (&table == &local_table()) return &settings.local;
-  if (&table == &whitted_table()) return &settings.whitted;
-  if (&table == &radiosity_table()) return &settings.radiosity;
-  return settings.model_options.of(table);
+  return options_of(const_cast<RenderSettings&>(settings), table);  // the same field, read only
 }
 
 int run_render(const RenderSettings& settings) {

@@ -69,10 +69,7 @@ void* options_of(ViewerState& state, const OptionTable& table) {
 }
 
 const void* options_of(const ViewerState& state, const OptionTable& table) {
-  if (&table == &local_table()) return &state.local;
-  if (&table == &whitted_table()) return &state.whitted;
-  if (&table == &radiosity_table()) return &state.radiosity;
-  return state.model_options.of(table);
+  return options_of(const_cast<ViewerState&>(state), table);  // the same field, read only
 }
 
 nlohmann::json settings_json(const ViewerState& state) {
