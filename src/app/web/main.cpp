@@ -6,6 +6,7 @@
 //
 // The URL's parameters (docs/web.md): scene=NAME (a shipped scene), model=gouraud|phong,
 // lang=es|en, size=WxH. The page's `window.luz.ready` settles after the first picture is shown.
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <emscripten.h>
@@ -89,7 +91,7 @@ void fail(const std::string& text) {
 // What the URL asks for; each value is checked here, so a bad one is a sentence on the page.
 struct Request {
   std::filesystem::path scene;
-  Shading shading = Shading::phong;
+  LocalOptions options;  // the shading model and slide 19's switches
   int width = 640, height = 480;
 };
 
@@ -107,10 +109,24 @@ std::filesystem::path shipped_scene(const std::string& name) {
 Shading shading_named(const std::string& name) {
   if (name == "phong") return Shading::phong;
   if (name == "gouraud") return Shading::gouraud;
-  if (name == "flat")
-    throw Error(ErrorKind::bad_value, i18n::tr("Flat shading needs a geometry shader, which WebGL 2 lacks: "
-                                               "model=gouraud or model=phong."));
-  throw Error(ErrorKind::bad_value, i18n::trf("No local model is called \"{}\" (gouraud, phong).", name));
+  if (name == "flat") return Shading::flat;
+  throw Error(ErrorKind::bad_value, i18n::trf("No local model is called \"{}\" (flat, gouraud, phong).", name));
+}
+
+// effects=shadows,transparency,...: slide 19's switches, as `luz render`'s flags of those names.
+void read_effects(const std::string& text, LocalOptions& options) {
+  std::string_view rest = text;
+  while (!rest.empty()) {
+    const std::string_view name = rest.substr(0, rest.find(','));
+    rest.remove_prefix(std::min(rest.size(), name.size() + 1));
+    if (name == "shadows") options.shadows.on = true;
+    else if (name == "transparency") options.transparency.on = true;
+    else if (name == "reflection") options.reflection.on = true;
+    else if (name == "fog") options.fog.mode = FogMode::linear;
+    else
+      throw Error(ErrorKind::bad_value, i18n::trf("No effect is called \"{}\" (shadows, transparency, "
+                                                  "reflection, fog).", std::string(name)));
+  }
 }
 
 // "WxH", each side 1 to 4096 pixels.
@@ -129,9 +145,11 @@ void read_size(const std::string& text, int& width, int& height) {
 
 Request read_request() {
   Request request;
-  const std::string scene = url_parameter("scene"), model = url_parameter("model"), size = url_parameter("size");
+  const std::string scene = url_parameter("scene"), model = url_parameter("model"), size = url_parameter("size"),
+                    effects = url_parameter("effects");
   request.scene = scene.empty() ? default_scene() : shipped_scene(scene);
-  if (!model.empty()) request.shading = shading_named(model);
+  if (!model.empty()) request.options.shading = shading_named(model);
+  read_effects(effects, request.options);
   if (!size.empty()) read_size(size, request.width, request.height);
   return request;
 }
@@ -150,7 +168,7 @@ void choose_language() {
 class Page {
 public:
   explicit Page(const Request& request) : loaded_(io::load_gltf(request.scene)), renderer_(loaded_.scene) {
-    options_.shading = request.shading;
+    options_ = request.options;
     glGenTextures(1, &shown_);
     glGenFramebuffers(1, &read_fbo_);
   }
@@ -233,6 +251,8 @@ int main() {
     web::fail(i18n::tr("This browser's WebGL 2 cannot draw into float buffers (EXT_color_buffer_float)."));
     return 1;
   }
+  // Transparency blends into them (lighting.glsl's two draws), which WebGL 2 allows with this one.
+  emscripten_webgl_enable_extension(context, "EXT_float_blend");
   try {
     web::choose_language();
     const web::Request request = web::read_request();
