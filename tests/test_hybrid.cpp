@@ -18,6 +18,7 @@
 //
 // One OSMesa context for the whole binary: the radiosity solves draw hemicubes.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <numbers>
@@ -395,6 +396,44 @@ TEST(Hybrid, TheShootersHighlightFindsItsPatchOnATexturedMesh) {
   highlighted(with_tile(false), plain);
   EXPECT_GT(std::count(plain.begin(), plain.end(), true), 20);
   EXPECT_EQ(textured, plain);
+}
+
+// The highlight falls where the shooter is: every magenta pixel of the floor seen from straight
+// above (x right, z up the picture, half-width tan(yfov / 2) x 2.2 at the floor) lies inside the
+// bounding box of the shooter's elements, within two pixels, and it covers a good share of it
+// (a triangle fills half its box).
+TEST(Hybrid, TheShootersHighlightIsOnTheShootersElements) {
+  const Scene scene = lamp_over_floor(false);
+  const RadiosityOptions options = coarse(0.25f, 0.01f);
+  PatchMesh mesh = PatchMesh::build(scene, options);
+  RadiosityRenderer renderer(scene, mesh);
+  ProgressiveSolver solver(scene, mesh, options);
+  renderer.update(RadianceField::of(solver), options);
+  const float half = std::tan(0.5f * scene.cameras.front().yfov) * 2.2f, pixel = 2.0f * half / kSize;
+  int checked = 0;
+  for (size_t shooter = 0; shooter < mesh.shooters.size(); shooter += 7) {
+    Bounds box;
+    for (uint32_t k = 0; k < mesh.shooters[shooter].count; ++k)
+      for (const uint32_t v : mesh.patches[mesh.members[mesh.shooters[shooter].first + k]].vertices)
+        box.grow(mesh.vertices[v]);
+    if (std::max({-box.min.x, box.max.x, -box.min.z, box.max.z}) > 0.9f * half) continue;  // not all in view
+    ++checked;
+    const Image image = renderer.render(scene.cameras.front(), kSize, kSize, options, int(shooter));
+    int magenta = 0, outside = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const Rgb c = image.at(x, y);
+        if (!(c.r > 3.0f && c.g < 0.5f && c.b > 3.0f)) continue;
+        ++magenta;
+        const float wx = (float(x) + 0.5f) * pixel - half, wz = (float(y) + 0.5f) * pixel - half;
+        outside += wx < box.min.x - 2.0f * pixel || wx > box.max.x + 2.0f * pixel ||
+                   wz < box.min.z - 2.0f * pixel || wz > box.max.z + 2.0f * pixel;
+      }
+    const float box_pixels = (box.max.x - box.min.x) * (box.max.z - box.min.z) / (pixel * pixel);
+    EXPECT_EQ(outside, 0) << "shooter " << shooter;
+    EXPECT_GT(float(magenta), 0.25f * box_pixels) << "shooter " << shooter;
+  }
+  EXPECT_GT(checked, 10);
 }
 
 }  // namespace
