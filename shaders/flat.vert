@@ -1,11 +1,11 @@
 #version 330 core
-// Flat shading: the formula evaluated once per triangle, at its centroid with its face
-// (geometric) normal; the kd and emissive textures still modulate it per fragment, as
-// fixed-function GL_FLAT with a modulating texture did (SCENES.md Units), so uv is interpolated.
-// Every vertex carries its whole triangle (gl/face_buffers.h, unindexed), so each of the three
-// evaluates the same formula on the same corners and the `flat` outputs are the triangle's one
-// colour whichever vertex GL takes them from. GLSL ES 3.00 (the page) has no geometry stage,
-// and this needs none.
+// Flat shading without a geometry shader, for GLSL ES 3.00 (the page's WebGL 2, which has no
+// geometry stage; the desktop draws flat.geom): the formula once per triangle, at its centroid
+// with its face (geometric) normal, as flat.geom evaluates it. Every vertex carries its whole
+// triangle (gl/face_buffers.h, unindexed), so each of the three evaluates the same formula on the
+// same corners and the `flat` outputs (flat.geom's names, for flat.frag) are the triangle's one
+// colour whichever vertex GL takes them from. The kd and emissive textures still modulate it per
+// fragment, so uv is interpolated.
 layout(location = 0) in vec3 a_position;
 layout(location = 2) in vec2 a_uv;
 layout(location = 4) in vec3 a_corner0;  // the triangle's corners, in its index order
@@ -17,24 +17,22 @@ layout(location = 9) in vec3 a_colour2;
 
 uniform mat4 u_view_projection;
 
-flat out vec3 v_ambient;
-flat out vec3 v_diffuse;
-flat out vec3 v_specular;
-out vec2 v_uv;
-flat out vec3 v_colour;  // COLOR_0 at the centroid
-flat out vec3 v_mirror;
-out vec3 v_position;
+flat out vec3 g_ambient;
+flat out vec3 g_diffuse;
+flat out vec3 g_specular;
+out vec2 g_uv;
+flat out vec3 g_colour;  // COLOR_0 at the centroid
+flat out vec3 g_mirror;
+out vec3 g_position;
 #if LUZ_DISPLAY_OUTPUT
-// Without fog or a texture the triangle's one colour is one displayed value too, so the sRGB
-// curve runs once per vertex instead of once per pixel: for the side that emits and the other
-// (an emitter shows its Le on one side only, which the fragment knows).
-flat out vec3 v_displayed_front;
-flat out vec3 v_displayed_back;
+// Without fog or a texture the triangle's one colour is one displayed value too (flat.geom's).
+flat out vec3 g_displayed_front;
+flat out vec3 g_displayed_back;
 #endif
 
 void main() {
-  v_uv = a_uv;
-  v_position = a_position;
+  g_uv = a_uv;
+  g_position = a_position;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 
   // The centroid (named `middle`: "centroid" is a GLSL keyword).
@@ -52,18 +50,18 @@ void main() {
   vec2 uv = a_uv;  // for the displayed value of an untextured triangle (no texture reads it)
   vec3 colour = (a_colour0 + a_colour1 + a_colour2) / 3.0;
   vec3 mirror = mirror_direction(middle, N);
-  v_ambient = terms.ambient;
-  v_diffuse = terms.diffuse;
-  v_specular = terms.specular;
-  v_colour = colour;
-  v_mirror = mirror;
+  g_ambient = terms.ambient;
+  g_diffuse = terms.diffuse;
+  g_specular = terms.specular;
+  g_colour = colour;
+  g_mirror = mirror;
 #if LUZ_DISPLAY_OUTPUT
-  v_displayed_front = vec3(0.0);
-  v_displayed_back = vec3(0.0);
+  g_displayed_front = vec3(0.0);
+  g_displayed_back = vec3(0.0);
   if (fog_mode == FOG_OFF && !has_kd_texture && !has_emission_texture) {
     kd_colour = colour;
-    v_displayed_front = displayed(surface_radiance(terms, uv, true, mirror));
-    v_displayed_back = displayed(surface_radiance(terms, uv, false, mirror));
+    g_displayed_front = displayed(surface_radiance(terms, uv, true, mirror));
+    g_displayed_back = displayed(surface_radiance(terms, uv, false, mirror));
   }
 #endif
 }

@@ -1,9 +1,10 @@
 #pragma once
-// One core::Mesh on the GPU for flat shading: its triangles unindexed, each vertex carrying its
-// own position (location 0) and uv (2) and the whole triangle's three corners (4, 5, 6) and three
-// COLOR_0 values (7, 8, 9). A vertex shader sees one vertex; with the triangle beside it, it
-// evaluates the formula once for the face (shaders/flat.vert) as a geometry shader would, and
-// GLSL ES 3.00 (the page's WebGL 2), which has no geometry stage, draws it the same way.
+// One core::Mesh on the GPU for flat shading in GLSL ES: its triangles unindexed, each vertex
+// carrying its own position (location 0) and uv (2) and the whole triangle's three corners (4, 5,
+// 6) and three COLOR_0 values (7, 8, 9). A vertex shader sees one vertex; with the triangle beside
+// it, it evaluates the formula once for the face (shaders/flat.vert) as the desktop's geometry
+// shader does, which GLSL ES 3.00 (the page's WebGL 2) lacks. The desktop keeps the geometry
+// shader: three evaluations per triangle instead of one made tessellated scenes slower there.
 #include "core/scene.h"
 #include "gl/functions.h"
 

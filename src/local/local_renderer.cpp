@@ -198,7 +198,7 @@ struct ReflectionInputs {
 struct LocalRenderer::Impl {
   const Scene& scene;
   std::vector<gl::MeshBuffers> meshes;  // one per Scene::meshes entry
-  std::vector<gl::FaceBuffers> faces;   // the same, for flat shading: made when first drawn flat
+  std::vector<gl::FaceBuffers> faces;   // the same for flat.vert (GLSL ES): made when first drawn flat
   std::vector<Bounds> bounds;           // each mesh's bounding box (sorting, cube maps)
   std::vector<glm::vec3> centres;       // their centres
   std::vector<GLuint> textures;         // one per Scene::textures entry
@@ -381,8 +381,12 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
   auto found = programs.find(key);
   if (found != programs.end()) return found->second;
   std::vector<std::string> stages;
+  const bool es = gl::current_glsl_dialect() == gl::GlslDialect::es_300;
   switch (switches.shading) {
-    case Shading::flat: stages = {"flat.vert", "flat.frag"}; break;
+    case Shading::flat:  // GLSL ES has no geometry stage: every vertex carries its triangle
+      stages = es ? std::vector<std::string>{"flat.vert", "flat.frag"}
+                  : std::vector<std::string>{"local.vert", "flat.geom", "flat.frag"};
+      break;
     case Shading::gouraud: stages = {"gouraud.vert", "gouraud.frag"}; break;
     case Shading::phong: stages = {"local.vert", "phong.frag"}; break;
   }
@@ -456,7 +460,10 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   }
   if (shadows && !shadow_maps->area_views().empty()) common.area_shadow_kind = ShadowKind::cube;
   ++pass_number;
-  if (options.shading == Shading::flat && faces.empty())
+  // Flat shading in GLSL ES (flat.vert) draws every triangle with its own three vertices.
+  const bool dual_source = gl::current_glsl_dialect() == gl::GlslDialect::desktop_330;
+  const bool face_vertices = options.shading == Shading::flat && !dual_source;
+  if (face_vertices && faces.empty())
     for (const Mesh& mesh : scene.meshes) faces.emplace_back(mesh);
 
   // The textures every mesh of the pass shares: S_i's maps and the surroundings of kr Ir.
@@ -465,7 +472,6 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   glActiveTexture(GL_TEXTURE0 + environment_unit);
   glBindTexture(GL_TEXTURE_2D, environment_texture);
 
-  const bool dual_source = gl::current_glsl_dialect() == gl::GlslDialect::desktop_330;
   auto draw_mesh = [&](size_t m, bool transparent, bool transmittance_pass = false) {
     const Material& material = material_of(m);
     Switches switches = common;
@@ -486,7 +492,7 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
     if (transparent && !dual_source) p.set("u_transmittance_pass", transmittance_pass);
     glActiveTexture(GL_TEXTURE0 + reflection_unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, switches.reflection ? cubes[m].texture : 0);
-    if (switches.shading == Shading::flat) faces[m].draw();
+    if (face_vertices) faces[m].draw();
     else meshes[m].draw();
   };
 
