@@ -7,8 +7,9 @@
 #                        emscripten and chromium, libdeflate's and embree's source packages,
 #                        puppeteer-core and coi-serviceworker (npm)
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
-#   ./setup.sh web test  builds the page and the desktop's luz, then runs the page's tests in
-#                        headless Chromium against `luz render` (tests/web/run_page_tests.sh)
+#   ./setup.sh web test  builds the page and the desktop's luz, runs the CPU libraries' unit tests
+#                        in node (tests/web/run_node_tests.sh), then the page's tests in headless
+#                        Chromium against `luz render` (tests/web/run_page_tests.sh)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -72,19 +73,25 @@ if [ "${1:-}" = web ]; then
     (cd build-web/sources && { apt-get source -qq --download-only embree 2>/dev/null || true; } &&
        tar xJf embree_*.orig.tar.xz)
   fi
-  # The browser tests' driver of Debian's chromium, kept in the build folder.
-  [ -d build-web/npm/node_modules/puppeteer-core ] ||
-    npm install --silent --no-save --prefix build-web/npm puppeteer-core@23
+  # The browser tests' driver of Debian's chromium, and the service worker that isolates the page
+  # where its host sends no headers (served beside luz.html), kept in the build folder.
+  [ -d build-web/npm/node_modules/puppeteer-core ] && [ -d build-web/npm/node_modules/coi-serviceworker ] ||
+    npm install --silent --no-save --prefix build-web/npm puppeteer-core@23 coi-serviceworker@0.1.7
   # Emscripten's JavaScript tools find their modules in Debian's folder whatever node runs them.
   export NODE_PATH=/usr/share/nodejs
-  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=OFF
+  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release
   cmake --build build-web --parallel "$(nproc)"
   echo "setup: the page is build-web/luz.html; ./setup.sh web serve, then open http://127.0.0.1:8000/luz.html"
   [ "${2:-}" = test ] || exit 0
-  # The page's tests hold its pictures to the desktop's `luz render`.
+  # The CPU libraries' unit tests in node, then the page's tests, which hold its pictures to the
+  # desktop's `luz render`.
+  cmake --build build-web --parallel "$(nproc)" --target luz_node_tests
+  node_status=0
+  sh tests/web/run_node_tests.sh build-web || node_status=1
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
   cmake --build build --parallel "$(nproc)" --target luz
-  exec sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
+  sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
+  exit $node_status
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
