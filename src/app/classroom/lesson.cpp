@@ -343,7 +343,8 @@ void model_options(const Reader& r, const json& step, const std::string& at, int
     const json& given = step[table->name];
     const std::string p = at + "/" + table->name;
     std::vector<std::string> names;
-    for (const OptionRow& row : table->rows) names.push_back(row.name);
+    for (const OptionRow& row : table->rows)
+      if (in_viewer(row)) names.push_back(row.name);
     r.only_keys(given, p, table->name, names);
     for (const auto& [name, value] : given.items()) {
       const OptionRow& row = *find_row(*table, name);
