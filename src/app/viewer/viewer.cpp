@@ -556,8 +556,9 @@ bool Viewer::choose_camera(const std::string& name_or_index, std::string& error)
 void Viewer::resize(int width, int height) { glfwSetWindowSize(window_.handle(), width, height); }
 
 // ---- [keys] ------------------------------------------------------------------------------------
-// A key runs its line (shortcuts.h) as a script would; a line that cannot be done (a lesson's
-// step with no lesson open) says why in the status line.
+// A key runs its line (shortcuts.h) as a script would, and so does a button of the panel
+// (panel.h); a line that cannot be done (a lesson's step with no lesson open) says why in the
+// status line.
 void Viewer::run_line(const std::string& line) {
   const Script script = parse_script_text(line, "key");  // every bound line is checked by the tests
   std::string error;
@@ -935,33 +936,13 @@ void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> p
 
 void Viewer::frame() {
   if (fonts_stale_) rebuild_fonts();
-  if (state_.ui_scale_request > 0.0f) {
-    set_ui_scale(state_.ui_scale_request);
-    state_.ui_scale_request = 0.0f;
-    rebuild_fonts();
-  }
-  // Requests the panel made during the last frame.
-  if (state_.model != model_->name)
-    if (const ModelEntry* m = find_model(state_.model)) set_model(*m);
-  if (state_.panes_request) {
-    const std::vector<std::string> wanted = *state_.panes_request;
-    state_.panes_request.reset();
-    if (const std::string problem = pane_list_problem(wanted); problem.empty()) set_panes(wanted);
-    else state_.note = problem;
-  }
+  // The lines the panel's buttons ran during the last frame, as their keys run them.
+  for (const std::string& line : std::exchange(state_.panel_lines, {})) run_line(line);
   if (state_.emitters_changed) {
     state_.emitters_changed = false;
     state_.scene->find_area_lights();
     rebuild_renderer();
     for (auto& [name, view] : views_) view->emitters_changed();
-  }
-  if (state_.reload) {
-    state_.reload = false;
-    load(state_.scene_path);
-  }
-  if (state_.back_to_scene_camera) {
-    state_.back_to_scene_camera = false;
-    to_scene_camera();
   }
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
   solvers_.advance();
