@@ -284,10 +284,12 @@ Layout Viewer::with_dock_below(Layout l, float height) const {
 // camera's vertical field of view, so a wide scene (the plate of spheres) in a tall, narrow view
 // loses its sides. The frame's height in a pane is what the comparison reads; the dock beside is
 // taken at its least width, so that a docked window's width cannot move the dock. A caption
-// folded to one line goes below whatever the scene; slide 36's window keeps the dock beside.
+// folded to one line goes below whatever the scene when no window is docked; with one (the item
+// buffer), the dock stays beside, where the room the folded caption frees is the window's (a row
+// below would give it one line). Slide 36's window keeps the dock beside.
 bool Viewer::dock_goes_below(const Layout& beside, const Layout& below) const {
   if (caption_wanted_ <= 0.0f || solvers_.state().open) return false;  // not measured yet, or slide 36's
-  if (classroom_.caption_collapsed()) return true;
+  if (classroom_.caption_collapsed()) return docked_windows_ == 0;
   const float aspect = state_.scene ? state_.scene->cameras[size_t(state_.scene_camera)].aspect : 0.0f;
   if (!(aspect > 0.0f)) return false;
   const auto frame_height = [aspect](const Layout& l) {
@@ -827,7 +829,8 @@ void Viewer::draw_windows(const Layout& l) {
 // The dock (or its windows' column, below the picture) widens when a docked window's content is
 // wider than the room it had (a table's columns keep the width of their text), up to half the
 // picture's room; the next frame gives it that room. It keeps that width while windows other
-// than the caption stay docked.
+// than the caption stay docked. How many are docked decides where a folded caption goes
+// (dock_goes_below); they are docked in either place, so the choice cannot swing between frames.
 void Viewer::measure_dock(const Viewport& column, float margin) {
   float wanted = dock_wanted_;
   int docked = 0;
@@ -843,6 +846,10 @@ void Viewer::measure_dock(const Viewport& column, float margin) {
     if (overflow > 0.5f) wanted = std::max(wanted, d.size.x + overflow);
   }
   if (docked == 0) wanted = 0.0f;
+  if (docked != docked_windows_) {
+    docked_windows_ = docked;
+    frames_to_draw_ = std::max(frames_to_draw_, 2);
+  }
   if (std::abs(wanted - dock_wanted_) > 0.5f) {
     dock_wanted_ = wanted;
     frames_to_draw_ = std::max(frames_to_draw_, 2);
