@@ -4,7 +4,8 @@
 #   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
 #   ./setup.sh test      runs the whole test suite with ctest
 #   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
-#                        emscripten and chromium, libdeflate's source package, puppeteer-core
+#                        emscripten and chromium, libdeflate's and imgui's source packages,
+#                        puppeteer-core
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
 #   ./setup.sh web test  builds the page and the desktop's luz, then runs the page's tests in
 #                        headless Chromium against `luz render` (tests/web/run_page_tests.sh)
@@ -61,6 +62,11 @@ if [ "${1:-}" = web ]; then
     fi
     (cd build-web/sources && apt-get source -qq --download-only libdeflate 2>/dev/null &&
        tar xzf libdeflate_*.orig.tar.gz)
+  fi
+  # Dear ImGui's core sources (the desktop links Debian's libimgui-dev, which has no WebAssembly).
+  if ! ls build-web/sources/imgui-*/imgui.cpp >/dev/null 2>&1; then
+    (cd build-web/sources && apt-get source -qq --download-only imgui 2>/dev/null &&
+       tar xJf imgui_*.orig.tar.xz)
   fi
   # The browser tests' driver of Debian's chromium, kept in the build folder.
   [ -d build-web/npm/node_modules/puppeteer-core ] ||

@@ -57,3 +57,6 @@ endif()
 add_library(luz_web_libdeflate STATIC ${luz_libdeflate_sources})
 target_include_directories(luz_web_libdeflate PUBLIC ${luz_web_include})
 add_library(PkgConfig::libdeflate ALIAS luz_web_libdeflate)
+
+# The viewer's: Dear ImGui, GLFW, CLI11.
+include(${CMAKE_CURRENT_LIST_DIR}/web_viewer.cmake)

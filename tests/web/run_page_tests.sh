@@ -1,8 +1,10 @@
 #!/bin/sh
 # The page's tests in headless Chromium (./setup.sh web test runs them): build-web/ served from
 # 127.0.0.1 with the isolation headers; the page draws (page_smoke), a bad scene is a sentence on
-# the page in its language (page_api --expect-error), and each scene and model matches
-# `luz render` (page_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
+# the page in its language (page_api --expect-error), each scene and model matches `luz render`
+# (page_matches_render), and so do the pictures after lines run through window.luz.run, which
+# rejects lines it cannot run (page_run_matches_render). Pictures and screenshots are left in
+# SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -19,5 +21,6 @@ status=0
 node "$here/page_smoke.mjs" "$url" "$scratch/page.png" "$scratch/canvas.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/error_es.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status

@@ -59,11 +59,16 @@ struct Layout {
   Viewport dock;
 };
 
-class Viewer final : public ScriptTarget, public ViewerServices {
+class Viewer final : public ScriptTarget, public ViewerServices, public LineQueue {
 public:
   Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings);
   ~Viewer() override;
-  int loop();  // until Esc, the window closes or the script quits; the exit code
+  // One pass of the frame loop (frame_loop.h): the exit code once Esc, the window or the script
+  // ends the run.
+  std::optional<int> pass();
+
+  // LineQueue: lines run one after the other, each from the frame after the one before it is done.
+  void run_later(const std::string& line, LineDone done) override;
 
   // ScriptTarget: a command runs through its verb's handler (script.h).
   bool run(const ScriptCommand& command, std::string& error) override;
@@ -198,6 +203,12 @@ private:
   bool dragged_ = false;
 
   std::optional<ScriptRunner> script_;
+  struct QueuedLine {
+    ScriptRunner runner;
+    LineDone done;
+  };
+  std::deque<QueuedLine> queued_lines_;  // run_later's
+  void step_queued_line();
   Classroom classroom_;            // the lesson, when one is open
   glm::vec2 scripted_click_at_{0.0f};
   int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
@@ -232,6 +243,7 @@ private:
 
   std::string status_shown_;                // the status line's text as it stands
   FrameClock::time_point status_refreshed_;  // when its figures were last brought up to date
+  FrameClock::time_point last_pass_ = FrameClock::now();  // the frame loop's last pass
 };
 
 }  // namespace luz::app
