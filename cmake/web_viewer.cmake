@@ -4,7 +4,8 @@
 #   unpacked by ./setup.sh web into LUZ_WEB_SOURCES; the desktop links Debian's libimgui-dev),
 #   and its GLFW and OpenGL 3 backends from the same tree, the renderer in its GL ES 3 dialect
 #   ("#version 300 es", WebGL 2's). Its fonts' rasteriser is the tree's own stb_truetype.
-# - GLFW: Emscripten's built-in port (-sUSE_GLFW=3), a GLFW 3.2 on the page's canvas.
+# - GLFW: Emscripten's built-in port (-sUSE_GLFW=3 at the link; its header is in Emscripten's
+#   system headers), a GLFW 3.2 on the page's canvas.
 # - CLI11 (luz render's flags, which the cli library parses): Debian's headers.
 file(GLOB luz_imgui_source LIST_DIRECTORIES true ${LUZ_WEB_SOURCES}/imgui-1.*)
 if(NOT luz_imgui_source OR NOT EXISTS ${luz_imgui_source}/imgui.cpp)
@@ -22,7 +23,6 @@ set(LUZ_IMGUI_BACKEND_DIR ${luz_imgui_source}/backends)
 set(ImGui_INCLUDEDIR ${luz_imgui_source})
 
 add_library(luz_web_glfw INTERFACE)
-target_compile_options(luz_web_glfw INTERFACE -sUSE_GLFW=3)
 target_link_options(luz_web_glfw INTERFACE -sUSE_GLFW=3)
 add_library(glfw ALIAS luz_web_glfw)
 

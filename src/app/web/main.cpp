@@ -8,6 +8,7 @@
 // once the first picture of the URL's scene and model is shown; run(line) runs a line of the
 // script language; picture() is the picture as `luz render` writes it.
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,10 @@
 #include <vector>
 
 #include <emscripten.h>
+#include <emscripten/html5.h>
+#include <emscripten/wget.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "app/common/i18n.h"
