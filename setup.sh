@@ -4,8 +4,8 @@
 #   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
 #   ./setup.sh test      runs the whole test suite with ctest
 #   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
-#                        emscripten and chromium, libdeflate's and imgui's source packages,
-#                        puppeteer-core
+#                        emscripten and chromium, libdeflate's, imgui's and embree's source
+#                        packages, puppeteer-core and coi-serviceworker (npm)
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
 #   ./setup.sh web test  builds the page and the desktop's luz, then runs the page's tests in
 #                        headless Chromium against `luz render` (tests/web/run_page_tests.sh)
@@ -46,9 +46,10 @@ fi
 
 # The web page: Emscripten's build of the libraries below src/app and the page's shell.
 if [ "${1:-}" = web ]; then
-  # Debian's source packages the page compiles (libdeflate), unpacked once into build-web/sources.
+  # Debian's source packages the page compiles (libdeflate, embree), unpacked once into
+  # build-web/sources.
   mkdir -p build-web/sources
-  if ! ls -d build-web/sources/libdeflate-*/lib >/dev/null 2>&1; then
+  if ! ls -d build-web/sources/libdeflate-*/lib build-web/sources/embree-3.*/kernels >/dev/null 2>&1; then
     if ! apt-get source --print-uris libdeflate >/dev/null 2>&1; then
       echo "setup: adding deb-src lines to apt's sources (for apt-get source)"
       if [ -f /etc/apt/sources.list.d/debian.sources ]; then
@@ -60,12 +61,21 @@ if [ "${1:-}" = web ]; then
       fi
       "${sudo[@]}" apt-get update -qq
     fi
+  fi
+  if ! ls -d build-web/sources/libdeflate-*/lib >/dev/null 2>&1; then
     (cd build-web/sources && apt-get source -qq --download-only libdeflate 2>/dev/null &&
        tar xzf libdeflate_*.orig.tar.gz)
   fi
-  # Dear ImGui's core sources (the desktop links Debian's libimgui-dev, which has no WebAssembly).
+  if ! ls -d build-web/sources/embree-3.*/kernels >/dev/null 2>&1; then
+    # Only the upstream (orig) tarball is used: apt-get fails when Debian's packaging tarball is
+    # missing from the mirror, so its success is judged by the orig tarball alone.
+    (cd build-web/sources && { apt-get source -qq --download-only embree 2>/dev/null || true; } &&
+       tar xJf embree_*.orig.tar.xz)
+  fi
+  # Dear ImGui's core sources (the desktop links Debian's libimgui-dev, which has no WebAssembly),
+  # judged by the orig tarball as Embree's.
   if ! ls build-web/sources/imgui-*/imgui.cpp >/dev/null 2>&1; then
-    (cd build-web/sources && apt-get source -qq --download-only imgui 2>/dev/null &&
+    (cd build-web/sources && { apt-get source -qq --download-only imgui 2>/dev/null || true; } &&
        tar xJf imgui_*.orig.tar.xz)
   fi
   # The browser tests' driver of Debian's chromium, kept in the build folder.

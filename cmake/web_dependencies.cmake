@@ -7,6 +7,8 @@
 #   is Debian's too (libgl-dev); Emscripten ships the ES headers only.
 # - libdeflate (the PNG writer) is compiled from Debian's source (`apt-get source libdeflate`,
 #   unpacked by ./setup.sh web into LUZ_WEB_SOURCES).
+# - Embree (the ray tracers, the rays form factors) is compiled from Debian's source too
+#   (web_embree.cmake).
 # - OpenEXR is not read in the page (tinyexr needs zlib, which Emscripten only downloads).
 # Where the page's packed files (shaders, scenes, catalogues) are in its file system.
 set(LUZ_WEB_DATA_DIR /luz)
@@ -23,15 +25,21 @@ foreach(entry glm fmt nlohmann tiny_gltf.h stb libdeflate.h GL/glcorearb.h)
   file(CREATE_LINK /usr/include/${entry} ${luz_web_include}/${entry} SYMBOLIC)
 endforeach()
 
-# C++ exceptions are off by default in Emscripten (a throw aborts); Luz reports bad input with
-# them, and tinygltf's JSON reader uses them: every C++ target of the page links this.
-add_library(luz_web_exceptions INTERFACE)
-target_compile_options(luz_web_exceptions INTERFACE -fexceptions)
-target_link_options(luz_web_exceptions INTERFACE -fexceptions)
+# The flags every object of the page is compiled with, and the page linked with (every target of
+# the web build links this):
+# - C++ exceptions are off by default in Emscripten (a throw aborts); Luz reports bad input with
+#   them, and tinygltf's JSON reader uses them.
+# - -pthread: WebAssembly threads share one memory, and the linker refuses to make that memory
+#   shared when one object was compiled without atomics; Embree's build always uses -pthread.
+#   Growing a shared memory slows JavaScript's reads of it a little (the page's only ones are the
+#   picture it hands to WebGL): the linker's warning about that is silenced.
+add_library(luz_web_flags INTERFACE)
+target_compile_options(luz_web_flags INTERFACE -fexceptions -pthread)
+target_link_options(luz_web_flags INTERFACE -fexceptions -pthread -Wno-pthreads-mem-growth)
 
 add_library(luz_web_headers INTERFACE)
 target_include_directories(luz_web_headers SYSTEM INTERFACE ${luz_web_include})
-target_link_libraries(luz_web_headers INTERFACE luz_web_exceptions)
+target_link_libraries(luz_web_headers INTERFACE luz_web_flags)
 
 add_library(glm::glm ALIAS luz_web_headers)
 add_library(nlohmann_json::nlohmann_json ALIAS luz_web_headers)
@@ -50,13 +58,26 @@ target_link_libraries(luz_web_tinygltf PUBLIC luz_web_headers)
 target_compile_definitions(luz_web_tinygltf PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
 add_library(TinyGLTF::TinyGLTF ALIAS luz_web_tinygltf)
 
+# stb_truetype (the labels of src/app/common's plots), whose implementation the desktop takes
+# from Debian's libstb, compiled from its header; its header by bare name, as libstb's .pc gives.
+set(luz_stb_source ${CMAKE_BINARY_DIR}/stb_truetype_implementation.c)
+file(WRITE ${luz_stb_source}.in "#define STB_TRUETYPE_IMPLEMENTATION\n#include <stb_truetype.h>\n")
+configure_file(${luz_stb_source}.in ${luz_stb_source} COPYONLY)
+add_library(luz_web_stb STATIC ${luz_stb_source})
+target_include_directories(luz_web_stb SYSTEM PUBLIC ${luz_web_include}/stb)
+target_link_libraries(luz_web_stb PRIVATE luz_web_flags)
+add_library(PkgConfig::Stb ALIAS luz_web_stb)
+
 file(GLOB luz_libdeflate_sources ${LUZ_WEB_SOURCES}/libdeflate-*/lib/*.c)
 if(NOT luz_libdeflate_sources)
   message(FATAL_ERROR "no libdeflate sources in ${LUZ_WEB_SOURCES}: ./setup.sh web unpacks them")
 endif()
 add_library(luz_web_libdeflate STATIC ${luz_libdeflate_sources})
 target_include_directories(luz_web_libdeflate PUBLIC ${luz_web_include})
+target_link_libraries(luz_web_libdeflate PRIVATE luz_web_flags)
 add_library(PkgConfig::libdeflate ALIAS luz_web_libdeflate)
+
+include(${CMAKE_CURRENT_LIST_DIR}/web_embree.cmake)
 
 # The viewer's: Dear ImGui, GLFW, CLI11.
 include(${CMAKE_CURRENT_LIST_DIR}/web_viewer.cmake)

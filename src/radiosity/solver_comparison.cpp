@@ -32,7 +32,7 @@ const char* to_string(Method method) {
 
 SolverComparison::SolverComparison(const Scene& scene, PatchMesh& mesh,
                                    const RadiosityOptions& options, size_t max_rows)
-    : mesh_(mesh), max_rows_(max_rows) {
+    : max_rows_(max_rows) {
   // The shooting of slide 39, its hemicube unrotated so that its rows are the matrix's rows:
   // what differs is only how it uses them (column i by reciprocity). It runs until told to stop.
   // Ray-cast factors are random per shot, so rays mean the analytic method here.

@@ -79,7 +79,6 @@ private:
   void record(Method method);
   size_t rows(Method method) const;
 
-  const PatchMesh& mesh_;
   RadiositySystem system_;
   std::vector<Exitance> converged_;
   double converged_norm_ = 1.0, emitted_norm_ = 1.0;

@@ -5,6 +5,7 @@
 #include "raytracing/embree_scene.h"
 
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -12,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/i18n.h"
+#include "core/parallel_for.h"
 
 namespace luz::rt {
 
@@ -66,10 +68,22 @@ Hit from_embree(const RTCRayHit& rh) {
   return hit;
 }
 
+// With oneTBB, Embree shares the parallel loops' scheduler and needs no word. Built with its own
+// scheduler (the web page's Embree), it would start a thread per core wherever it is first used:
+// it is given the parallel loops' count instead, which on the browser's main thread is one (that
+// thread must never wait for a thread to start).
+std::string device_config() {
+#if LUZ_PARALLEL_TBB
+  return {};
+#else
+  return fmt::format("threads={}", parallel::thread_count());
+#endif
+}
+
 }  // namespace
 
 EmbreeIntersector::EmbreeIntersector(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(nullptr);
+  impl_->device = rtcNewDevice(device_config().c_str());
   if (!impl_->device) throw Error(ErrorKind::bad_value, i18n::tr("Embree: cannot create a device"));
   impl_->scene = rtcNewScene(impl_->device);
   if (!impl_->scene) fail(impl_->device, "rtcNewScene");
