@@ -69,8 +69,8 @@ private:
   // GLX's, through glfwGetProcAddress; null where the window swaps.
   using CopySubBuffer = void (*)(void* display, unsigned long drawable, int x, int y, int width, int height);
   CopySubBuffer copy_sub_buffer_ = nullptr;
-  void* display_ = nullptr;      // the X display (Display*)
-  unsigned long drawable_ = 0;  // the window's GLX drawable
+  [[maybe_unused]] void* display_ = nullptr;      // the X display (Display*); none in the page
+  [[maybe_unused]] unsigned long drawable_ = 0;  // the window's GLX drawable
 };
 
 }  // namespace luz::gl

@@ -24,10 +24,17 @@ GlProc resolve(const char* name) { return reinterpret_cast<GlProc>(emscripten_we
 
 WindowContext::FramePass page_pass;  // the viewer's, for as long as the page shows it
 
+// The page's line under the canvas.
+EM_JS(void, show_page_status, (const char* text), {
+  const status = document.getElementById('status');
+  if (status) status.textContent = UTF8ToString(text);
+});
+
 void browser_frame() {
-  if (page_pass && page_pass()) {  // the viewer quit: the page keeps its last picture
+  if (page_pass && page_pass()) {  // the viewer quit (Esc): the page keeps its last picture
     emscripten_cancel_main_loop();
     page_pass = nullptr;
+    show_page_status(i18n::tr("Luz has ended: reload the page to start it again."));
   }
 }
 

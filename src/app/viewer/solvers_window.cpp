@@ -275,7 +275,7 @@ void SolversWindow::draw(float x, float y, float width, float height, bool pinne
     log_plot(*race_, false, size, min1, max1);
     s.plot_min = glm::min(min0, min1);
     s.plot_max = glm::max(max0, max1);
-    ImGui::TextDisabled(tr("x: form-factor rows used (log), y: log"));
+    ImGui::TextDisabled("%s", tr("x: form-factor rows used (log), y: log"));
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(tr("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
                               "(N rows each, and none before the whole matrix is known)."));

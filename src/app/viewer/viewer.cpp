@@ -915,11 +915,11 @@ void Viewer::take_screenshots(const Layout& l) {
 // pixel (a whole 1280x720 window's about 2 ms), so what is painted anyway is not cleared first.
 // Nothing reads the window's depth but the local models, which clear their pane's.
 void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
-                             glm::vec4 background) {
+                             glm::vec4 colour) {
   long tiled = 0;
   for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
   const bool view_tiled = !l.view.empty() && tiled == long(l.view.pixels.x) * l.view.pixels.y;
-  glClearColor(background.r, background.g, background.b, background.a);
+  glClearColor(colour.r, colour.g, colour.b, colour.a);
   glEnable(GL_SCISSOR_TEST);
   const auto clear = [](const FramebufferRect& r) {
     if (r.empty()) return;
@@ -958,6 +958,7 @@ void Viewer::frame() {
     state_.reload = false;
     load(state_.scene_path);
   }
+  if (!state_.load_request.empty()) load(std::exchange(state_.load_request, {}));
   if (state_.back_to_scene_camera) {
     state_.back_to_scene_camera = false;
     to_scene_camera();

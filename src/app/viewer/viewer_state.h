@@ -81,6 +81,7 @@ struct ViewerState {
   // Requests from the panel, done by the loop between frames.
   bool emitters_changed = false;   // an Le was edited: the area lights must be found again
   bool reload = false;
+  std::filesystem::path load_request;  // a shipped scene chosen in the Scene section
   bool back_to_scene_camera = false;
   float ui_scale_request = 0.0f;   // the Scene section's UI scale slider (0: none)
 

@@ -155,7 +155,7 @@ private:
   // `view_alone_shown`: nothing of the window but the view is shown this frame (its panel is kept).
   void draw_picture(const Layout& l, bool view_alone_shown);
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
-                       glm::vec4 background);
+                       glm::vec4 colour);
   void draw_windows(const Layout& l);
   void measure_dock(const Viewport& column, float margin);
   Layout with_dock_beside(Layout l, float width) const;
