@@ -190,7 +190,7 @@ void mesh_settings(RadiosityState& r, RadiosityOptions& o) {
   name_widget("remesh and restart");
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
-  dim_text(pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
+  dim_text("%s", pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
   int method = int(o.form_factors);  // FormFactorMethod's order
   ImGui::RadioButton(tr("hemicube form factors"), &method, 0);
   name_widget("hemicube form factors");

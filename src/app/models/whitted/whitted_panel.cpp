@@ -218,8 +218,8 @@ void ray_tree(ViewerState& state, TracedView& view) {
     ImGui::EndTable();
   }
   ImGui::PopStyleVar();
-  dim_text(view.hybrid() ? tr("local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit")
-                         : tr("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit"));
+  dim_text("%s", view.hybrid() ? tr("local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit")
+                               : tr("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit"));
   dim_text("%s", tr("share: its contribution to L (hover for numbers)"));
   ImGui::TreePop();
 }
