@@ -2,7 +2,8 @@
 # Luz on a fresh Debian (bookworm or later): installs the Debian packages that are missing,
 # builds (Release) into build/, then
 #   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
-#   ./setup.sh test      runs the whole test suite with ctest
+#   ./setup.sh test      runs the whole test suite with ctest, then builds the web page and runs
+#                        its tests (as ./setup.sh web test)
 #   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
 #                        emscripten and chromium, libdeflate's, imgui's and embree's source
 #                        packages, puppeteer-core and coi-serviceworker (npm)
@@ -27,7 +28,7 @@ packages=(
   libcairo2-dev poppler-utils
 )
 
-if [ "${1:-}" = web ]; then
+if [ "${1:-}" = web ] || [ "${1:-}" = test ]; then
   packages+=(emscripten chromium)
   command -v npm >/dev/null || packages+=(npm)
 fi
@@ -44,12 +45,13 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# The web page: Emscripten's build of the libraries below src/app and the page's shell.
-if [ "${1:-}" = web ]; then
-  # Debian's source packages the page compiles (libdeflate, embree), unpacked once into
+# The web page: Emscripten's build of the sources into build-web/ (docs/web.md).
+build_web() {
+  # Debian's source packages the page compiles (libdeflate, embree, imgui), unpacked once into
   # build-web/sources.
   mkdir -p build-web/sources
-  if ! ls -d build-web/sources/libdeflate-*/lib build-web/sources/embree-3.*/kernels >/dev/null 2>&1; then
+  if ! ls -d build-web/sources/libdeflate-*/lib build-web/sources/embree-3.*/kernels \
+         build-web/sources/imgui-*/imgui.cpp >/dev/null 2>&1; then
     if ! apt-get source --print-uris libdeflate >/dev/null 2>&1; then
       echo "setup: adding deb-src lines to apt's sources (for apt-get source)"
       if [ -f /etc/apt/sources.list.d/debian.sources ]; then
@@ -85,19 +87,33 @@ if [ "${1:-}" = web ]; then
   export NODE_PATH=/usr/share/nodejs
   emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=OFF
   cmake --build build-web --parallel "$(nproc)"
+}
+
+# The page's tests hold its pictures to the desktop's `luz render` (build/luz).
+test_web() {
+  sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
+}
+
+if [ "${1:-}" = web ]; then
+  build_web
   echo "setup: the page is build-web/luz.html; ./setup.sh web serve, then open http://127.0.0.1:8000/luz.html"
   [ "${2:-}" = test ] || exit 0
-  # The page's tests hold its pictures to the desktop's `luz render`.
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
   cmake --build build --parallel "$(nproc)" --target luz
-  exec sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
+  test_web
+  exit
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel "$(nproc)"
 
 if [ "${1:-}" = test ]; then
-  ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600
+  # Both suites run even when the first fails, so one run reports everything.
+  status=0
+  ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600 || status=1
+  build_web
+  test_web || status=1
+  exit $status
 elif [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
   # The viewer needs a window; on a headless machine show that the build works with a picture.
   scene=${1:-scenes/cornell_box.gltf}

@@ -373,10 +373,12 @@ vec3 displayed(vec3 I) { return srgb_encode(I * u_display_scale); }
 layout(location = 0) out vec4 frag_radiance;
 layout(location = 1) out vec4 frag_display;
 #elif defined(LUZ_GLSL_ES)
-// GLSL ES (the page) has no dual-source blending: the radiance alone; the share of the pixel
-// behind is computed and dropped, so a transparent mesh hides what lies behind it there.
+// GLSL ES (the page) has no dual-source blending: a transparent mesh is drawn twice with one
+// output, first its share of the pixel behind (blended dst x src: what comes through), then its
+// radiance (blended dst + src), which sums to dual-source's I + kt x pixel behind.
 layout(location = 0) out vec4 frag_radiance;
 vec4 frag_transmittance;
+uniform bool u_transmittance_pass;  // the first of the two draws writes frag_transmittance
 #else
 // Two outputs for dual-source blending (GL 3.3 core): the radiance, and what share of the pixel
 // behind it comes through (kt, for a transparent mesh drawn with glBlendFunc(ONE, SRC1_COLOR)).
@@ -400,6 +402,9 @@ void write_fragment(Terms terms, vec2 uv, bool emitting_side, vec3 R, vec3 P) {
   frag_display = vec4(displayed(frag_radiance.rgb), 1.0);
 #else
   frag_transmittance = vec4(transmitted, through);
+#endif
+#if defined(LUZ_GLSL_ES) && !LUZ_DISPLAY_OUTPUT
+  if (transparent && u_transmittance_pass) frag_radiance = frag_transmittance;
 #endif
 }
 #endif

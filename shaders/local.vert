@@ -1,6 +1,6 @@
 #version 330 core
-// Phong and flat shading: pass the world-space vertex on; the lighting happens later
-// (per fragment in phong.frag, per triangle in flat.geom). Meshes are already in world space.
+// Phong shading: pass the world-space vertex on; the lighting happens per fragment in
+// phong.frag. Meshes are already in world space.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;

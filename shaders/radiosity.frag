@@ -3,6 +3,7 @@
 // patch edges are drawn in one colour (the second, wireframe pass).
 in vec3 v_radiance;
 in vec2 v_uv;
+flat in int v_element;  // radiosity.vert's gl_VertexID / 3: the element's index in the mesh
 
 uniform bool u_outline;
 uniform vec3 u_outline_colour;
@@ -12,9 +13,7 @@ uniform bool u_textured;
 uniform sampler2D u_kd_texture;
 uniform vec3 u_inverse_mean;
 // A shooting patch to show in u_highlight_colour (the shooter): its elements are primitives
-// u_highlight_first .. + u_highlight_count of the elements (count 0 for none); this draw's first
-// is element u_first_primitive.
-uniform int u_first_primitive;
+// u_highlight_first .. + u_highlight_count of the elements (count 0 for none).
 uniform int u_highlight_first;
 uniform int u_highlight_count;
 uniform vec3 u_highlight_colour;
@@ -26,8 +25,7 @@ void main() {
     frag_radiance = vec4(u_outline_colour, 1.0);
     return;
   }
-  int element = u_first_primitive + gl_PrimitiveID;
-  if (element >= u_highlight_first && element < u_highlight_first + u_highlight_count) {
+  if (v_element >= u_highlight_first && v_element < u_highlight_first + u_highlight_count) {
     frag_radiance = vec4(u_highlight_colour, 1.0);
     return;
   }

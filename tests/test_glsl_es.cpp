@@ -43,7 +43,8 @@ TEST(GlslDialect, TheHeaderIsTheFilesVersionOnTheDesktopAndEsWithPrecisionsForTh
 }
 
 // The fixed programs the page's local models and window use, compiled and linked as GLSL ES
-// (the inspector's pick.frag is not among them: it reads gl_PrimitiveID, which ES lacks).
+// (the inspector's pick.frag is not among them: it reads gl_PrimitiveID, which ES lacks). Flat
+// shading's program is drawn below.
 TEST(GlslDialect, TheLocalModelsFixedProgramsCompileAsGlslEs) {
   const DialectScope es(gl::GlslDialect::es_300);
   const std::vector<std::vector<std::string>> programs = {
@@ -56,11 +57,10 @@ TEST(GlslDialect, TheLocalModelsFixedProgramsCompileAsGlslEs) {
   }
 }
 
-// What GLSL ES lacks fails with the driver's message, not silently: the geometry stage, and
-// gl_PrimitiveID.
+// What GLSL ES lacks fails with the driver's message, not silently: gl_PrimitiveID (the
+// inspector's picking reads it; the page has no inspector).
 TEST(GlslDialect, WhatGlslEsLacksIsRefused) {
   const DialectScope es(gl::GlslDialect::es_300);
-  EXPECT_THROW(gl::Program({"local.vert", "flat.geom", "flat.frag"}, {"srgb.glsl", "lighting.glsl"}), Error);
   EXPECT_THROW(gl::Program({"pick.vert", "pick.frag"}), Error);
 }
 
@@ -69,14 +69,20 @@ struct Case {
   Shading shading;
   bool shadows;
   bool fog;
+  bool transparency = false;
 };
 
-// Gouraud and Phong on the shipped scenes, with and without shadows and fog: the same floats.
+// The three shading models on the shipped scenes, with and without shadows, fog and
+// transparency (dual-source blending on the desktop, two draws in GLSL ES): the same floats.
 TEST(GlslDialect, LocalModelsDrawTheSamePictureInBothDialects) {
   const std::vector<Case> cases = {
       {"cornell_box.gltf", Shading::phong, false, false},  {"cornell_box.gltf", Shading::gouraud, false, false},
       {"cornell_box.gltf", Shading::phong, true, false},   {"phong_spheres.gltf", Shading::phong, false, true},
-      {"local_effects.gltf", Shading::phong, true, false}, {"local_effects.gltf", Shading::gouraud, false, true}};
+      {"local_effects.gltf", Shading::phong, true, false}, {"local_effects.gltf", Shading::gouraud, false, true},
+      {"cornell_box.gltf", Shading::flat, false, false},   {"local_effects.gltf", Shading::flat, true, true},
+      {"whitted.gltf", Shading::phong, true, false, true}, {"local_effects.gltf", Shading::phong, true, true, true},
+      {"cornell_spheres.gltf", Shading::flat, true, false, true},
+      {"local_effects.gltf", Shading::gouraud, false, false, true}};
   for (const Case& c : cases) {
     const io::LoadedScene loaded = io::load_gltf(test::scene_dir() / c.scene);
     LocalOptions options;
@@ -84,6 +90,7 @@ TEST(GlslDialect, LocalModelsDrawTheSamePictureInBothDialects) {
     options.shadows.on = c.shadows;
     options.shadows.map_size = 256;
     options.fog.mode = c.fog ? FogMode::linear : FogMode::off;
+    options.transparency.on = c.transparency;
     const Camera& camera = loaded.scene.cameras.front();
     constexpr int width = 160, height = 120;
     const auto draw = [&](gl::GlslDialect dialect) {
@@ -100,7 +107,7 @@ TEST(GlslDialect, LocalModelsDrawTheSamePictureInBothDialects) {
       lit += desktop.pixels[i].r + desktop.pixels[i].g + desktop.pixels[i].b > 0.0f;
     }
     EXPECT_EQ(different, 0u) << c.scene << " " << to_string(c.shading) << (c.shadows ? " shadows" : "")
-                             << (c.fog ? " fog" : "");
+                             << (c.fog ? " fog" : "") << (c.transparency ? " transparency" : "");
     EXPECT_GT(lit, desktop.pixels.size() / 4) << c.scene << ": the picture shows the scene";
   }
 }

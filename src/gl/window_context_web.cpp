@@ -54,6 +54,8 @@ WindowContext::WindowContext(int width, int height, const std::string& title) {
     throw Error(ErrorKind::gl,
                 i18n::tr("This browser's WebGL 2 cannot draw into float buffers (EXT_color_buffer_float)."));
   }
+  // Transparency blends into them (lighting.glsl's two draws), which WebGL 2 allows with this one.
+  emscripten_webgl_enable_extension(emscripten_webgl_get_current_context(), "EXT_float_blend");
   load_gl_functions(resolve);
 }
 

@@ -7,9 +7,9 @@
 //   2. a reflection cube map from the centre of each object with kr > 0, the object left out;
 //   3. the picture: opaque meshes first with depth writes, then the transparent ones (kt > 0)
 //      back to front by the distance of their centre from the eye, blended without depth writes
-//      (dual-source blending: pixel = I + kt * pixel behind); within a mesh its back faces first,
-//      then its front faces, so a sphere's far side shows through its near side. The fog is in
-//      the shaders (lighting.glsl write_fragment).
+//      (pixel = I + kt * pixel behind: dual-source blending, or two draws where GLSL ES has
+//      none); within a mesh its back faces first, then its front faces, so a sphere's far side
+//      shows through its near side. The fog is in the shaders (lighting.glsl write_fragment).
 //
 // Sections: [light limits] [textures] [the renderer] [uniforms] [the scene pass]
 //           [reflection maps] [draw and render] [for the CPU twin]
@@ -29,7 +29,9 @@
 #include "core/i18n.h"
 #include "gl/framebuffer.h"
 #include "io/image_io.h"
+#include "gl/face_buffers.h"
 #include "gl/functions.h"
+#include "gl/glsl_dialect.h"
 #include "gl/mesh_buffers.h"
 #include "gl/scene_texture.h"
 #include "gl/shader.h"
@@ -196,6 +198,7 @@ struct ReflectionInputs {
 struct LocalRenderer::Impl {
   const Scene& scene;
   std::vector<gl::MeshBuffers> meshes;  // one per Scene::meshes entry
+  std::vector<gl::FaceBuffers> faces;   // the same, for flat shading: made when first drawn flat
   std::vector<Bounds> bounds;           // each mesh's bounding box (sorting, cube maps)
   std::vector<glm::vec3> centres;       // their centres
   std::vector<GLuint> textures;         // one per Scene::textures entry
@@ -379,7 +382,7 @@ Variant& LocalRenderer::Impl::program_for(const Switches& switches) {
   if (found != programs.end()) return found->second;
   std::vector<std::string> stages;
   switch (switches.shading) {
-    case Shading::flat: stages = {"local.vert", "flat.geom", "flat.frag"}; break;
+    case Shading::flat: stages = {"flat.vert", "flat.frag"}; break;
     case Shading::gouraud: stages = {"gouraud.vert", "gouraud.frag"}; break;
     case Shading::phong: stages = {"local.vert", "phong.frag"}; break;
   }
@@ -453,6 +456,8 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   }
   if (shadows && !shadow_maps->area_views().empty()) common.area_shadow_kind = ShadowKind::cube;
   ++pass_number;
+  if (options.shading == Shading::flat && faces.empty())
+    for (const Mesh& mesh : scene.meshes) faces.emplace_back(mesh);
 
   // The textures every mesh of the pass shares: S_i's maps and the surroundings of kr Ir.
   glActiveTexture(GL_TEXTURE0 + shadow_unit);
@@ -460,7 +465,8 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
   glActiveTexture(GL_TEXTURE0 + environment_unit);
   glBindTexture(GL_TEXTURE_2D, environment_texture);
 
-  auto draw_mesh = [&](size_t m, bool transparent) {
+  const bool dual_source = gl::current_glsl_dialect() == gl::GlslDialect::desktop_330;
+  auto draw_mesh = [&](size_t m, bool transparent, bool transmittance_pass = false) {
     const Material& material = material_of(m);
     Switches switches = common;
     switches.kd_texture = is_textured(m, options);
@@ -477,9 +483,27 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
       variant.pass = pass_number;
     }
     set_material(p, material, switches.kd_texture, switches.emission_texture);
+    if (transparent && !dual_source) p.set("u_transmittance_pass", transmittance_pass);
     glActiveTexture(GL_TEXTURE0 + reflection_unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, switches.reflection ? cubes[m].texture : 0);
-    meshes[m].draw();
+    if (switches.shading == Shading::flat) faces[m].draw();
+    else meshes[m].draw();
+  };
+
+  // pixel = I + kt * pixel behind. The desktop blends both in one draw with dual-source blending
+  // (SRC1 = lighting.glsl's frag_transmittance); GLSL ES has none, so the page draws twice:
+  // pixel behind x kt, then + I. The same sum wherever one side of a mesh does not cover itself
+  // (the two draws would filter a farther triangle of that side by a nearer one's kt too).
+  auto draw_transparent = [&](size_t m) {
+    if (dual_source) {
+      glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+      draw_mesh(m, true);
+      return;
+    }
+    glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+    draw_mesh(m, true, true);
+    glBlendFunc(GL_ONE, GL_ONE);
+    draw_mesh(m, true, false);
   };
 
   // Opaque first, with depth writes; the transparent ones wait. The opaque ones go nearest far
@@ -509,14 +533,13 @@ void LocalRenderer::Impl::draw_scene(const ScenePass& pass, const LocalOptions& 
       return glm::length(centres[a] - pass.eye) > glm::length(centres[b] - pass.eye);
     });
     glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // SRC1 = lighting.glsl's frag_transmittance
     glDepthMask(GL_FALSE);               // what is behind stays visible to the next ones
     glEnable(GL_CULL_FACE);
     for (size_t m : transparent) {
       glCullFace(GL_FRONT);  // its far side first...
-      draw_mesh(m, true);
+      draw_transparent(m);
       glCullFace(GL_BACK);   // ...then its near side over it
-      draw_mesh(m, true);
+      draw_transparent(m);
     }
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);

@@ -8,34 +8,48 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "gl/glsl_dialect.h"
 
 namespace luz {
 
-PatchItems::PatchItems(const PatchMesh& mesh) {
+PatchItems::PatchItems(const PatchMesh& mesh)
+    : unindexed_(gl::current_glsl_dialect() == gl::GlslDialect::es_300) {
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
   glGenBuffers(1, &ebo_);
   upload(mesh);
+  if (!unindexed_) compile_atlas_program();
+}
+
+void PatchItems::compile_atlas_program() const {
+  if (!atlas_program_) atlas_program_.emplace(std::vector<std::string>{"item_buffer_atlas.vert", "item_buffer.frag"});
 }
 
 // Indexed, over the mesh's shared vertices: software rasterisers shade each vertex once for the
-// half a dozen elements around it instead of three times per element.
+// half a dozen elements around it instead of three times per element. GLSL ES names a patch by
+// its vertices' gl_VertexID / 3 instead of gl_PrimitiveID, so there each element has its own three.
 void PatchItems::upload(const PatchMesh& mesh) {
   std::vector<uint32_t> indices;
   indices.reserve(mesh.size() * 3);
   for (const Patch& p : mesh.patches)
     for (const uint32_t v : p.vertices) indices.push_back(v);
-  index_count_ = GLsizei(indices.size());
+  std::vector<glm::vec3> corners;
+  if (unindexed_) {
+    corners.reserve(indices.size());
+    for (const uint32_t v : indices) corners.push_back(mesh.vertices[v]);
+  }
+  const std::vector<glm::vec3>& vertices = unindexed_ ? corners : mesh.vertices;
+  count_ = GLsizei(indices.size());
 
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec3)), mesh.vertices.data(),
-               GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(glm::vec3)), vertices.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);  // recorded in the vertex array
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(),
-               GL_STATIC_DRAW);
+  if (!unindexed_)
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(),
+                 GL_STATIC_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -53,21 +67,28 @@ void PatchItems::begin() const {
   glDisable(GL_CULL_FACE);  // back faces must occlude; the shader gives them ID 0
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
   program_.use();
   glBindVertexArray(vao_);
 }
 
 void PatchItems::draw(const glm::mat4& view_projection) const {
   program_.set("u_view_projection", view_projection);
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  draw_triangles(1);
+}
+
+void PatchItems::draw_triangles(GLsizei instances) const {
+  if (unindexed_) glDrawArraysInstanced(GL_TRIANGLES, 0, count_, instances);
+  else if (instances == 1) glDrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
+  else glDrawElementsInstanced(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr, instances);
 }
 
 // A face's clip coordinates c land in its rectangle of the atlas: x_atlas = sx x + ox w, so that
 // after the divide x_atlas / w = sx (x / w) + ox maps the face's [-1, 1] onto its pixels.
 void PatchItems::draw_atlas(std::span<const AtlasFace> faces, int atlas_width, int atlas_height) const {
   assert(faces.size() <= size_t(kMaxAtlasFaces));
-  atlas_program_.use();
+  compile_atlas_program();
+  atlas_program_->use();
   for (size_t f = 0; f < faces.size(); ++f) {
     const AtlasFace& face = faces[f];
     const float sx = float(face.width) / float(atlas_width);
@@ -83,12 +104,12 @@ void PatchItems::draw_atlas(std::span<const AtlasFace> faces, int atlas_width, i
     std::string index = "[";
     index += std::to_string(f);
     index += ']';
-    atlas_program_.set("u_face_view_projection" + index, face.view_projection);
-    atlas_program_.set("u_face_to_atlas" + index, to_atlas);
+    atlas_program_->set("u_face_view_projection" + index, face.view_projection);
+    atlas_program_->set("u_face_to_atlas" + index, to_atlas);
   }
   for (int plane = 0; plane < 4; ++plane) glEnable(GLenum(GL_CLIP_DISTANCE0 + plane));
   glViewport(0, 0, atlas_width, atlas_height);
-  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(faces.size()));
+  draw_triangles(GLsizei(faces.size()));
   for (int plane = 0; plane < 4; ++plane) glDisable(GLenum(GL_CLIP_DISTANCE0 + plane));
   program_.use();
 }

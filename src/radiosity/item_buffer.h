@@ -1,7 +1,8 @@
 #pragma once
-// The patches on the GPU for item buffers: one indexed triangle list (patch i = triangle i)
+// The patches on the GPU for item buffers: one triangle list (patch i = triangle i)
 // and the program that writes patch ID + 1 per pixel (shaders/item_buffer.*). The hemicube and
 // the point sources draw the scene through it from their own viewpoints.
+#include <optional>
 #include <span>
 
 #include <glm/mat4x4.hpp>
@@ -40,9 +41,16 @@ public:
 
 private:
   mutable gl::Program program_{{"item_buffer.vert", "item_buffer.frag"}};
-  mutable gl::Program atlas_program_{{"item_buffer_atlas.vert", "item_buffer.frag"}};
+  // Compiled with the other on the desktop; in GLSL ES 3.00, which has no clip distances, only
+  // when draw_atlas() is called (and refused then): five passes of draw() need only program_.
+  void compile_atlas_program() const;
+  void draw_triangles(GLsizei instances) const;
+  mutable std::optional<gl::Program> atlas_program_;
+  // Indexed on the desktop; unindexed where the shaders name patches by gl_VertexID / 3 (GLSL
+  // ES, which lacks gl_PrimitiveID): see shaders/item_buffer.vert.
+  bool unindexed_ = false;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
-  GLsizei index_count_ = 0;
+  GLsizei count_ = 0;  // indices, or vertices when unindexed
 };
 
 // A unit vector perpendicular to n, so that (t, cross(n, t), n) is a right-handed frame.

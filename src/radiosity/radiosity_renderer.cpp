@@ -205,7 +205,6 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
       glBindTexture(GL_TEXTURE_2D, s.textures[size_t(run.texture - s.scene.textures.data())]);
       s.program.set("u_inverse_mean", s.mesh.detail.inverse_mean(run.mesh));
     }
-    s.program.set("u_first_primitive", int(run.first / 3));  // gl_PrimitiveID counts from the draw's first
     glDrawArrays(GL_TRIANGLES, run.first, run.count);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
@@ -214,7 +213,6 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     s.program.set("u_outline", true);
     s.program.set("u_outline_colour", glm::vec3(0.02f));
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    s.program.set("u_first_primitive", 0);
     glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }

@@ -10,7 +10,8 @@ export async function openPage(onError) {
   const browser = await puppeteer.launch({
     executablePath: '/usr/bin/chromium',
     headless: true,
-    args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+    // /dev/shm is small in containers (CI): Chromium keeps its shared memory in /tmp instead.
+    args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
   });
   const page = await browser.newPage();
   page.on('console', (message) => console.log(`page: ${message.text()}`));

@@ -70,15 +70,15 @@ InspectorReading read_terms(const Scene& scene, std::span<const AreaLight> area_
       reading.where = N_("Gouraud: the formula at the 3 vertices, interpolated (angles too)");
       break;
     }
-    case Shading::flat: {  // flat.geom: once at the centroid, face normal toward the eye
+    case Shading::flat: {  // flat.vert: once at the centroid, face normal toward the eye
       const glm::vec3 middle = (mesh.positions[index[0]] + mesh.positions[index[1]] +
                                 mesh.positions[index[2]]) / 3.0f;
       glm::vec3 N = pick.face;
       if (glm::dot(N, eye - middle) < 0.0f) N = -N;
       reading.terms = evaluate(middle, N);
       reading.normal = N;
-      reading.mirror = mirror(middle, N);  // flat.geom: once per triangle (the texture per pixel)
-      barycentric = glm::vec2(1.0f / 3.0f);  // flat.geom: COLOR_0 at the centroid
+      reading.mirror = mirror(middle, N);  // flat.vert: once per triangle (the texture per pixel)
+      barycentric = glm::vec2(1.0f / 3.0f);  // flat.vert: COLOR_0 at the centroid
       reading.where = N_("flat: the formula once, at the triangle's centroid with its face normal");
       break;
     }

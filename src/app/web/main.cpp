@@ -3,10 +3,11 @@
 // gl/window_context_web.cpp): the URL's parameters in place of the command line, the scene
 // fetched when the URL names one, and window.luz, the page's door for scripts and tests.
 //
-// The URL's parameters (docs/web.md): scene=NAME|URL, model=NAME, lang=es|en, size=WxH (the
-// picture's size), panel=0 (the picture alone). window.luz (the shell, luz.html): ready settles
+// The URL's parameters (docs/web.md): scene=NAME|URL, model=NAME, effects=shadows,..., lang=es|en,
+// size=WxH (the picture's size), panel=0 (the picture alone). window.luz (the shell, luz.html): ready settles
 // once the first picture of the URL's scene and model is shown; run(line) runs a line of the
 // script language; picture() is the picture as `luz render` writes it.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <emscripten.h>
@@ -99,6 +101,7 @@ struct Request {
   std::string scene;  // a shipped scene's file, or a URL to fetch
   bool fetched = false;
   std::string model = "phong";
+  std::vector<std::string> settings;  // `set` lines: slide 19's switches the URL turns on
   int width = 640, height = 480;  // the picture's
   bool panel = true;
 };
@@ -119,11 +122,27 @@ bool names_a_file(const std::string& scene) {
 }
 
 void check_model(const std::string& name) {
-  if (name == "flat")
-    throw Error(ErrorKind::bad_value, tr("Flat shading needs a geometry shader, which WebGL 2 lacks: "
-                                         "model=gouraud or model=phong."));
   if (!app::find_model(name))
     throw Error(ErrorKind::bad_value, trf("No model is called \"{}\" ({}).", name, app::model_names()));
+}
+
+// effects=shadows,transparency,...: slide 19's switches, as `luz render`'s flags of those names,
+// each the viewer's `set` line.
+std::vector<std::string> effect_settings(const std::string& text) {
+  std::vector<std::string> settings;
+  std::string_view rest = text;
+  while (!rest.empty()) {
+    const std::string_view name = rest.substr(0, rest.find(','));
+    rest.remove_prefix(std::min(rest.size(), name.size() + 1));
+    if (name == "shadows") settings.push_back("set shadows on");
+    else if (name == "transparency") settings.push_back("set transparency on");
+    else if (name == "reflection") settings.push_back("set reflection-map on");
+    else if (name == "fog") settings.push_back("set fog linear");
+    else
+      throw Error(ErrorKind::bad_value, trf("No effect is called \"{}\" (shadows, transparency, "
+                                            "reflection, fog).", std::string(name)));
+  }
+  return settings;
 }
 
 // "WxH", each side 1 to 4096 pixels.
@@ -143,12 +162,13 @@ void read_size(const std::string& text, int& width, int& height) {
 Request read_request() {
   Request request;
   const std::string scene = url_parameter("scene"), model = url_parameter("model"), size = url_parameter("size"),
-                    panel = url_parameter("panel");
+                    panel = url_parameter("panel"), effects = url_parameter("effects");
   if (scene.empty()) request.scene = default_scene().string();
   else if (names_a_file(scene)) request.scene = scene, request.fetched = true;
   else request.scene = shipped_scene(scene).string();
   if (!model.empty()) check_model(model);
   if (!model.empty()) request.model = model;
+  request.settings = effect_settings(effects);
   if (!size.empty()) read_size(size, request.width, request.height);
   if (panel == "0") request.panel = false;
   else if (!panel.empty() && panel != "1")
@@ -220,14 +240,18 @@ void fit_picture(int tries_left) {
   });
 }
 
-// Once the viewer has drawn its first frame: the panel hidden when the URL says so, the picture
-// brought to its size, then ready.
+// Once the viewer runs: the URL's switches on and the panel hidden when it says so, then, on the
+// frame drawn after them, the picture brought to its size, then ready.
 void viewer_started(app::LineQueue& queue) {
   viewer = &queue;
-  viewer->run_later(request.panel ? "wait 1" : "set panel off", [](const std::string& error) {
-    if (!error.empty()) return fail(error);
-    fit_picture(3);
-  });
+  std::vector<std::string> lines = request.settings;
+  if (!request.panel) lines.push_back("set panel off");
+  lines.push_back("wait 1");
+  for (size_t i = 0; i < lines.size(); ++i)
+    viewer->run_later(lines[i], [last = i + 1 == lines.size()](const std::string& error) {
+      if (!error.empty()) return fail(error);
+      if (last) fit_picture(3);
+    });
 }
 
 void start() {
