@@ -144,7 +144,7 @@ void SolversWindow::advance() {
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 
   s.rows = fewest_rows(*race_);
   s.done = all_done(*race_);

@@ -79,7 +79,7 @@ std::string url_parameter(const char* name) {
 // window.luz.ready: resolved once the first picture is on the canvas, rejected with the error
 // the page shows when there will be none (the shell defines both callbacks).
 EM_JS(void, report_ready, (), {
-  document.getElementById('status').textContent = '';
+  document.getElementById('status').textContent = "";
   if (window.luzReady) window.luzReady.resolve();
 });
 EM_JS(void, report_failure, (const char* text), {
