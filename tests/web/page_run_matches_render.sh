@@ -4,7 +4,8 @@
 # 1% of page_matches_render.sh, and for the same reasons); the picture before the switch matches
 # the render without the flag and is more than 1% away from the one with it, so a run() that
 # did nothing fails. run() of a line the script language does not know, and of a line that
-# cannot be done, rejects with the message. panel=0 shows the picture alone.
+# cannot be done, rejects with the message. panel=0 shows the picture alone. A scene by its URL
+# draws as the file does.
 #   tests/web/page_run_matches_render.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
 set -eu
 base=$1 luz=$2 scratch=$3
@@ -60,4 +61,11 @@ node "$here/page_script.mjs" "$base?scene=whitted&model=phong&size=$size&panel=0
   width 320 picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model phong --size $size --out "${s}_render.png" -q
 within "${s}_page.png" "${s}_render.png" "panel=0 against luz render"
+# A scene by its URL (run_page_tests.sh serves whitted.gltf and its .bin in test-scenes/): the
+# page fetches the .gltf and the buffer it names, and draws what luz render draws of the file.
+s=$scratch/by_url
+node "$here/page_script.mjs" "$base?scene=test-scenes/whitted.gltf&model=gouraud&size=$size" \
+  picture "${s}_page.png" || status=1
+"$luz" render "$scenes/whitted.gltf" --model gouraud --size $size --out "${s}_render.png" -q
+within "${s}_page.png" "${s}_render.png" "scene=test-scenes/whitted.gltf against luz render"
 exit $status

@@ -12,6 +12,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 port=${LUZ_WEB_PORT:-8765}
 export NODE_PATH="$web/npm/node_modules"
 mkdir -p "$scratch"
+# A scene the page fetches by its URL, as a teacher's would be: a shipped one, served beside it.
+mkdir -p "$web/test-scenes"
+cp "$(dirname "$(dirname "$here")")/scenes/whitted.gltf" "$(dirname "$(dirname "$here")")/scenes/whitted.bin" "$web/test-scenes/"
 python3 "$(dirname "$(dirname "$here")")/src/app/web/serve.py" "$web" "$port" >"$scratch/server.log" 2>&1 &
 server=$!
 trap 'kill $server 2>/dev/null' EXIT INT TERM

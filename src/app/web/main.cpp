@@ -269,12 +269,43 @@ void start() {
   }
 }
 
-void fetched(const char* file) {
-  request.scene = file;
-  start();
-}
+// A fetched scene's folder in the page's files, and the URL it came from up to its name.
+const std::filesystem::path fetched_dir = "/tmp/scenes";
+std::string fetched_base;
+std::vector<std::string> parts_to_fetch;  // the files a .gltf names beside it, still to fetch
+std::string part_fetching;
 
 void not_fetched(const char*) { fail(trf("The scene at {} could not be fetched.", url_parameter("scene"))); }
+void part_not_fetched(const char*) { fail(trf("The scene at {} could not be fetched.", fetched_base + part_fetching)); }
+
+void fetch_parts() {
+  if (parts_to_fetch.empty()) return start();
+  part_fetching = parts_to_fetch.back();
+  parts_to_fetch.pop_back();
+  const std::filesystem::path file = fetched_dir / part_fetching;
+  std::filesystem::create_directories(file.parent_path());
+  emscripten_async_wget((fetched_base + part_fetching).c_str(), file.c_str(), [](const char*) { fetch_parts(); },
+                        part_not_fetched);
+}
+
+// The buffers and images a .gltf names by a relative path (not a data: URI), fetched beside it;
+// a file that does not parse is left to the loader, which says what is wrong with it.
+void fetched(const char* file) {
+  request.scene = file;
+  if (std::filesystem::path(file).extension() == ".gltf") {
+    const nlohmann::json gltf = nlohmann::json::parse(std::ifstream(file), nullptr, false);
+    for (const char* list : {"buffers", "images"})
+      if (gltf.is_object() && gltf.contains(list) && gltf[list].is_array())
+        for (const auto& entry : gltf[list])
+          if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
+            const std::string uri = entry["uri"];
+            const bool beside = !uri.starts_with("data:") && !uri.starts_with("/") &&
+                                uri.find("://") == std::string::npos && uri.find("..") == std::string::npos;
+            if (beside) parts_to_fetch.push_back(uri);
+          }
+  }
+  fetch_parts();
+}
 
 }  // namespace
 }  // namespace luz::web
@@ -311,8 +342,10 @@ int main() {
     return 0;
   }
   // The scene's file under its own name, so that the viewer's title and messages name it.
-  std::filesystem::create_directories("/tmp/scenes");
-  const std::string name = std::filesystem::path(web::request.scene).filename().string();
-  emscripten_async_wget(web::request.scene.c_str(), ("/tmp/scenes/" + name).c_str(), web::fetched, web::not_fetched);
+  std::filesystem::create_directories(web::fetched_dir);
+  const std::string& url = web::request.scene;
+  const std::string name = url.substr(url.find_last_of('/') + 1);
+  web::fetched_base = url.substr(0, url.size() - name.size());
+  emscripten_async_wget(url.c_str(), (web::fetched_dir / name).c_str(), web::fetched, web::not_fetched);
   return 0;
 }
