@@ -8,8 +8,9 @@
 #                        emscripten and chromium, libdeflate's, imgui's and embree's source
 #                        packages, puppeteer-core and coi-serviceworker (npm)
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
-#   ./setup.sh web test  builds the page and the desktop's luz, then runs the page's tests in
-#                        headless Chromium against `luz render` (tests/web/run_page_tests.sh)
+#   ./setup.sh web test  builds the page and the desktop's luz, runs the CPU libraries' unit tests
+#                        in node (tests/web/run_node_tests.sh), then the page's tests in headless
+#                        Chromium against `luz render` (tests/web/run_page_tests.sh)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -80,18 +81,24 @@ build_web() {
     (cd build-web/sources && { apt-get source -qq --download-only imgui 2>/dev/null || true; } &&
        tar xJf imgui_*.orig.tar.xz)
   fi
-  # The browser tests' driver of Debian's chromium, kept in the build folder.
-  [ -d build-web/npm/node_modules/puppeteer-core ] ||
-    npm install --silent --no-save --prefix build-web/npm puppeteer-core@23
+  # The browser tests' driver of Debian's chromium, and the service worker that isolates the page
+  # where its host sends no headers (served beside luz.html), kept in the build folder.
+  [ -d build-web/npm/node_modules/puppeteer-core ] && [ -d build-web/npm/node_modules/coi-serviceworker ] ||
+    npm install --silent --no-save --prefix build-web/npm puppeteer-core@23 coi-serviceworker@0.1.7
   # Emscripten's JavaScript tools find their modules in Debian's folder whatever node runs them.
   export NODE_PATH=/usr/share/nodejs
-  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=OFF
+  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release
   cmake --build build-web --parallel "$(nproc)"
 }
 
-# The page's tests hold its pictures to the desktop's `luz render` (build/luz).
+# The CPU libraries' unit tests in node, then the page's tests, which hold its pictures to the
+# desktop's `luz render` (build/luz); both run even when the first fails.
 test_web() {
-  sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output
+  local status=0
+  cmake --build build-web --parallel "$(nproc)" --target luz_node_tests
+  sh tests/web/run_node_tests.sh build-web || status=1
+  sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output || status=1
+  return $status
 }
 
 if [ "${1:-}" = web ]; then

@@ -25,6 +25,19 @@ for language in es en; do
     fi
   done
 done
+# English left in a Spanish message: the words below, outside what is a name the user types (a
+# --flag, a `verb`, a \"quoted\" name, a hyphenated id such as solver-steps or step-01.png, a
+# {} placeholder). The CLI's own words (TEXT, FILE, SECONDS) are type names, translated by their ids.
+english='the|of|and|with|is|are|from|this|default|jitter|jittered|framing|orthographic|emitter|emitters|SCENE|TEXT|FILE|SECONDS|Press|light|lights|mesh|view|picture|step|steps'
+msgattrib --no-wrap --no-obsolete --translated "$scratch/es.po" -o "$scratch/es.translated"
+if awk '/^msgstr/ { on = 1; sub(/^msgstr[^ ]* /, "") } /^(msgid|#)/ { on = 0 } on' "$scratch/es.translated" |
+   sed -e 's/--[A-Za-z0-9-]*//g' -e 's/`[^`]*`//g' -e 's/\\"[^"]*\\"//g' -e 's/{[^}]*}//g' \
+       -e 's/[A-Za-z0-9_.]*-[A-Za-z0-9_.-]*//g' |
+   grep -n -w -E "$english" > "$scratch/es.english"; then
+  echo "po/es.po: English left in these Spanish messages (words: $english):"
+  cat "$scratch/es.english"
+  status=1
+fi
 # The shipped template, but for its creation date.
 grep -v '^"POT-Creation-Date:' "$root/po/luz.pot" > "$scratch/shipped.pot"
 grep -v '^"POT-Creation-Date:' "$scratch/sources.pot" > "$scratch/fresh.pot"

@@ -15,6 +15,7 @@
 #include "core/light.h"
 #include "core/material.h"
 #include "core/scene.h"
+#include "core/std_compat.h"
 
 namespace luz {
 namespace {
@@ -41,7 +42,7 @@ TEST(Srgb, ByteIsTheRoundedCurve) {
       ASSERT_EQ(long(srgb_byte(x)), expected(x)) << "x = " << x << " near the start of code " << k;
   }
   for (uint32_t bits = 1; bits < 0x3F800000u; bits += 997, ++checked) {
-    const float x = std::bit_cast<float>(bits);
+    const float x = bit_cast<float>(bits);
     ASSERT_EQ(long(srgb_byte(x)), expected(x)) << "x = " << x;
   }
   EXPECT_GT(checked, 1000000u);

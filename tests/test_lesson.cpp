@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/classroom/lesson.h"
+#include "app/common/options_tables.h"
 #include "core/error.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
@@ -159,6 +160,34 @@ TEST(Lesson, UnnamedSwitchesGoBackToTheOptionsDefaults) {
   EXPECT_TRUE(has(c, "radiosity rotation " + on(radiosity.random_rotation)));
   EXPECT_TRUE(has(c, std::string("radiosity meshing ") + to_string(radiosity.meshing)));
   EXPECT_TRUE(has(c, std::string("radiosity form-factors ") + to_string(radiosity.form_factors)));
+}
+
+// The lesson's switch groups are the options tables' rows: every switch and choice of the local
+// table (the terms, slide 19's effects) and every flag of the Whitted tracer's is set to its
+// default when a step does not name it, and taken by its name when it does.
+TEST(Lesson, TheSwitchGroupsAreTheOptionsTablesRows) {
+  const std::string head = R"({"title": {"es": "t", "en": "t"}, "steps": [
+           {"slide": 17, "title": {"es": "a", "en": "a"}, "text": {"es": "b", "en": "b"},
+            "scene": ")" + (test::scene_dir() / "whitted.gltf").string() + R"(", "model": "whitted")";
+  const Lesson defaults = app::parse_lesson_text(head + "}]}", "defaults.json");
+  const auto& c = defaults.steps[0].commands;
+  int rows = 0;
+  for (const app::OptionRow& row : app::local_table().rows)
+    if (row.kind == app::OptionKind::on_off || row.kind == app::OptionKind::choice) {
+      EXPECT_TRUE(has(c, std::string("set ") + row.name + " " + app::default_text(app::local_table(), row))) << row.name;
+      ++rows;
+    }
+  for (const app::OptionRow& row : app::whitted_table().rows)
+    if (row.flag) {
+      EXPECT_TRUE(has(c, std::string("set ") + row.name + " " + app::default_text(app::whitted_table(), row))) << row.name;
+      ++rows;
+    }
+  EXPECT_EQ(rows, 18);  // 10 local switches and choices, 8 of the tracer's flags
+  const Lesson named = app::parse_lesson_text(head + R"(, "whitted": {"renderer": "recursive"}, "effects": {"fog": "linear"}}]})",
+                                              "given.json");
+  const auto& given = named.steps[0].commands;
+  EXPECT_TRUE(has(given, "set renderer recursive"));
+  EXPECT_TRUE(has(given, "set fog linear"));
 }
 
 // A scene is loaded and a mesh rebuilt only when the step needs another one; panes end when a

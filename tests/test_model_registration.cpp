@@ -114,6 +114,31 @@ TEST(ModelRegistration, SetAndDumpStateReachItsOptions) {
   EXPECT_EQ(error, "`set bounces` takes a whole number in 1 .. 8");
 }
 
+// A file row (the path tracer's --error-out) is a flag of `luz render` with its help; the viewer
+// writes no file, so `set`, dump-state and the lessons leave it out, each saying so.
+TEST(ModelRegistration, AFileRowIsAFlagOfTheCommandLineOnly) {
+  const Parsed parsed = parse_render({"--model", "toy", "--toy-log", "run.txt"});
+  ASSERT_EQ(parsed.error, "");
+  EXPECT_EQ(parsed.settings.model_options.get<ToyOptions>(toy_table()).log, "run.txt");
+  EXPECT_NE(parse_render({"--model", "toy", "--toy-log"}).error, "");  // a file name is needed
+  CLI::App render;
+  RenderSettings settings;
+  add_render_flags(render, settings);
+  EXPECT_NE(render.help().find("--toy-log FILE"), std::string::npos) << render.help();
+  EXPECT_NE(render.help().find("toy: write a log to this file"), std::string::npos);
+  ViewerState state;
+  std::string error;
+  EXPECT_FALSE(apply_setting(state, "toy.log", "run.txt", error));
+  EXPECT_EQ(error, "\"toy.log\" is a file `luz render --toy-log` writes; the viewer writes none");
+  EXPECT_FALSE(settings_json(state)["toy"].contains("log"));
+  EXPECT_THROW(lesson_with(R"("toy": {"log": "run.txt"})"), Error);
+  // The path tracer's --error-out is such a row of its table.
+  const std::optional<FoundOption> error_out = find_option("path.error-out");
+  ASSERT_TRUE(error_out);
+  EXPECT_EQ(error_out->row->kind, OptionKind::file);
+  EXPECT_EQ(std::string(error_out->row->flag), "--error-out");
+}
+
 TEST(ModelRegistration, ThePanelFindsItsRangesInTheRegistry) {
   const std::optional<FoundOption> bounces = find_option("bounces");
   ASSERT_TRUE(bounces);

@@ -29,6 +29,20 @@ TEST(PathCli, HelpListsThePathFlagsAndCompare) {
   for (const char* flag : {"--heatmap", "--mask-emitters"}) EXPECT_TRUE(contains(compare.output, flag)) << flag;
 }
 
+// The path tracer's rows come after the Whitted tracer's flags whose --spp and --depth they share
+// and before --time, which it shares with radiosity, whose flags follow.
+TEST(PathCli, HelpListsThePathFlagsBesideTheTracers) {
+  const auto help = run_luz({"render", "--help"});
+  ASSERT_EQ(help.exit_code, 0);
+  size_t before = 0;
+  for (const char* flag : {"--spp", "--ray-tree", "--seed", "--error-out", "--time", "--shots", "--csv"}) {
+    const size_t at = help.output.find(std::string("  ") + flag + " ");
+    ASSERT_NE(at, std::string::npos) << flag;
+    EXPECT_GT(at, before) << flag << " is out of order:\n" << help.output;
+    before = at;
+  }
+}
+
 TEST(PathCli, UsageErrorsNameTheFlag) {
   test::ScratchDir dir;
   const std::string out = (dir / "x.exr").string();

@@ -521,7 +521,7 @@ TEST(WhittedTracer, TilesAreReportedAndCancellationStopsTheRender) {
   // The tiles never rendered are black, not what the memory held (the picture is not cleared
   // before the tiles write it; the first render's pixels were freed just before).
   const auto in_rendered = [&](int x, int y) {
-    return std::ranges::any_of(rendered, [&](const Tile& t) { return x >= t.x0 && x < t.x1 && y >= t.y0 && y < t.y1; });
+    return std::any_of(rendered.begin(), rendered.end(), [&](const Tile& t) { return x >= t.x0 && x < t.x1 && y >= t.y0 && y < t.y1; });
   };
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x) {

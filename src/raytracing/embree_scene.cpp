@@ -5,7 +5,8 @@
 #include "raytracing/embree_scene.h"
 
 #include <cstring>
-#include <string>
+#include <map>
+#include <mutex>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -28,10 +29,12 @@ struct EmbreeIntersector::Impl {
 
 namespace {
 
-[[noreturn]] void fail(RTCDevice device, const char* what) {
-  throw Error(ErrorKind::bad_value,
-              i18n::trf("Embree: {} failed (error {})", what, int(rtcGetDeviceError(device))));
+// Reading the device's error clears it: `error` is the value read.
+[[noreturn]] void fail(RTCError error, const char* what) {
+  throw Error(ErrorKind::bad_value, i18n::trf("Embree: {} failed (error {})", what, int(error)));
 }
+
+[[noreturn]] void fail(RTCDevice device, const char* what) { fail(rtcGetDeviceError(device), what); }
 
 // Fields written one by one straight into Embree's structures: building a temporary RTCRay and
 // copying it makes the compiler store fields and reload them as 16-byte blocks, a
@@ -68,22 +71,33 @@ Hit from_embree(const RTCRayHit& rh) {
   return hit;
 }
 
-// With oneTBB, Embree shares the parallel loops' scheduler and needs no word. Built with its own
-// scheduler (the web page's Embree), it would start a thread per core wherever it is first used:
-// it is given the parallel loops' count instead, which on the browser's main thread is one (that
-// thread must never wait for a thread to start).
-std::string device_config() {
+// A device for this intersector. With oneTBB (the desktop), one of its own, scheduled by the
+// parallel loops' scheduler. Built with its own scheduler (the web page's Embree), a device would
+// start a thread per core wherever it is first used: it is given the parallel loops' count
+// instead, which on the browser's main thread is one (that thread must never wait for a thread
+// to start). Those devices are kept for the program's life, one per count: releasing one deletes
+// its thread-local error slot, and Emscripten's pthread_key_delete leaves the slot's value behind
+// for the next key of the same number, so that the next device would read its errors from freed
+// memory.
+RTCDevice new_device() {
 #if LUZ_PARALLEL_TBB
-  return {};
+  return rtcNewDevice(nullptr);
 #else
-  return fmt::format("threads={}", parallel::thread_count());
+  static std::mutex mutex;
+  static std::map<unsigned, RTCDevice> devices;
+  const unsigned threads = parallel::thread_count();
+  const std::lock_guard lock(mutex);
+  RTCDevice& device = devices[threads];
+  if (!device) device = rtcNewDevice(fmt::format("threads={}", threads).c_str());
+  if (device) rtcRetainDevice(device);  // the map keeps its own reference
+  return device;
 #endif
 }
 
 }  // namespace
 
 EmbreeIntersector::EmbreeIntersector(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(device_config().c_str());
+  impl_->device = new_device();
   if (!impl_->device) throw Error(ErrorKind::bad_value, i18n::tr("Embree: cannot create a device"));
   impl_->scene = rtcNewScene(impl_->device);
   if (!impl_->scene) fail(impl_->device, "rtcNewScene");
@@ -114,7 +128,7 @@ EmbreeIntersector::EmbreeIntersector(const Scene& scene) : impl_(std::make_uniqu
     rtcReleaseGeometry(geometry);
   }
   rtcCommitScene(impl_->scene);
-  if (rtcGetDeviceError(impl_->device) != RTC_ERROR_NONE) fail(impl_->device, "rtcCommitScene");
+  if (const RTCError error = rtcGetDeviceError(impl_->device); error != RTC_ERROR_NONE) fail(error, "rtcCommitScene");
 }
 
 EmbreeIntersector::~EmbreeIntersector() = default;

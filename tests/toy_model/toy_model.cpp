@@ -15,6 +15,7 @@ const app::OptionRow rows[] = {
      LUZ_OPTION_FIELD(ToyOptions, bounces)},
     {"gain", "--toy-gain", "toy", OptionKind::real, "toy: how bright", 0, 4, LUZ_OPTION_FIELD(ToyOptions, gain)},
     {"glow", "--toy-glow", "toy", OptionKind::on_off, "toy: glow", 0, 1, LUZ_OPTION_FIELD(ToyOptions, glow)},
+    app::file_row("log", "--toy-log", "toy", "toy: write a log to this file", LUZ_OPTION_TEXT(ToyOptions, log)),
 };
 
 app::Rendered render_toy(const Scene&, const Camera&, int width, int height, const app::RenderSettings& settings) {

@@ -1,10 +1,11 @@
 #!/bin/sh
 # The page's tests in headless Chromium (./setup.sh web test runs them): build-web/ served from
-# 127.0.0.1 with the isolation headers; the page draws (page_smoke), a bad scene is a sentence on
-# the page in its language (page_api --expect-error), each scene and model matches `luz render`
-# (page_matches_render), and so do the pictures after lines run through window.luz.run, which
-# rejects lines it cannot run (page_run_matches_render). Pictures and screenshots are left in
-# SCRATCH_DIR.
+# 127.0.0.1 with the isolation headers (on LUZ_WEB_PORT) and without them (on the next port); the
+# page draws (page_smoke), isolated by the headers or by its service worker, and says why in words
+# where it can be neither (page_isolation), a bad scene is a sentence on the page in its language
+# (page_api --expect-error), each scene and model matches `luz render` (page_matches_render), and
+# so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
+# (page_run_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -15,13 +16,21 @@ mkdir -p "$scratch"
 # A scene the page fetches by its URL, as a teacher's would be: a shipped one, served beside it.
 mkdir -p "$web/test-scenes"
 cp "$(dirname "$(dirname "$here")")/scenes/whitted.gltf" "$(dirname "$(dirname "$here")")/scenes/whitted.bin" "$web/test-scenes/"
-python3 "$(dirname "$(dirname "$here")")/src/app/web/serve.py" "$web" "$port" >"$scratch/server.log" 2>&1 &
+serve=$(dirname "$(dirname "$here")")/src/app/web/serve.py
+python3 "$serve" "$web" "$port" >"$scratch/server.log" 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null' EXIT INT TERM
+# The same folder as a host that sends no isolation headers (the page's service worker adds them).
+python3 "$serve" "$web" "$((port + 1))" --no-isolation >"$scratch/server_plain.log" 2>&1 &
+plain=$!
+trap 'kill $server $plain 2>/dev/null' EXIT INT TERM
 sleep 1
 url=http://127.0.0.1:$port/luz.html
+plain_url=http://127.0.0.1:$((port + 1))/luz.html
 status=0
 node "$here/page_smoke.mjs" "$url" "$scratch/page.png" "$scratch/canvas.png" || status=1
+node "$here/page_isolation.mjs" headers "$url" "$scratch/isolated_headers.png" || status=1
+node "$here/page_isolation.mjs" service-worker "$plain_url" "$scratch/isolated_service_worker.png" || status=1
+node "$here/page_isolation.mjs" refused "$plain_url" "$scratch/not_isolated.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/error_es.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1

@@ -241,59 +241,49 @@ ScriptCommand command(int line, std::string verb, std::vector<std::string> args)
 // ---- [commands] ----------------------------------------------------------------------------
 // Each group emits every one of its switches: the step's value, else the options' default.
 
-void terms(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
-  const TermSwitches defaults;
-  const std::vector<std::pair<std::string, bool>> terms = {
-      {"ambient", defaults.ambient}, {"diffuse", defaults.diffuse}, {"specular", defaults.specular},
-      {"emission", defaults.emission}, {"textures", defaults.textures}, {"blinn", defaults.blinn}};
-  const json given = step.value("terms", json::object());
+// A lesson's group of switches over a shared options table: the rows it takes are the table's, by
+// a rule on the row, so a row added to the table is a lesson's key with nothing else to write.
+struct SwitchGroup {
+  const char* key;                 // the step's key: "terms", "effects", "whitted"
+  const OptionTable& (*table)();
+  bool (*takes)(const OptionRow&);
+};
+
+constexpr SwitchGroup switch_groups[] = {
+    // I = I_A + I_D + I_S (+ Le), the kd texture and Blinn: the local table's rows that the tracers
+    // and the hybrid take too (their flag groups are not the local models' own "local").
+    {"terms", local_table, [](const OptionRow& row) { return std::string_view(row.group) != "local"; }},
+    // Slide 19's other possibilities, switched or chosen (their distances, biases and map sizes are
+    // the panel's to tune).
+    {"effects", local_table,
+     [](const OptionRow& row) {
+       return std::string_view(row.group) == "local" && (row.kind == OptionKind::on_off || row.kind == OptionKind::choice);
+     }},
+    // The Whitted tracer's flags (the rows without one are the panel's to tune).
+    {"whitted", whitted_table, [](const OptionRow& row) { return row.flag != nullptr && in_viewer(row); }},
+};
+
+// `set NAME VALUE`'s name of a row: NAME, or TABLE.NAME when an earlier table has a row of that name.
+std::string set_name(const OptionTable& table, const OptionRow& row) {
+  return find_option(row.name)->row == &row ? std::string(row.name) : std::string(table.name) + "." + row.name;
+}
+
+void switch_group(const Reader& r, const json& step, const std::string& at, int line, const SwitchGroup& group,
+                  std::vector<ScriptCommand>& out) {
+  const OptionTable& table = group.table();
+  const json given = step.value(group.key, json::object());
+  const std::string p = at + "/" + group.key;
   std::vector<std::string> names;
-  for (const auto& [name, on] : terms) names.push_back(name);
-  r.only_keys(given, at + "/terms", "terms", names);
-  for (const auto& [name, on] : terms) {
-    const bool value = given.contains(name) ? r.boolean(given[name], at + "/terms/" + name, "terms: " + name) : on;
-    out.push_back(command(line, "set", {name, on_off(value)}));
-  }
-}
-
-void effects(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
-  const LocalOptions defaults;
-  const std::vector<std::pair<std::string, bool>> switches = {{"shadows", defaults.shadows.on},
-                                                              {"transparency", defaults.transparency.on},
-                                                              {"reflection-map", defaults.reflection.on}};
-  const json given = step.value("effects", json::object());
-  r.only_keys(given, at + "/effects", "effects", {"shadows", "transparency", "reflection-map", "fog"});
-  for (const auto& [name, on] : switches) {
-    const bool value = given.contains(name) ? r.boolean(given[name], at + "/effects/" + name, "effects: " + name) : on;
-    out.push_back(command(line, "set", {name, on_off(value)}));
-  }
-  // Slide 19's fog: the names and the default of --fog's row.
-  const OptionRow& fog_row = *find_row(local_table(), "fog");
-  const std::string fog = given.contains("fog") ? row_value(r, fog_row, given["fog"], at + "/effects/fog", "effects: fog")
-                                                : default_text(local_table(), fog_row);
-  out.push_back(command(line, "set", {"fog", fog}));
-}
-
-void whitted(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
-  const rt::WhittedOptions d;
-  const json given = step.value("whitted", json::object());
-  const std::string w = at + "/whitted";
-  r.only_keys(given, w, "whitted", {"depth", "spp", "light-samples", "fresnel", "adaptive", "brute-force", "shadow-rays"});
-  // The numbers: the step's value, checked by its row, else the default.
-  for (const char* name : {"depth", "spp", "light-samples"}) {
-    const OptionRow& row = *find_row(whitted_table(), name);
-    const std::string value = given.contains(name)
-                                  ? row_value(r, row, given[name], w + "/" + name, std::string("whitted: ") + name)
-                                  : default_text(whitted_table(), row);
-    out.push_back(command(line, "set", {name, value}));
-  }
-  const std::vector<std::pair<std::string, bool>> switches = {{"fresnel", d.fresnel},
-                                                              {"adaptive", d.sampling == rt::Sampling::adaptive},
-                                                              {"brute-force", d.brute_force},
-                                                              {"shadow-rays", d.shadows}};
-  for (const auto& [name, on] : switches) {
-    const bool value = given.contains(name) ? r.boolean(given[name], w + "/" + name, "whitted: " + name) : on;
-    out.push_back(command(line, "set", {name, on_off(value)}));
+  for (const OptionRow& row : table.rows)
+    if (group.takes(row)) names.push_back(row.name);
+  r.only_keys(given, p, group.key, names);
+  for (const OptionRow& row : table.rows) {
+    if (!group.takes(row)) continue;
+    const std::string value = given.contains(row.name)
+                                  ? row_value(r, row, given[row.name], p + "/" + row.name,
+                                              std::string(group.key) + ": " + row.name)
+                                  : default_text(table, row);
+    out.push_back(command(line, "set", {set_name(table, row), value}));
   }
 }
 
@@ -343,7 +333,8 @@ void model_options(const Reader& r, const json& step, const std::string& at, int
     const json& given = step[table->name];
     const std::string p = at + "/" + table->name;
     std::vector<std::string> names;
-    for (const OptionRow& row : table->rows) names.push_back(row.name);
+    for (const OptionRow& row : table->rows)
+      if (in_viewer(row)) names.push_back(row.name);
     r.only_keys(given, p, table->name, names);
     for (const auto& [name, value] : given.items()) {
       const OptionRow& row = *find_row(*table, name);
@@ -410,8 +401,9 @@ void actions(const Reader& r, const json& step, const std::string& at, int line,
 LessonStep read_step(const Reader& r, const json& step, size_t index, const std::filesystem::path& folder,
                      const LessonStep* before) {
   const std::string at = fmt::format("/steps/{}", index);
-  std::vector<std::string> keys = {"slide", "title", "text", "scene", "camera", "model", "exposure", "terms",
-                                   "effects", "whitted", "radiosity", "panes", "actions"};
+  std::vector<std::string> keys = {"slide", "title", "text", "scene", "camera", "model", "exposure", "radiosity",
+                                   "panes", "actions"};
+  for (const SwitchGroup& group : switch_groups) keys.push_back(group.key);
   for (const OptionTable* table : option_tables())
     if (!shared_table(*table)) keys.push_back(table->name);
   r.only_keys(step, at, trf("step {}", index + 1), keys);
@@ -455,9 +447,7 @@ LessonStep read_step(const Reader& r, const json& step, size_t index, const std:
   if (step.contains("exposure"))
     c.push_back(command(line, "set", {"exposure", fmt::format("{}", float(r.number(step["exposure"], at + "/exposure",
                                                                                     "exposure (EV)", -20.0, 20.0)))}));
-  terms(r, step, at, line, c);
-  effects(r, step, at, line, c);
-  whitted(r, step, at, line, c);
+  for (const SwitchGroup& group : switch_groups) switch_group(r, step, at, line, group, c);
   radiosity(r, step, at, line, c);
   model_options(r, step, at, line, c);
   if (step.contains("panes")) {

@@ -16,7 +16,7 @@ namespace {
 constexpr const char* kLabels[] = {N_("Usage"),       N_("OPTIONS"),  N_("SUBCOMMAND"), N_("SUBCOMMANDS"),
                                    N_("Positionals"), N_("REQUIRED"), N_("Needs"),      N_("Excludes"),
                                    N_("TEXT"),        N_("INT"),      N_("NUMBER"),     N_("FLOAT"),
-                                   N_("UINT")};
+                                   N_("UINT"),        N_("FILE"),     N_("SECONDS")};
 // The group every option is in unless told otherwise: CLI11's "Options", translated where shown.
 [[maybe_unused]] constexpr const char* kOptionsGroup = N_("Options");
 
@@ -27,6 +27,17 @@ public:
   }
   std::string make_group(std::string group, bool is_positional, std::vector<const CLI::Option*> opts) const override {
     return CLI::Formatter::make_group(tr(group.c_str()), is_positional, std::move(opts));
+  }
+  // A checked option's type name is CLI11's word joined to its check's ("TEXT:{es,en}"), which
+  // get_label, looking the whole up, would leave in English: the word is translated alone.
+  std::string make_option_opts(const CLI::Option* opt) const override {
+    std::string out = CLI::Formatter::make_option_opts(opt);
+    const std::string type = opt->get_type_name();
+    const size_t colon = type.find(':');
+    if (colon == std::string::npos) return out;
+    const std::string word = type.substr(0, colon);
+    if (const size_t at = out.find(" " + type); at != std::string::npos) out.replace(at + 1, word.size(), get_label(word));
+    return out;
   }
 };
 

@@ -41,7 +41,6 @@ struct RenderSettings {
   std::optional<std::pair<int, int>> ray_tree;
   // The options of a model's own table (the path tracer's, option_row.h): its flags write them.
   OptionValues model_options;
-  std::string error_out;  // --model path --error-out FILE.exr: the standard error per pixel
   // The flags of a flag group that were given, with their group: a group the model does not
   // take (model_registry.h) is a usage error.
   struct GivenFlag {

@@ -1,7 +1,7 @@
 // `luz render`'s flags. The options' flags come from the registry's options tables
 // (option_row.h): each row's flag, its help with the struct's default, its range and its check
-// (a float must be finite: nan and inf are usage errors). The few flags that are not one number
-// or switch (a colour, a file, a pixel) are written out below.
+// (a float must be finite: nan and inf are usage errors). The few flags that are not one number,
+// switch or file row (a colour, an image, a pixel, a CSV) are written out below.
 #include "app/cli/render_flags.h"
 
 #include <CLI/CLI.hpp>
@@ -35,6 +35,15 @@ struct FlagRow {
 // value in the range.
 CLI::Option* add_flag(CLI::App& render, std::vector<FlagRow> rows, RenderSettings& settings) {
   const FlagRow first = rows.front();
+  if (first.row->kind == OptionKind::file)
+    return render
+        .add_option_function<std::string>(
+            first.row->flag,
+            [rows, &settings](const std::string& text) {
+              for (const FlagRow& r : rows) r.row->set_text(options_of(settings, *r.table), text);
+            },
+            tr(first.row->help))
+        ->type_name("FILE");
   if (first.row->kind == OptionKind::on_off) {
     const bool off = first.row->get(first.table->defaults()) != 0.0;  // the flag turns the default around
     return render.add_flag_callback(
@@ -139,8 +148,10 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
       },
       tr("whitted/hybrid: write pixel X,Y's ray tree as JSON beside the image, to OUT-STEM.ray-tree.json"))});
 
-  flags.grouped.push_back({"path", render.add_option("--error-out", settings.error_out,
-      tr("path: write the per-pixel standard error of the mean to this .exr"))});
+  // The models' own tables (the path tracer's --seed and --error-out) beside the tracers' flags
+  // they share (--spp, --depth), before --time, which the path tracer and radiosity take.
+  for (const OptionTable* table : option_tables())
+    if (table != &radiosity_table()) add_rows(render, *table, settings, flags);
   flags.grouped.push_back({"time", render.add_option("--time", settings.seconds,
       tr("path: render passes of one sample per pixel until SECONDS are up (with --spp: at most that "
          "many samples); radiosity/hybrid: stop shooting when SECONDS of solving are up, if --shots or "
@@ -150,8 +161,6 @@ RenderFlags add_render_flags(CLI::App& render, RenderSettings& settings) {
   add_rows(render, radiosity_table(), settings, flags);
   flags.grouped.push_back({"radiosity", render.add_option("--csv", settings.csv,
       tr("radiosity/hybrid: write the unshot power after every shot to this CSV file"))});
-  // The models' own tables (the path tracer's --seed; its --spp and --depth are Whitted's above).
-  for (const OptionTable* table : option_tables()) add_rows(render, *table, settings, flags);
   // One stopping rule: a number of shots or a threshold.
   CLI::Option* shots = render.get_option("--shots");
   shots->excludes(render.get_option("--converge"));

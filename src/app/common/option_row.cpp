@@ -36,12 +36,14 @@ const OptionRow* find_row(const OptionTable& table, std::string_view name) {
 }
 
 std::string value_text(const OptionRow& row, const void* options) {
+  if (row.kind == OptionKind::file) return row.get_text(options);
   const double v = row.get(options);
   switch (row.kind) {
     case OptionKind::on_off: return v != 0.0 ? "on" : "off";
     case OptionKind::choice: return row.choices[size_t(v)];
     case OptionKind::integer: return bound_text(row, v);
-    case OptionKind::real: break;
+    case OptionKind::real:
+    case OptionKind::file: break;
   }
   return number_text(v);
 }
@@ -57,6 +59,7 @@ std::string accepted_text(const OptionRow& row, Wording wording) {
       for (const char* c : row.choices) names += (names.empty() ? "" : ", ") + std::string(c);
       return fmt::format(fmt::runtime(say(N_("one of {}"))), names);
     }
+    case OptionKind::file: return say(N_("a file name, given to luz render"));
     default: break;
   }
   const bool whole = row.kind == OptionKind::integer;
@@ -88,6 +91,7 @@ std::optional<double> parse_value(const OptionRow& row, const std::string& text,
     case OptionKind::real:
       if (!is_number(text)) return std::nullopt;  // finite: nan and inf are refused
       break;
+    case OptionKind::file: return std::nullopt;  // no number: `luz render`'s flag writes its text
   }
   const double v = std::stod(text);
   if (!(v >= row.low && v <= row.high)) return std::nullopt;

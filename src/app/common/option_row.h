@@ -21,6 +21,9 @@ enum class OptionKind {
   integer,  // a whole number in [low, high] (and `rule`, when there is one)
   real,     // a finite number in [low, high]
   choice,   // one of `choices`, by name; stored as its index
+  file,     // a file `luz render` writes (--error-out): its text, read and written by get_text
+            // and set_text; the viewer writes no file, so its `set`, dump-state and the lessons
+            // leave such a row out (parse_value takes no value for it)
 };
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
@@ -37,7 +40,12 @@ struct OptionRow {
   std::span<const char* const> choices = {};
   bool (*rule)(double) = nullptr;  // a further condition (even, a square)
   const char* rule_text = nullptr; // what it says: "even"
+  std::string (*get_text)(const void* options) = nullptr;  // a file row's (its get and set are nullptr)
+  void (*set_text)(void* options, const std::string& text) = nullptr;
 };
+
+// Whether the viewer takes a row (`set`, dump-state, the lessons): every row but a file's.
+inline bool in_viewer(const OptionRow& row) { return row.kind != OptionKind::file; }
 
 // A row's read and write of one field of its table's struct (a nested one too: fog.near).
 #define LUZ_OPTION_FIELD(Options, field)                                                     \
@@ -54,6 +62,16 @@ struct OptionRow {
     auto& f = static_cast<Options*>(o)->field;                                                \
     f = std::remove_reference_t<decltype(f)>(int(v));                                         \
   }
+
+// A file row over a std::string field (OptionKind::file).
+#define LUZ_OPTION_TEXT(Options, field)                                                      \
+  [](const void* o) { return static_cast<const Options*>(o)->field; },                        \
+  [](void* o, const std::string& v) { static_cast<Options*>(o)->field = v; }
+
+constexpr OptionRow file_row(const char* name, const char* flag, const char* group, const char* help,
+                             std::string (*get_text)(const void*), void (*set_text)(void*, const std::string&)) {
+  return {name, flag, group, OptionKind::file, help, 0, 0, nullptr, nullptr, {}, nullptr, nullptr, get_text, set_text};
+}
 
 // The rows over one options struct, and that struct's type: a copy of it is made for every
 // program and picture that takes these options (option_values.h).

@@ -148,7 +148,8 @@ void model_header(ViewerState& state, ModelView& shown, DifferenceView& differen
   int column = 0;
   for (const ModelEntry& m : models()) {
     const std::string label = fmt::format("{} [{}]", tr(m.label), m.key);
-    if (ImGui::RadioButton(label.c_str(), state.model == m.name)) state.model = m.name;
+    if (ImGui::RadioButton(label.c_str(), state.model == m.name) && state.model != m.name)
+      state.panel_lines.push_back(fmt::format("model {}", m.name));
     name_widget(fmt::format("{} [{}]", m.label, m.key));  // named in English, as every widget
     if (++column % 3 != 0) ImGui::SameLine();
   }
@@ -295,8 +296,23 @@ void scene_menu(ViewerState& state) {
   if (!choosing) return;
   for (const std::filesystem::path& scene : shipped_scenes())
     if (ImGui::Selectable(scene.filename().string().c_str(), scene.filename() == state.scene_path.filename()))
-      state.load_request = scene;
+      state.panel_lines.push_back("load \"" + scene.string() + "\"");
   ImGui::EndCombo();
+}
+
+constexpr PanelButton buttons[] = {
+    {"fit the exposure [K]", "set exposure auto"},
+    {"scene camera [C]", "camera"},
+    {"reload [R]", "reload"},
+};
+
+// A button of `buttons`, by its widget's name: drawn with its translated label; pressed, its line
+// is queued for the loop.
+void line_button(ViewerState& state, std::string_view widget) {
+  const PanelButton& b = *std::find_if(std::begin(buttons), std::end(buttons),
+                                       [&](const PanelButton& p) { return widget == p.widget; });
+  if (ImGui::Button(tr(b.widget))) state.panel_lines.push_back(b.line);
+  name_widget(b.widget);
 }
 
 void scene_header(ViewerState& state) {
@@ -312,25 +328,20 @@ void scene_header(ViewerState& state) {
   // Files from elsewhere may need -10 EV (Blender's lights in candela): core/exposure.h.
   ImGui::SliderFloat(tr("exposure (EV)"), &state.exposure, -12.0f, 12.0f, "%+.1f");
   name_widget("exposure (EV)");
-  if (ImGui::Button(tr("fit the exposure [K]"))) state.exposure_fit = true;
-  name_widget("fit the exposure [K]");
+  line_button(state, "fit the exposure [K]");
   const Camera& current = scene.cameras[size_t(state.scene_camera)];
   const std::string preview = state.free_camera ? trf("(moved from {})", current.name) : current.name;
   const bool choosing = ImGui::BeginCombo(tr("camera"), preview.c_str());
   name_widget("camera");
   if (choosing) {
     for (size_t i = 0; i < scene.cameras.size(); ++i)
-      if (ImGui::Selectable(scene.cameras[i].name.c_str(), !state.free_camera && int(i) == state.scene_camera)) {
-        state.scene_camera = int(i);
-        state.back_to_scene_camera = true;
-      }
+      if (ImGui::Selectable(scene.cameras[i].name.c_str(), !state.free_camera && int(i) == state.scene_camera))
+        state.panel_lines.push_back(fmt::format("camera {}", i));
     ImGui::EndCombo();
   }
-  if (ImGui::Button(tr("scene camera [C]"))) state.back_to_scene_camera = true;
-  name_widget("scene camera [C]");
+  line_button(state, "scene camera [C]");
   ImGui::SameLine();
-  if (ImGui::Button(tr("reload [R]"))) state.reload = true;
-  name_widget("reload [R]");
+  line_button(state, "reload [R]");
   scene_menu(state);
 }
 
@@ -414,5 +425,7 @@ void draw_panel(ViewerState& state, ModelView& shown, DifferenceView& difference
   ImGui::PopItemWidth();
   ImGui::End();
 }
+
+std::span<const PanelButton> panel_buttons() { return buttons; }
 
 }  // namespace luz::app

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -151,7 +152,7 @@ void panes_section(ViewerState& state) {
       std::vector<std::string> wanted = shown;
       if (in) wanted.push_back(m.name);
       else wanted.erase(std::find(wanted.begin(), wanted.end(), m.name));
-      state.panes_request = wanted;
+      state.panel_lines.push_back(fmt::format("panes {}", fmt::join(wanted, ",")));
     }
     ImGui::EndDisabled();
     if (++column % 3 != 0) ImGui::SameLine();
@@ -160,11 +161,11 @@ void panes_section(ViewerState& state) {
   bool first = true;
   for (const std::vector<std::string>& preset : lecture_comparisons()) {
     if (!pane_list_problem(preset).empty()) continue;
-    if (flowing_button(joined_labels(preset).c_str(), first)) state.panes_request = preset;
+    if (flowing_button(joined_labels(preset).c_str(), first)) state.panel_lines.push_back(fmt::format("panes {}", fmt::join(preset, ",")));
     first = false;
   }
   ImGui::BeginDisabled(state.panes.empty());
-  if (flowing_button(tr("One picture"), first)) state.panes_request = std::vector<std::string>{state.model};
+  if (flowing_button(tr("One picture"), first)) state.panel_lines.push_back("panes off");
   ImGui::EndDisabled();
 }
 

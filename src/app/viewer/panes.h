@@ -72,8 +72,8 @@ struct PixelRect {
 PixelRect screenshot_label_box(const std::string& model, glm::ivec2 pane_pixels);
 
 // The panel's "Side by side" section, its last (the sections above keep their places): a
-// checkbox per model, the lecture's two comparisons and "One picture"; it asks through
-// state.panes_request.
+// checkbox per model, the lecture's two comparisons and "One picture"; each runs a `panes` line
+// (state.panel_lines).
 void panes_section(ViewerState& state);
 
 // The script's `panes MODEL[,MODEL...]` / `panes off` and `dump-panes FILE.json`, rows of the

@@ -283,10 +283,12 @@ Layout Viewer::with_dock_below(Layout l, float height) const {
 // camera's vertical field of view, so a wide scene (the plate of spheres) in a tall, narrow view
 // loses its sides. The frame's height in a pane is what the comparison reads; the dock beside is
 // taken at its least width, so that a docked window's width cannot move the dock. A caption
-// folded to one line goes below whatever the scene; slide 36's window keeps the dock beside.
+// folded to one line goes below whatever the scene when no window is docked; with one (the item
+// buffer), the dock stays beside, where the room the folded caption frees is the window's (a row
+// below would give it one line). Slide 36's window keeps the dock beside.
 bool Viewer::dock_goes_below(const Layout& beside, const Layout& below) const {
   if (caption_wanted_ <= 0.0f || solvers_.state().open) return false;  // not measured yet, or slide 36's
-  if (classroom_.caption_collapsed()) return true;
+  if (classroom_.caption_collapsed()) return docked_windows_ == 0;
   const float aspect = state_.scene ? state_.scene->cameras[size_t(state_.scene_camera)].aspect : 0.0f;
   if (!(aspect > 0.0f)) return false;
   const auto frame_height = [aspect](const Layout& l) {
@@ -555,8 +557,9 @@ bool Viewer::choose_camera(const std::string& name_or_index, std::string& error)
 void Viewer::resize(int width, int height) { glfwSetWindowSize(window_.handle(), width, height); }
 
 // ---- [keys] ------------------------------------------------------------------------------------
-// A key runs its line (shortcuts.h) as a script would; a line that cannot be done (a lesson's
-// step with no lesson open) says why in the status line.
+// A key runs its line (shortcuts.h) as a script would, and so does a button of the panel
+// (panel.h); a line that cannot be done (a lesson's step with no lesson open) says why in the
+// status line.
 void Viewer::run_line(const std::string& line) {
   const Script script = parse_script_text(line, "key");  // every bound line is checked by the tests
   std::string error;
@@ -825,7 +828,8 @@ void Viewer::draw_windows(const Layout& l) {
 // The dock (or its windows' column, below the picture) widens when a docked window's content is
 // wider than the room it had (a table's columns keep the width of their text), up to half the
 // picture's room; the next frame gives it that room. It keeps that width while windows other
-// than the caption stay docked.
+// than the caption stay docked. How many are docked decides where a folded caption goes
+// (dock_goes_below); they are docked in either place, so the choice cannot swing between frames.
 void Viewer::measure_dock(const Viewport& column, float margin) {
   float wanted = dock_wanted_;
   int docked = 0;
@@ -841,6 +845,10 @@ void Viewer::measure_dock(const Viewport& column, float margin) {
     if (overflow > 0.5f) wanted = std::max(wanted, d.size.x + overflow);
   }
   if (docked == 0) wanted = 0.0f;
+  if (docked != docked_windows_) {
+    docked_windows_ = docked;
+    frames_to_draw_ = std::max(frames_to_draw_, 2);
+  }
   if (std::abs(wanted - dock_wanted_) > 0.5f) {
     dock_wanted_ = wanted;
     frames_to_draw_ = std::max(frames_to_draw_, 2);
@@ -934,34 +942,13 @@ void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> p
 
 void Viewer::frame() {
   if (fonts_stale_) rebuild_fonts();
-  if (state_.ui_scale_request > 0.0f) {
-    set_ui_scale(state_.ui_scale_request);
-    state_.ui_scale_request = 0.0f;
-    rebuild_fonts();
-  }
-  // Requests the panel made during the last frame.
-  if (state_.model != model_->name)
-    if (const ModelEntry* m = find_model(state_.model)) set_model(*m);
-  if (state_.panes_request) {
-    const std::vector<std::string> wanted = *state_.panes_request;
-    state_.panes_request.reset();
-    if (const std::string problem = pane_list_problem(wanted); problem.empty()) set_panes(wanted);
-    else state_.note = problem;
-  }
+  // The lines the panel's buttons ran during the last frame, as their keys run them.
+  for (const std::string& line : std::exchange(state_.panel_lines, {})) run_line(line);
   if (state_.emitters_changed) {
     state_.emitters_changed = false;
     state_.scene->find_area_lights();
     rebuild_renderer();
     for (auto& [name, view] : views_) view->emitters_changed();
-  }
-  if (state_.reload) {
-    state_.reload = false;
-    load(state_.scene_path);
-  }
-  if (!state_.load_request.empty()) load(std::exchange(state_.load_request, {}));
-  if (state_.back_to_scene_camera) {
-    state_.back_to_scene_camera = false;
-    to_scene_camera();
   }
   // Slide 36's solvers step here, on the GL thread, within their own budget per frame.
   solvers_.advance();

@@ -23,9 +23,11 @@ constexpr ViewerSetting switches[] = {
 std::string all_names() {
   std::string names = "exposure, ui-scale, panel, inspector, help";
   for (const OptionTable* table : option_tables())
-    for (const OptionRow& row : table->rows)
+    for (const OptionRow& row : table->rows) {
+      if (!in_viewer(row)) continue;
       if (find_option(row.name)->row == &row) names += fmt::format(", {}", row.name);
       else names += fmt::format(", {}.{}", table->name, row.name);  // another table's comes first
+    }
   return names;
 }
 
@@ -39,8 +41,11 @@ std::string check_setting(const std::string& name, const std::string& value) {
                ? "" : fmt::format("`set ui-scale S` takes {} .. {}", kMinUiScale, kMaxUiScale);
   for (const ViewerSetting& s : switches)
     if (name == s.name) return value == "on" || value == "off" ? "" : fmt::format("`set {}` takes on or off", name);
-  if (const std::optional<FoundOption> option = find_option(name))
+  if (const std::optional<FoundOption> option = find_option(name)) {
+    if (!in_viewer(*option->row))
+      return fmt::format("\"{}\" is a file `luz render {}` writes; the viewer writes none", name, option->row->flag);
     return parse_value(*option->row, value) ? "" : fmt::format("`set {}` takes {}", name, accepted_text(*option->row));
+  }
   return fmt::format("cannot set \"{}\" ({})", name, all_names());
 }
 
@@ -78,6 +83,7 @@ nlohmann::json settings_json(const ViewerState& state) {
     nlohmann::json& rows = out[table->name] = nlohmann::json::object();
     const void* options = options_of(state, *table);
     for (const OptionRow& row : table->rows) {
+      if (!in_viewer(row)) continue;
       const double v = row.get(options);
       if (row.kind == OptionKind::on_off) rows[row.name] = v != 0.0;
       else if (row.kind == OptionKind::choice) rows[row.name] = row.choices[size_t(v)];

@@ -68,9 +68,8 @@ struct ViewerState {
   RadiosityOptions radiosity;
 
   // Side by side (panes.h): the panes' models when there are two or more (empty: one picture,
-  // `model`); the panel asks for another list through panes_request, done between frames.
+  // `model`); the panel asks for another list with a `panes` line (panel_lines).
   std::vector<std::string> panes;
-  std::optional<std::vector<std::string>> panes_request;
 
   bool show_panel = true;
   bool show_help = false;
@@ -78,12 +77,10 @@ struct ViewerState {
   std::string error;   // the last scene that failed to load, shown until a load succeeds
   std::string note;    // the status line's latest message
 
-  // Requests from the panel, done by the loop between frames.
+  // What the panel's buttons ask: script lines, run by the loop between frames through the verbs
+  // a key's line and a script's run (panel.h's panel_buttons), in the order they were pressed.
+  std::vector<std::string> panel_lines;
   bool emitters_changed = false;   // an Le was edited: the area lights must be found again
-  bool reload = false;
-  std::filesystem::path load_request;  // a shipped scene chosen in the Scene section
-  bool back_to_scene_camera = false;
-  float ui_scale_request = 0.0f;   // the Scene section's UI scale slider (0: none)
 
   // The frame's time, smoothed over about ten frames, and the figure the status line takes
   // (Viewer::status_shown refreshes its figures twice a second).

@@ -227,6 +227,7 @@ private:
   Layout last_layout_;
   float dock_wanted_ = 0.0f;  // the dock's width its windows asked for on the last frame (window units)
   float caption_wanted_ = 0.0f;  // the caption's height with all its text on the last frame (window units)
+  int docked_windows_ = 0;       // windows besides the caption docked on the last frame
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a
   // frame (the key callback in viewer.cpp says why).

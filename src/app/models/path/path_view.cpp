@@ -42,7 +42,7 @@ double relative_noise(const Image& mean, const Image& standard_error) {
 
 // ---- [the film's worker] -------------------------------------------------------------------------
 PathView::PathView(ViewerServices& viewer)
-    : options(viewer.state().model_options.get<rt::PathOptions>(path_table())), viewer_(viewer) {}
+    : options(viewer.state().model_options.get<PathSettings>(path_table())), viewer_(viewer) {}
 
 PathView::~PathView() { cancel(); }
 
@@ -232,7 +232,7 @@ std::string check_path(const ScriptCommand& c) {
   const auto& a = c.args;
   if (a.size() == 1 && a[0] == "restart") return "";
   const OptionRow* row = a.size() == 2 ? find_row(path_table(), a[0]) : nullptr;
-  if (!row) return "`path` takes spp N, depth N, seed S or restart";
+  if (!row || !in_viewer(*row)) return "`path` takes spp N, depth N, seed S or restart";
   return parse_value(*row, a[1]) ? "" : fmt::format("`path {}` takes {}", a[0], accepted_text(*row));
 }
 

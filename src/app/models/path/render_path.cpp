@@ -90,25 +90,25 @@ bool given(const RenderSettings& settings, std::string_view flag) {
 
 Rendered render_path_model(const Scene& scene, const Camera& camera, int width, int height,
                            const RenderSettings& settings) {
-  if (!settings.error_out.empty()) {
-    std::string extension = std::filesystem::path(settings.error_out).extension().string();
+  const PathSettings& path_settings = settings.model_options.get<PathSettings>(path_table());
+  const std::string& error_out = path_settings.error_out;
+  if (!error_out.empty()) {
+    std::string extension = std::filesystem::path(error_out).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".exr")
       throw Error(ErrorKind::usage, trf("--error-out {}: the standard error is written as "
-                                        ".exr (linear float)", settings.error_out));
+                                        ".exr (linear float)", error_out));
   }
-  rt::PathOptions options = settings.model_options.get<rt::PathOptions>(path_table());
+  rt::PathOptions options = path_settings;
   options.textures = settings.local.terms.textures;
   // With --time, a given --spp caps the passes; else the time alone stops them.
   const bool spp_given = given(settings, "--spp");
   const PathResult path = render_path(scene, camera, width, height, options, settings.seconds,
                                       spp_given, !settings.quiet && isatty(STDERR_FILENO));
-  if (!settings.error_out.empty())
-    io::write_image(path.standard_error, settings.error_out, 0.0f);
+  if (!error_out.empty()) io::write_image(path.standard_error, error_out, 0.0f);
   Rendered result{path.mean, path.summary, std::nullopt};
-  if (!settings.error_out.empty())
-    result.summary += trf("standard error: {}", settings.error_out) + "\n";
+  if (!error_out.empty()) result.summary += trf("standard error: {}", error_out) + "\n";
   return result;
 }
 

@@ -2,6 +2,7 @@
 // Whitted's model (slides 20-27) in the viewer: the raster (Phong) view until Enter, then the
 // trace of that view tile by tile (traced_view.h).
 #include "app/models/whitted/traced_view.h"
+#include "app/common/i18n.h"
 
 namespace luz::app {
 
@@ -16,7 +17,7 @@ protected:
   std::optional<rt::WhittedOptions> options_for_trace(std::string&) override { return current_options(); }
   rt::WhittedOptions current_options() const override;
   std::string hint() const override {
-    return "Whitted: the raster (Phong) view. Press Enter / click Render to trace this view";
+    return tr("Whitted: the raster (Phong) view. Press Enter / click Render to trace this view");
   }
 };
 
