@@ -5,8 +5,8 @@
 #   ./setup.sh test      runs the whole test suite with ctest, then builds the web page and runs
 #                        its tests (as ./setup.sh web test)
 #   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
-#                        emscripten and chromium, libdeflate's and embree's source packages,
-#                        puppeteer-core and coi-serviceworker (npm)
+#                        emscripten and chromium, libdeflate's, imgui's and embree's source
+#                        packages, puppeteer-core and coi-serviceworker (npm)
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated
 #   ./setup.sh web test  builds the page and the desktop's luz, runs the CPU libraries' unit tests
 #                        in node (tests/web/run_node_tests.sh), then the page's tests in headless
@@ -48,10 +48,11 @@ fi
 
 # The web page: Emscripten's build of the sources into build-web/ (docs/web.md).
 build_web() {
-  # Debian's source packages the page compiles (libdeflate, embree), unpacked once into
+  # Debian's source packages the page compiles (libdeflate, embree, imgui), unpacked once into
   # build-web/sources.
   mkdir -p build-web/sources
-  if ! ls -d build-web/sources/libdeflate-*/lib build-web/sources/embree-3.*/kernels >/dev/null 2>&1; then
+  if ! ls -d build-web/sources/libdeflate-*/lib build-web/sources/embree-3.*/kernels \
+         build-web/sources/imgui-*/imgui.cpp >/dev/null 2>&1; then
     if ! apt-get source --print-uris libdeflate >/dev/null 2>&1; then
       echo "setup: adding deb-src lines to apt's sources (for apt-get source)"
       if [ -f /etc/apt/sources.list.d/debian.sources ]; then
@@ -73,6 +74,12 @@ build_web() {
     # missing from the mirror, so its success is judged by the orig tarball alone.
     (cd build-web/sources && { apt-get source -qq --download-only embree 2>/dev/null || true; } &&
        tar xJf embree_*.orig.tar.xz)
+  fi
+  # Dear ImGui's core sources (the desktop links Debian's libimgui-dev, which has no WebAssembly),
+  # judged by the orig tarball as Embree's.
+  if ! ls build-web/sources/imgui-*/imgui.cpp >/dev/null 2>&1; then
+    (cd build-web/sources && { apt-get source -qq --download-only imgui 2>/dev/null || true; } &&
+       tar xJf imgui_*.orig.tar.xz)
   fi
   # The browser tests' driver of Debian's chromium, and the service worker that isolates the page
   # where its host sends no headers (served beside luz.html), kept in the build folder.

@@ -78,3 +78,6 @@ target_link_libraries(luz_web_libdeflate PRIVATE luz_web_flags)
 add_library(PkgConfig::libdeflate ALIAS luz_web_libdeflate)
 
 include(${CMAKE_CURRENT_LIST_DIR}/web_embree.cmake)
+
+# The viewer's: Dear ImGui, GLFW, CLI11.
+include(${CMAKE_CURRENT_LIST_DIR}/web_viewer.cmake)

@@ -3,6 +3,8 @@
 // covers each pixel. Float channels hold integers exactly up to 2^24.
 uniform float u_mesh;
 
+flat in int v_triangle;
+
 layout(location = 0) out vec4 frag_id;
 
-void main() { frag_id = vec4(u_mesh, float(gl_PrimitiveID), 0.0, 1.0); }
+void main() { frag_id = vec4(u_mesh, float(v_triangle), 0.0, 1.0); }

@@ -46,15 +46,24 @@ void Framebuffer::bind_with_display() const {
   glDrawBuffers(display_ ? 2 : 1, both);
 }
 
-void bind_window_for_display() {
+// GL ES (the page's WebGL 2) gives the window one draw buffer, taking output 0 alone, and has no
+// glDrawBuffer: there the displayed values go through the float picture and display.frag.
+bool bind_window_for_display() {
+  if (!glDrawBuffer) return false;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   const GLenum outputs[2] = {GL_NONE, GL_BACK_LEFT};
   glDrawBuffers(2, outputs);
+  return true;
 }
 
 void bind_window() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDrawBuffer(GL_BACK);
+  if (glDrawBuffer) {
+    glDrawBuffer(GL_BACK);
+  } else {
+    const GLenum back = GL_BACK;  // GL ES's one name for the window's buffer
+    glDrawBuffers(1, &back);
+  }
 }
 
 Image Framebuffer::read() const {

@@ -50,8 +50,9 @@ private:
 
 // The window's framebuffer (0) bound so that a program's output 1, the displayed values, goes to
 // its back buffer and output 0, the radiance, nowhere: what LocalRenderer::draw_display draws
-// into. bind_window() binds it as usual again (output 0 to the back buffer).
-void bind_window_for_display();
+// into. False, binding nothing, where the window takes output 0 alone (GL ES). bind_window()
+// binds it as usual again (output 0 to the back buffer).
+bool bind_window_for_display();
 void bind_window();
 
 // Whether the window's framebuffer (0) is multisampled (a driver's forced antialiasing): a blit

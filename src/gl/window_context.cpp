@@ -103,6 +103,14 @@ glm::ivec2 WindowContext::framebuffer_size() const {
   return size;
 }
 
+const char* WindowContext::glsl_version() { return "#version 330 core"; }
+
+glm::vec2 WindowContext::content_scale() const {
+  glm::vec2 scale(1.0f);
+  glfwGetWindowContentScale(window_, &scale.x, &scale.y);
+  return scale;
+}
+
 void WindowContext::present(std::span<const PixelRect> changed) {
   if (!copy_sub_buffer_) {
     glfwSwapBuffers(window_);
@@ -155,5 +163,20 @@ std::vector<std::uint8_t> WindowContext::shown_pixels() const {
 
 bool WindowContext::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void WindowContext::poll() { glfwPollEvents(); }
+
+int WindowContext::drive_frames(FramePass pass) {
+  for (;;)
+    if (const std::optional<int> exit_code = pass()) return *exit_code;
+}
+
+bool WindowContext::wait(std::optional<std::chrono::steady_clock::time_point> until) {
+  if (!until) {
+    glfwWaitEvents();
+    return true;
+  }
+  const double left = std::chrono::duration<double>(*until - std::chrono::steady_clock::now()).count();
+  if (left > 0.0) glfwWaitEventsTimeout(left);
+  return true;
+}
 
 }  // namespace luz::gl

@@ -195,7 +195,7 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
   s.program.set("u_kd_texture", 0);
   glActiveTexture(GL_TEXTURE0);
   for (const Run& run : s.runs) {
@@ -208,7 +208,7 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     glDrawArrays(GL_TRIANGLES, run.first, run.count);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
-  if (options.outlines) {
+  if (options.outlines && glPolygonMode) {  // GL ES draws no lines of polygons: no outlines there
     glDisable(GL_POLYGON_OFFSET_FILL);
     s.program.set("u_outline", true);
     s.program.set("u_outline_colour", glm::vec3(0.02f));

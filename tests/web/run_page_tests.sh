@@ -3,8 +3,9 @@
 # 127.0.0.1 with the isolation headers (on LUZ_WEB_PORT) and without them (on the next port); the
 # page draws (page_smoke), isolated by the headers or by its service worker, and says why in words
 # where it can be neither (page_isolation), a bad scene is a sentence on the page in its language
-# and so is an unknown effect (page_api --expect-error), and each scene and model matches
-# `luz render` (page_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
+# and so is an unknown effect (page_api --expect-error), each scene and model matches `luz render` (page_matches_render), and
+# so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
+# (page_run_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -12,6 +13,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 port=${LUZ_WEB_PORT:-8765}
 export NODE_PATH="$web/npm/node_modules"
 mkdir -p "$scratch"
+# A scene the page fetches by its URL, as a teacher's would be: a shipped one, served beside it.
+mkdir -p "$web/test-scenes"
+cp "$(dirname "$(dirname "$here")")/scenes/whitted.gltf" "$(dirname "$(dirname "$here")")/scenes/whitted.bin" "$web/test-scenes/"
 serve=$(dirname "$(dirname "$here")")/src/app/web/serve.py
 python3 "$serve" "$web" "$port" >"$scratch/server.log" 2>&1 &
 server=$!
@@ -30,5 +34,6 @@ node "$here/page_isolation.mjs" refused "$plain_url" "$scratch/not_isolated.png"
 node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/error_es.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?effects=shadows,sparkle&lang=en" "$scratch/error_effects.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status

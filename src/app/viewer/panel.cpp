@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
@@ -19,6 +21,7 @@
 #include "app/viewer/overlays.h"
 #include "app/common/options_tables.h"
 #include "app/viewer/panes.h"
+#include "core/resources.h"
 
 namespace luz::app {
 namespace {
@@ -89,14 +92,14 @@ void effects_section(LocalOptions& o) {
       const SliderRange near = slider_range(local_table(), "fog-near"), far = slider_range(local_table(), "fog-far");
       ImGui::DragFloatRange2(tr("near, far (m)"), &o.fog.near, &o.fog.far, 0.05f, near.low, far.high, "%.2f");
       name_widget("near, far (m)");
-      dim_text(tr("f = (far - d) / (far - near), clamped"));
+      dim_text("%s", tr("f = (far - d) / (far - near), clamped"));
     } else {
       const SliderRange density = slider_range(local_table(), "fog-density");
       ImGui::DragFloat(tr("density (1/m)"), &o.fog.density, 0.002f, density.low, density.high, "%.3f");
       name_widget("density (1/m)");
-      dim_text(tr("f = exp(-density d)"));
+      dim_text("%s", tr("f = exp(-density d)"));
     }
-    dim_text(tr("I' = f I + (1 - f) C_fog"));
+    dim_text("%s", tr("I' = f I + (1 - f) C_fog"));
   }
 
   // Blocking of the sources by occlusion.
@@ -114,13 +117,13 @@ void effects_section(LocalOptions& o) {
     ImGui::Combo(tr("map size"), &size_index, "256\0" "512\0" "1024\0" "2048\0" "4096\0");
     name_widget("map size");
     o.shadows.map_size = 256 << size_index;
-    dim_text(tr("bias + slope·texel·tan θ; lookup moved offset texels along N"));
-    dim_text(tr("point lights, emitters: cube maps; spots, sun: one map"));
+    dim_text("%s", tr("bias + slope·texel·tan θ; lookup moved offset texels along N"));
+    dim_text("%s", tr("point lights, emitters: cube maps; spots, sun: one map"));
   }
 
   // Non-refractive transparency.
   term_checkbox(N_("transparency kt·It (non-refractive)  [O]"), &o.transparency.on, transparency_colour);
-  if (o.transparency.on) dim_text(tr("I + kt · (what lies behind), drawn back to front"));
+  if (o.transparency.on) dim_text("%s", tr("I + kt · (what lies behind), drawn back to front"));
 
   // Reflection maps.
   term_checkbox(N_("reflection map kr·Ir  [M]"), &o.reflection.on, reflection_colour);
@@ -129,7 +132,7 @@ void effects_section(LocalOptions& o) {
     ImGui::Combo(tr("cube face size"), &size_index, "64\0" "128\0" "256\0" "512\0" "1024\0");
     name_widget("cube face size");
     o.reflection.resolution = 64 << size_index;
-    dim_text(tr("a cube map from the centre of each object with kr > 0"));
+    dim_text("%s", tr("a cube map from the centre of each object with kr > 0"));
     if (!o.reflection.environment.empty())
       dim_text(tr("environment: %s"), o.reflection.environment.c_str());
   }
@@ -169,7 +172,7 @@ void lights_header(ViewerState& state) {
   const bool section_open = ImGui::CollapsingHeader(tr("Lights"), ImGuiTreeNodeFlags_DefaultOpen);
   name_widget("Lights");  // a script folds a section to reach the ones below
   if (!section_open) return;
-  if (scene.lights.empty()) dim_text(tr("no punctual lights"));
+  if (scene.lights.empty()) dim_text("%s", tr("no punctual lights"));
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     Light& light = scene.lights[i];
     LightEdit& edit = state.light_edits[i];
@@ -238,7 +241,7 @@ void material_header(ViewerState& state) {
   name_widget("Material");  // a script folds a section to reach the ones below
   if (!section_open) return;
   if (state.selected_material < 0 || size_t(state.selected_material) >= scene.materials.size()) {
-    dim_text(tr("click an object in the picture"));
+    dim_text("%s", tr("click an object in the picture"));
     return;
   }
   Material& m = scene.materials[size_t(state.selected_material)];
@@ -268,10 +271,35 @@ void material_header(ViewerState& state) {
   name_widget("ior");
   if (ImGui::ColorEdit3("Le", &m.emission.r, hdr)) state.emitters_changed = true;
   name_widget("Le");
-  dim_text(tr("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model"));
+  dim_text("%s", tr("kr: reflection map [M]; kt: transparency [O]; ior: Whitted's model"));
 }
 
 // ---- [scene] -----------------------------------------------------------------------------------
+// The shipped scenes (core/resources.h's folder), read once; the scene shown is the menu's title.
+// In the page they are the scenes packed with it; a scene of another folder stays the title.
+const std::vector<std::filesystem::path>& shipped_scenes() {
+  static const std::vector<std::filesystem::path> scenes = [] {
+    std::vector<std::filesystem::path> found;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(scene_dir(), error))
+      if (entry.path().extension() == ".gltf") found.push_back(entry.path());
+    std::sort(found.begin(), found.end());
+    return found;
+  }();
+  return scenes;
+}
+
+void scene_menu(ViewerState& state) {
+  const std::string shown = state.scene_path.filename().string();
+  const bool choosing = ImGui::BeginCombo(tr("scene"), shown.c_str());
+  name_widget("scene");
+  if (!choosing) return;
+  for (const std::filesystem::path& scene : shipped_scenes())
+    if (ImGui::Selectable(scene.filename().string().c_str(), scene.filename() == state.scene_path.filename()))
+      state.panel_lines.push_back("load \"" + scene.string() + "\"");
+  ImGui::EndCombo();
+}
+
 constexpr PanelButton buttons[] = {
     {"fit the exposure [K]", "set exposure auto"},
     {"scene camera [C]", "camera"},
@@ -314,7 +342,7 @@ void scene_header(ViewerState& state) {
   line_button(state, "scene camera [C]");
   ImGui::SameLine();
   line_button(state, "reload [R]");
-  dim_text("%s", state.scene_path.filename().string().c_str());
+  scene_menu(state);
 }
 
 }  // namespace

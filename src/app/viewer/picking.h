@@ -13,7 +13,7 @@
 #include "core/camera.h"
 #include "core/scene.h"
 #include "gl/framebuffer.h"
-#include "gl/mesh_buffers.h"
+#include "gl/face_buffers.h"
 #include "gl/shader.h"
 
 namespace luz::app {
@@ -46,7 +46,9 @@ public:
 private:
   void draw_ids(const Camera& camera, int width, int height);
   const Scene& scene_;
-  std::vector<gl::MeshBuffers> meshes_;
+  // Unindexed, so that a triangle is its first vertex / 3 (shaders/pick.vert): GLSL ES, the
+  // page's, has no gl_PrimitiveID.
+  std::vector<gl::FaceBuffers> meshes_;
   gl::Program program_{{"pick.vert", "pick.frag"}};
   std::unique_ptr<gl::Framebuffer> target_;
   std::optional<Camera> drawn_with_;  // the id buffer is redrawn only when the view changes

@@ -144,7 +144,7 @@ void SolversWindow::advance() {
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 
   s.rows = fewest_rows(*race_);
   s.done = all_done(*race_);
@@ -275,7 +275,7 @@ void SolversWindow::draw(float x, float y, float width, float height, bool pinne
     log_plot(*race_, false, size, min1, max1);
     s.plot_min = glm::min(min0, min1);
     s.plot_max = glm::max(max0, max1);
-    ImGui::TextDisabled(tr("x: form-factor rows used (log), y: log"));
+    ImGui::TextDisabled("%s", tr("x: form-factor rows used (log), y: log"));
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(tr("Shooting is useful after a few rows; Jacobi / Gauss-Seidel only after full sweeps "
                               "(N rows each, and none before the whole matrix is known)."));

@@ -144,15 +144,14 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the same layout every run, for the class and for the tests
-  float content_x = 1.0f, content_y = 1.0f;
-  glfwGetWindowContentScale(w, &content_x, &content_y);
+  const float content_x = window_.content_scale().x;
   int window_w = 1, window_h = 1;
   glfwGetWindowSize(w, &window_w, &window_h);
   pixels_per_unit_ = float(std::max(window_.framebuffer_size().x, 1)) / float(std::max(window_w, 1));
   content_scale_ = std::max(content_x, 1.0f);
   user_scale_ = std::clamp(settings.ui_scale, kMinUiScale, kMaxUiScale);
   ImGui_ImplGlfw_InitForOpenGL(w, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ImGui_ImplOpenGL3_Init(gl::WindowContext::glsl_version());
   rebuild_fonts();
 
   // ImGui 1.86 samples the keys once a frame and, within a frame, takes the typed characters
@@ -924,11 +923,11 @@ void Viewer::take_screenshots(const Layout& l) {
 // pixel (a whole 1280x720 window's about 2 ms), so what is painted anyway is not cleared first.
 // Nothing reads the window's depth but the local models, which clear their pane's.
 void Viewer::clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
-                             glm::vec4 background) {
+                             glm::vec4 colour) {
   long tiled = 0;
   for (const Viewport& pane : l.panes) tiled += long(pane.pixels.x) * pane.pixels.y;
   const bool view_tiled = !l.view.empty() && tiled == long(l.view.pixels.x) * l.view.pixels.y;
-  glClearColor(background.r, background.g, background.b, background.a);
+  glClearColor(colour.r, colour.g, colour.b, colour.a);
   glEnable(GL_SCISSOR_TEST);
   const auto clear = [](const FramebufferRect& r) {
     if (r.empty()) return;
@@ -1028,6 +1027,7 @@ void Viewer::smooth(double& ms, double sample) const {
 bool Viewer::needs_frames() const {
   if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty()) return true;
   if (script_ && !script_->finished() && !idle_until_ && !script_->waiting_until()) return true;
+  if (!queued_lines_.empty()) return true;
   if (classroom_.moving()) return true;
   if (ImGui::GetIO().WantTextInput) return true;  // the caret blinks
   return working();
@@ -1043,74 +1043,110 @@ bool Viewer::working() const {
   return false;
 }
 
-int Viewer::loop() {
-  auto last = std::chrono::steady_clock::now();
-  while (!window_.should_close() && !quit_) {
-    // `idle` and a script's `wait 2s` sleep until their time is up, unless an event comes.
-    std::optional<std::chrono::steady_clock::time_point> wake = idle_until_;
-    if (script_ && !idle_until_) wake = script_->waiting_until();
-    if (needs_frames()) {
-      window_.poll();
-    } else if (wake) {
-      const double left = std::chrono::duration<double>(*wake - std::chrono::steady_clock::now()).count();
-      if (left > 0.0) glfwWaitEventsTimeout(left);
-    } else {
-      glfwWaitEvents();
-    }
-    if (idle_until_ && std::chrono::steady_clock::now() >= *idle_until_) {
-      idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
-      idle_until_.reset();
-    }
-    while (!input_.empty()) {  // this frame's share of the keys (see the key callback)
-      const InputEvent e = input_.front();
-      input_.pop_front();
-      if (!e.is_key) {
-        ImGui_ImplGlfw_CharCallback(window_.handle(), e.codepoint);  // ImGui's, then ours
-        continue;
-      }
-      ImGui_ImplGlfw_KeyCallback(window_.handle(), e.key, e.scancode, e.action, e.mods);
-      if (e.action != GLFW_RELEASE) break;
-    }
-
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - last).count();
-    last = now;
-    state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
-    if (state_.status_ms_live) state_.status_ms = state_.frame_ms;
-    if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
-      if (script_) {
-        fmt::print(stderr, "luz: {}\n", error);
-        return 1;
-      }
-      warn(error);
-    }
-    if (script_) {
-      std::string error;
-      if (!script_->step(*this, error)) {
-        fmt::print(stderr, "luz: {}\n", error);
-        return 1;
-      }
-    }
-    fly(float(std::min(seconds, 0.1)));
-    const bool worked = working();
-    frame();
-    if (frames_to_draw_ > 0) --frames_to_draw_;
-    // Work ends inside a frame (its last tiles uploaded, the solver at its stopping rule), after
-    // the panel and the status line were laid out with it still running: more frames show the
-    // end, else the window would keep "tracing 98%" until the next event. Two: ImGui sizes a
-    // window's scrollbar from the frame before's contents.
-    if (worked && !working()) frames_to_draw_ = std::max(frames_to_draw_, 2);
-    if (!failure_.empty()) return 1;
+// Waits for an event or a script's time unless a frame is due; in the page the browser calls
+// every pass, and one with nothing due draws nothing (WindowContext::wait).
+std::optional<int> Viewer::pass() {
+  if (window_.should_close() || quit_) return 0;
+  // `idle` and a script's `wait 2s` sleep until their time is up, unless an event comes.
+  std::optional<std::chrono::steady_clock::time_point> wake = idle_until_;
+  if (script_ && !idle_until_) wake = script_->waiting_until();
+  if (needs_frames()) {
+    window_.poll();
+  } else if (!window_.wait(wake)) {
+    return std::nullopt;
   }
-  return 0;
+  if (idle_until_ && std::chrono::steady_clock::now() >= *idle_until_) {
+    idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
+    idle_until_.reset();
+  }
+  while (!input_.empty()) {  // this frame's share of the keys (see the key callback)
+    const InputEvent e = input_.front();
+    input_.pop_front();
+    if (!e.is_key) {
+      ImGui_ImplGlfw_CharCallback(window_.handle(), e.codepoint);  // ImGui's, then ours
+      continue;
+    }
+    ImGui_ImplGlfw_KeyCallback(window_.handle(), e.key, e.scancode, e.action, e.mods);
+    if (e.action != GLFW_RELEASE) break;
+  }
+
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - last_pass_).count();
+  last_pass_ = now;
+  state_.frame_ms = 0.9 * state_.frame_ms + 0.1 * 1000.0 * std::min(seconds, 1.0);  // smoothed for reading
+  if (state_.status_ms_live) state_.status_ms = state_.frame_ms;
+  if (std::string error; !classroom_.step(*this, error)) {  // a lesson's move: a script's failure, else a warning
+    if (script_) {
+      fmt::print(stderr, "luz: {}\n", error);
+      return 1;
+    }
+    warn(error);
+  }
+  if (script_) {
+    std::string error;
+    if (!script_->step(*this, error)) {
+      fmt::print(stderr, "luz: {}\n", error);
+      return 1;
+    }
+  }
+  step_queued_line();
+  fly(float(std::min(seconds, 0.1)));
+  const bool worked = working();
+  frame();
+  if (frames_to_draw_ > 0) --frames_to_draw_;
+  // Work ends inside a frame (its last tiles uploaded, the solver at its stopping rule), after
+  // the panel and the status line were laid out with it still running: more frames show the
+  // end, else the window would keep "tracing 98%" until the next event. Two: ImGui sizes a
+  // window's scrollbar from the frame before's contents.
+  if (worked && !working()) frames_to_draw_ = std::max(frames_to_draw_, 2);
+  if (failure_.empty()) return std::nullopt;
+  if (script_ || queued_lines_.empty()) return 1;
+  const LineDone done = std::move(queued_lines_.front().done);  // the failure is the running line's
+  queued_lines_.pop_front();
+  done(std::exchange(failure_, {}));
+  return std::nullopt;
+}
+
+void Viewer::run_later(const std::string& line, LineDone done) {
+  try {
+    queued_lines_.push_back({ScriptRunner(parse_script_text(line, "luz.run")), std::move(done)});
+    frames_to_draw_ = std::max(frames_to_draw_, 1);
+  } catch (const Error& error) {
+    done(error.what());
+  }
+}
+
+// The first queued line's commands of this frame. It is done once its commands have run and
+// what they started is over (busy()) and drawn: the frame after its last command.
+void Viewer::step_queued_line() {
+  if (queued_lines_.empty()) return;
+  QueuedLine& line = queued_lines_.front();
+  std::string error;
+  if (line.runner.finished() && !busy()) {
+    const LineDone done = std::move(line.done);
+    queued_lines_.pop_front();
+    done("");
+    step_queued_line();
+    return;
+  }
+  if (!line.runner.step(*this, error)) {
+    const LineDone done = std::move(line.done);
+    queued_lines_.pop_front();
+    done(error);
+  }
 }
 
 // ---- [run_viewer] ------------------------------------------------------------------------------
+int start_viewer(const ViewerSettings& settings) {
+  io::LoadedScene loaded = io::load_gltf(settings.scene);
+  auto viewer = std::make_shared<Viewer>(std::move(loaded), settings.scene, settings);
+  if (settings.started) settings.started(*viewer);
+  return gl::WindowContext::drive_frames([viewer] { return viewer->pass(); });
+}
+
 int run_viewer(const ViewerSettings& settings) {
   try {
-    io::LoadedScene loaded = io::load_gltf(settings.scene);
-    Viewer viewer(std::move(loaded), settings.scene, settings);
-    return viewer.loop();
+    return start_viewer(settings);
   } catch (const Error& error) {
     fmt::print(stderr, "luz: {}\n", error.what());
     return 1;

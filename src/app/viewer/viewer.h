@@ -2,6 +2,7 @@
 // The classroom viewer: the scene in a local model in a resizable window, the panel, the
 // inspector, the shortcuts and the scripted runs. Returns the exit code (0; 1 when the scene
 // cannot be loaded, there is no window, or a script command fails).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,16 @@
 
 namespace luz::app {
 
+// The viewer's door for a program that drives it while it runs (the page's window.luz.run): a
+// line of the script language, checked and run between frames as a script's lines are; `done`
+// is told "" once its work is done and drawn, or the error when the line is wrong or fails.
+using LineDone = std::function<void(const std::string& error)>;
+class LineQueue {
+public:
+  virtual ~LineQueue() = default;
+  virtual void run_later(const std::string& line, LineDone done) = 0;
+};
+
 struct ViewerSettings {
   std::string scene;
   std::optional<Script> script;  // `--script FILE`, already checked
@@ -19,8 +30,14 @@ struct ViewerSettings {
   float ui_scale = 1.0f;         // `--ui-scale`: the interface's size (1: the default)
   std::vector<std::string> models;  // `--model a,b,...`: side by side (panes.h); one: that model
   std::optional<Lesson> lesson;  // `--lesson [FILE]`, already read: the window opens on its first step
+  std::function<void(LineQueue&)> started;  // told once, when the window is open
 };
 
+// On the desktop it returns when the window closes; in the page (WindowContext::drive_frames) as
+// soon as the browser draws its frames, the viewer living on.
 int run_viewer(const ViewerSettings& settings);
+// The same, throwing luz::Error when the scene cannot be loaded or there is no window, where
+// run_viewer prints it (the page shows it in words).
+int start_viewer(const ViewerSettings& settings);
 
 }  // namespace luz::app

@@ -59,11 +59,16 @@ struct Layout {
   Viewport dock;
 };
 
-class Viewer final : public ScriptTarget, public ViewerServices {
+class Viewer final : public ScriptTarget, public ViewerServices, public LineQueue {
 public:
   Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings);
   ~Viewer() override;
-  int loop();  // until Esc, the window closes or the script quits; the exit code
+  // One pass of the frame loop (frame_loop.h): the exit code once Esc, the window or the script
+  // ends the run.
+  std::optional<int> pass();
+
+  // LineQueue: lines run one after the other, each from the frame after the one before it is done.
+  void run_later(const std::string& line, LineDone done) override;
 
   // ScriptTarget: a command runs through its verb's handler (script.h).
   bool run(const ScriptCommand& command, std::string& error) override;
@@ -150,7 +155,7 @@ private:
   // `view_alone_shown`: nothing of the window but the view is shown this frame (its panel is kept).
   void draw_picture(const Layout& l, bool view_alone_shown);
   void clear_unpainted(const Layout& l, std::span<const FramebufferRect> panel, bool panel_painted,
-                       glm::vec4 background);
+                       glm::vec4 colour);
   void draw_windows(const Layout& l);
   void measure_dock(const Viewport& column, float margin);
   Layout with_dock_beside(Layout l, float width) const;
@@ -198,6 +203,12 @@ private:
   bool dragged_ = false;
 
   std::optional<ScriptRunner> script_;
+  struct QueuedLine {
+    ScriptRunner runner;
+    LineDone done;
+  };
+  std::deque<QueuedLine> queued_lines_;  // run_later's
+  void step_queued_line();
   Classroom classroom_;            // the lesson, when one is open
   glm::vec2 scripted_click_at_{0.0f};
   int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
@@ -233,6 +244,7 @@ private:
 
   std::string status_shown_;                // the status line's text as it stands
   FrameClock::time_point status_refreshed_;  // when its figures were last brought up to date
+  FrameClock::time_point last_pass_ = FrameClock::now();  // the frame loop's last pass
 };
 
 }  // namespace luz::app

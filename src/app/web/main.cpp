@@ -1,18 +1,19 @@
-// The web page's shell (DESIGN.md "Two targets"): the canvas's WebGL 2 context, the scene the
-// URL names loaded from the page's packed files, and the browser's frame loop, which draws it
-// with the local models' renderer, the same code as the window's and `luz render`'s. Each frame
-// the picture is read back and shown exactly as `luz render` encodes a PNG (the scene's exposure,
-// the sRGB curve), through a texture blitted onto the canvas.
+// The web page's program (DESIGN.md "Two targets"): the viewer, the same code as the window's,
+// on the page's canvas. What differs is here and behind the viewer's seams (frame_loop.h,
+// gl/window_context_web.cpp): the URL's parameters in place of the command line, the scene
+// fetched when the URL names one, and window.luz, the page's door for scripts and tests.
 //
-// The URL's parameters (docs/web.md): scene=NAME (a shipped scene), model=gouraud|phong,
-// lang=es|en, size=WxH. The page's `window.luz.ready` settles after the first picture is shown.
+// The URL's parameters (docs/web.md): scene=NAME|URL, model=NAME, effects=shadows,..., lang=es|en,
+// size=WxH (the picture's size), panel=0 (the picture alone). window.luz (the shell, luz.html): ready settles
+// once the first picture of the URL's scene and model is shown; run(line) runs a line of the
+// script language; picture() is the picture as `luz render` writes it.
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,27 +21,28 @@
 
 #include <emscripten.h>
 #include <emscripten/html5.h>
+#include <emscripten/wget.h>
 
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/common/i18n.h"
+#include "app/common/model_registry.h"
+#include "app/viewer/viewer.h"
 #include "core/error.h"
-#include "core/i18n.h"
-#include "core/image.h"
 #include "core/resources.h"
-#include "gl/functions.h"
-#include "io/gltf_loader.h"
-#include "local/local_renderer.h"
 
 namespace luz::web {
 namespace {
 
-GlProc resolve(const char* name) { return reinterpret_cast<GlProc>(emscripten_webgl_get_proc_address(name)); }
+using app::tr;
+using app::trf;
 
-// The page's text under the canvas: what went wrong, or how long a frame took.
+// The page's text under the canvas: what went wrong, or nothing once the viewer shows.
 EM_JS(void, set_status_text, (const char* text), {
   const status = document.getElementById('status');
   if (status) status.textContent = UTF8ToString(text);
 });
-
-void show_status(const std::string& text) { set_status_text(text.c_str()); }
 
 // The value of the page URL's parameter `name` (empty when it is absent), written into `buffer`
 // as far as it fits; returns its length in bytes.
@@ -76,26 +78,34 @@ std::string url_parameter(const char* name) {
 
 // window.luz.ready: resolved once the first picture is on the canvas, rejected with the error
 // the page shows when there will be none (the shell defines both callbacks).
-EM_JS(void, report_ready, (), { if (window.luzReady) window.luzReady.resolve(); });
+EM_JS(void, report_ready, (), {
+  document.getElementById('status').textContent = "";
+  if (window.luzReady) window.luzReady.resolve();
+});
 EM_JS(void, report_failure, (const char* text), {
   const canvas = document.getElementById("canvas");
   if (canvas) canvas.style.display = "none";  // the error in words, not an empty picture
   if (window.luzReady) window.luzReady.reject(new Error(UTF8ToString(text)));
 });
 
+// A request of window.luz (run, picture) settled: resolved with `text`, or rejected with it.
+EM_JS(void, settle_request, (int id, int ok, const char* text), { window.luzSettle(id, ok, UTF8ToString(text)); });
+
 void fail(const std::string& text) {
-  show_status(text);
+  set_status_text(text.c_str());
   report_failure(text.c_str());
 }
 
 // What the URL asks for; each value is checked here, so a bad one is a sentence on the page.
 struct Request {
-  std::filesystem::path scene;
-  LocalOptions options;  // the shading model and slide 19's switches
-  int width = 640, height = 480;
+  std::string scene;  // a shipped scene's file, or a URL to fetch
+  bool fetched = false;
+  std::string model = "phong";
+  std::vector<std::string> settings;  // `set` lines: slide 19's switches the URL turns on
+  int width = 640, height = 480;  // the picture's
+  bool panel = true;
 };
 
-// A shipped scene by its name (cornell_box, whitted, ...): a name, never a path.
 std::filesystem::path shipped_scene(const std::string& name) {
   const bool plain = !name.empty() && name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
   const std::filesystem::path file = scene_dir() / (name + ".gltf");
@@ -103,30 +113,36 @@ std::filesystem::path shipped_scene(const std::string& name) {
   std::string names;
   for (const auto& entry : std::filesystem::directory_iterator(scene_dir()))
     if (entry.path().extension() == ".gltf") names += (names.empty() ? "" : ", ") + entry.path().stem().string();
-  throw Error(ErrorKind::bad_value, i18n::trf("No shipped scene is called \"{}\" (the shipped scenes: {}).", name, names));
+  throw Error(ErrorKind::bad_value, trf("No shipped scene is called \"{}\" (the shipped scenes: {}).", name, names));
 }
 
-Shading shading_named(const std::string& name) {
-  if (name == "phong") return Shading::phong;
-  if (name == "gouraud") return Shading::gouraud;
-  if (name == "flat") return Shading::flat;
-  throw Error(ErrorKind::bad_value, i18n::trf("No local model is called \"{}\" (flat, gouraud, phong).", name));
+// A URL rather than a shipped scene's name: it names a glTF file.
+bool names_a_file(const std::string& scene) {
+  return scene.find('/') != std::string::npos || scene.ends_with(".gltf") || scene.ends_with(".glb");
 }
 
-// effects=shadows,transparency,...: slide 19's switches, as `luz render`'s flags of those names.
-void read_effects(const std::string& text, LocalOptions& options) {
+void check_model(const std::string& name) {
+  if (!app::find_model(name))
+    throw Error(ErrorKind::bad_value, trf("No model is called \"{}\" ({}).", name, app::model_names()));
+}
+
+// effects=shadows,transparency,...: slide 19's switches, as `luz render`'s flags of those names,
+// each the viewer's `set` line.
+std::vector<std::string> effect_settings(const std::string& text) {
+  std::vector<std::string> settings;
   std::string_view rest = text;
   while (!rest.empty()) {
     const std::string_view name = rest.substr(0, rest.find(','));
     rest.remove_prefix(std::min(rest.size(), name.size() + 1));
-    if (name == "shadows") options.shadows.on = true;
-    else if (name == "transparency") options.transparency.on = true;
-    else if (name == "reflection") options.reflection.on = true;
-    else if (name == "fog") options.fog.mode = FogMode::linear;
+    if (name == "shadows") settings.push_back("set shadows on");
+    else if (name == "transparency") settings.push_back("set transparency on");
+    else if (name == "reflection") settings.push_back("set reflection-map on");
+    else if (name == "fog") settings.push_back("set fog linear");
     else
-      throw Error(ErrorKind::bad_value, i18n::trf("No effect is called \"{}\" (shadows, transparency, "
-                                                  "reflection, fog).", std::string(name)));
+      throw Error(ErrorKind::bad_value, trf("No effect is called \"{}\" (shadows, transparency, "
+                                            "reflection, fog).", std::string(name)));
   }
+  return settings;
 }
 
 // "WxH", each side 1 to 4096 pixels.
@@ -138,7 +154,7 @@ void read_size(const std::string& text, int& width, int& height) {
                     std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
                     std::from_chars(text.data() + x + 1, end, h).ptr == end;
   if (!read || w < 1 || h < 1 || w > 4096 || h > 4096)
-    throw Error(ErrorKind::bad_value, i18n::trf("size={} is not WIDTHxHEIGHT with each side 1 to 4096 pixels.", text));
+    throw Error(ErrorKind::bad_value, trf("size={} is not WIDTHxHEIGHT with each side 1 to 4096 pixels.", text));
   width = w;
   height = h;
 }
@@ -146,11 +162,17 @@ void read_size(const std::string& text, int& width, int& height) {
 Request read_request() {
   Request request;
   const std::string scene = url_parameter("scene"), model = url_parameter("model"), size = url_parameter("size"),
-                    effects = url_parameter("effects");
-  request.scene = scene.empty() ? default_scene() : shipped_scene(scene);
-  if (!model.empty()) request.options.shading = shading_named(model);
-  read_effects(effects, request.options);
+                    panel = url_parameter("panel"), effects = url_parameter("effects");
+  if (scene.empty()) request.scene = default_scene().string();
+  else if (names_a_file(scene)) request.scene = scene, request.fetched = true;
+  else request.scene = shipped_scene(scene).string();
+  if (!model.empty()) check_model(model);
+  if (!model.empty()) request.model = model;
+  request.settings = effect_settings(effects);
   if (!size.empty()) read_size(size, request.width, request.height);
+  if (panel == "0") request.panel = false;
+  else if (!panel.empty() && panel != "1")
+    throw Error(ErrorKind::bad_value, trf("panel={} is not 0 (the picture alone) or 1.", panel));
   return request;
 }
 
@@ -159,111 +181,171 @@ void choose_language() {
   const std::string asked = url_parameter("lang");
   if (!asked.empty()) {
     if (const auto language = i18n::parse_language(asked)) i18n::set_language(*language);
-    else throw Error(ErrorKind::bad_value, i18n::trf("lang={} is not a language of Luz (es, en).", asked));
+    else throw Error(ErrorKind::bad_value, trf("lang={} is not a language of Luz (es, en).", asked));
     return;
   }
   i18n::set_language(i18n::language_from_locale_name(text_from(browser_language_text)));
 }
 
-class Page {
-public:
-  explicit Page(const Request& request) : loaded_(io::load_gltf(request.scene)), renderer_(loaded_.scene) {
-    options_ = request.options;
-    glGenTextures(1, &shown_);
-    glGenFramebuffers(1, &read_fbo_);
-  }
+// ---- the viewer in the page ------------------------------------------------------------------
+Request request;
+app::LineQueue* viewer = nullptr;  // the running viewer's door, from its first frame on
+bool ready = false;
+const char* const windows_file = "/tmp/luz-windows.json";
+const char* const picture_file = "/tmp/luz-picture.png";
 
-  // One frame: the picture at the canvas's size, shown.
-  void frame() {
-    int width = 0, height = 0;
-    emscripten_get_canvas_element_size("#canvas", &width, &height);
-    if (width <= 0 || height <= 0) return;
-    const auto start = std::chrono::steady_clock::now();
-    const Image image = renderer_.render(loaded_.scene.cameras.front(), width, height, options_);
-    show(image);
-    if (!shown_once_) {
-      shown_once_ = true;
+std::string base64(const std::vector<unsigned char>& bytes) {
+  static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text;
+  text.reserve((bytes.size() + 2) / 3 * 4);
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned n = unsigned(bytes[i]) << 16 | (i + 1 < bytes.size() ? unsigned(bytes[i + 1]) << 8 : 0u) |
+                       (i + 2 < bytes.size() ? unsigned(bytes[i + 2]) : 0u);
+    text += digits[n >> 18 & 63];
+    text += digits[n >> 12 & 63];
+    text += i + 1 < bytes.size() ? digits[n >> 6 & 63] : '=';
+    text += i + 2 < bytes.size() ? digits[n & 63] : '=';
+  }
+  return text;
+}
+
+std::vector<unsigned char> file_bytes(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The picture's size is the URL's: the window grows or shrinks by what the panel and the status
+// line take, measured on the frame drawn (their sizes follow the font). A panel narrowed by a
+// small window takes a second try.
+void fit_picture(int tries_left) {
+  viewer->run_later(std::string("dump-windows ") + windows_file, [tries_left](const std::string& error) {
+    if (!error.empty()) return fail(error);
+    const nlohmann::json windows = nlohmann::json::parse(std::ifstream(windows_file));
+    const auto& view = windows.at("view");
+    const int shown_w = int(std::lround(view[2].get<double>() - view[0].get<double>()));
+    const int shown_h = int(std::lround(view[3].get<double>() - view[1].get<double>()));
+    if ((shown_w == request.width && shown_h == request.height) || tries_left == 0) {
+      ready = true;
       report_ready();
+      return;
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    show_status(std::string(to_string(options_.shading)) + ", " + std::to_string(width) + "x" +
-                std::to_string(height) + ": " + std::to_string(int(ms + 0.5)) + " ms");
-  }
+    int window_w = 0, window_h = 0;
+    emscripten_get_canvas_element_size("#canvas", &window_w, &window_h);
+    const std::string resize = fmt::format("resize {} {}", window_w + request.width - shown_w,
+                                           window_h + request.height - shown_h);
+    viewer->run_later(resize, [tries_left](const std::string& resize_error) {
+      if (!resize_error.empty()) return fail(resize_error);
+      fit_picture(tries_left - 1);
+    });
+  });
+}
 
-private:
-  // The picture as `luz render` writes it: radiance x 2^exposure (the scene's), the sRGB curve,
-  // 8 bits.
-  void show(const Image& image) {
-    bytes_.resize(image.pixels.size() * 3);
-    srgb_bytes(image.pixels, std::exp2(loaded_.scene.exposure), bytes_);
-    glBindTexture(GL_TEXTURE_2D, shown_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, bytes_.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo_);
-    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, shown_, 0);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    // The image's row 0 is the top, GL's the bottom: blitted upside down.
-    glBlitFramebuffer(0, 0, image.width, image.height, 0, image.height, image.width, 0, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  }
+// Once the viewer runs: the URL's switches on and the panel hidden when it says so, then, on the
+// frame drawn after them, the picture brought to its size, then ready.
+void viewer_started(app::LineQueue& queue) {
+  viewer = &queue;
+  std::vector<std::string> lines = request.settings;
+  if (!request.panel) lines.push_back("set panel off");
+  lines.push_back("wait 1");
+  for (size_t i = 0; i < lines.size(); ++i)
+    viewer->run_later(lines[i], [last = i + 1 == lines.size()](const std::string& error) {
+      if (!error.empty()) return fail(error);
+      if (last) fit_picture(3);
+    });
+}
 
-  io::LoadedScene loaded_;
-  LocalRenderer renderer_;
-  LocalOptions options_;
-  std::vector<uint8_t> bytes_;
-  GLuint shown_ = 0, read_fbo_ = 0;
-  bool shown_once_ = false;
-};
-
-std::unique_ptr<Page> page;
-
-void frame() {
+void start() {
+  app::ViewerSettings settings;
+  settings.scene = request.scene;
+  settings.models = {request.model};
+  // A first guess at the window around the picture: the panel's default width and a status line.
+  settings.width = request.width + (request.panel ? 440 : 0);
+  settings.height = request.height + 30;
+  settings.started = viewer_started;
   try {
-    page->frame();
+    app::start_viewer(settings);
   } catch (const std::exception& error) {
     fail(error.what());
-    emscripten_cancel_main_loop();
   }
+}
+
+// A fetched scene's folder in the page's files, and the URL it came from up to its name.
+const std::filesystem::path fetched_dir = "/tmp/scenes";
+std::string fetched_base;
+std::vector<std::string> parts_to_fetch;  // the files a .gltf names beside it, still to fetch
+std::string part_fetching;
+
+void not_fetched(const char*) { fail(trf("The scene at {} could not be fetched.", url_parameter("scene"))); }
+void part_not_fetched(const char*) { fail(trf("The scene at {} could not be fetched.", fetched_base + part_fetching)); }
+
+void fetch_parts() {
+  if (parts_to_fetch.empty()) return start();
+  part_fetching = parts_to_fetch.back();
+  parts_to_fetch.pop_back();
+  const std::filesystem::path file = fetched_dir / part_fetching;
+  std::filesystem::create_directories(file.parent_path());
+  emscripten_async_wget((fetched_base + part_fetching).c_str(), file.c_str(), [](const char*) { fetch_parts(); },
+                        part_not_fetched);
+}
+
+// The buffers and images a .gltf names by a relative path (not a data: URI), fetched beside it;
+// a file that does not parse is left to the loader, which says what is wrong with it.
+void fetched(const char* file) {
+  request.scene = file;
+  if (std::filesystem::path(file).extension() == ".gltf") {
+    const nlohmann::json gltf = nlohmann::json::parse(std::ifstream(file), nullptr, false);
+    for (const char* list : {"buffers", "images"})
+      if (gltf.is_object() && gltf.contains(list) && gltf[list].is_array())
+        for (const auto& entry : gltf[list])
+          if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
+            const std::string uri = entry["uri"];
+            const bool beside = !uri.starts_with("data:") && !uri.starts_with("/") &&
+                                uri.find("://") == std::string::npos && uri.find("..") == std::string::npos;
+            if (beside) parts_to_fetch.push_back(uri);
+          }
+  }
+  fetch_parts();
 }
 
 }  // namespace
 }  // namespace luz::web
 
+// window.luz.run(line) and picture(): the shell calls these with the id it settles.
+extern "C" EMSCRIPTEN_KEEPALIVE void luz_run(const char* line, int id) {
+  using namespace luz::web;
+  if (!viewer || !ready) return settle_request(id, 0, "Luz is not ready: await luz.ready first.");
+  viewer->run_later(line, [id](const std::string& error) { settle_request(id, error.empty(), error.c_str()); });
+}
+
+extern "C" EMSCRIPTEN_KEEPALIVE void luz_picture(int id) {
+  using namespace luz::web;
+  if (!viewer || !ready) return settle_request(id, 0, "Luz is not ready: await luz.ready first.");
+  viewer->run_later(std::string("screenshot ") + picture_file, [id](const std::string& error) {
+    if (!error.empty()) return settle_request(id, 0, error.c_str());
+    const std::string url = "data:image/png;base64," + base64(file_bytes(picture_file));
+    std::remove(picture_file);
+    settle_request(id, 1, url.c_str());
+  });
+}
+
 int main() {
   using namespace luz;
-  EmscriptenWebGLContextAttributes attributes;
-  emscripten_webgl_init_context_attributes(&attributes);
-  attributes.majorVersion = 2;
-  attributes.minorVersion = 0;
-  attributes.alpha = false;
-  attributes.antialias = false;
-  attributes.preserveDrawingBuffer = true;  // the canvas can be read back between frames
-  const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context("#canvas", &attributes);
-  if (context <= 0) {
-    web::fail(i18n::tr("This browser gives no WebGL 2 context."));
-    return 1;
-  }
-  emscripten_webgl_make_context_current(context);
-  // Float colour buffers: the local models draw radiance in RGBA32F, as on the desktop.
-  if (!emscripten_webgl_enable_extension(context, "EXT_color_buffer_float")) {
-    web::fail(i18n::tr("This browser's WebGL 2 cannot draw into float buffers (EXT_color_buffer_float)."));
-    return 1;
-  }
-  // Transparency blends into them (lighting.glsl's two draws), which WebGL 2 allows with this one.
-  emscripten_webgl_enable_extension(context, "EXT_float_blend");
   try {
     web::choose_language();
-    const web::Request request = web::read_request();
-    emscripten_set_canvas_element_size("#canvas", request.width, request.height);
-    load_gl_functions(web::resolve);
-    web::page = std::make_unique<web::Page>(request);
+    web::request = web::read_request();
   } catch (const std::exception& error) {
     web::fail(error.what());
     return 1;
   }
-  // The browser calls frame() before each repaint; main returns and the page stays live.
-  emscripten_set_main_loop(web::frame, 0, false);
+  if (!web::request.fetched) {
+    web::start();
+    return 0;
+  }
+  // The scene's file under its own name, so that the viewer's title and messages name it.
+  std::filesystem::create_directories(web::fetched_dir);
+  const std::string& url = web::request.scene;
+  const std::string name = url.substr(url.find_last_of('/') + 1);
+  web::fetched_base = url.substr(0, url.size() - name.size());
+  emscripten_async_wget(url.c_str(), (web::fetched_dir / name).c_str(), web::fetched, web::not_fetched);
   return 0;
 }

@@ -85,16 +85,16 @@ std::string HybridView::status() const {
 
 void HybridView::panel() {
   ViewerState& state = viewer_.state();
-  dim_text(tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
-  ImGui::TextWrapped(tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));
+  dim_text("%s", tr("radiosity's diffuse light + ray-traced highlights (slides 41-43)"));  // wrapped
+  ImGui::TextWrapped("%s", tr("I = B/π + Σᵢ Sᵢ ILᵢ·ks·cosⁿ α + kr·Ir + kt·It"));
   // Which radiosity solution the trace reads: model 5's, as it left it.
   const RadiosityStatus& r = radiosity_.state().status;
-  if (!r.built) dim_text(tr("radiosity: not solved yet (solved to the stopping rule first)"));
+  if (!r.built) dim_text("%s", tr("radiosity: not solved yet (solved to the stopping rule first)"));
   else
     ImGui::TextWrapped(tr("radiosity: %zu patches, %d shots, %.2f %% unshot%s"), r.patches, r.shots, 100.0 * r.unshot_fraction,
                        radiosity_.state().drive.running ? tr(", running") : r.done ? tr(", done") : tr(", paused"));
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped(tr("model 5 [5] steps, resets and remeshes it; a trace reads it as it is"));
+  ImGui::TextWrapped("%s", tr("model 5 [5] steps, resets and remeshes it; a trace reads it as it is"));
   ImGui::PopStyleColor();
   traced_section(state, *this);
 }

@@ -78,7 +78,7 @@ bool LocalView::draw_into_window(const Camera& camera, const Viewport& viewport,
   LocalRenderer& renderer = viewer_.local_renderer();
   state.local.shading = shading_;
   if ((viewer_.inspection().pick && state.show_inspector) || renderer.blends(state.local)) return false;
-  gl::bind_window_for_display();
+  if (!gl::bind_window_for_display()) return false;
   renderer.draw_display(camera, viewport.gl_origin, viewport.pixels, state.local, std::exp2(state.exposure),
                         window_unseen);
   gl::bind_window();

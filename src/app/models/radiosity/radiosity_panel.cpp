@@ -55,7 +55,7 @@ void loop_controls(RadiosityState& r) {
   row(tr("patches"), trf("{}  (longest edge {:.3g} m), {} elements", s.patches, s.patch_size, s.elements));
   ImGui::TextUnformatted(tr("shooter"));
   ImGui::SameLine(column);
-  if (s.shooter.empty()) dim_text(tr("none yet (step 1: unshot = E)"));
+  if (s.shooter.empty()) dim_text("%s", tr("none yet (step 1: unshot = E)"));
   else ImGui::TextColored(shooter_colour, "%s", s.shooter.c_str());
 }
 
@@ -155,7 +155,7 @@ void mesh_settings(RadiosityState& r, RadiosityOptions& o) {
   const SliderRange elements = slider_range(radiosity_table(), "elements");
   ImGui::SliderInt(tr("elements per patch edge"), &o.elements_per_edge, int(elements.low), int(elements.high));
   name_widget("elements per patch edge");
-  dim_text(tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
+  dim_text("%s", tr("patches shoot, their N x N elements receive (1 = every element shoots)"));
   bool adaptive = o.meshing == Meshing::adaptive;
   ImGui::Checkbox(tr("adaptive subdivision"), &adaptive);
   name_widget("adaptive subdivision");
@@ -190,7 +190,7 @@ void mesh_settings(RadiosityState& r, RadiosityOptions& o) {
   name_widget("remesh and restart");
   if (pending) ImGui::PopStyleColor();
   ImGui::SameLine();
-  dim_text(pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
+  dim_text("%s", pending ? tr("to apply the new size") : tr("also applies kd, Le, light edits"));
   int method = int(o.form_factors);  // FormFactorMethod's order
   ImGui::RadioButton(tr("hemicube form factors"), &method, 0);
   name_widget("hemicube form factors");
@@ -208,13 +208,13 @@ void mesh_settings(RadiosityState& r, RadiosityOptions& o) {
   name_widget("overshoot");
   ImGui::Checkbox(tr("turn the hemicube at random each shot"), &o.random_rotation);
   name_widget("turn the hemicube at random each shot");
-  dim_text(tr("(seeded: the same shots give the same picture)"));
+  dim_text("%s", tr("(seeded: the same shots give the same picture)"));
 }
 
 // ---- [display] ---------------------------------------------------------------------------------
 // The heat map's fixed scale: the ramp with its decades, in units of the mean emitted exitance.
 void heat_map_legend() {
-  dim_text(tr("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):"));
+  dim_text("%s", tr("unshot exitance of a patch / the scene's mean emitted exitance (fixed scale):"));
   const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetTextLineHeight();
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -235,7 +235,7 @@ void heat_map_legend() {
     ImGui::SetCursorScreenPos(ImVec2(at.x + std::clamp(width * float(k) / float(decades) - 0.5f * w, 0.0f, width - w), y));
     ImGui::TextUnformatted(label.c_str());
   }
-  dim_text(tr("black: nothing left to shoot"));
+  dim_text("%s", tr("black: nothing left to shoot"));
 }
 
 void display_settings(RadiosityState& r, RadiosityOptions& o, bool& textures) {
@@ -250,11 +250,11 @@ void display_settings(RadiosityState& r, RadiosityOptions& o, bool& textures) {
   ImGui::Checkbox(tr("patch outlines"), &o.outlines);
   name_widget("patch outlines");
   ImGui::SameLine();
-  ImGui::TextDisabled(tr("[L]: flat + outlines"));
+  ImGui::TextDisabled("%s", tr("[L]: flat + outlines"));
   ImGui::Checkbox(tr("kd texture [T]"), &textures);
   name_widget("kd texture [T]");
   ImGui::SameLine();
-  ImGui::TextDisabled(tr("(ρ: the solution starts over)"));
+  ImGui::TextDisabled("%s", tr("(ρ: the solution starts over)"));
   ImGui::Checkbox(tr("ambient estimate ρ·ambient  [Shift+A]"), &o.ambient_estimate);
   name_widget("ambient estimate ρ·ambient  [Shift+A]");
   ImGui::Checkbox(tr("heat map of unshot power  [U]"), &d.heat_map);
@@ -274,8 +274,8 @@ void display_settings(RadiosityState& r, RadiosityOptions& o, bool& textures) {
 void radiosity_section(ViewerServices& viewer, RadiosityState& r) {
   ViewerState& state = viewer.state();
   RadiosityOptions& o = state.radiosity;
-  dim_text(tr("progressive refinement, slide 39; B/π drawn (slide 39 step 3)"));
-  ImGui::TextWrapped(tr("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j"));
+  dim_text("%s", tr("progressive refinement, slide 39; B/π drawn (slide 39 step 3)"));
+  ImGui::TextWrapped("%s", tr("shoot i:  ΔB_j = ρ_j · F_ji · unshot_i,   F_ji = F_ij · A_i / A_j"));
   ImGui::Spacing();
   loop_controls(r);
   unshot_plot(r, o);
@@ -310,15 +310,15 @@ void draw_item_buffer_window(RadiosityState& r, const RadiosityOptions& options,
                  ImVec2(0.0f, 1.0f), ImVec2(1.0f, 0.0f));
     r.status.item_view_min = glm::vec2(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y);
     r.status.item_view_max = glm::vec2(ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y);
-    dim_text(tr("top face, 4 half faces folded out; a colour per patch"));
-    dim_text(tr("black: no patch (an open side) or a patch's back"));
+    dim_text("%s", tr("top face, 4 half faces folded out; a colour per patch"));
+    dim_text("%s", tr("black: no patch (an open side) or a patch's back"));
     if (options.form_factors == FormFactorMethod::rays)
-      dim_text(tr("(form factors by rays: this hemicube is drawn for the window only)"));
+      dim_text("%s", tr("(form factors by rays: this hemicube is drawn for the window only)"));
   } else if (s.last_shooter < -1 || (s.last_shooter == -1 && s.shots > 0)) {
     ImGui::TextUnformatted(s.shooter.c_str());
-    dim_text(tr("a point light: shot through a cube of 6 item buffers"));
+    dim_text("%s", tr("a point light: shot through a cube of 6 item buffers"));
   } else {
-    dim_text(tr("no patch has shot yet"));
+    dim_text("%s", tr("no patch has shot yet"));
     ImGui::Dummy(ImVec2(side, 0.0f));
   }
   ImGui::End();

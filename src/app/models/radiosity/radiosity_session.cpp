@@ -102,7 +102,7 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 
   // Step 3: what every patch shows, uploaded again after the shots (or a change of display).
   const bool display_changed = heat_map != heat_map_shown_ ||

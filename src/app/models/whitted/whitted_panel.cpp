@@ -79,7 +79,7 @@ void options(ViewerState& state, bool hybrid) {
   const SliderRange depth = slider_range(whitted_table(), "depth");
   ImGui::SliderInt(tr("max depth"), &o.max_depth, int(depth.low), int(depth.high));
   name_widget("max depth");
-  dim_text(tr("primary ray: depth 1; a hit at depth d spawns R and T while d < max"));
+  dim_text("%s", tr("primary ray: depth 1; a hit at depth d spawns R and T while d < max"));
   bool adaptive = o.sampling == rt::Sampling::adaptive;
   ImGui::BeginDisabled(adaptive);
   const int max_root = int(std::lround(std::sqrt(slider_range(whitted_table(), "spp").high)));
@@ -107,7 +107,7 @@ void options(ViewerState& state, bool hybrid) {
   ImGui::SliderInt(tr("samples per emitter"), &o.light_samples, int(samples.low), int(samples.high), "%d",
                    ImGuiSliderFlags_Logarithmic);
   name_widget("samples per emitter");
-  dim_text(tr("1: its centroid; N: N-rooks over its area (soft shadows)"));
+  dim_text("%s", tr("1: its centroid; N: N-rooks over its area (soft shadows)"));
   ImGui::Checkbox(tr("brute force (every triangle, counted)"), &o.brute_force);
   name_widget("brute force (every triangle, counted)");
   // The same picture either way (wavefront.h); the trace time tells them apart.
@@ -172,7 +172,7 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
   ImGui::TableNextColumn();
   if (shadow) ImGui::Text(tr("light %d: %s"), n.light, n.hit ? tr("blocked") : tr("lit"));
   else if (n.hit) ImGui::TextUnformatted(n.mesh.c_str());
-  else dim_text(tr("background"));
+  else dim_text("%s", tr("background"));
   if (ImGui::IsItemHovered())  // the hit cell: the ray itself
     ImGui::SetTooltip(tr("origin %.3f %.3f %.3f\ndirection %.3f %.3f %.3f\nt %.4g (%s)\nweight %s\nradiance %s"),
                       n.origin.x, n.origin.y, n.origin.z, n.direction.x, n.direction.y, n.direction.z, n.t,
@@ -190,7 +190,7 @@ void node_row(const rt::RayTree& tree, const std::vector<std::vector<int>>& chil
 void ray_tree(ViewerState& state, TracedView& view) {
   if (!ImGui::TreeNodeEx(tr("ray tree (slide 24)"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (!view.ray_tree()) {
-    dim_text(tr("click a pixel: its rays are drawn over the scene"));
+    dim_text("%s", tr("click a pixel: its rays are drawn over the scene"));
     ImGui::TreePop();
     return;
   }
@@ -218,9 +218,9 @@ void ray_tree(ViewerState& state, TracedView& view) {
     ImGui::EndTable();
   }
   ImGui::PopStyleVar();
-  dim_text(view.hybrid() ? tr("local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit")
-                         : tr("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit"));
-  dim_text(tr("share: its contribution to L (hover for numbers)"));
+  dim_text("%s", view.hybrid() ? tr("local: B/π + Σ Sᵢ ILᵢ·ks·cosⁿ α at the hit")
+                               : tr("local: Ia·ka + Σ Sᵢ ILᵢ[...] + Le at the hit"));
+  dim_text("%s", tr("share: its contribution to L (hover for numbers)"));
   ImGui::TreePop();
 }
 

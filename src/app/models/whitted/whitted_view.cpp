@@ -22,8 +22,8 @@ rt::WhittedOptions WhittedView::current_options() const {
 }
 
 void WhittedView::panel() {
-  ImGui::TextDisabled(tr("rays from the eye, traced on the CPU (Embree, TBB)"));
-  ImGui::TextWrapped(tr("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It"));
+  ImGui::TextDisabled("%s", tr("rays from the eye, traced on the CPU (Embree, TBB)"));
+  ImGui::TextWrapped("%s", tr("I = Ia·ka + Σᵢ Sᵢ ILᵢ·[kd·cos θ + ks·cosⁿ α] + kr·Ir + kt·It"));
   traced_section(viewer_.state(), *this);
 }
 
