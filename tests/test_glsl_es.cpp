@@ -45,13 +45,13 @@ TEST(GlslDialect, TheHeaderIsTheFilesVersionOnTheDesktopAndEsWithPrecisionsForTh
 }
 
 // The fixed programs the page's local models and window use, compiled and linked as GLSL ES
-// (the inspector's pick.frag is not among them: it reads gl_PrimitiveID, which ES lacks). Flat
-// shading's program is drawn below.
+// (the inspector's picking names a triangle by gl_VertexID / 3, not gl_PrimitiveID, which ES
+// lacks). Flat shading's program is drawn below.
 TEST(GlslDialect, TheLocalModelsFixedProgramsCompileAsGlslEs) {
   const DialectScope es(gl::GlslDialect::es_300);
   const std::vector<std::vector<std::string>> programs = {
       {"shadow.vert", "shadow.frag"}, {"display.vert", "display.frag"}, {"bare.vert", "bare.frag"},
-      {"ray_tree.vert", "ray_tree.frag"}};
+      {"ray_tree.vert", "ray_tree.frag"}, {"pick.vert", "pick.frag"}};
   for (const auto& stages : programs) {
     const std::vector<std::string> shared =
         stages.front() == "display.vert" ? std::vector<std::string>{"srgb.glsl"} : std::vector<std::string>{};
@@ -60,11 +60,10 @@ TEST(GlslDialect, TheLocalModelsFixedProgramsCompileAsGlslEs) {
 }
 
 // What GLSL ES lacks fails with the driver's message, not silently: the geometry stage (flat
-// shading draws flat.vert there instead), and gl_PrimitiveID (the inspector's picking).
+// shading draws flat.vert there instead).
 TEST(GlslDialect, WhatGlslEsLacksIsRefused) {
   const DialectScope es(gl::GlslDialect::es_300);
   EXPECT_THROW(gl::Program({"local.vert", "flat.geom", "flat.frag"}, {"srgb.glsl", "lighting.glsl"}), Error);
-  EXPECT_THROW(gl::Program({"pick.vert", "pick.frag"}), Error);
 }
 
 struct Case {
