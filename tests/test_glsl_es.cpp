@@ -15,19 +15,11 @@
 #include "gl/shader.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
+#include "glsl_dialect_scope.h"
 #include "support.h"
 
 namespace luz {
 namespace {
-
-// Compiles programs as the given dialect for the scope's lifetime.
-class DialectScope {
-public:
-  explicit DialectScope(gl::GlslDialect dialect) { gl::set_glsl_dialect(dialect); }
-  ~DialectScope() { gl::set_glsl_dialect(std::nullopt); }
-  DialectScope(const DialectScope&) = delete;
-  DialectScope& operator=(const DialectScope&) = delete;
-};
 
 TEST(GlslDialect, TheDesktopContextSpeaksGlsl330) {
   EXPECT_EQ(gl::current_glsl_dialect(), gl::GlslDialect::desktop_330);

@@ -19,19 +19,11 @@
 #include "io/gltf_loader.h"
 #include "radiosity/item_buffer.h"
 #include "radiosity/patch_mesh.h"
+#include "glsl_dialect_scope.h"
 #include "support.h"
 
 namespace luz {
 namespace {
-
-// Compiles programs as the given dialect for the scope's lifetime.
-class DialectScope {
-public:
-  explicit DialectScope(gl::GlslDialect dialect) { gl::set_glsl_dialect(dialect); }
-  ~DialectScope() { gl::set_glsl_dialect(std::nullopt); }
-  DialectScope(const DialectScope&) = delete;
-  DialectScope& operator=(const DialectScope&) = delete;
-};
 
 // The item buffer of `mesh` seen from `eye` towards `centre` (a 90-degree square view), with the
 // programs compiled in `dialect`.
