@@ -87,7 +87,8 @@ build_web() {
     npm install --silent --no-save --prefix build-web/npm puppeteer-core@23 coi-serviceworker@0.1.7
   # Emscripten's JavaScript tools find their modules in Debian's folder whatever node runs them.
   export NODE_PATH=/usr/share/nodejs
-  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release
+  # The node tests are built on request only (test_web); ON also for a build-web/ configured without them.
+  emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=ON
   cmake --build build-web --parallel "$(nproc)"
 }
 
