@@ -65,6 +65,9 @@ TEST(ParallelFor, ThreadsForPassesTheBodysExceptionOn) {
                                        [&](size_t lo, size_t) {
                                          ++calls;
                                          if (lo == 3) throw std::runtime_error("index 3");
+                                         // The later chunks take a while, as real work does: four
+                                         // threads must not all finish before the failure is seen.
+                                         if (lo > 3) std::this_thread::sleep_for(std::chrono::milliseconds(1));
                                        }),
                  std::runtime_error);
     EXPECT_LT(calls.load(), 1000) << "the chunks after the failure are skipped";
