@@ -83,6 +83,21 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   for (const char* kind : {"shadow", "reflected", "transmitted"}) EXPECT_GT(traced["rays"][kind].get<long>(), 0) << kind;
 }
 
+// A trace that ends with no input is drawn whole: the counters it adds lengthen the panel, and
+// the scrollbar ImGui sizes from the frame before's contents is the one a later frame draws.
+TEST_F(ViewerWhitted, TheEndOfATraceReachesTheScreenWithoutInput) {
+  const Codes idle = codes(file("ended-idle-shown.png"));
+  const Codes later = codes(file("ended-later-shown.png"));
+  ASSERT_EQ(idle.width, later.width);
+  ASSERT_EQ(idle.height, later.height);
+  // Above the status line, whose message the first screenshot changed ("saved ...").
+  int moved = 0;
+  for (int y = 0; y < idle.height - 40; ++y)
+    for (int x = 0; x < idle.width; ++x)
+      for (int c = 0; c < 3; ++c) moved += std::abs(idle.at(x, y, c) - later.at(x, y, c)) > 2;
+  EXPECT_EQ(moved, 0);
+}
+
 // `wait-until trace-done` (the traced view answers the condition) returns once every tile landed.
 TEST_F(ViewerWhitted, WaitUntilTraceDoneWaitsForTheLastTile) {
   const nlohmann::json done = json_of(file("until-done.json"));
