@@ -18,3 +18,13 @@ export async function openPage(onError) {
   page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); onError(); });
   return { browser, page };
 }
+
+// Opens url and waits for luz.ready: { ok, message, ms } (message when it rejected, ms since
+// the page was asked for).
+export async function openLuz(page, url) {
+  const opened = Date.now();
+  await page.goto(url);
+  const outcome = await page.evaluate(() =>
+    window.luz.ready.then(() => ({ ok: true }), (error) => ({ ok: false, message: error.message })));
+  return { ...outcome, ms: Date.now() - opened };
+}

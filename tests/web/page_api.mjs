@@ -6,7 +6,7 @@
 //        node tests/web/page_api.mjs --expect-error URL SCREENSHOT.png
 //        (NODE_PATH=build-web/npm/node_modules)
 import { writeFileSync } from 'node:fs';
-import { openPage } from './browser.mjs';
+import { openLuz, openPage } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const expectError = args[0] === '--expect-error';
@@ -20,12 +20,9 @@ if (!url || !output) {
 let failed = false;
 const { browser, page } = await openPage(() => { failed = true; });
 try {
-  const opened = Date.now();
-  await page.goto(url);
-  const outcome = await page.evaluate(() =>
-    window.luz.ready.then(() => ({ ok: true }), (error) => ({ ok: false, message: error.message })));
+  const outcome = await openLuz(page, url);
   const status = await page.$eval('#status', (s) => s.textContent);
-  console.log(`ready after ${Date.now() - opened} ms: ${outcome.ok ? 'picture' : 'error'}; status: ${status}`);
+  console.log(`ready after ${outcome.ms} ms: ${outcome.ok ? 'picture' : 'error'}; status: ${status}`);
   if (expectError) {
     // The rejection's text is what the page shows, and it is a sentence, not "Loading".
     if (outcome.ok || status !== outcome.message || status.length < 20) failed = true;

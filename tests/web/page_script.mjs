@@ -8,7 +8,7 @@
 // Usage: node tests/web/page_script.mjs URL STEP ARGS [STEP ARGS ...]
 //        (NODE_PATH=build-web/npm/node_modules)
 import { writeFileSync } from 'node:fs';
-import { openPage } from './browser.mjs';
+import { openLuz, openPage } from './browser.mjs';
 
 const [url, ...steps] = process.argv.slice(2);
 if (!url || steps.length === 0) {
@@ -23,11 +23,8 @@ const check = (ok, what) => {
 };
 const { browser, page } = await openPage(() => { failed = true; });
 try {
-  const opened = Date.now();
-  await page.goto(url);
-  const outcome = await page.evaluate(() =>
-    window.luz.ready.then(() => ({ ok: true }), (error) => ({ ok: false, message: error.message })));
-  check(outcome.ok, `ready after ${Date.now() - opened} ms${outcome.ok ? '' : ': ' + outcome.message}`);
+  const outcome = await openLuz(page, url);
+  check(outcome.ok, `ready after ${outcome.ms} ms${outcome.ok ? '' : ': ' + outcome.message}`);
   for (let i = 0; outcome.ok && i < steps.length; ++i) {
     const step = steps[i];
     if (step === 'picture') {
