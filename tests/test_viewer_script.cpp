@@ -84,6 +84,22 @@ TEST(ViewerScript, WaitAndScreenshotsEndTheFrame) {
   EXPECT_TRUE(runner.finished());
 }
 
+// A script stopped from outside names the command it stood at (script_watch.h): the one run
+// last, whose wait or work was going on, with its words as written.
+TEST(ViewerScript, ItsPositionIsTheCommandRunLast) {
+  ScriptRunner runner(parse_script_text("# a comment\nkey 1\nwait 2\nscreenshot a.png\nquit\n", "d.txt"));
+  Recorder target;
+  std::string error;
+  EXPECT_EQ(runner.position(), "d.txt: before the first command");
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(runner.position(), "d.txt:3 `wait 2`");
+  ASSERT_TRUE(runner.step(target, error));
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(runner.position(), "d.txt:4 `screenshot a.png`");
+  ASSERT_TRUE(runner.step(target, error));
+  EXPECT_EQ(runner.position(), "d.txt:5 `quit` (the last)");
+}
+
 // A tour paced to talk over: `wait 2s` lasts two seconds however many frames pass meanwhile (an
 // idle window draws few, a trace many), and `wait 500ms` half of one.
 TEST(ViewerScript, WaitsInSecondsLastThatLongWhateverTheFrames) {

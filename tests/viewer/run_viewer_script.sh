@@ -73,13 +73,27 @@ EOF
 # The X authority file lives here rather than in a temporary folder of xvfb-run's, and a lost
 # race for a display number with another Xvfb starting at the same moment (parallel CI jobs) is
 # retried; any other failure is the test's.
-# A run that has not finished after 270 s (CTest's limit is 300) is stopped, so that its log,
-# which says how far the script got, is printed.
+# A run that has not finished after 270 s is stopped: the viewer then says where its script
+# stood, and a little before, where gdb can attach, each of its threads' stack goes to
+# backtrace.log. Such a run is tried once more (CTest's limit is 600 s): a hang seen once is kept
+# with its stacks in viewer_timeouts.log beside the run folders, which `./setup.sh test` prints
+# at its end, so that a passing suite still shows it; a second hang fails the test.
 attempt=1
+timeouts=0
 while :; do
   status=0
   LIBGL_ALWAYS_SOFTWARE=1 timeout -k 10 270 xvfb-run -a -n $((100 + $$ % 400)) -f "$PWD/xauthority" -e "$PWD/xvfb.log" \
-    -s "-screen 0 1600x1200x24 -noreset" "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 || status=$?
+    -s "-screen 0 1600x1200x24 -noreset" "$luz" --script "$script" --size 1280x760 "$scene" > viewer.log 2>&1 &
+  viewer=$!
+  (
+    sleep 255
+    pid=$(pgrep -n -f -- "--script $script") || exit 0
+    command -v gdb >/dev/null && gdb -p "$pid" -batch -ex 'thread apply all bt' > backtrace.log 2>&1
+  ) > /dev/null 2>&1 &
+  watchdog=$!
+  wait "$viewer" || status=$?
+  pkill -P "$watchdog" 2>/dev/null || true
+  kill "$watchdog" 2>/dev/null || true
   [ "$status" -eq 0 ] && break
   if [ "$attempt" -lt 3 ] && grep -q "Failed to open display" viewer.log; then
     echo "attempt $attempt: Xvfb was not reachable, retrying"
@@ -87,12 +101,27 @@ while :; do
     sleep 1
     continue
   fi
-  cat viewer.log
   if [ "$status" -eq 124 ]; then
-    echo "the scripted viewer did not finish in 270 s"
-  else
-    echo "the scripted viewer exited with $status"
+    report=$(
+      echo "$script on $scene: the scripted viewer did not finish in 270 s"
+      cat viewer.log
+      if [ -s backtrace.log ]; then
+        echo "its threads 15 s before:"
+        cat backtrace.log
+      fi
+    )
+    echo "$report"
+    timeouts=$((timeouts + 1))
+    if [ "$timeouts" -lt 2 ]; then
+      printf '%s\n\n' "$report" >> "$(dirname "$out")/viewer_timeouts.log"
+      echo "trying once more"
+      rm -f backtrace.log
+      continue
+    fi
+    exit 1
   fi
+  cat viewer.log
+  echo "the scripted viewer exited with $status"
   exit 1
 done
 cat viewer.log

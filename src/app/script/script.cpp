@@ -106,6 +106,15 @@ Script parse_script(const std::filesystem::path& file) {
   return parse_script_text(text.str(), file);
 }
 
+std::string ScriptRunner::position() const {
+  const std::string file = script_.file.string();
+  if (next_ == 0) return fmt::format("{}: before the first command", file);
+  const ScriptCommand& c = script_.commands[next_ - 1];
+  std::string words = c.verb;
+  for (const std::string& a : c.args) words += " " + a;
+  return fmt::format("{}:{} `{}`{}", file, c.line, words, next_ >= script_.commands.size() ? " (the last)" : "");
+}
+
 bool ScriptRunner::step(ScriptTarget& target, std::string& error) {
   if (waiting_ > 0) {
     --waiting_;

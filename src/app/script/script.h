@@ -171,6 +171,9 @@ public:
   bool finished() const { return next_ >= script_.commands.size() && waiting_ == 0 && !wait_until_; }
   // While a `wait 2s` runs: when it ends (the viewer sleeps until then unless something moves).
   std::optional<Clock::time_point> waiting_until() const { return wait_until_; }
+  // "FILE:LINE `command`" of the command run last (the one whose work is waited on), or of the
+  // script's start or end.
+  std::string position() const;
 
 private:
   Script script_;

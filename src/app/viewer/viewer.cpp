@@ -28,6 +28,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/script/script_watch.h"
 #include "app/viewer/difference_window.h"
 #include "app/common/i18n.h"
 #include "app/viewer/overlays.h"
@@ -98,7 +99,10 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
               settings.height > 0 ? settings.height : default_height,
               "Luz - " + path.filename().string()) {
   glGenVertexArrays(1, &empty_vertex_array_);
-  if (settings.script) script_.emplace(*settings.script);
+  if (settings.script) {
+    script_.emplace(*settings.script);
+    script_watch::install();
+  }
   if (settings.lesson) classroom_ = Classroom(*settings.lesson);
   model_ = find_model(state_.model);
   panes_ = {model_};
@@ -590,15 +594,18 @@ bool Viewer::run(const ScriptCommand& command, std::string& error) {
 }
 
 // A click's press and release, a `trace` the script waits for, radiosity shots it asked for
-// (`radiosity step N`, `wait-shots N`), slide 36's rows, or `idle`.
-bool Viewer::busy() const {
+// (`radiosity step N`, `wait-shots N`), slide 36's rows, or `idle`: what is still playing out,
+// in words for a script stopped while waiting (script_watch.h), or nullptr.
+const char* Viewer::busy_with() const {
+  if (scripted_click_frames_ > 0) return "a click";
   // Only the views shown work (a hidden one has stopped): their requests are what may be pending.
-  bool view_busy = false;
   for (const ModelEntry* m : panes_)
-    if (const auto found = views_.find(m->name); found != views_.end()) view_busy = view_busy || found->second->busy();
-  const bool reference_busy = difference_.waiting();
-  return scripted_click_frames_ > 0 || view_busy || reference_busy || solvers_.busy() || idle_until_.has_value() ||
-         classroom_.moving();
+    if (const auto found = views_.find(m->name); found != views_.end() && found->second->busy()) return m->name;
+  if (difference_.waiting()) return "the difference's reference";
+  if (solvers_.busy()) return "slide 36's solvers";
+  if (idle_until_) return "idle";
+  if (classroom_.moving()) return "the lesson's move";
+  return nullptr;
 }
 
 void Viewer::idle(double seconds) {
@@ -1088,6 +1095,10 @@ std::optional<int> Viewer::pass() {
       fmt::print(stderr, "luz: {}\n", error);
       return 1;
     }
+    const char* waits_for = busy_with();
+    script_watch::at(fmt::format("{}, waiting for: {}", script_->position(),
+                                 waits_for ? waits_for : script_->waiting_until() ? "time" : "frames"));
+    script_watch::frame_begins();
   }
   step_queued_line();
   fly(float(std::min(seconds, 0.1)));

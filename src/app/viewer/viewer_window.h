@@ -72,7 +72,7 @@ public:
 
   // ScriptTarget: a command runs through its verb's handler (script.h).
   bool run(const ScriptCommand& command, std::string& error) override;
-  bool busy() const override;
+  bool busy() const override { return busy_with() != nullptr; }
   bool holds(const std::string& condition) override;  // widget_verbs.cpp
 
   // ViewerServices.
@@ -134,6 +134,7 @@ public:
   unsigned frames_drawn() const { return frame_number_; }
 
 private:
+  const char* busy_with() const;
   void adopt(io::LoadedScene loaded, const std::filesystem::path& path, bool keep_view);
   void rebuild_renderer();
   Camera current_camera() const;
