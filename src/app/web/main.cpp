@@ -4,9 +4,10 @@
 // fetched when the URL names one, and window.luz, the page's door for scripts and tests.
 //
 // The URL's parameters (docs/web.md): scene=NAME|URL, model=NAME, effects=shadows,..., lang=es|en,
-// size=WxH (the picture's size), panel=0 (the picture alone). window.luz (the shell, luz.html): ready settles
-// once the first picture of the URL's scene and model is shown; run(line) runs a line of the
-// script language; picture() is the picture as `luz render` writes it.
+// size=WxH (the picture's size), panel=0 (the picture alone), lesson=N (lessons/sintesis.json
+// at step N). window.luz (the shell, luz.html): ready settles once the first picture of the URL's
+// scene and model is shown; run(line) runs a line of the script language; picture() is the
+// picture as `luz render` writes it.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +28,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/classroom/lesson.h"
 #include "app/common/i18n.h"
 #include "app/common/model_registry.h"
 #include "app/viewer/viewer.h"
@@ -104,6 +107,8 @@ struct Request {
   std::vector<std::string> settings;  // `set` lines: slide 19's switches the URL turns on
   int width = 640, height = 480;  // the picture's
   bool panel = true;
+  int lesson_step = 0;  // lesson=N: lessons/sintesis.json opened at step N (from 1); 0: none
+  std::optional<app::Lesson> lesson;
 };
 
 std::filesystem::path shipped_scene(const std::string& name) {
@@ -159,10 +164,20 @@ void read_size(const std::string& text, int& width, int& height) {
   height = h;
 }
 
+// lesson=N: a step of the shipped lesson, from 1 to its last.
+int read_lesson_step(const std::string& text, int steps) {
+  int step = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, problem] = std::from_chars(text.data(), end, step);
+  if (problem != std::errc() || stop != end || step < 1 || step > steps)
+    throw Error(ErrorKind::bad_value, trf("lesson={} is not a step of the lesson (1 to {}).", text, steps));
+  return step;
+}
+
 Request read_request() {
   Request request;
   const std::string scene = url_parameter("scene"), model = url_parameter("model"), size = url_parameter("size"),
-                    panel = url_parameter("panel"), effects = url_parameter("effects");
+                    panel = url_parameter("panel"), effects = url_parameter("effects"), lesson = url_parameter("lesson");
   if (scene.empty()) request.scene = default_scene().string();
   else if (names_a_file(scene)) request.scene = scene, request.fetched = true;
   else request.scene = shipped_scene(scene).string();
@@ -173,6 +188,13 @@ Request read_request() {
   if (panel == "0") request.panel = false;
   else if (!panel.empty() && panel != "1")
     throw Error(ErrorKind::bad_value, trf("panel={} is not 0 (the picture alone) or 1.", panel));
+  if (!lesson.empty()) {
+    // The lesson's steps name their scenes and models: the URL's scene and model are not asked.
+    request.lesson = app::parse_lesson(app::default_lesson());
+    request.lesson_step = read_lesson_step(lesson, int(request.lesson->steps.size()));
+    request.scene = request.lesson->steps.front().scene;
+    request.fetched = false;
+  }
   return request;
 }
 
@@ -246,6 +268,7 @@ void viewer_started(app::LineQueue& queue) {
   viewer = &queue;
   std::vector<std::string> lines = request.settings;
   if (!request.panel) lines.push_back("set panel off");
+  if (request.lesson_step > 1) lines.push_back(fmt::format("lesson goto {}", request.lesson_step));
   lines.push_back("wait 1");
   for (size_t i = 0; i < lines.size(); ++i)
     viewer->run_later(lines[i], [last = i + 1 == lines.size()](const std::string& error) {
@@ -257,7 +280,8 @@ void viewer_started(app::LineQueue& queue) {
 void start() {
   app::ViewerSettings settings;
   settings.scene = request.scene;
-  settings.models = {request.model};
+  if (request.lesson) settings.lesson = request.lesson;  // it opens on its first step's model
+  else settings.models = {request.model};
   // A first guess at the window around the picture: the panel's default width and a status line.
   settings.width = request.width + (request.panel ? 440 : 0);
   settings.height = request.height + 30;

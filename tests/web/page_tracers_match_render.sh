@@ -1,0 +1,89 @@
+#!/bin/sh
+# The page's traced and solved models against `luz render` of the same scene, model and size:
+# the page's picture (window.luz.picture()) once the model's work is done, through the script
+# lines that wait for it (`trace` until its last tile, `wait-until radiosity-done`, `wait-path`).
+# Small pictures and few samples: the page traces on SwiftShader's machine in a shared CI run.
+#
+# - Whitted (whitted.gltf, depth 5): the same tracer on the same camera rays; the page's Embree is
+#   built for SSE2 and the desktop's for the machine's widest ISA, so a hit may differ in its last
+#   bits, and the untraced raster never shows (every tile is traced). Limit 0.1% mean relative
+#   error over lit pixels, a tenth of the rasterized models' (page_matches_render.sh). The picture
+#   before the trace (Phong's raster view) must be more than that away from the render: a
+#   trace that did nothing fails.
+# - Radiosity (cornell_box.gltf) and the hybrid (cornell_spheres.gltf), patches of 0.15 m, a
+#   128-pixel hemicube, solved to the stopping rule (0.5% of the emitted power unshot): the
+#   solver is deterministic (seeded), its form factors are Embree's rays in both, and the
+#   picture is drawn by two rasterizers (SwiftShader, Mesa's llvmpipe) as 8-bit sRGB with one
+#   sample per pixel, as in page_matches_render.sh: limit 1%, the local models' limit. A page
+#   stopped early is far off (the ceiling is near black until the walls shoot).
+# - The path tracer (cornell_box.gltf, 4 samples a pixel, seed 0): the page must be no farther
+#   from `luz render` with the same seed than two renders with different seeds are from each
+#   other, which is the picture's noise (measured against the same render, so it is the noise of
+#   two 4-spp pictures). A page that added no samples, or another model's picture, is farther.
+#   tests/web/page_tracers_match_render.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
+set -eu
+base=$1 luz=$2 scratch=$3
+here=$(cd "$(dirname "$0")" && pwd)
+scenes="$(dirname "$here")/../scenes"
+size=160x120
+mkdir -p "$scratch"
+status=0
+
+# The mean relative error over lit pixels of A against B, in percent.
+error_of() { "$luz" compare "$1" "$2" | sed -n 's/^mean relative error over lit pixels: .*(\([0-9.]*\)%.*/\1/p'; }
+# within A B LIMIT WHAT: A and B agree within LIMIT percent; apart A B LIMIT WHAT: they do not.
+within() {
+  percent=$(error_of "$1" "$2")
+  verdict=$(awk -v p="$percent" -v l="$3" 'BEGIN { print (p != "" && p + 0 <= l + 0) ? "ok" : "FAILED" }')
+  echo "$4: mean relative error over lit pixels $percent% (limit $3%): $verdict"
+  [ "$verdict" = ok ] || status=1
+}
+apart() {
+  percent=$(error_of "$1" "$2")
+  verdict=$(awk -v p="$percent" -v l="$3" 'BEGIN { print (p != "" && p + 0 > l + 0) ? "ok" : "FAILED" }')
+  echo "$4: mean relative error over lit pixels $percent% (must exceed $3%): $verdict"
+  [ "$verdict" = ok ] || status=1
+}
+
+# Whitted: the raster view, then the whole trace.
+s=$scratch/whitted
+node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size" \
+  picture "${s}_raster.png" run "trace" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+"$luz" render "$scenes/whitted.gltf" --model whitted --size $size --out "${s}_render.png" -q
+within "${s}_page.png" "${s}_render.png" 0.1 "whitted traced in the page against luz render --model whitted"
+apart "${s}_raster.png" "${s}_render.png" 0.1 "whitted's raster view against the traced render"
+
+# Radiosity, solved to its stopping rule.
+radiosity_flags="--patch-size 0.15 --hemicube-res 128"
+s=$scratch/radiosity
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size" \
+  run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
+  run "wait-shots 3" picture "${s}_early.png" \
+  run "wait-until radiosity-done 20000" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+# shellcheck disable=SC2086  # the flags are words
+"$luz" render "$scenes/cornell_box.gltf" --model radiosity $radiosity_flags --pixel-samples 1 --size $size \
+  --out "${s}_render.png" -q
+within "${s}_page.png" "${s}_render.png" 1 "radiosity solved in the page against luz render --model radiosity"
+apart "${s}_early.png" "${s}_render.png" 1 "radiosity after 3 shots against the solved render"
+
+# The hybrid: its radiosity solved, then traced.
+s=$scratch/hybrid
+node "$here/page_script.mjs" "$base?scene=cornell_spheres&model=hybrid&size=$size" \
+  run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
+  run "wait-until radiosity-done 20000" picture "${s}_untraced.png" \
+  run "trace" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+# shellcheck disable=SC2086
+"$luz" render "$scenes/cornell_spheres.gltf" --model hybrid $radiosity_flags --size $size --out "${s}_render.png" -q
+within "${s}_page.png" "${s}_render.png" 1 "hybrid traced in the page against luz render --model hybrid"
+apart "${s}_untraced.png" "${s}_render.png" 1 "the hybrid's untraced radiosity against the traced render"
+
+# The path tracer: within the noise of two seeds.
+s=$scratch/path
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=path&size=$size" \
+  run "path spp 4" run "wait-path 4" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+"$luz" render "$scenes/cornell_box.gltf" --model path --spp 4 --seed 0 --size $size --out "${s}_render.png" -q
+"$luz" render "$scenes/cornell_box.gltf" --model path --spp 4 --seed 1 --size $size --out "${s}_seed1.png" -q
+noise=$(error_of "${s}_seed1.png" "${s}_render.png")
+echo "path: two seeds at 4 spp differ by $noise% (the noise)"
+within "${s}_page.png" "${s}_render.png" "$noise" "path traced in the page against luz render --model path"
+exit $status
