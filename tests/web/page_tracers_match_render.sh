@@ -45,10 +45,13 @@ apart() {
   [ "$verdict" = ok ] || status=1
 }
 
-# Whitted: the raster view, then the whole trace.
+# Whitted: the raster view; a trace cancelled while it runs (held: no tile lands before the
+# cancel), which the page must not wait for on its main thread; then the whole trace, which
+# starts once the cancelled one has ended.
 s=$scratch/whitted
 node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size" \
-  picture "${s}_raster.png" run "trace" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+  picture "${s}_raster.png" run "trace --held" run "cancel-trace" run "trace" \
+  picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model whitted --size $size --out "${s}_render.png" -q
 within "${s}_page.png" "${s}_render.png" 0.1 "whitted traced in the page against luz render --model whitted"
 apart "${s}_raster.png" "${s}_render.png" 0.1 "whitted's raster view against the traced render"

@@ -5,7 +5,10 @@
 # where it can be neither (page_isolation), a bad scene is a sentence on the page in its language
 # and so is an unknown effect (page_api --expect-error), each scene and model matches `luz render` (page_matches_render), and
 # so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
-# (page_run_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
+# (page_run_matches_render), Whitted, radiosity, the hybrid and the path tracer match it once their
+# work is done (page_tracers_match_render), and the lesson walks to its end in Spanish from its
+# first step and in English from step 24 (page_lesson). Pictures and screenshots are left in
+# SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -35,5 +38,9 @@ node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/err
 node "$here/page_api.mjs" --expect-error "$url?effects=shadows,sparkle&lang=en" "$scratch/error_effects.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_tracers_match_render.sh" "$url" "$luz" "$scratch" || status=1
+lesson="$(dirname "$(dirname "$here")")/lessons/sintesis.json"
+node "$here/page_lesson.mjs" "$url?lesson=1&lang=es&size=240x180" "$lesson" "$scratch/lesson_es" || status=1
+node "$here/page_lesson.mjs" "$url?lesson=24&lang=en&size=240x180" "$lesson" "$scratch/lesson_en" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status

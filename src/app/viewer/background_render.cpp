@@ -54,19 +54,36 @@ void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, in
 
 void BackgroundWorker::start(Job job) {
   stop();
-  cancel_ = false;
-  finished_ = false;
+  run_ = std::make_shared<Run>();
   began_ = std::chrono::steady_clock::now();
-  thread_ = luz::jthread([this, job = std::move(job)] {
-    job(cancel_);
-    finished_.store(true, std::memory_order_release);
+  thread_ = std::thread([run = run_, job = std::move(job)] {
+    job(run->cancel);
+    run->finished.store(true, std::memory_order_release);
   });
 }
 
 void BackgroundWorker::stop() {
   if (!thread_.joinable()) return;
-  cancel_ = true;
+  run_->cancel = true;
   thread_.join();
+}
+
+void BackgroundWorker::cancel() {
+  if (run_) run_->cancel = true;
+}
+
+bool BackgroundWorker::settle() {
+  if (thread_.joinable() && finished()) thread_.join();
+  return !thread_.joinable();
+}
+
+void BackgroundWorker::release() {
+#if defined(__EMSCRIPTEN__)
+  cancel();
+  if (thread_.joinable()) thread_.detach();
+#else
+  stop();
+#endif
 }
 
 void BackgroundWorker::join() {

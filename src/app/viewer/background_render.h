@@ -6,13 +6,14 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <memory>
+#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/image.h"
 #include "core/scene.h"
-#include "core/std_compat.h"
 #include "gl/framebuffer.h"
 
 namespace luz::app {
@@ -47,6 +48,12 @@ void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, in
 // One job at a time on a thread of its own. The job reads the cancel flag (the renderers'
 // `cancel` argument) and should return soon once it is set; whatever it publishes before it
 // returns is visible to the thread that sees finished().
+//
+// The browser's main thread must never wait for another thread: a thread that starts threads
+// (the parallel loops, Embree's) asks the main thread for them, so a main thread waiting for it
+// would wait forever. So a job can be cancelled without waiting (cancel(), then settle() once a
+// frame until it has ended) and let go of (release(): in the page it ends on its own, its
+// captures keeping what it reads alive). stop() and the destructor wait, as the desktop may.
 class BackgroundWorker {
 public:
   using Job = std::function<void(const std::atomic<bool>& cancel)>;
@@ -58,17 +65,23 @@ public:
 
   void start(Job job);  // a job still running is stopped first
   void stop();          // sets the cancel flag and joins; nothing when no job runs
-  bool finished() const { return finished_.load(std::memory_order_acquire); }
+  void cancel();        // sets the cancel flag; the job ends on its own
+  bool settle();        // joins a job that has ended; true when no job is left
+  void release();       // cancels; the page lets the job end on its own, the desktop joins it
+  bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
   void join();          // once finished(): the thread is gone, the job's results are all seen
   bool joinable() const { return thread_.joinable(); }
   double seconds() const;  // since the last start
-  const std::atomic<bool>& cancel_flag() const { return cancel_; }
 
 private:
-  std::atomic<bool> cancel_{false};
-  std::atomic<bool> finished_{false};
+  // A job's flags, shared with its thread: a released job still reads and writes them.
+  struct Run {
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> finished{false};
+  };
+  std::shared_ptr<Run> run_;
   std::chrono::steady_clock::time_point began_;
-  luz::jthread thread_;
+  std::thread thread_;
 };
 
 }  // namespace luz::app

@@ -11,7 +11,8 @@ namespace luz::app {
 
 HybridView::HybridView(ViewerServices& viewer, RadiosityView& radiosity)
     : TracedView(viewer), radiosity_(radiosity) {
-  // The radiosity solution goes (a remesh, an edited Le): first the trace that reads it.
+  // The radiosity solution goes (a remesh, an edited Le): first the trace that reads it (a trace
+  // still ending keeps the diffuse part it reads).
   radiosity_.on_drop([this] {
     cancel_trace();
     set_diffuse_source(nullptr);
@@ -44,7 +45,8 @@ void HybridView::draw_untraced(const Camera& camera, const Viewport& viewport, g
 
 // The hybrid traces over the viewer's radiosity solution: while the solver is still running to
 // its stopping rule (the first solve, or a run asked for), the trace waits for it. The diffuse
-// part takes the solution as it is now, only while no trace runs (a running one reads it).
+// part takes the solution as it is now, only while no trace runs or ends (one reads it): a trace
+// asked for while a cancelled one ends waits for its end.
 std::optional<rt::WhittedOptions> HybridView::options_for_trace(std::string& why) {
   const RadiositySession* solution = radiosity_.solution();
   if (!solution) {
@@ -52,11 +54,15 @@ std::optional<rt::WhittedOptions> HybridView::options_for_trace(std::string& why
     return std::nullopt;
   }
   if (radiosity_.state().drive.running) return std::nullopt;  // the hint says it waits
-  if (progress().phase != TracePhase::tracing || !diffuse_) {
-    if (diffuse_) diffuse_->update(RadianceField::of(solution->solver()));
-    else diffuse_ = std::make_unique<hybrid::RadiosityDiffuse>(solution->mesh(), RadianceField::of(solution->solver()));
-    set_diffuse_source(diffuse_.get());
+  if (!tracer_idle()) {
+    // A trace running reads the diffuse part as it is, and a click's ray tree traces with it too;
+    // one ending after a cancel is waited for, so that the next trace takes the solution as it is.
+    if (tracing() && diffuse_) return current_options();
+    return std::nullopt;
   }
+  if (diffuse_) diffuse_->update(RadianceField::of(solution->solver()));
+  else diffuse_ = std::make_shared<hybrid::RadiosityDiffuse>(solution->mesh(), RadianceField::of(solution->solver()));
+  set_diffuse_source(diffuse_);
   return current_options();
 }
 

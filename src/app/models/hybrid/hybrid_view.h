@@ -35,7 +35,7 @@ private:
   RadiosityView& radiosity_;
   // radiosity_'s solution as the tracer reads it (it refers to radiosity_'s mesh); refreshed
   // only while no trace runs, and let go (after the trace is cancelled) when the solution goes.
-  std::unique_ptr<hybrid::RadiosityDiffuse> diffuse_;
+  std::shared_ptr<hybrid::RadiosityDiffuse> diffuse_;  // shared with the trace that reads it
 };
 
 }  // namespace luz::app

@@ -23,8 +23,8 @@ WhittedWorker& TracedView::tracer() {
   return *tracer_;
 }
 
-void TracedView::set_diffuse_source(const rt::DiffuseSource* source) {
-  if (tracer_ || source) tracer().set_diffuse_source(source);
+void TracedView::set_diffuse_source(std::shared_ptr<const rt::DiffuseSource> source) {
+  if (tracer_ || source) tracer().set_diffuse_source(std::move(source));
 }
 
 void TracedView::scene_changed() {

@@ -78,8 +78,11 @@ protected:
   virtual bool must_cancel() const { return false; }
   // A short hint over the picture while it is not traced.
   virtual std::string hint() const = 0;
-  // The hybrid's diffuse part for the traces to come (nullptr: Whitted's); not while tracing.
-  void set_diffuse_source(const rt::DiffuseSource* source);
+  // The hybrid's diffuse part for the traces to come (nullptr: Whitted's).
+  void set_diffuse_source(std::shared_ptr<const rt::DiffuseSource> source);
+  // No trace is running or ending (a cancelled one ends on its own): what it reads may change.
+  bool tracer_idle() { return !tracer_ || tracer_->idle(); }
+  bool tracing() const { return tracer_ && tracer_->phase() == TracePhase::tracing; }
 
   ViewerServices& viewer_;
 

@@ -6,7 +6,10 @@
 //             each finished tile is copied, under a mutex, into a CPU image and queued;
 //   update()  on the GL thread, every frame: the queued tiles go up into a float texture
 //             (glTexSubImage2D, one call per tile), and a finished worker is joined;
-//   cancel()  sets the cancel flag and joins: tiles not started are skipped.
+//   cancel()  sets the cancel flag and returns: tiles not started are skipped, and the worker
+//             ends on its own (the browser's main thread never waits for it, background_render.h).
+//             A trace started meanwhile starts once it has ended: one trace at a time reads the
+//             tracer.
 //
 // The tracer reads its own copy of the scene, whose lights, materials, area lights, ambient and
 // background are refreshed from the viewer's at every start (and before a ray tree is traced):
@@ -14,6 +17,7 @@
 // cancels the trace when it sees such an edit (see Fingerprint).
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "core/camera.h"
@@ -34,7 +38,7 @@ using Fingerprint = ViewFingerprint<rt::WhittedOptions>;
 class WhittedWorker {
 public:
   explicit WhittedWorker(const Scene& scene);
-  ~WhittedWorker();  // cancels and joins
+  ~WhittedWorker();  // cancels; a trace still ending keeps what it reads (BackgroundWorker::release)
   WhittedWorker(const WhittedWorker&) = delete;
   WhittedWorker& operator=(const WhittedWorker&) = delete;
 
@@ -46,11 +50,15 @@ public:
              const rt::WhittedOptions& options, const gl::Framebuffer& raster, bool held = false);
   // Back to the raster view; true when a trace was running (and is now cancelled).
   bool cancel();
-  // GL thread, once a frame: uploads the finished tiles, joins a finished worker.
+  // GL thread, once a frame: starts a trace that waited for a cancelled one to end, uploads the
+  // finished tiles, joins a finished worker.
   void update();
+  // No trace is running or ending: what the tracer reads may change.
+  bool idle();
 
-  // The hybrid's diffuse part (rt::WhittedRenderer::set_diffuse_source); not while tracing.
-  void set_diffuse_source(const rt::DiffuseSource* source) { tracer_.set_diffuse_source(source); }
+  // The hybrid's diffuse part (rt::WhittedRenderer::set_diffuse_source), for the traces started
+  // from now on; a trace running or ending keeps the one it was started with.
+  void set_diffuse_source(std::shared_ptr<const rt::DiffuseSource> source);
 
   TracePhase phase() const { return phase_; }
   bool cancelled() const { return cancelled_; }  // the last trace was cancelled before its end
@@ -68,24 +76,43 @@ public:
                           const rt::WhittedOptions& options);
 
 private:
-  Scene copy_;
-  rt::WhittedRenderer tracer_;
+  // What a trace reads and writes, shared with its thread, so that a trace let go of
+  // (the destructor) still has it. One trace at a time uses the tracer.
+  struct Shared {
+    explicit Shared(const Scene& scene) : copy(scene), tracer(copy) {}
+    Scene copy;
+    rt::WhittedRenderer tracer;
+    std::shared_ptr<const rt::DiffuseSource> diffuse;  // the tracer's, kept while it reads it
+    // The tiles finished and not yet uploaded, and their pixels (under the mutex).
+    std::mutex mutex;
+    Image pixels;
+    std::vector<rt::Tile> pending;
+    int done = 0;
+  };
+  // A trace asked for, started once the one before has ended.
+  struct Request {
+    Camera camera;
+    int width = 0, height = 0;
+    rt::WhittedOptions options;
+    bool held = false;
+  };
+  void launch(const Request& request);
+
+  const Scene* scene_;  // the viewer's, whose editable values each trace copies
+  std::shared_ptr<Shared> shared_;
+  std::shared_ptr<const rt::DiffuseSource> next_diffuse_;  // for the next trace
+  std::optional<Request> waiting_;
+  bool launched_ = false;  // the trace shown has its worker
   TracePhase phase_ = TracePhase::raster;
   bool cancelled_ = false;
   Fingerprint started_;
   std::unique_ptr<gl::Framebuffer> picture_;  // the traced tiles over the raster picture
 
-  // Shared with the worker: the tiles finished and not yet uploaded, and their pixels.
-  std::mutex mutex_;
-  Image pixels_;
-  std::vector<rt::Tile> pending_;
-  int done_ = 0;
-
   int uploaded_done_ = 0, total_ = 0;
   double seconds_ = 0.0;
   rt::Counters counters_;
   std::vector<float> upload_;  // one tile's rows, for upload_pixels
-  BackgroundWorker worker_;    // last: it stops before the members its job uses go
+  BackgroundWorker worker_;
 };
 
 }  // namespace luz::app
