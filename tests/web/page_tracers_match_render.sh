@@ -49,7 +49,7 @@ apart() {
 # cancel), which the page must not wait for on its main thread; then the whole trace, which
 # starts once the cancelled one has ended.
 s=$scratch/whitted
-node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size" \
+node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size&panel=0" \
   picture "${s}_raster.png" run "trace --held" run "cancel-trace" run "trace" \
   picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model whitted --size $size --out "${s}_render.png" -q
@@ -59,7 +59,7 @@ apart "${s}_raster.png" "${s}_render.png" 0.1 "whitted's raster view against the
 # Radiosity, solved to its stopping rule.
 radiosity_flags="--patch-size 0.15 --hemicube-res 128"
 s=$scratch/radiosity
-node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size" \
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size&panel=0" \
   run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
   run "wait-shots 3" picture "${s}_early.png" \
   run "wait-until radiosity-done 20000" picture "${s}_page.png" shot "${s}_shot.png" || status=1
@@ -71,7 +71,7 @@ apart "${s}_early.png" "${s}_render.png" 1 "radiosity after 3 shots against the 
 
 # The hybrid: its radiosity solved, then traced.
 s=$scratch/hybrid
-node "$here/page_script.mjs" "$base?scene=cornell_spheres&model=hybrid&size=$size" \
+node "$here/page_script.mjs" "$base?scene=cornell_spheres&model=hybrid&size=$size&panel=0" \
   run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
   run "wait-until radiosity-done 20000" picture "${s}_untraced.png" \
   run "trace" picture "${s}_page.png" shot "${s}_shot.png" || status=1
@@ -82,7 +82,7 @@ apart "${s}_untraced.png" "${s}_render.png" 1 "the hybrid's untraced radiosity a
 
 # The path tracer: within the noise of two seeds.
 s=$scratch/path
-node "$here/page_script.mjs" "$base?scene=cornell_box&model=path&size=$size" \
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=path&size=$size&panel=0" \
   run "path spp 4" run "wait-path 4" picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/cornell_box.gltf" --model path --spp 4 --seed 0 --size $size --out "${s}_render.png" -q
 "$luz" render "$scenes/cornell_box.gltf" --model path --spp 4 --seed 1 --size $size --out "${s}_seed1.png" -q

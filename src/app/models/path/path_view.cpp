@@ -44,29 +44,31 @@ double relative_noise(const Image& mean, const Image& standard_error) {
 PathView::PathView(ViewerServices& viewer)
     : options(viewer.state().model_options.get<PathSettings>(path_table())), viewer_(viewer) {}
 
-PathView::~PathView() { cancel(); }
+PathView::~PathView() {
+  cancel();
+  worker_.release();
+}
 
 void PathView::scene_changed() {
   cancel();
-  tracer_.reset();  // its BVH is of the old geometry
-  copy_.reset();
+  shared_ = std::make_shared<Shared>();  // a new tracer: its BVH is of the old geometry
   shown_ = PathPicture{};
   uploaded_ = -1;
 }
 
 void PathView::hidden() {
-  pause_ = true;  // the pass running finishes: the film keeps whole passes
+  shared_->pause = true;  // the pass running finishes: the film keeps whole passes
   wait_for_ = 0;
 }
 
 void PathView::cancel() {
-  worker_.stop();
+  worker_.cancel();  // set before the lock below: a pass published after it is never shown
   running_ = false;
   have_film_ = false;
   shown_ = PathPicture{};
   uploaded_ = -1;
-  std::lock_guard lock(mutex_);
-  published_ = PathPicture{};
+  std::lock_guard lock(shared_->mutex);
+  shared_->published = PathPicture{};
 }
 
 PathFingerprint PathView::fingerprint(const Camera& camera, glm::ivec2 size) const {
@@ -77,38 +79,42 @@ PathFingerprint PathView::fingerprint(const Camera& camera, glm::ivec2 size) con
   return {camera.to_world, camera.yfov, size.x, size.y, o, editable_values(*viewer_.state().scene)};
 }
 
+// No worker runs: the film, the tracer and the scene's copy are this thread's.
 void PathView::start(const Camera& camera, glm::ivec2 size) {
   const Scene& scene = *viewer_.state().scene;
-  if (!tracer_) {
-    copy_ = std::make_unique<Scene>(scene);
-    tracer_ = std::make_unique<rt::PathRenderer>(*copy_);  // Embree's BVH, once per scene
+  Shared& s = *shared_;
+  if (!s.tracer) {
+    s.copy = std::make_unique<Scene>(scene);
+    s.tracer = std::make_unique<rt::PathRenderer>(*s.copy);  // Embree's BVH, once per scene
   }
   if (!have_film_) {
     // A new film: the tracer's copy takes the viewer's editable values (the geometry is the
     // same: a new geometry is a new scene).
-    copy_editable(scene, *copy_);
-    film_ = rt::PathFilm(size.x, size.y);
+    copy_editable(scene, *s.copy);
+    s.film = rt::PathFilm(size.x, size.y);
     started_ = fingerprint(camera, size);
     have_film_ = true;
     ++restarts_;
-    began_ = std::chrono::steady_clock::now();
+    s.began = std::chrono::steady_clock::now();
   }
-  pause_ = false;
+  s.pause = false;
   running_ = true;
   const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
-  target_ = std::max(1, options.spp);
-  worker_.start([this, camera, o](const std::atomic<bool>& cancel) {
-    while (!cancel && !pause_ && film_.min_samples() < target_) {
-      tracer_->add_samples(film_, camera, o, 1, {}, &cancel);
+  s.target = std::max(1, options.spp);
+  worker_.start([shared = shared_, camera, o](const std::atomic<bool>& cancel) {
+    Shared& t = *shared;
+    while (!cancel && !t.pause && t.film.min_samples() < t.target) {
+      t.tracer->add_samples(t.film, camera, o, 1, {}, &cancel);
       if (cancel) break;  // an unfinished pass: the film is dropped
       PathPicture pass;
-      pass.mean = film_.mean();
-      pass.spp = film_.min_samples();
-      pass.noise = relative_noise(pass.mean, film_.standard_error());
-      pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
-      std::lock_guard lock(mutex_);
-      pass.version = published_.version + 1;
-      published_ = std::move(pass);
+      pass.mean = t.film.mean();
+      pass.spp = t.film.min_samples();
+      pass.noise = relative_noise(pass.mean, t.film.standard_error());
+      pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t.began).count();
+      std::lock_guard lock(t.mutex);
+      if (cancel) break;  // cancelled meanwhile: the pass belongs to a dropped film
+      pass.version = t.published.version + 1;
+      t.published = std::move(pass);
     }
   });
 }
@@ -118,12 +124,12 @@ void PathView::collect() {
     worker_.join();
     running_ = false;
   }
-  std::lock_guard lock(mutex_);
-  if (published_.version != shown_.version) shown_ = published_;
+  std::lock_guard lock(shared_->mutex);
+  if (shared_->published.version != shown_.version) shown_ = shared_->published;
 }
 
 void PathView::advance(const Camera& camera, const Viewport& viewport) {
-  target_ = std::max(1, options.spp);  // a running worker stops there (or goes on to there)
+  shared_->target = std::max(1, options.spp);  // a running worker stops there (or goes on to there)
   collect();
   const glm::ivec2 size = viewport.pixels;
   const bool stale = have_film_ && started_ != fingerprint(camera, size);
@@ -133,11 +139,12 @@ void PathView::advance(const Camera& camera, const Viewport& viewport) {
     restart_ = false;
     cancel();
   }
-  if (running_ && pause_) {
-    pause_ = false;  // shown again before the pass ended: it goes on
+  if (running_ && shared_->pause) {
+    shared_->pause = false;  // shown again before the pass ended: it goes on
     if (worker_.finished()) collect();  // it had stopped already
   }
-  if (!running_ && (!have_film_ || shown_.spp < std::max(1, options.spp))) start(camera, size);
+  // A cancelled worker still ending holds the film and the tracer: the next film waits for it.
+  if (!running_ && (!have_film_ || shown_.spp < std::max(1, options.spp)) && worker_.settle()) start(camera, size);
   if (!busy()) wait_for_ = 0;  // a wait ends once: a later restart does not hold the script again
 }
 

@@ -17,7 +17,9 @@
 // Hidden (another model shown), the worker finishes its pass and stops; the film is kept and
 // goes on when the view is shown again or the difference view (difference_window.h) asks for the
 // reference. The worker reads its own copy of the scene, refreshed at every new film
-// (background_render.h): the panel may edit the viewer's scene while a pass runs.
+// (background_render.h): the panel may edit the viewer's scene while a pass runs. A cancelled
+// worker is not waited for (the browser's main thread never waits, background_render.h): it
+// ends on its own, and the next film starts once it has ended.
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -49,7 +51,7 @@ double relative_noise(const Image& mean, const Image& standard_error);
 class PathView final : public ModelView {
 public:
   explicit PathView(ViewerServices& viewer);
-  ~PathView() override;  // cancels and joins the worker before the scene copy goes
+  ~PathView() override;  // cancels; a worker still ending keeps what it reads
 
   void scene_changed() override;
   void hidden() override;
@@ -59,7 +61,7 @@ public:
   void windows(const Viewport& viewport, WindowCorners& corners) override;
   std::string status() const override;
   bool busy() const override;
-  bool animating() const override { return running_; }
+  bool animating() const override { return running_ || !worker_.idle(); }
 
   // The settings the panel, `set path.NAME` and the `path` verb change, the viewer's struct of
   // the path tracer's options table (path_options.h); the next advance() follows them.
@@ -79,26 +81,29 @@ public:
 
 private:
   PathFingerprint fingerprint(const Camera& camera, glm::ivec2 size) const;
-  void cancel();                    // stops the worker at once and drops its film
+  void cancel();                    // stops the worker (it ends on its own) and drops its film
   void start(const Camera& camera, glm::ivec2 size);  // a worker on the film as it is
   void collect();                   // the published pass, and a finished worker joined
 
   ViewerServices& viewer_;
-  std::unique_ptr<Scene> copy_;     // the worker's scene (made with the tracer)
-  std::unique_ptr<rt::PathRenderer> tracer_;
-  rt::PathFilm film_;               // the worker's while it runs
+  // What the worker reads and writes, shared with its thread, so that a worker let go of (the
+  // destructor, a new scene) still has it. The film and the tracer are the worker's while it runs.
+  struct Shared {
+    std::unique_ptr<Scene> copy;    // the worker's scene (made with the tracer)
+    std::unique_ptr<rt::PathRenderer> tracer;
+    rt::PathFilm film;
+    std::mutex mutex;
+    PathPicture published;          // under the mutex
+    std::atomic<bool> pause{false};  // stop after this pass
+    std::atomic<int> target{1};      // samples per pixel to stop at
+    std::chrono::steady_clock::time_point began;  // of the film
+  };
+  std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
   PathFingerprint started_;         // the view the film is of
   bool have_film_ = false;
   bool restart_ = false;
   int restarts_ = 0;
   int wait_for_ = 0;
-
-  // Shared with the worker.
-  std::mutex mutex_;
-  PathPicture published_;
-  std::atomic<bool> pause_{false};   // stop after this pass
-  std::atomic<int> target_{1};       // samples per pixel to stop at
-  std::chrono::steady_clock::time_point began_;  // of the film
 
   // The GL thread's.
   bool running_ = false;
@@ -106,7 +111,7 @@ private:
   long uploaded_ = -1;
   std::unique_ptr<gl::Framebuffer> texture_;
   std::vector<float> upload_;
-  BackgroundWorker worker_;         // last: it stops before the members its job uses go
+  BackgroundWorker worker_;
 };
 
 // The path model's script verbs (its registry entry): path spp|depth|seed N, path restart,
