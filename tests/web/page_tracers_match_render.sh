@@ -56,13 +56,14 @@ node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size&panel
 within "${s}_page.png" "${s}_render.png" 0.1 "whitted traced in the page against luz render --model whitted"
 apart "${s}_raster.png" "${s}_render.png" 0.1 "whitted's raster view against the traced render"
 
-# Radiosity, solved to its stopping rule.
+# Radiosity, solved to its stopping rule (`wait-shots N` runs the solver and stops at N shots or
+# at the rule, whichever comes first).
 radiosity_flags="--patch-size 0.15 --hemicube-res 128"
 s=$scratch/radiosity
 node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size&panel=0" \
   run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
   run "wait-shots 3" picture "${s}_early.png" \
-  run "wait-until radiosity-done 20000" picture "${s}_page.png" shot "${s}_shot.png" || status=1
+  run "wait-shots 100000" picture "${s}_page.png" shot "${s}_shot.png" || status=1
 # shellcheck disable=SC2086  # the flags are words
 "$luz" render "$scenes/cornell_box.gltf" --model radiosity $radiosity_flags --pixel-samples 1 --size $size \
   --out "${s}_render.png" -q

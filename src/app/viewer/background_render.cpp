@@ -37,18 +37,19 @@ void copy_editable(const Scene& from, Scene& copy) {
 
 void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, int y0, int x1, int y1,
                    std::vector<float>& scratch) {
-  // GL's rows go bottom-up: image row y is texture row height - 1 - y.
+  // GL's rows go bottom-up: image row y is texture row height - 1 - y. Four floats a pixel: an
+  // RGBA32F texture takes RGBA floats everywhere, where WebGL 2 refuses RGB ones.
   const int w = x1 - x0, h = y1 - y0;
-  scratch.resize(size_t(w) * size_t(h) * 3);
+  scratch.resize(size_t(w) * size_t(h) * 4);
   for (int row = 0; row < h; ++row)
     for (int x = 0; x < w; ++x) {
       const Rgb& p = image.at(x0 + x, y1 - 1 - row);
-      float* out = &scratch[(size_t(row) * size_t(w) + size_t(x)) * 3];
-      out[0] = p.r, out[1] = p.g, out[2] = p.b;
+      float* out = &scratch[(size_t(row) * size_t(w) + size_t(x)) * 4];
+      out[0] = p.r, out[1] = p.g, out[2] = p.b, out[3] = 1.0f;
     }
   glBindTexture(GL_TEXTURE_2D, target.colour_texture());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, x0, image.height - y1, w, h, GL_RGB, GL_FLOAT, scratch.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, x0, image.height - y1, w, h, GL_RGBA, GL_FLOAT, scratch.data());
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
@@ -69,7 +70,11 @@ void BackgroundWorker::stop() {
 }
 
 void BackgroundWorker::cancel() {
-  if (run_) run_->cancel = true;
+#if defined(__EMSCRIPTEN__)
+  if (run_) run_->cancel = true;  // settle() joins it once it has ended
+#else
+  stop();  // the window may wait for the tile in hand: what follows starts in the same frame
+#endif
 }
 
 bool BackgroundWorker::settle() {

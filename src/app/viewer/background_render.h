@@ -51,9 +51,10 @@ void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, in
 //
 // The browser's main thread must never wait for another thread: a thread that starts threads
 // (the parallel loops, Embree's) asks the main thread for them, so a main thread waiting for it
-// would wait forever. So a job can be cancelled without waiting (cancel(), then settle() once a
-// frame until it has ended) and let go of (release(): in the page it ends on its own, its
-// captures keeping what it reads alive). stop() and the destructor wait, as the desktop may.
+// would wait forever. So in the page a job is cancelled without waiting (cancel(), then settle()
+// once a frame until it has ended) and let go of (release(): it ends on its own, its captures
+// keeping what it reads alive). The window may wait for the tile in hand: there cancel() and
+// release() join, and what follows starts in the same frame. stop() and the destructor join.
 class BackgroundWorker {
 public:
   using Job = std::function<void(const std::atomic<bool>& cancel)>;
@@ -65,7 +66,7 @@ public:
 
   void start(Job job);  // a job still running is stopped first
   void stop();          // sets the cancel flag and joins; nothing when no job runs
-  void cancel();        // sets the cancel flag; the job ends on its own
+  void cancel();        // sets the cancel flag; the page's job ends on its own, the window's is joined
   bool settle();        // joins a job that has ended; true when no job is left
   void release();       // cancels; the page lets the job end on its own, the desktop joins it
   bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
