@@ -7,7 +7,7 @@
 # so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
 # (page_run_matches_render), Whitted, radiosity, the hybrid and the path tracer match it once their
 # work is done (page_tracers_match_render), and the lesson walks to its end in Spanish from its
-# first step and in English from step 24 (page_lesson). Pictures and screenshots are left in
+# first step and in English from step 54 (page_lesson). Pictures and screenshots are left in
 # SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
@@ -41,6 +41,6 @@ sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_tracers_match_render.sh" "$url" "$luz" "$scratch" || status=1
 lesson="$(dirname "$(dirname "$here")")/lessons/sintesis.json"
 node "$here/page_lesson.mjs" "$url?lesson=1&lang=es&size=240x180" "$lesson" "$scratch/lesson_es" || status=1
-node "$here/page_lesson.mjs" "$url?lesson=24&lang=en&size=240x180" "$lesson" "$scratch/lesson_en" || status=1
+node "$here/page_lesson.mjs" "$url?lesson=54&lang=en&size=240x180" "$lesson" "$scratch/lesson_en" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status
