@@ -78,7 +78,7 @@ void BackgroundWorker::cancel() {
 }
 
 bool BackgroundWorker::settle() {
-  if (thread_.joinable() && finished()) thread_.join();
+  if (thread_.joinable() && finished()) join();
   return !thread_.joinable();
 }
 
@@ -92,7 +92,14 @@ void BackgroundWorker::release() {
 }
 
 void BackgroundWorker::join() {
-  if (thread_.joinable()) thread_.join();
+  if (!thread_.joinable()) return;
+#if defined(__EMSCRIPTEN__)
+  // The job has returned (finished(): its results are seen); its thread's exit is the browser's
+  // business, which the main thread does not wait for.
+  thread_.detach();
+#else
+  thread_.join();
+#endif
 }
 
 double BackgroundWorker::seconds() const {

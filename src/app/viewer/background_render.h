@@ -71,7 +71,7 @@ public:
   void release();       // cancels; the page lets the job end on its own, the desktop joins it
   bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
   bool idle() const { return !thread_.joinable() || finished(); }  // settle() would leave no job
-  void join();          // once finished(): the thread is gone, the job's results are all seen
+  void join();          // once finished(): the job's results are all seen, its thread let go of
   bool joinable() const { return thread_.joinable(); }
   double seconds() const;  // since the last start
 
