@@ -5,7 +5,10 @@
 # where it can be neither (page_isolation), a bad scene is a sentence on the page in its language
 # and so is an unknown effect (page_api --expect-error), each scene and model matches `luz render` (page_matches_render), and
 # so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
-# (page_run_matches_render). Pictures and screenshots are left in SCRATCH_DIR.
+# (page_run_matches_render); the student's own .glb and .gltf given through the file input draw as
+# `luz render` draws them, a broken one is refused with the loader's words naming it, and the
+# screenshot buttons download PNGs (page_files_match_render). Pictures and screenshots are left
+# in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -35,5 +38,6 @@ node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/err
 node "$here/page_api.mjs" --expect-error "$url?effects=shadows,sparkle&lang=en" "$scratch/error_effects.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_files_match_render.sh" "$url" "$luz" "$scratch" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status
