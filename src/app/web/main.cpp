@@ -378,6 +378,24 @@ std::string joined(const std::vector<std::string>& words) {
   return text;
 }
 
+// A .gltf may name its files in folders beside it ("textures/wood.png", as Blender's exporter can
+// write them), and the file picker gives files without their folders: each file given by the
+// name a URI ends with is copied to where the .gltf looks for it.
+void place_named_files(const std::filesystem::path& gltf) {
+  if (gltf.extension() != ".gltf") return;
+  for (const std::string& uri : files_named_beside(gltf)) {
+    const std::string path = io::gltf::uri_path(uri);
+    if (path.find("..") != std::string::npos) continue;  // outside the folder: the loader refuses it
+    const std::filesystem::path wanted = gltf.parent_path() / path;
+    const std::filesystem::path given = gltf.parent_path() / wanted.filename();
+    std::error_code ignored;  // a file that cannot be placed is told missing by the loader
+    if (wanted != given && !std::filesystem::exists(wanted) && std::filesystem::is_regular_file(given)) {
+      std::filesystem::create_directories(wanted.parent_path(), ignored);
+      std::filesystem::copy_file(given, wanted, ignored);
+    }
+  }
+}
+
 // The one scene among the files given, or why there is none to load.
 std::filesystem::path scene_among(const std::filesystem::path& folder, std::string& problem) {
   std::vector<std::string> names, scenes;
@@ -438,6 +456,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void luz_open_files(const char* folder, int id) 
     show_file_messages(problem.c_str(), 1);
     return settle_request(id, 0, problem.c_str());
   }
+  place_named_files(scene);
   viewer->run_later(fmt::format("load \"{}\"", scene.string()), [](const std::string&) {});
   viewer->run_later(std::string("dump-state ") + state_file, [scene, id](const std::string& error) {
     if (!error.empty()) return settle_request(id, 0, error.c_str());
