@@ -824,6 +824,15 @@ TEST(RadiosityRenderer, ADistantSceneKeepsItsDepthOrder) {
   EXPECT_GT(camera.near_plane(bounds, 1.0f), 1400.0f);
   camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -0.5f));
   EXPECT_EQ(camera.near_plane(bounds, 1.0f), 0.05f);
+  // Nor past what a wide view shows off its axis: a block 34 degrees aside, inside a view 115
+  // degrees wide, is 1794 m away but its nearest face only 1490 m deep.
+  Bounds aside;
+  aside.grow({1000, -10, -10});
+  aside.grow({1100, 10, 10});
+  camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1500.0f));
+  camera.yfov = 2.0f;
+  EXPECT_LT(camera.near_plane(aside, 1.0f), 1490.0f);
+  EXPECT_GT(camera.near_plane(aside, 1.0f), 100.0f);
 }
 
 TEST(RadiosityRenderer, APatchSeenFromBehindIsBlack) {
