@@ -8,7 +8,6 @@
 #include <glm/common.hpp>
 
 #include "radiosity/shooting.h"
-#include "radiosity/vertex_fit.h"
 
 namespace luz {
 
@@ -23,7 +22,8 @@ RadianceField RadianceField::from(const PatchMesh& mesh, const std::vector<Rgb>&
   // Each display point's value from the elements around it (vertex_fit.h); a fit may overshoot
   // below zero at a sharp shadow's edge, and no radiance is negative.
   assert(mesh.display.fits(mesh.size()) && "the display surfaces are found again after elements are cut");
-  const VertexFit fit = VertexFit::of(mesh);
+  const VertexFit& fit = mesh.vertex_fit;
+  assert(fit.start.size() == size_t(mesh.display.points) + 1 && "and the fit with them");
   std::vector<Rgb> value(mesh.display.points, Rgb(0.0f));
   for (size_t point = 0; point < value.size(); ++point) {
     for (uint32_t k = fit.start[point]; k < fit.start[point + 1]; ++k)

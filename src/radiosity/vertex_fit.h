@@ -29,6 +29,8 @@ struct VertexFit {
   std::vector<uint32_t> element;
   std::vector<float> weight;
 
+  // From the mesh's elements and display surfaces (PatchMesh::find_display_surfaces() keeps one
+  // with the mesh, made again whenever its elements change).
   static VertexFit of(const PatchMesh& mesh);
 };
 
