@@ -10,6 +10,7 @@
 
 #include "app/classroom/lesson.h"
 #include "app/common/options_tables.h"
+#include "app/common/radiosity_drive.h"
 #include "core/error.h"
 #include "local/local_options.h"
 #include "radiosity/radiosity_options.h"
@@ -163,8 +164,9 @@ TEST(Lesson, UnnamedSwitchesGoBackToTheOptionsDefaults) {
 }
 
 // The lesson's switch groups are the options tables' rows: every switch and choice of the local
-// table (the terms, slide 19's effects) and every flag of the Whitted tracer's is set to its
-// default when a step does not name it, and taken by its name when it does.
+// table (the terms, slide 19's effects), every flag of the Whitted tracer's and every switch and
+// mesh setting of the `radiosity` verb is set to its default when a step does not name it, and
+// taken by its name when it does.
 TEST(Lesson, TheSwitchGroupsAreTheOptionsTablesRows) {
   const std::string head = R"({"title": {"es": "t", "en": "t"}, "steps": [
            {"slide": 17, "title": {"es": "a", "en": "a"}, "text": {"es": "b", "en": "b"},
@@ -183,11 +185,26 @@ TEST(Lesson, TheSwitchGroupsAreTheOptionsTablesRows) {
       ++rows;
     }
   EXPECT_EQ(rows, 18);  // 10 local switches and choices, 8 of the tracer's flags
-  const Lesson named = app::parse_lesson_text(head + R"(, "whitted": {"renderer": "recursive"}, "effects": {"fog": "linear"}}]})",
+  // Radiosity's: the `radiosity` verb's switches and mesh settings.
+  const RadiosityOptions options;
+  const app::RadiosityDrive drive;
+  for (const app::RadiositySwitch& sw : app::radiosity_switches()) {
+    const bool on = sw.drive ? drive.*sw.drive : options.*sw.option;
+    EXPECT_TRUE(has(c, std::string("radiosity ") + sw.name + (on ? " on" : " off"))) << sw.name;
+  }
+  for (const char* name : app::radiosity_mesh_settings())
+    EXPECT_TRUE(has(c, std::string("radiosity ") + name + " " +
+                           app::default_text(app::radiosity_table(), *app::find_row(app::radiosity_table(), name))))
+        << name;
+  EXPECT_EQ(app::radiosity_switches().size() + app::radiosity_mesh_settings().size(), 11u);  // 3 + 4 switches, 4 settings
+  const Lesson named = app::parse_lesson_text(head + R"(, "whitted": {"renderer": "recursive"}, "effects": {"fog": "linear"},
+                                                  "radiosity": {"shooter": false, "hemicube": 128}}]})",
                                               "given.json");
   const auto& given = named.steps[0].commands;
   EXPECT_TRUE(has(given, "set renderer recursive"));
   EXPECT_TRUE(has(given, "set fog linear"));
+  EXPECT_TRUE(has(given, "radiosity shooter off"));
+  EXPECT_TRUE(has(given, "radiosity hemicube 128"));
 }
 
 // A scene is loaded and a mesh rebuilt only when the step needs another one; panes end when a

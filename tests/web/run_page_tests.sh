@@ -1,12 +1,16 @@
 #!/bin/sh
 # The page's tests in headless Chromium (./setup.sh web test runs them): build-web/ served from
-# 127.0.0.1 with the isolation headers (on LUZ_WEB_PORT) and without them (on the next port); the
-# page draws (page_smoke), isolated by the headers or by its service worker, and says why in words
-# where it can be neither (page_isolation), a bad scene is a sentence on the page in its language
-# and so is an unknown effect (page_api --expect-error), each scene and model matches `luz render` (page_matches_render), and
-# so do the pictures after lines run through window.luz.run, which rejects lines it cannot run
-# (page_run_matches_render); the canvas follows the browser's window, luz.picture() leaves no
-# note, Esc ends nothing and radiosity's outlines are the window's (page_script, outlines_match).
+# 127.0.0.1 with the isolation headers (on LUZ_WEB_PORT), and the page's files alone served as a
+# static host would, without them (on the next port). The page draws (page_smoke), isolated by
+# the headers or by its service worker, and says why in words where it can be neither
+# (page_isolation); a bad scene is a sentence on the page in its language and so is an unknown
+# effect (page_api --expect-error); each scene and model matches `luz render`
+# (page_matches_render), and so do the pictures after lines run through window.luz.run, which
+# rejects lines it cannot run (page_run_matches_render); the student's own .glb and .gltf given
+# through the file input draw as `luz render` draws them, a broken one is refused with the
+# loader's words naming it, and the screenshot buttons download PNGs (page_files_match_render);
+# the canvas follows the browser's window, luz.picture() leaves no note, Esc ends nothing and
+# radiosity's outlines are the window's (page_script, outlines_match).
 # Pictures and screenshots are left in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
@@ -21,8 +25,13 @@ cp "$(dirname "$(dirname "$here")")/scenes/whitted.gltf" "$(dirname "$(dirname "
 serve=$(dirname "$(dirname "$here")")/src/app/web/serve.py
 python3 "$serve" "$web" "$port" >"$scratch/server.log" 2>&1 &
 server=$!
-# The same folder as a host that sends no isolation headers (the page's service worker adds them).
-python3 "$serve" "$web" "$((port + 1))" --no-isolation >"$scratch/server_plain.log" 2>&1 &
+# The page as docs/web.md says to put it on a static host: its six files alone, in a folder of
+# their own, served by a plain file server that sends no isolation headers (the page's service
+# worker adds them).
+site=$scratch/static-site
+rm -rf "$site" && mkdir -p "$site"
+for file in luz.html luz.js luz.wasm luz.worker.js luz.data coi-serviceworker.js; do cp "$web/$file" "$site/"; done
+python3 -m http.server "$((port + 1))" --bind 127.0.0.1 --directory "$site" >"$scratch/server_plain.log" 2>&1 &
 plain=$!
 trap 'kill $server $plain 2>/dev/null' EXIT INT TERM
 sleep 1
@@ -56,5 +65,6 @@ node "$here/outlines_match.mjs" "$scratch/outlines_off.png" "$scratch/outlines_o
   "$scratch/luz_outlines--outlines.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_files_match_render.sh" "$url" "$luz" "$scratch" || status=1
 [ $status -eq 0 ] && echo "page tests: all passed ($scratch)" || echo "page tests: FAILED ($scratch)"
 exit $status

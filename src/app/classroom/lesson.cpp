@@ -287,36 +287,28 @@ void switch_group(const Reader& r, const json& step, const std::string& at, int 
   }
 }
 
+// The `radiosity` verb's switches (the display's, the drive's) and the settings of the mesh and
+// its form factors (slide 40), from the lists the verb runs on: a switch or mesh setting added
+// there is a lesson's key with nothing else to write. The time budget is written only when given.
 void radiosity(const Reader& r, const json& step, const std::string& at, int line, std::vector<ScriptCommand>& out) {
-  const RadiosityOptions o;
+  const RadiosityOptions options;
   const RadiosityDrive drive;
   const json given = step.value("radiosity", json::object());
   const std::string p = at + "/radiosity";
-  r.only_keys(given, p, "radiosity", {"patch-size", "hemicube", "meshing", "form-factors", "budget", "heat-map",
-                                      "outlines", "flat-patches", "ambient-estimate", "shooter", "item-buffer",
-                                      "rotation"});
-  const std::vector<std::pair<std::string, bool>> switches = {
-      {"heat-map", drive.heat_map}, {"outlines", o.outlines}, {"flat-patches", o.flat_patches},
-      {"ambient-estimate", o.ambient_estimate}, {"shooter", drive.show_shooter},
-      {"item-buffer", drive.show_item_buffer}, {"rotation", o.random_rotation}};
-  for (const auto& [name, on] : switches) {
-    const bool value = given.contains(name) ? r.boolean(given[name], p + "/" + name, "radiosity: " + name) : on;
-    out.push_back(command(line, "radiosity", {name, on_off(value)}));
+  std::vector<std::string> keys;
+  for (const RadiositySwitch& sw : radiosity_switches()) keys.push_back(sw.name);
+  for (const char* name : radiosity_mesh_settings()) keys.push_back(name);
+  keys.push_back("budget");
+  r.only_keys(given, p, "radiosity", keys);
+  for (const RadiositySwitch& sw : radiosity_switches()) {
+    const bool on = sw.drive ? drive.*sw.drive : options.*sw.option;
+    const bool value = given.contains(sw.name) ? r.boolean(given[sw.name], p + "/" + sw.name, std::string("radiosity: ") + sw.name) : on;
+    out.push_back(command(line, "radiosity", {sw.name, on_off(value)}));
   }
-  for (const char* name : {"patch-size", "hemicube"}) {
+  for (const char* name : radiosity_mesh_settings()) {
     const OptionRow& row = *find_row(radiosity_table(), name);
     const std::string value = given.contains(name)
                                   ? row_value(r, row, given[name], p + "/" + name, std::string("radiosity: ") + name)
-                                  : default_text(radiosity_table(), row);
-    out.push_back(command(line, "radiosity", {name, value}));
-  }
-  // Slide 40: uniform or adaptive meshing, and which of the form-factor methods; their names and
-  // defaults are those of --meshing and --form-factors (the options table).
-  for (const char* name : {"meshing", "form-factors"}) {
-    const OptionRow& row = *find_row(radiosity_table(), name);
-    const std::vector<std::string> names(row.choices.begin(), row.choices.end());
-    const std::string value = given.contains(name)
-                                  ? r.one_of(given[name], p + "/" + name, std::string("radiosity: ") + name, names)
                                   : default_text(radiosity_table(), row);
     out.push_back(command(line, "radiosity", {name, value}));
   }
@@ -538,10 +530,7 @@ LessonPlayer::LessonPlayer(Lesson lesson) : lesson_(std::move(lesson)) {
 namespace {
 
 // The settings whose change rebuilds the radiosity mesh (and restarts the solution).
-bool is_mesh_setting(const ScriptCommand& c) {
-  return c.verb == "radiosity" && (c.args[0] == "patch-size" || c.args[0] == "hemicube" ||
-                                   c.args[0] == "meshing" || c.args[0] == "form-factors");
-}
+bool is_mesh_setting(const ScriptCommand& c) { return c.verb == "radiosity" && is_radiosity_mesh_setting(c.args[0]); }
 
 }  // namespace
 

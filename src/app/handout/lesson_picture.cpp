@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "app/common/options_tables.h"
+#include "app/common/radiosity_drive.h"
 #include "app/viewer/viewer_settings.h"
 #include "app/viewer/viewer_state.h"
 #include "core/error.h"
@@ -33,10 +34,6 @@ struct SolverDrive {
   }
 };
 
-bool is_mesh_setting(const std::string& name) {
-  return name == "patch-size" || name == "hemicube" || name == "meshing" || name == "form-factors";
-}
-
 // `radiosity NAME VALUE`: an options row, or the heat map; the rest (the shooter's highlight,
 // the item buffer's window, the time budget) is the window's, not the picture's.
 void set_radiosity(const std::vector<std::string>& a, RadiosityOptions& options, StepPicture& picture,
@@ -48,7 +45,7 @@ void set_radiosity(const std::vector<std::string>& a, RadiosityOptions& options,
   const OptionRow* row = find_row(radiosity_table(), a[0]);
   if (!row) return;
   if (const std::optional<double> value = parse_value(*row, a[1])) row->set(&options, *value);
-  if (is_mesh_setting(a[0])) mesh += a[0] + "=" + a[1] + " ";
+  if (is_radiosity_mesh_setting(a[0])) mesh += a[0] + "=" + a[1] + " ";
 }
 
 }  // namespace

@@ -222,7 +222,7 @@ bool run_dump_inspector(Viewer& v, const ScriptCommand& c, std::string& error) {
 
 bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
   const ViewerState& s = v.state();
-  nlohmann::json j = {{"model", s.model}, {"exposure", s.exposure}, {"ui_scale", v.ui_scale()}, {"note", s.note},
+  nlohmann::json j = {{"model", s.model}, {"exposure", s.exposure}, {"ui_scale", v.ui_scale()}, {"note", s.note}, {"load_error", s.error},
                       {"user_scale", v.user_scale()}, {"warnings", v.warnings()},
                       {"selected_material", s.selected_material}, {"idle_cpu_fraction", v.idle_cpu_fraction()},
                       {"show_help", s.show_help}, {"free_camera", s.free_camera},

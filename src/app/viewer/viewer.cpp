@@ -97,7 +97,8 @@ std::pair<Viewport, Viewport> split_dock(const Viewport& dock, float wanted) {
 Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const ViewerSettings& settings)
     : window_(settings.width > 0 ? settings.width : default_width,
               settings.height > 0 ? settings.height : default_height,
-              "Luz - " + path.filename().string()) {
+              "Luz - " + path.filename().string()),
+      screenshot_saved_(settings.screenshot_saved) {
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) {
     script_.emplace(*settings.script);
@@ -916,6 +917,7 @@ void Viewer::take_screenshots(const Layout& l) {
       if (shot.quiet) continue;
       state_.note = trf("saved {}", shot.path.string());
       fmt::print("{}\n", state_.note);
+      if (shot.origin.empty() && screenshot_saved_) screenshot_saved_(shot.path);
     } catch (const Error& error) {
       state_.note = error.what();
       if (!shot.origin.empty() && failure_.empty()) failure_ = error.what();

@@ -2,6 +2,7 @@
 // The classroom viewer: the scene in a local model in a resizable window, the panel, the
 // inspector, the shortcuts and the scripted runs. Returns the exit code (0; 1 when the scene
 // cannot be loaded, there is no window, or a script command fails).
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -31,6 +32,9 @@ struct ViewerSettings {
   std::vector<std::string> models;  // `--model a,b,...`: side by side (panes.h); one: that model
   std::optional<Lesson> lesson;  // `--lesson [FILE]`, already read: the window opens on its first step
   std::function<void(LineQueue&)> started;  // told once, when the window is open
+  // Told of each screenshot a key or `screenshot` without a file saved (P, Shift+P), once written:
+  // the page hands it to the browser as a download.
+  std::function<void(const std::filesystem::path&)> screenshot_saved;
 };
 
 // On the desktop it returns when the window closes; in the page (WindowContext::drive_frames) as

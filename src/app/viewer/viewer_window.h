@@ -216,6 +216,7 @@ private:
   int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
   std::string failure_;            // a script command that failed: the run ends with exit 1
   std::vector<PendingScreenshot> screenshots_;
+  std::function<void(const std::filesystem::path&)> screenshot_saved_;  // ViewerSettings::screenshot_saved
   std::vector<std::string> warnings_;  // the scene's loader and renderer warnings, shown in the window
   bool show_warnings_ = false;
   bool exposure_check_ = false;    // a scene came: its first picture is checked against the exposure

@@ -31,6 +31,7 @@
 #include "app/viewer/viewer.h"
 #include "core/error.h"
 #include "core/resources.h"
+#include "io/gltf_uris.h"
 
 namespace luz::web {
 namespace {
@@ -80,6 +81,7 @@ std::string url_parameter(const char* name) {
 // the page shows when there will be none (the shell defines both callbacks).
 EM_JS(void, report_ready, (), {
   document.getElementById('status').textContent = "";
+  document.getElementById('controls').classList.add('shown');
   if (window.luzReady) window.luzReady.resolve();
 });
 EM_JS(void, report_failure, (const char* text), {
@@ -90,6 +92,26 @@ EM_JS(void, report_failure, (const char* text), {
 
 // A request of window.luz (run, picture) settled: resolved with `text`, or rejected with it.
 EM_JS(void, settle_request, (int id, int ok, const char* text), { window.luzSettle(id, ok, UTF8ToString(text)); });
+
+// The words of the page's controls (luz.html), in the page's language.
+EM_JS(void, set_control_words, (const char* open, const char* picture, const char* with_panel), {
+  document.getElementById("open-label").textContent = UTF8ToString(open);
+  document.getElementById("save-picture").textContent = UTF8ToString(picture);
+  document.getElementById("save-page").textContent = UTF8ToString(with_panel);
+});
+
+// A screenshot the viewer saved in the page's files (P, Shift+P, the page's buttons), handed to
+// the browser as a download under its name.
+EM_JS(void, offer_download, (const char* path), {
+  const file = UTF8ToString(path);
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(new Blob([FS.readFile(file)], { type: "image/png" }));
+  link.download = file.slice(file.lastIndexOf("/") + 1);
+  document.body.appendChild(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(link.href), 60000);
+});
 
 void fail(const std::string& text) {
   set_status_text(text.c_str());
@@ -307,6 +329,7 @@ void start() {
   settings.height = request.height + 30;
   if (request.follows_window) settings.width = room_width(), settings.height = room_height();
   settings.started = viewer_started;
+  settings.screenshot_saved = [](const std::filesystem::path& file) { offer_download(file.c_str()); };
   try {
     app::start_viewer(settings);
   } catch (const std::exception& error) {
@@ -333,23 +356,128 @@ void fetch_parts() {
                         part_not_fetched);
 }
 
-// The buffers and images a .gltf names by a relative path (not a data: URI), fetched beside it;
-// a file that does not parse is left to the loader, which says what is wrong with it.
+// The buffers and images a .gltf names by a relative path beside it (not a data: URI, not in
+// another folder), as its URIs write them; a file that does not parse names none (the loader
+// says what is wrong with it).
+std::vector<std::string> files_named_beside(const std::filesystem::path& file) {
+  std::vector<std::string> uris;
+  const nlohmann::json gltf = nlohmann::json::parse(std::ifstream(file), nullptr, false);
+  for (const char* list : {"buffers", "images"})
+    if (gltf.is_object() && gltf.contains(list) && gltf[list].is_array())
+      for (const auto& entry : gltf[list])
+        if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
+          const std::string uri = entry["uri"];
+          const bool beside = !uri.starts_with("data:") && !uri.starts_with("/") &&
+                              uri.find("://") == std::string::npos && uri.find("..") == std::string::npos;
+          if (beside) uris.push_back(uri);
+        }
+  return uris;
+}
+
+// A fetched .gltf's buffers and images are fetched beside it.
 void fetched(const char* file) {
   request.scene = file;
-  if (std::filesystem::path(file).extension() == ".gltf") {
-    const nlohmann::json gltf = nlohmann::json::parse(std::ifstream(file), nullptr, false);
-    for (const char* list : {"buffers", "images"})
-      if (gltf.is_object() && gltf.contains(list) && gltf[list].is_array())
-        for (const auto& entry : gltf[list])
-          if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
-            const std::string uri = entry["uri"];
-            const bool beside = !uri.starts_with("data:") && !uri.starts_with("/") &&
-                                uri.find("://") == std::string::npos && uri.find("..") == std::string::npos;
-            if (beside) parts_to_fetch.push_back(uri);
-          }
-  }
+  if (std::filesystem::path(file).extension() == ".gltf") parts_to_fetch = files_named_beside(file);
   fetch_parts();
+}
+
+// ---- the student's own files -------------------------------------------------------------------
+// Each choice of files (the file input, a drop on the page) is written by the shell into a folder
+// of its own (/files/N), under the names the browser gives; the one scene among them is loaded
+// with the viewer's `load`, and what the loader said is shown on the page. Only the shown scene's
+// folder is kept: a broken file's goes, and so does the scene's it replaces.
+const char* const state_file = "/tmp/luz-state.json";
+std::filesystem::path shown_folder;  // the folder of the student's scene shown, if one is
+
+// The page's text about the files last given; `failed` shows it as an error.
+EM_JS(void, show_file_messages, (const char* text, int failed), {
+  const messages = document.getElementById("messages");
+  if (!messages) return;
+  messages.textContent = UTF8ToString(text);
+  messages.className = failed ? "error" : "";
+});
+
+bool is_scene_file(const std::filesystem::path& file) {
+  return file.extension() == ".gltf" || file.extension() == ".glb";
+}
+
+// The loader's lines name the file by its path in the page's files: shown by its name alone.
+std::string without_folder(std::string text, const std::filesystem::path& folder) {
+  const std::string prefix = folder.string() + "/";
+  for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) text.erase(at, prefix.size());
+  return text;
+}
+
+// The files a .gltf names beside it that were not given with it, by their names.
+std::vector<std::string> files_not_given(const std::filesystem::path& gltf) {
+  std::vector<std::string> missing;
+  if (gltf.extension() != ".gltf") return missing;
+  for (const std::string& uri : files_named_beside(gltf))
+    if (!std::filesystem::exists(gltf.parent_path() / io::gltf::uri_path(uri))) missing.push_back(io::gltf::uri_path(uri));
+  return missing;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& word : words) text += (text.empty() ? "" : ", ") + word;
+  return text;
+}
+
+// A .gltf may name its files in folders beside it ("textures/wood.png", as Blender's exporter can
+// write them), and the file picker gives files without their folders: each file given by the
+// name a URI ends with is copied to where the .gltf looks for it.
+void place_named_files(const std::filesystem::path& gltf) {
+  if (gltf.extension() != ".gltf") return;
+  for (const std::string& uri : files_named_beside(gltf)) {
+    const std::string path = io::gltf::uri_path(uri);
+    if (path.find("..") != std::string::npos) continue;  // outside the folder: the loader refuses it
+    const std::filesystem::path wanted = gltf.parent_path() / path;
+    const std::filesystem::path given = gltf.parent_path() / wanted.filename();
+    std::error_code ignored;  // a file that cannot be placed is told missing by the loader
+    if (wanted != given && !std::filesystem::exists(wanted) && std::filesystem::is_regular_file(given)) {
+      std::filesystem::create_directories(wanted.parent_path(), ignored);
+      std::filesystem::copy_file(given, wanted, ignored);
+    }
+  }
+}
+
+// The one scene among the files given, or why there is none to load.
+std::filesystem::path scene_among(const std::filesystem::path& folder, std::string& problem) {
+  std::vector<std::string> names, scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+    if (is_scene_file(entry.path())) scenes.push_back(names.back());
+  }
+  std::sort(names.begin(), names.end());
+  std::sort(scenes.begin(), scenes.end());
+  if (scenes.empty()) problem = trf("None of the files given is a glTF scene (.glb, or .gltf with its files): {}.", joined(names));
+  else if (scenes.size() > 1) problem = trf("Give one scene at a time: {} were given together.", joined(scenes));
+  else if (scenes.front().find('"') != std::string::npos) problem = trf("{}: a scene's name cannot hold a double quote.", scenes.front());
+  return problem.empty() ? folder / scenes.front() : std::filesystem::path();
+}
+
+// What the viewer said after loading `scene`: the page's text, and whether the scene is shown.
+void report_load(const std::filesystem::path& scene, int id) {
+  const std::filesystem::path folder = scene.parent_path();
+  const nlohmann::json state = nlohmann::json::parse(std::ifstream(state_file), nullptr, false);
+  std::remove(state_file);
+  const std::string error = state.is_object() ? state.value("load_error", std::string()) : tr("the viewer's state could not be read");
+  std::string text;
+  for (const std::string& name : files_not_given(scene))
+    text += trf("{} names {}, which was not given with it: choose the files together.", scene.filename().string(), name) + "\n";
+  if (!error.empty()) {
+    text = without_folder(error, folder) + "\n" + text + tr("the scene did not load; showing the previous one");
+    std::filesystem::remove_all(folder);
+  } else {
+    text = trf("loaded {}", scene.filename().string()) + "\n" + text;
+    if (state.contains("warnings"))
+      for (const auto& warning : state["warnings"]) text += trf("warning: {}", without_folder(warning, folder)) + "\n";
+    if (!shown_folder.empty() && shown_folder != folder) std::filesystem::remove_all(shown_folder);
+    shown_folder = folder;
+  }
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  show_file_messages(text.c_str(), !error.empty());
+  settle_request(id, error.empty(), text.c_str());
 }
 
 }  // namespace
@@ -360,6 +488,25 @@ extern "C" EMSCRIPTEN_KEEPALIVE void luz_run(const char* line, int id) {
   using namespace luz::web;
   if (!viewer || !ready) return settle_request(id, 0, "Luz is not ready: await luz.ready first.");
   viewer->run_later(line, [id](const std::string& error) { settle_request(id, error.empty(), error.c_str()); });
+}
+
+// luz.open(files): the shell has written the files into `folder`; the scene among them is loaded.
+extern "C" EMSCRIPTEN_KEEPALIVE void luz_open_files(const char* folder, int id) {
+  using namespace luz::web;
+  if (!viewer || !ready) return settle_request(id, 0, "Luz is not ready: await luz.ready first.");
+  std::string problem;
+  const std::filesystem::path scene = scene_among(folder, problem);
+  if (!problem.empty()) {
+    std::filesystem::remove_all(folder);
+    show_file_messages(problem.c_str(), 1);
+    return settle_request(id, 0, problem.c_str());
+  }
+  place_named_files(scene);
+  viewer->run_later(fmt::format("load \"{}\"", scene.string()), [](const std::string&) {});
+  viewer->run_later(std::string("dump-state ") + state_file, [scene, id](const std::string& error) {
+    if (!error.empty()) return settle_request(id, 0, error.c_str());
+    report_load(scene, id);
+  });
 }
 
 extern "C" EMSCRIPTEN_KEEPALIVE void luz_picture(int id) {
@@ -377,6 +524,8 @@ int main() {
   using namespace luz;
   try {
     web::choose_language();
+    web::set_control_words(app::tr("Open a scene (.glb, or .gltf with its files):"), app::tr("Save the picture (P)"),
+                           app::tr("Save with the panel (Shift+P)"));
     web::request = web::read_request();
   } catch (const std::exception& error) {
     web::fail(error.what());

@@ -169,30 +169,10 @@ namespace {
 
 RadiosityView& radiosity_of(ViewerServices& viewer) { return static_cast<RadiosityView&>(viewer.view("radiosity")); }
 
-// The rows of the radiosity table that make a new mesh (or other form factors) when
-// `radiosity NAME VALUE` sets them: the solution starts over.
-constexpr const char* mesh_settings[] = {"patch-size", "hemicube", "meshing", "form-factors"};
-
-bool is_mesh_setting(const std::string& what) {
-  return std::find(std::begin(mesh_settings), std::end(mesh_settings), what) != std::end(mesh_settings);
+// A switch's field in the view's drive or in the options.
+bool& field(const RadiositySwitch& sw, RadiosityState& r, RadiosityOptions& o) {
+  return sw.drive ? r.drive.*sw.drive : o.*sw.option;
 }
-
-// Model 5's display switches, `radiosity NAME on|off|toggle`; those on a key say what they did.
-struct RadiositySwitch {
-  const char* name;
-  bool& (*field)(RadiosityState&, RadiosityOptions&);
-  const char* note;  // "radiosity heat map" (+ on / off), a message id; nullptr: nothing said
-};
-constexpr RadiositySwitch switches[] = {
-    {"heat-map", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.heat_map; }, N_("radiosity heat map")},
-    {"outlines", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.outlines; }, nullptr},
-    {"flat-patches", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.flat_patches; }, nullptr},
-    {"ambient-estimate", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.ambient_estimate; },
-     N_("radiosity ambient estimate")},
-    {"shooter", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.show_shooter; }, nullptr},
-    {"item-buffer", [](RadiosityState& r, RadiosityOptions&) -> bool& { return r.drive.show_item_buffer; }, nullptr},
-    {"rotation", [](RadiosityState&, RadiosityOptions& o) -> bool& { return o.random_rotation; }, nullptr},
-};
 
 // Whether a pane shows model 5 itself (the hybrid's radiosity is not its loop's keys' place).
 bool radiosity_shown(ViewerServices& viewer) {
@@ -216,16 +196,15 @@ std::string check_radiosity(const ScriptCommand& c) {
   if (what == "budget") return is_number(value) && std::stof(value) > 0.0f ? "" : "`radiosity budget MS` takes milliseconds > 0";
   // The options table's rows of the mesh and its form factors (slide 40): the row's check, as
   // --patch-size, --meshing, ... have it.
-  if (is_mesh_setting(what))
+  if (is_radiosity_mesh_setting(what))
     return parse_value(*find_row(radiosity_table(), what), value)
                ? ""
                : fmt::format("`radiosity {}` takes {}", what, accepted_text(*find_row(radiosity_table(), what)));
   if (what == "patches")
     return value == "outlined" || value == "gouraud" || value == "toggle"
                ? "" : "`radiosity patches` takes outlined, gouraud or toggle";
-  for (const RadiositySwitch& sw : switches)
-    if (what == sw.name)
-      return value == "on" || value == "off" || value == "toggle" ? "" : fmt::format("`radiosity {}` takes on, off or toggle", sw.name);
+  if (const RadiositySwitch* sw = find_radiosity_switch(what))
+    return value == "on" || value == "off" || value == "toggle" ? "" : fmt::format("`radiosity {}` takes on, off or toggle", sw->name);
   return fmt::format("unknown radiosity setting \"{}\" (run, pause, run-pause, shot, reset, step, patch-size, hemicube, "
                      "meshing, form-factors, budget, patches, heat-map, outlines, flat-patches, ambient-estimate, "
                      "shooter, item-buffer, rotation)", what);
@@ -257,7 +236,7 @@ bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&)
   } else if (a[0] == "step") {
     r.drive.running = false;
     r.steps += std::stoi(a[1]);
-  } else if (is_mesh_setting(a[0])) {
+  } else if (is_radiosity_mesh_setting(a[0])) {
     const OptionRow& row = *find_row(radiosity_table(), a[0]);
     row.set(&options, *parse_value(row, a[1]));
     r.remesh = true;  // a solution on another mesh, or by other form factors, starts over
@@ -269,12 +248,10 @@ bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&)
     o.flat_patches = o.outlines = a[1] == "toggle" ? !(o.flat_patches && o.outlines) : a[1] == "outlined";
     state.note = o.outlines ? tr("radiosity: flat patches, outlined") : tr("radiosity: Gouraud");
   } else {
-    for (const RadiositySwitch& sw : switches) {
-      if (a[0] != sw.name) continue;
-      bool& field = sw.field(r, options);
-      field = a[1] == "toggle" ? !field : a[1] == "on";
-      if (sw.note) state.note = fmt::format("{} {}", tr(sw.note), field ? tr("on") : tr("off"));
-    }
+    const RadiositySwitch& sw = *find_radiosity_switch(a[0]);  // checked when the script was read
+    bool& on = field(sw, r, options);
+    on = a[1] == "toggle" ? !on : a[1] == "on";
+    if (sw.note) state.note = fmt::format("{} {}", tr(sw.note), on ? tr("on") : tr("off"));
   }
   return true;
 }
