@@ -6,8 +6,9 @@
 //   shot FILE.png           a screenshot of the page
 //   width W                 the canvas must be W pixels wide (panel=0: the picture's width)
 //   viewport WxH            the browser's window resized to W x H (then waits for the canvas)
-//   fills                   the canvas takes the window's whole width and, with the status line,
-//                           its height, and the page does not scroll
+//   fills                   the canvas takes the window's whole width and, with what the page shows
+//                           under it, its height (the page ending within 20 pixels of the window's
+//                           bottom), and the page does not scroll
 //   picture-width W         luz.picture()'s PNG is W pixels wide
 //   note-has TEXT           the viewer's status-line note (dump-state's "note") contains TEXT
 //   note-lacks TEXT         ... does not contain TEXT
@@ -68,11 +69,15 @@ try {
     } else if (step === 'fills') {
       const room = await page.evaluate(() => {
         const c = document.getElementById('canvas'), root = document.documentElement;
-        return { w: c.width, h: c.height, innerW: innerWidth, innerH: innerHeight,
+        const bottoms = [...document.body.children].map((e) => e.getBoundingClientRect().bottom);
+        return { w: c.width, h: c.height, innerW: innerWidth, innerH: innerHeight, bottom: Math.max(...bottoms),
                  scrollW: root.scrollWidth, scrollH: root.scrollHeight };
       });
-      check(room.w === room.innerW && room.h > room.innerH - 80 && room.scrollW <= room.innerW && room.scrollH <= room.innerH,
-            `canvas ${room.w}x${room.h} fills the window ${room.innerW}x${room.innerH} (page ${room.scrollW}x${room.scrollH})`);
+      // The page's last line within 20 pixels of the window's bottom (its margin), never past it.
+      check(room.w === room.innerW && room.bottom >= room.innerH - 20 && room.scrollW <= room.innerW &&
+            room.scrollH <= room.innerH,
+            `canvas ${room.w}x${room.h} fills the window ${room.innerW}x${room.innerH} (page ${room.scrollW}x${room.scrollH}, ` +
+            `its last line ending at ${room.bottom})`);
     } else if (step === 'picture-width') {
       const dataUrl = await page.evaluate(() => window.luz.picture());
       const width = pngWidth(Buffer.from(dataUrl.split(',')[1], 'base64'));

@@ -265,13 +265,18 @@ void fit_picture(int tries_left) {
 }
 
 // The room the browser's window gives the canvas: its whole width, and its height less what the
-// status line and the margins take (their margins summed, so the page never scrolls).
+// rest of the page takes (the canvas's margins, the status line, the controls and messages under
+// it), so that the page does not scroll.
 EM_JS(int, room_width, (), { return Math.max(1, window.innerWidth); });
 EM_JS(int, room_height, (), {
-  const canvas = document.getElementById('canvas'), status = document.getElementById('status');
-  const c = getComputedStyle(canvas), s = getComputedStyle(status);
-  const others = parseFloat(c.marginTop) + parseFloat(c.marginBottom) + status.offsetHeight +
-                 parseFloat(s.marginTop) + parseFloat(s.marginBottom);
+  const canvas = document.getElementById('canvas');
+  let bottom = 0;
+  for (const element of document.body.children) {
+    const style = getComputedStyle(element);
+    if (style.display === 'none') continue;
+    bottom = Math.max(bottom, element.getBoundingClientRect().bottom + window.scrollY + parseFloat(style.marginBottom));
+  }
+  const others = bottom - canvas.getBoundingClientRect().height;
   return Math.max(1, Math.floor(window.innerHeight - others));
 });
 
