@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <glm/ext/matrix_transform.hpp>
@@ -29,7 +30,8 @@ struct RadiosityRenderer::Impl {
   const PatchMesh& mesh;
   gl::Program program{{"radiosity.vert", "radiosity.frag"}};
   GLuint vao = 0, positions = 0, colours = 0, uvs = 0;
-  GLsizei vertex_count = 0;
+  GLuint edges = 0;  // the outlines: each element's three sides as GL_LINES over its corners
+  GLsizei vertex_count = 0, edge_count = 0;
   std::vector<Run> runs;
   std::vector<GLuint> textures;  // per scene texture, uploaded when a run shows it (else 0)
   bool texture_detail = true;    // the last update's colours are B/pi, which the texture modulates
@@ -45,6 +47,7 @@ struct RadiosityRenderer::Impl {
     if (positions) glDeleteBuffers(1, &positions);
     if (colours) glDeleteBuffers(1, &colours);
     if (uvs) glDeleteBuffers(1, &uvs);
+    if (edges) glDeleteBuffers(1, &edges);
     for (GLuint t : textures)
       if (t) glDeleteTextures(1, &t);
   }
@@ -78,6 +81,7 @@ RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
   glGenBuffers(1, &s.positions);
   glGenBuffers(1, &s.colours);
   glGenBuffers(1, &s.uvs);
+  glGenBuffers(1, &s.edges);
   upload_elements();
 }
 
@@ -139,6 +143,15 @@ void RadiosityRenderer::upload_elements() {
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corner_uvs.size() * sizeof(glm::vec2)), corner_uvs.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+  // The outlines as lines, not as polygons drawn in GL_LINE mode: GL ES has no glPolygonMode, and
+  // the lines are the same pixels on both targets (an edge shared by two elements drawn twice).
+  std::vector<uint32_t> sides;
+  sides.reserve(2 * corners.size());
+  for (uint32_t first = 0; first + 2 < uint32_t(corners.size()); first += 3)
+    for (const uint32_t k : {0u, 1u, 1u, 2u, 2u, 0u}) sides.push_back(first + k);
+  s.edge_count = GLsizei(sides.size());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.edges);  // kept by the vertex array
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(sides.size() * sizeof(uint32_t)), sides.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   s.far = bounds.empty() ? 1.0f : glm::length(bounds.extent());
@@ -212,13 +225,11 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     glDrawArrays(GL_TRIANGLES, run.first, run.count);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
-  if (options.outlines && glPolygonMode) {  // GL ES draws no lines of polygons: no outlines there
+  if (options.outlines) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     s.program.set("u_outline", true);
     s.program.set("u_outline_colour", glm::vec3(0.02f));
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDrawElements(GL_LINES, s.edge_count, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);
   glUseProgram(0);
