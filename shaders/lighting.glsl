@@ -129,47 +129,51 @@ uniform float u_fog_far;
 uniform float u_fog_density;
 
 // ---- [lights] ----------------------------------------------------------------------------------
-// f_att(d) as core/light.cpp Attenuation::factor.
-float attenuation(PunctualLight light, float d) {
-  if (!light.classroom) return 1.0 / (d * d);
-  return 1.0 / (light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d);
+// The lights' fields are read one by one, never a light's struct whole: ANGLE (the page's WebGL)
+// copies a uniform array indexed by a variable whole, every light with its shadow matrix, for
+// each such copy, and SwiftShader spent most of a Phong frame on it.
+
+// f_att(d) of light i, as core/light.cpp Attenuation::factor.
+float attenuation(int i, float d) {
+  if (!u_lights[i].classroom) return 1.0 / (d * d);
+  vec3 c = u_lights[i].attenuation;
+  return 1.0 / (c.x + c.y * d + c.z * d * d);
 }
 
-// The spot's angular factor, as core/light.cpp Light::spot_factor.
-float spot_factor(PunctualLight light, vec3 light_to_point) {
-  if (light.type != SPOT) return 1.0;
-  float cos_angle = dot(light.direction, light_to_point);
-  if (light.warn_exponent > 0.0)
-    return cos_angle >= light.cos_outer ? pow(max(cos_angle, 0.0), light.warn_exponent) : 0.0;
+// Light i's angular factor, as core/light.cpp Light::spot_factor.
+float spot_factor(int i, vec3 light_to_point) {
+  if (light_type[i] != SPOT) return 1.0;
+  float cos_angle = dot(u_lights[i].direction, light_to_point);
+  float cos_outer = u_lights[i].cos_outer;
+  if (u_lights[i].warn_exponent > 0.0)
+    return cos_angle >= cos_outer ? pow(max(cos_angle, 0.0), u_lights[i].warn_exponent) : 0.0;
   // KHR_lights_punctual's smooth falloff: a squared linear ramp in cos(angle).
-  float scale = 1.0 / max(0.001, light.cos_inner - light.cos_outer);
-  float t = clamp((cos_angle - light.cos_outer) * scale, 0.0, 1.0);
+  float scale = 1.0 / max(0.001, u_lights[i].cos_inner - cos_outer);
+  float t = clamp((cos_angle - cos_outer) * scale, 0.0, 1.0);
   return t * t;
 }
 
-// IL and the unit direction L from P toward light i.
+// IL and the unit direction L from P toward light i (its type: light_type[i], known to the
+// compiler).
 vec3 punctual_IL(int i, vec3 P, out vec3 L) {
-  PunctualLight light = u_lights[i];
-  light.type = light_type[i];  // the same value, known to the compiler
-  if (light.type == DIRECTIONAL) {
-    L = -light.direction;
-    return light.intensity / PI;  // IL = E_perp / pi
+  if (light_type[i] == DIRECTIONAL) {
+    L = -u_lights[i].direction;
+    return u_lights[i].intensity / PI;  // IL = E_perp / pi
   }
-  vec3 to_light = light.position - P;
+  vec3 to_light = u_lights[i].position - P;
   float d = length(to_light);
   L = to_light / d;
-  return light.intensity * attenuation(light, d) * spot_factor(light, -L) / PI;
+  return u_lights[i].intensity * attenuation(i, d) * spot_factor(i, -L) / PI;
 }
 
 // IL and L for emissive triangle i: a point light of intensity Le * A * cos(theta_e), 1/d^2.
 vec3 area_IL(int i, vec3 P, out vec3 L) {
-  AreaLight light = u_area_lights[i];
-  vec3 to_light = light.position - P;
+  vec3 to_light = u_area_lights[i].position - P;
   float d = length(to_light);
   if (d < 1e-6) { L = vec3(0.0); return vec3(0.0); }  // P is the light's own centroid
   L = to_light / d;
-  float cos_theta_e = max(dot(light.normal, -L), 0.0);  // dark behind the emitter
-  return light.power * cos_theta_e / (d * d) / PI;
+  float cos_theta_e = max(dot(u_area_lights[i].normal, -L), 0.0);  // dark behind the emitter
+  return u_area_lights[i].power * cos_theta_e / (d * d) / PI;
 }
 
 // ---- [shadows: S_i] ---------------------------------------------------------------------------
@@ -204,8 +208,8 @@ ivec3 cube_texel(vec3 D, int size) {
 // S_i: 1 when the light reaches P (unit normal N facing the viewer, cos(theta) = N.L > 0), 0 when
 // its shadow map holds a surface nearer the light. Bias against self-shadowing ("acne"): look up
 // from P moved normal_offset texels along N, and forgive constant + slope * texel * tan(theta).
+// Called only with shadows on and a map (view.kind not SHADOW_NONE).
 float shadow_factor(ShadowView view, vec3 P, vec3 N, float cos_theta) {
-  if (!shadows_on || view.kind == SHADOW_NONE) return 1.0;
   int size = textureSize(u_shadow_maps, 0).x;
   float texel = view.kind == SHADOW_ORTHOGRAPHIC ? view.texel : view.texel * length(P - view.origin);
   vec3 Q = P + N * (u_shadow_normal_offset * texel);
@@ -247,23 +251,43 @@ float cos_alpha(vec3 N, vec3 L, vec3 V) {
   return max(dot(R, V), 0.0);
 }
 
-// One light's contribution S_i * IL * [kd cos(theta) + ks cos^n(alpha)] to the terms.
-void add_light(inout Terms terms, vec3 IL, ShadowView shadow, vec3 P, vec3 N, vec3 L, vec3 V) {
-  float cos_theta = dot(N, L);
-  if (cos_theta <= 0.0) return;  // the light is behind the surface: no diffuse, no highlight
-  float S = shadow_factor(shadow, P, N, cos_theta);                                            // S_i
+// One light's contribution S_i * IL * [kd cos(theta) + ks cos^n(alpha)] to the terms, where
+// cos(theta) = N.L > 0.
+void add_light(inout Terms terms, vec3 IL, float S, float cos_theta, vec3 N, vec3 L, vec3 V) {
   if (diffuse_on)  terms.diffuse  += S * IL * u_kd * cos_theta;                              // I_D
   if (specular_on) terms.specular += S * IL * u_ks * pow(cos_alpha(N, L, V), u_shininess);  // I_S
 }
 
 // Punctual light i's contribution. Its type and shadow kind are constants of the program where i
-// is a constant, which is what local_model() calls this with.
+// is a constant, which is what local_model() calls this with. Its shadow view is copied only when
+// there is a map to look up (see [lights] on copies of uniform structs).
 void add_punctual_light(inout Terms terms, int i, vec3 P, vec3 N, vec3 V) {
   vec3 L;
   vec3 IL = punctual_IL(i, P, L);
-  ShadowView shadow = u_lights[i].shadow;
-  shadow.kind = light_shadow_kind[i];
-  add_light(terms, IL, shadow, P, N, L, V);
+  float cos_theta = dot(N, L);
+  if (cos_theta <= 0.0) return;  // the light is behind the surface: no diffuse, no highlight
+  float S = 1.0;                                                                             // S_i
+  if (shadows_on && light_shadow_kind[i] != SHADOW_NONE) {
+    ShadowView shadow = u_lights[i].shadow;
+    shadow.kind = light_shadow_kind[i];
+    S = shadow_factor(shadow, P, N, cos_theta);
+  }
+  add_light(terms, IL, S, cos_theta, N, L, V);
+}
+
+// Emissive triangle i's, the same way (all of their maps are of one kind).
+void add_area_light(inout Terms terms, int i, vec3 P, vec3 N, vec3 V) {
+  vec3 L;
+  vec3 IL = area_IL(i, P, L);
+  float cos_theta = dot(N, L);
+  if (cos_theta <= 0.0) return;
+  float S = 1.0;
+  if (shadows_on && area_shadow_kind != SHADOW_NONE) {
+    ShadowView shadow = u_area_lights[i].shadow;
+    shadow.kind = area_shadow_kind;
+    S = shadow_factor(shadow, P, N, cos_theta);
+  }
+  add_light(terms, IL, S, cos_theta, N, L, V);
 }
 
 // The formula at world point P with unit normal N (already facing the viewer's side).
@@ -283,13 +307,7 @@ Terms local_model(vec3 P, vec3 N) {
   PUNCTUAL(0)  PUNCTUAL(1)  PUNCTUAL(2)  PUNCTUAL(3)  PUNCTUAL(4)  PUNCTUAL(5)  PUNCTUAL(6)  PUNCTUAL(7)
   PUNCTUAL(8)  PUNCTUAL(9)  PUNCTUAL(10) PUNCTUAL(11) PUNCTUAL(12) PUNCTUAL(13) PUNCTUAL(14) PUNCTUAL(15)
 #undef PUNCTUAL
-  for (int i = 0; i < area_light_count; ++i) {
-    vec3 L;
-    vec3 IL = area_IL(i, P, L);
-    ShadowView shadow = u_area_lights[i].shadow;
-    shadow.kind = area_shadow_kind;
-    add_light(terms, IL, shadow, P, N, L, V);
-  }
+  for (int i = 0; i < area_light_count; ++i) add_area_light(terms, i, P, N, V);
   return terms;
 }
 

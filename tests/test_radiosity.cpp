@@ -32,6 +32,7 @@
 #include "core/scene.h"
 #include "io/gltf_loader.h"
 #include "radiosity/hemicube.h"
+#include "radiosity/mesh_bisection.h"
 #include "radiosity/patch_mesh.h"
 #include "radiosity/radiosity_renderer.h"
 #include "radiosity/shooting.h"
@@ -550,6 +551,47 @@ TEST(VertexColours, ACreaseKeepsItsTwoSidesAndASoupHasNoSeams) {
   }
 }
 
+// A radiosity that varies linearly across a surface is shown exactly at every vertex, whatever the
+// triangulation: the elements of a floor, cut unevenly as adaptive subdivision cuts them (its top
+// row twice, a few elements inside), carry B = pi f(centroid) for a linear f, and every corner
+// shows f there, on the floor's edges and corners as inside. A mean of the elements around a
+// vertex shows f at their centroid instead, off by f's change over a third of an element on the
+// edges, by an amount that alternates along the cut row. A wall meeting the floor at a crease,
+// with a linear f of its own, keeps its own values along the crease.
+TEST(VertexColours, ALinearRadiosityIsShownExactlyOnAnyMesh) {
+  Scene scene;
+  const int grey = add_material(scene, 0.5f);
+  add_quad(scene, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, grey, "floor");
+  add_quad(scene, {1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}, grey, "wall");
+  PatchMesh mesh = PatchMesh::build(scene, 0.25f);
+  {
+    MeshBisection bisection(mesh);
+    std::vector<uint32_t> changed;
+    for (int pass = 0; pass < 2; ++pass)
+      for (uint32_t e = 0, n = uint32_t(mesh.size()); e < n; ++e)
+        if (mesh.patches[e].mesh == 0 && mesh.patches[e].centre.z > 0.8f) bisection.split(e, changed);
+    for (const uint32_t e : {5u, 11u, 20u}) bisection.split(e, changed);
+    mesh.group_by_shooter();
+    mesh.find_display_surfaces();
+  }
+  const auto f = [](int surface, const glm::vec3& q) {
+    return surface == 0 ? 3.5f + 2.0f * q.x - 3.0f * q.z : 0.5f + 4.0f * q.y + q.z;
+  };
+  std::vector<Rgb> B(mesh.size());
+  for (size_t e = 0; e < mesh.size(); ++e)
+    B[e] = Rgb(std::numbers::pi_v<float> * f(mesh.patches[e].mesh, mesh.patches[e].centre));
+  const RadianceField field = RadianceField::from(mesh, B);
+  size_t on_the_crease = 0;
+  for (size_t c = 0; c < field.corner.size(); ++c) {
+    const Patch& p = mesh.patches[c / 3];
+    const glm::vec3 q = mesh.vertices[p.vertices[c % 3]];
+    EXPECT_NEAR(field.corner[c].g, f(p.mesh, q), 1e-4f) << "mesh " << p.mesh << " at " << q.x << ", " << q.y << ", " << q.z;
+    if (q.x == 1.0f && q.y == 0.0f) ++on_the_crease;
+  }
+  EXPECT_GT(on_the_crease, 8u);
+  EXPECT_GT(mesh.size(), 64u) << "the cuts were made";
+}
+
 // Two materials side by side in one plane are two surfaces: a change of material stays sharp.
 TEST(VertexColours, AChangeOfMaterialIsAnEdge) {
   Scene scene;
@@ -750,6 +792,49 @@ TEST(RadiosityRenderer, NoCracksAlongTheJoinsAndTheShooterHighlighted) {
 
 // Radiosity leaves a patch on its front side only: seen from behind, the Cornell box's back
 // wall is black (not its radiosity, not the background), where from inside it is lit.
+// A lit face a metre in front of a dark one, seen from 1.5 km through a camera whose file asks
+// for a near plane of 5 cm (an engine's fins before its body, as a CAD export frames it): with
+// that near plane a 24-bit depth buffer tells depths apart only every few metres, and the dark
+// face would show through the lit one in speckles. Every pixel of the lit face shows its value.
+TEST(RadiosityRenderer, ADistantSceneKeepsItsDepthOrder) {
+  Scene scene;
+  const int lamp = add_material(scene, 0.0f, 1.0f), dark = add_material(scene, 0.5f);
+  add_quad(scene, {-200, -200, 0}, {200, -200, 0}, {200, 200, 0}, {-200, 200, 0}, lamp, "lit face");
+  add_quad(scene, {-300, -300, -1}, {300, -300, -1}, {300, 300, -1}, {-300, 300, -1}, dark, "body");
+  PatchMesh mesh = PatchMesh::build(scene, 100.0f);
+  std::vector<Rgb> exitance(mesh.size());
+  for (size_t e = 0; e < mesh.size(); ++e) exitance[e] = mesh.patches[e].emission;
+  RadiosityRenderer renderer(scene, mesh);
+  RadiosityOptions options;
+  options.pixel_samples = 1;
+  renderer.update(RadianceField::from(mesh, exitance), options);
+  Camera camera;
+  camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1500.0f));
+  camera.yfov = 0.2f;  // 300 m across at 1.5 km: the lit face fills the picture
+  camera.znear = 0.05f;
+  camera.zfar = 1e6f;
+  const Image image = renderer.render(camera, 64, 64, options);
+  int wrong = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) wrong += std::abs(image.at(x, y).g - 1.0f) > 1e-3f;
+  EXPECT_EQ(wrong, 0) << "pixels of 64 x 64 showing the face behind";
+  // The near plane moves out only as far as the scene allows: from inside the scene, znear.
+  Bounds bounds;
+  for (const glm::vec3& v : mesh.vertices) bounds.grow(v);
+  EXPECT_GT(camera.near_plane(bounds, 1.0f), 1400.0f);
+  camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -0.5f));
+  EXPECT_EQ(camera.near_plane(bounds, 1.0f), 0.05f);
+  // Nor past what a wide view shows off its axis: a block 34 degrees aside, inside a view 115
+  // degrees wide, is 1794 m away but its nearest face only 1490 m deep.
+  Bounds aside;
+  aside.grow({1000, -10, -10});
+  aside.grow({1100, 10, 10});
+  camera.to_world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1500.0f));
+  camera.yfov = 2.0f;
+  EXPECT_LT(camera.near_plane(aside, 1.0f), 1490.0f);
+  EXPECT_GT(camera.near_plane(aside, 1.0f), 100.0f);
+}
+
 TEST(RadiosityRenderer, APatchSeenFromBehindIsBlack) {
   io::LoadedScene loaded = io::load_gltf(test::scene_dir() / "cornell_box.gltf");
   loaded.scene.background = Rgb(0.0f, 0.0f, 100.0f);  // unmistakable

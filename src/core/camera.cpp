@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
@@ -21,8 +22,23 @@ glm::vec3 Camera::forward() const { return glm::normalize(-glm::vec3(to_world[2]
 glm::mat4 Camera::view() const { return glm::inverse(to_world); }
 
 glm::mat4 Camera::projection(float image_aspect, float fallback_far) const {
-  const float far = zfar > znear ? zfar : fallback_far;
-  return glm::perspective(yfov, image_aspect, znear, far);
+  return projection(image_aspect, fallback_far, znear);
+}
+
+glm::mat4 Camera::projection(float image_aspect, float fallback_far, float near) const {
+  const float far = zfar > near ? zfar : std::max(fallback_far, 2.0f * near);
+  return glm::perspective(yfov, image_aspect, near, far);
+}
+
+float Camera::near_plane(const Bounds& bounds, float image_aspect) const {
+  if (bounds.empty()) return znear;
+  // Every point of the box is at least `distance` from the eye, and a point the image shows
+  // lies within the frustum's corner angle of the axis: its depth is at least distance x cos.
+  const glm::vec3 eye = position();
+  const float distance = glm::length(eye - glm::clamp(eye, bounds.min, bounds.max));
+  const float tan_y = std::tan(0.5f * yfov), tan_x = image_aspect * tan_y;
+  const float cos_corner = 1.0f / std::sqrt(1.0f + tan_x * tan_x + tan_y * tan_y);
+  return std::max(znear, 0.99f * distance * cos_corner);
 }
 
 std::string Camera::to_string() const {

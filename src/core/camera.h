@@ -23,6 +23,13 @@ struct Camera {
   // OpenGL clip matrix for an image of the given aspect (width / height); zfar 0 becomes
   // `fallback_far` so that depth buffers keep their precision.
   glm::mat4 projection(float image_aspect, float fallback_far) const;
+  // The same with the near plane at `near` instead of znear.
+  glm::mat4 projection(float image_aspect, float fallback_far, float near) const;
+  // A near plane for a scene within `bounds`: znear, or just short of the nearest point of the
+  // scene the image can show when that is farther. A depth buffer's steps grow as depth^2 / near:
+  // a file's znear of centimetres on an engine a kilometre away leaves steps of metres, and a
+  // fin's face and the dark body a metre behind it fight over the pixels.
+  float near_plane(const Bounds& bounds, float image_aspect) const;
   std::string to_string() const;
 
   // SCENES.md: a scene without a camera gets one framing its bounding box from +Z, raised by

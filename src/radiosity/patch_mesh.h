@@ -39,6 +39,7 @@
 #include "radiosity/display_surfaces.h"
 #include "radiosity/radiosity_options.h"
 #include "radiosity/texture_detail.h"
+#include "radiosity/vertex_fit.h"
 
 namespace luz {
 
@@ -97,6 +98,7 @@ public:
   TextureDetail detail;
   std::vector<int> mesh_material;    // per scene mesh, its material
   DisplaySurfaces display;           // which element corners show one value
+  VertexFit vertex_fit;              // ... and how it is made from the elements' values
   int revision = 0;                  // changes whenever the elements change after build()
 
   size_t size() const { return patches.size(); }
@@ -128,8 +130,11 @@ public:
   // Fills `members` and every shooter's (first, count) from `shooter_of`, keeping the elements of
   // a patch in index order.
   void group_by_shooter();
-  // `display` again, after elements were cut.
-  void find_display_surfaces() { display = DisplaySurfaces::of(*this, mesh_material); }
+  // `display` and `vertex_fit` again, after elements were cut.
+  void find_display_surfaces() {
+    display = DisplaySurfaces::of(*this, mesh_material);
+    vertex_fit = VertexFit::of(*this);
+  }
 
 private:
   struct Source {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <glm/ext/matrix_transform.hpp>
@@ -29,12 +30,14 @@ struct RadiosityRenderer::Impl {
   const PatchMesh& mesh;
   gl::Program program{{"radiosity.vert", "radiosity.frag"}};
   GLuint vao = 0, positions = 0, colours = 0, uvs = 0;
-  GLsizei vertex_count = 0;
+  GLuint edges = 0;  // the outlines: each element's three sides as GL_LINES over its corners
+  GLsizei vertex_count = 0, edge_count = 0;
   std::vector<Run> runs;
   std::vector<GLuint> textures;  // per scene texture, uploaded when a run shows it (else 0)
   bool texture_detail = true;    // the last update's colours are B/pi, which the texture modulates
   int revision = 0;  // of the mesh uploaded
   float far = 1.0f;
+  Bounds bounds;  // of the elements' vertices
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
 
@@ -44,6 +47,7 @@ struct RadiosityRenderer::Impl {
     if (positions) glDeleteBuffers(1, &positions);
     if (colours) glDeleteBuffers(1, &colours);
     if (uvs) glDeleteBuffers(1, &uvs);
+    if (edges) glDeleteBuffers(1, &edges);
     for (GLuint t : textures)
       if (t) glDeleteTextures(1, &t);
   }
@@ -77,6 +81,7 @@ RadiosityRenderer::RadiosityRenderer(const Scene& scene, const PatchMesh& mesh)
   glGenBuffers(1, &s.positions);
   glGenBuffers(1, &s.colours);
   glGenBuffers(1, &s.uvs);
+  glGenBuffers(1, &s.edges);
   upload_elements();
 }
 
@@ -138,9 +143,19 @@ void RadiosityRenderer::upload_elements() {
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corner_uvs.size() * sizeof(glm::vec2)), corner_uvs.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+  // The outlines as lines, not as polygons drawn in GL_LINE mode: GL ES has no glPolygonMode, and
+  // the lines are the same pixels on both targets (an edge shared by two elements drawn twice).
+  std::vector<uint32_t> sides;
+  sides.reserve(2 * corners.size());
+  for (uint32_t first = 0; first + 2 < uint32_t(corners.size()); first += 3)
+    for (const uint32_t k : {0u, 1u, 1u, 2u, 2u, 0u}) sides.push_back(first + k);
+  s.edge_count = GLsizei(sides.size());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.edges);  // kept by the vertex array
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(sides.size() * sizeof(uint32_t)), sides.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   s.far = bounds.empty() ? 1.0f : glm::length(bounds.extent());
+  s.bounds = bounds;
 }
 
 RadiosityRenderer::~RadiosityRenderer() = default;
@@ -177,14 +192,16 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
   glClearBufferfv(GL_COLOR, 0, background);
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
-  // A finite far plane past the farthest patch from the camera.
+  // A finite far plane past the farthest patch from the camera, and the near plane as far out
+  // as the scene allows, for the depth buffer's precision (Camera::near_plane).
   const float far = glm::length(camera.position() - s.mesh.vertices.front()) + 2.0f * s.far;
+  const float aspect = float(width) / float(height);
   s.program.use();
   // A shift of (dx, dy) pixels is 2 dx / width in normalised device coordinates.
   const glm::mat4 shifted = glm::translate(
       glm::mat4(1.0f), glm::vec3(2.0f * shift.x / float(width), 2.0f * shift.y / float(height), 0.0f));
   s.program.set("u_view_projection",
-                shifted * camera.projection(float(width) / float(height), far) * camera.view());
+                shifted * camera.projection(aspect, far, camera.near_plane(s.bounds, aspect)) * camera.view());
   s.program.set("u_outline", false);
   const bool lit = highlight >= 0 && size_t(highlight) < s.mesh.shooters.size();
   s.program.set("u_highlight_first", lit ? int(s.mesh.shooters[size_t(highlight)].first) : -1);
@@ -208,13 +225,11 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
     glDrawArrays(GL_TRIANGLES, run.first, run.count);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
-  if (options.outlines && glPolygonMode) {  // GL ES draws no lines of polygons: no outlines there
+  if (options.outlines) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     s.program.set("u_outline", true);
     s.program.set("u_outline_colour", glm::vec3(0.02f));
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    glDrawArrays(GL_TRIANGLES, 0, s.vertex_count);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDrawElements(GL_LINES, s.edge_count, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);
   glUseProgram(0);

@@ -19,20 +19,19 @@ RadianceField RadianceField::from(const PatchMesh& mesh, const std::vector<Rgb>&
   for (size_t i = 0; i < mesh.size(); ++i)
     field.patch[i] = (exitance[i] + mesh.patches[i].rho * ambient) * inv_pi;  // L = B / pi
 
-  // Nodal averaging, area-weighted, over the elements of one surface at each point.
-  const DisplaySurfaces& display = mesh.display;
-  assert(display.fits(mesh.size()) && "the display surfaces are found again after elements are cut");
-  std::vector<Rgb> sum(display.points, Rgb(0.0f));
-  std::vector<float> weight(display.points, 0.0f);
-  for (size_t c = 0; c < display.corner.size(); ++c) {
-    sum[display.corner[c]] += mesh.patches[c / 3].area * field.patch[c / 3];
-    weight[display.corner[c]] += mesh.patches[c / 3].area;
+  // Each display point's value from the elements around it (vertex_fit.h); a fit may overshoot
+  // below zero at a sharp shadow's edge, and no radiance is negative.
+  assert(mesh.display.fits(mesh.size()) && "the display surfaces are found again after elements are cut");
+  const VertexFit& fit = mesh.vertex_fit;
+  assert(fit.start.size() == size_t(mesh.display.points) + 1 && "and the fit with them");
+  std::vector<Rgb> value(mesh.display.points, Rgb(0.0f));
+  for (size_t point = 0; point < value.size(); ++point) {
+    for (uint32_t k = fit.start[point]; k < fit.start[point + 1]; ++k)
+      value[point] += fit.weight[k] * field.patch[fit.element[k]];
+    value[point] = glm::max(value[point], Rgb(0.0f));
   }
-  field.corner.resize(display.corner.size());
-  for (size_t c = 0; c < display.corner.size(); ++c) {
-    const uint32_t point = display.corner[c];
-    field.corner[c] = weight[point] > 0.0f ? sum[point] / weight[point] : Rgb(0.0f);
-  }
+  field.corner.resize(mesh.display.corner.size());
+  for (size_t c = 0; c < field.corner.size(); ++c) field.corner[c] = value[mesh.display.corner[c]];
   return field;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // From patch exitances B (W/m^2) to what is drawn: the radiance of a diffuse surface, B / pi
-// (SCENES.md), per patch and averaged to the element corners (nodal averaging: each corner takes
-// the area-weighted mean of the elements that meet there on its surface, so Gouraud
-// interpolation shows a smooth surface and a crease stays sharp: display_surfaces.h).
+// (SCENES.md), per patch and at the element corners (each corner takes a linear fit over the
+// elements that meet there on its surface, vertex_fit.h, so Gouraud interpolation shows a smooth
+// surface and a crease stays sharp: display_surfaces.h).
 //
 // The same field answers "what radiance does radiosity give at this point of this triangle?"
 // on the CPU, for a ray tracer that takes its diffuse light from radiosity (the hybrid model).
@@ -19,7 +19,7 @@ class ProgressiveSolver;
 
 struct RadianceField {
   std::vector<Rgb> patch;   // B_i / pi (+ rho_i * ambient / pi), one per patch
-  std::vector<Rgb> corner;  // nodal averages of `patch`, one per element corner (3 e + k)
+  std::vector<Rgb> corner;  // `patch` fitted at the element corners, one per corner (3 e + k)
 
   // `exitance`: B per patch. `ambient`: Cohen's ambient exitance (0 for none); patch i shows
   // rho_i * ambient more.

@@ -5,12 +5,28 @@
 //   reject LINE TEXT        luz.run(LINE), which must reject with an error containing TEXT
 //   shot FILE.png           a screenshot of the page
 //   width W                 the canvas must be W pixels wide (panel=0: the picture's width)
+//   viewport WxH            the browser's window resized to W x H (then waits for the canvas)
+//   fills                   the canvas takes the window's whole width and, with what the page shows
+//                           under it, its height (the page ending within 20 pixels of the window's
+//                           bottom), and the page does not scroll
+//   picture-width W         luz.picture()'s PNG is W pixels wide
+//   note-has TEXT           the viewer's status-line note (dump-state's "note") contains TEXT
+//   note-lacks TEXT         ... does not contain TEXT
+// A run step that takes more than a minute fails (a page whose program ended never settles).
 // Usage: node tests/web/page_script.mjs URL STEP ARGS [STEP ARGS ...]
 //        (NODE_PATH=build-web/npm/node_modules)
 import { writeFileSync } from 'node:fs';
 import { openLuz, openPage } from './browser.mjs';
 
 const [url, ...steps] = process.argv.slice(2);
+const within = (promise, ms, what) =>
+  Promise.race([promise, new Promise((resolve) => setTimeout(() => resolve(`no answer in ${ms / 1000} s (${what})`), ms))]);
+// The viewer's status-line note, through dump-state into the page's files.
+const note = (page) => page.evaluate(() => window.luz.run('dump-state /tmp/luz-test-state.json').then(() =>
+  JSON.parse(Module.FS.readFile('/tmp/luz-test-state.json', { encoding: 'utf8' })).note));
+// A PNG's width: its IHDR chunk, bytes 16-19, big-endian.
+const pngWidth = (bytes) => bytes.readUInt32BE(16);
+
 if (!url || steps.length === 0) {
   console.error('usage: page_script.mjs URL (picture FILE | run LINE | reject LINE TEXT | shot FILE | width W)...');
   process.exit(2);
@@ -33,7 +49,7 @@ try {
       writeFileSync(steps[++i], Buffer.from(dataUrl.split(',')[1], 'base64'));
     } else if (step === 'run') {
       const line = steps[++i];
-      const result = await page.evaluate((l) => window.luz.run(l).then(() => 'done', (e) => 'rejected: ' + e.message), line);
+      const result = await within(page.evaluate((l) => window.luz.run(l).then(() => 'done', (e) => 'rejected: ' + e.message), line), 60000, line);
       check(result === 'done', `run("${line}"): ${result}`);
     } else if (step === 'reject') {
       const line = steps[++i], text = steps[++i];
@@ -44,6 +60,31 @@ try {
     } else if (step === 'width') {
       const width = await page.$eval('#canvas', (c) => String(c.width));
       check(width === steps[++i], `canvas ${width} pixels wide, expected ${steps[i]}`);
+    } else if (step === 'viewport') {
+      const [w, h] = steps[++i].split('x').map(Number);
+      await page.setViewport({ width: w, height: h });
+      await page.waitForFunction((w) => document.getElementById('canvas').width === w, { timeout: 30000 }, w)
+        .catch(() => {});
+      await page.evaluate(() => window.luz.run('wait 2'));
+    } else if (step === 'fills') {
+      const room = await page.evaluate(() => {
+        const c = document.getElementById('canvas'), root = document.documentElement;
+        const bottoms = [...document.body.children].map((e) => e.getBoundingClientRect().bottom);
+        return { w: c.width, h: c.height, innerW: innerWidth, innerH: innerHeight, bottom: Math.max(...bottoms),
+                 scrollW: root.scrollWidth, scrollH: root.scrollHeight };
+      });
+      // The page's last line within 20 pixels of the window's bottom (its margin), never past it.
+      check(room.w === room.innerW && room.bottom >= room.innerH - 20 && room.scrollW <= room.innerW &&
+            room.scrollH <= room.innerH,
+            `canvas ${room.w}x${room.h} fills the window ${room.innerW}x${room.innerH} (page ${room.scrollW}x${room.scrollH}, ` +
+            `its last line ending at ${room.bottom})`);
+    } else if (step === 'picture-width') {
+      const dataUrl = await page.evaluate(() => window.luz.picture());
+      const width = pngWidth(Buffer.from(dataUrl.split(',')[1], 'base64'));
+      check(String(width) === steps[++i], `picture ${width} pixels wide, expected ${steps[i]}`);
+    } else if (step === 'note-has' || step === 'note-lacks') {
+      const text = await note(page), wanted = steps[++i];
+      check(text.includes(wanted) === (step === 'note-has'), `note "${text}" ${step === 'note-has' ? 'has' : 'lacks'} "${wanted}"`);
     } else {
       check(false, `unknown step "${step}"`);
       break;

@@ -9,7 +9,9 @@
 # rejects lines it cannot run (page_run_matches_render); the student's own .glb and .gltf given
 # through the file input draw as `luz render` draws them, a broken one is refused with the
 # loader's words naming it, and the screenshot buttons download PNGs (page_files_match_render);
-# Whitted, radiosity, the hybrid and the path tracer match `luz render` once their work is done
+# the canvas follows the browser's window, luz.picture() leaves no note, Esc ends nothing and
+# radiosity's outlines are the window's (page_script, outlines_match); Whitted, radiosity, the
+# hybrid and the path tracer match `luz render` once their work is done
 # (page_tracers_match_render), and the lesson walks to its end in Spanish from its first step
 # and in English from step 54 (page_lesson). Pictures and screenshots are left in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
@@ -44,6 +46,25 @@ node "$here/page_isolation.mjs" service-worker "$plain_url" "$scratch/isolated_s
 node "$here/page_isolation.mjs" refused "$plain_url" "$scratch/not_isolated.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/error_es.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?effects=shadows,sparkle&lang=en" "$scratch/error_effects.png" || status=1
+# Without size= the canvas follows the browser's window (the picture as wide as the canvas with
+# panel=0); luz.picture() leaves no "saved" note, a user's screenshot does; Esc ends nothing (a
+# page whose program ended answers no run() again).
+node "$here/page_script.mjs" "$url?panel=0" fills picture-width 800 viewport 1000x500 fills picture-width 1000 \
+  width 1000 || status=1
+node "$here/page_script.mjs" "$url?size=320x240" picture "$scratch/quiet.png" note-lacks luz-picture \
+  run "screenshot /tmp/shot.png" note-has "saved /tmp/shot.png" run "key esc" run "wait 3" || status=1
+# Radiosity's patch outlines: the page's where the window's are (uniform patches, so that both
+# meshes are the same whatever the solution reached).
+node "$here/page_script.mjs" "$url?scene=cornell_box&model=radiosity&size=640x480&panel=0" \
+  run "radiosity patch-size 0.6" run "radiosity meshing uniform" run "wait-shots 10" run "radiosity pause" \
+  run "radiosity flat-patches on" run "radiosity outlines off" picture "$scratch/outlines_off.png" \
+  run "radiosity outlines on" picture "$scratch/outlines_on.png" || status=1
+for outlines in "" --outlines; do
+  "$luz" render "$(dirname "$(dirname "$here")")/scenes/cornell_box.gltf" --model radiosity --size 640x480 \
+    --patch-size 0.6 --meshing uniform --flat-patches $outlines --out "$scratch/luz_outlines${outlines}.png" >/dev/null || status=1
+done
+node "$here/outlines_match.mjs" "$scratch/outlines_off.png" "$scratch/outlines_on.png" "$scratch/luz_outlines.png" \
+  "$scratch/luz_outlines--outlines.png" || status=1
 sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_files_match_render.sh" "$url" "$luz" "$scratch" || status=1

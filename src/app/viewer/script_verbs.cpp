@@ -61,7 +61,7 @@ std::string check_wait(const ScriptCommand& c) {
 std::string check_screenshot(const ScriptCommand& c) {
   if (auto e = check_count(c, 0, 2); !e.empty()) return e;
   if (c.args.empty() || (c.args.size() == 1 && c.args[0] == "--with-panel")) return "";
-  if (c.args.size() == 2 && c.args[1] != "--with-panel" && c.args[1] != "--shown")
+  if (c.args.size() == 2 && c.args[1] != "--with-panel" && c.args[1] != "--shown" && c.args[1] != "--quiet")
     return fmt::format("unknown option \"{}\"", c.args[1]);
   return c.args[0].ends_with(".png") ? "" : "screenshots are .png files";
 }
@@ -164,8 +164,9 @@ bool run_screenshot(Viewer& v, const ScriptCommand& c, std::string&) {
     v.screenshot({next_screenshot_name(v.state().scene_path, with_panel), with_panel, false, ""});
     return true;
   }
-  const bool shown = c.args.size() == 2 && c.args[1] == "--shown";
-  v.screenshot({c.args[0], c.args.size() == 2, shown, fmt::format("{}:{}", c.line, c.args[0])});
+  const std::string option = c.args.size() == 2 ? c.args[1] : "";
+  v.screenshot({c.args[0], option == "--with-panel" || option == "--shown", option == "--shown",
+                fmt::format("{}:{}", c.line, c.args[0]), option == "--quiet"});
   return true;
 }
 
@@ -362,7 +363,7 @@ constexpr ScriptVerb verbs[] = {
     {"drag", "drag X0 Y0 X1 Y1 [left|right]", check_drag, on_viewer<run_drag>, true},
     {"scroll", "scroll STEPS", check_number, on_viewer<run_scroll>, false},
     {"wait", "wait N|Ns|Nms", check_wait, on_viewer<run_nothing>, true},
-    {"screenshot", "screenshot [FILE.png] [--with-panel|--shown]", check_screenshot, on_viewer<run_screenshot>, true},
+    {"screenshot", "screenshot [FILE.png] [--with-panel|--shown|--quiet]", check_screenshot, on_viewer<run_screenshot>, true},
     {"camera", "camera [N|NAME|next]", check_camera, on_viewer<run_camera>, true},
     {"model", "model NAME", check_model, on_viewer<run_model>, false},
     {"set", "set NAME VALUE", check_set, on_viewer<run_set>, false},

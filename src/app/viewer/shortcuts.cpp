@@ -52,7 +52,11 @@ constexpr KeyBinding window[] = {
     {"F8", nullptr, "lesson next", N_("lesson: next step (luz --lesson)")},
     {"F7", nullptr, "lesson prev", N_("lesson: previous step")},
     {"F9", nullptr, "caption toggle", N_("lesson: the caption's text hidden (one line) / shown")},
+#ifndef __EMSCRIPTEN__
+    // In the page Esc is left to the browser (it leaves full screen): a page whose program ended
+    // would be a dead picture until reloaded, and closing the tab is the browser's own key.
     {"Esc", N_("Esc"), "quit --ask", N_("quit")},
+#endif
     {"Up", N_("Up / Down"), nullptr, N_("fly forward / back (Shift: faster)")},
     {"Left", N_("Left / Right"), nullptr, N_("fly left / right")},
     {"PageUp", N_("PageUp / PageDown"), nullptr, N_("fly up / down")},

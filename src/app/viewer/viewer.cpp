@@ -914,6 +914,7 @@ void Viewer::take_screenshots(const Layout& l) {
       else if (panes_.size() > 1 && pictures_.size() == panes_.size() && l.panes.size() == panes_.size())
         save_panes(pane_pictures(), l.panes, state_.panes, l.view, shot.path, state_.exposure);
       else if (!pictures_.empty() && pictures_.front()) save_picture(*pictures_.front(), shot.path, state_.exposure);
+      if (shot.quiet) continue;
       state_.note = trf("saved {}", shot.path.string());
       fmt::print("{}\n", state_.note);
       if (shot.origin.empty() && screenshot_saved_) screenshot_saved_(shot.path);

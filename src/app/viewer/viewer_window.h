@@ -42,6 +42,7 @@ struct PendingScreenshot {
   bool with_panel = false;
   bool shown = false;  // the window as the display shows it (the front buffer), panel and all
   std::string origin;  // "demo.txt:12" for a script's, empty for a key's
+  bool quiet = false;  // no "saved FILE" on the status line: a picture for a program (the page's luz.picture())
 };
 
 // The window's parts, in window units: the panel on the left, the picture's viewport beside it,

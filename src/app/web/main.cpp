@@ -4,10 +4,10 @@
 // fetched when the URL names one, and window.luz, the page's door for scripts and tests.
 //
 // The URL's parameters (docs/web.md): scene=NAME|URL, model=NAME, effects=shadows,..., lang=es|en,
-// size=WxH (the picture's size), panel=0 (the picture alone), lesson=N (lessons/sintesis.json
-// at step N). window.luz (the shell, luz.html): ready settles once the first picture of the URL's
-// scene and model is shown; run(line) runs a line of the script language; picture() is the
-// picture as `luz render` writes it.
+// size=WxH (the picture's size; without it the canvas follows the browser's window), panel=0
+// (the picture alone), lesson=N (lessons/sintesis.json at step N). window.luz (the shell,
+// luz.html): ready settles once the first picture of the URL's scene and model is shown;
+// run(line) runs a line of the script language; picture() is the picture as `luz render` writes it.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -128,6 +128,7 @@ struct Request {
   std::string model = "phong";
   std::vector<std::string> settings;  // `set` lines: slide 19's switches the URL turns on
   int width = 640, height = 480;  // the picture's
+  bool follows_window = true;     // no size=: the canvas takes the browser window's room, resized with it
   bool panel = true;
   int lesson_step = 0;  // lesson=N: lessons/sintesis.json opened at step N (from 1); 0: none
   std::optional<app::Lesson> lesson;
@@ -207,6 +208,7 @@ Request read_request() {
   if (!model.empty()) request.model = model;
   request.settings = effect_settings(effects);
   if (!size.empty()) read_size(size, request.width, request.height);
+  request.follows_window = size.empty();
   if (panel == "0") request.panel = false;
   else if (!panel.empty() && panel != "1")
     throw Error(ErrorKind::bad_value, trf("panel={} is not 0 (the picture alone) or 1.", panel));
@@ -284,6 +286,48 @@ void fit_picture(int tries_left) {
   });
 }
 
+// The room the browser's window gives the canvas: its whole width, and its height less what the
+// rest of the page takes (the canvas's margins, the status line, the controls and messages under
+// it), so that the page does not scroll.
+EM_JS(int, room_width, (), { return Math.max(1, window.innerWidth); });
+EM_JS(int, room_height, (), {
+  const canvas = document.getElementById('canvas');
+  let bottom = 0;
+  for (const element of document.body.children) {
+    const style = getComputedStyle(element);
+    if (style.display === 'none') continue;
+    bottom = Math.max(bottom, element.getBoundingClientRect().bottom + window.scrollY + parseFloat(style.marginBottom));
+  }
+  const others = bottom - canvas.getBoundingClientRect().height;
+  return Math.max(1, Math.floor(window.innerHeight - others));
+});
+
+// Without size=, the canvas follows the browser's window: each change of its room resizes the
+// viewer's window, one `resize` line at a time (dragging a window's edge sends many events; the
+// last room is the one asked for once the line before is done).
+int asked_width = 0, asked_height = 0;
+bool resizing = false;
+
+void follow_window() {
+  if (!viewer || !ready || resizing) return;
+  const int width = room_width(), height = room_height();
+  int canvas_w = 0, canvas_h = 0;
+  emscripten_get_canvas_element_size("#canvas", &canvas_w, &canvas_h);
+  if ((width == canvas_w && height == canvas_h) || (width == asked_width && height == asked_height)) return;
+  asked_width = width;
+  asked_height = height;
+  resizing = true;
+  viewer->run_later(fmt::format("resize {} {}", width, height), [](const std::string&) {
+    resizing = false;
+    follow_window();
+  });
+}
+
+EM_BOOL window_resized(int, const EmscriptenUiEvent*, void*) {
+  follow_window();
+  return EM_FALSE;
+}
+
 // Once the viewer runs: the URL's switches on and the panel hidden when it says so, then, on the
 // frame drawn after them, the picture brought to its size, then ready.
 void viewer_started(app::LineQueue& queue) {
@@ -295,7 +339,12 @@ void viewer_started(app::LineQueue& queue) {
   for (size_t i = 0; i < lines.size(); ++i)
     viewer->run_later(lines[i], [last = i + 1 == lines.size()](const std::string& error) {
       if (!error.empty()) return fail(error);
-      if (last) fit_picture(3);
+      if (!last) return;
+      if (!request.follows_window) return fit_picture(3);
+      ready = true;
+      report_ready();
+      emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_FALSE, window_resized);
+      follow_window();  // the window may have changed while the scene loaded
     });
 }
 
@@ -307,6 +356,7 @@ void start() {
   // A first guess at the window around the picture: the panel's default width and a status line.
   settings.width = request.width + (request.panel ? 440 : 0);
   settings.height = request.height + 30;
+  if (request.follows_window) settings.width = room_width(), settings.height = room_height();
   settings.started = viewer_started;
   settings.screenshot_saved = [](const std::filesystem::path& file) { offer_download(file.c_str()); };
   try {
@@ -491,7 +541,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void luz_open_files(const char* folder, int id) 
 extern "C" EMSCRIPTEN_KEEPALIVE void luz_picture(int id) {
   using namespace luz::web;
   if (!viewer || !ready) return settle_request(id, 0, "Luz is not ready: await luz.ready first.");
-  viewer->run_later(std::string("screenshot ") + picture_file, [id](const std::string& error) {
+  viewer->run_later(fmt::format("screenshot {} --quiet", picture_file), [id](const std::string& error) {
     if (!error.empty()) return settle_request(id, 0, error.c_str());
     const std::string url = "data:image/png;base64," + base64(file_bytes(picture_file));
     std::remove(picture_file);
