@@ -16,21 +16,7 @@ limit=1
 mkdir -p "$scratch"
 status=0
 
-# The mean relative error over lit pixels of A against B, in percent.
-error_of() { "$luz" compare "$1" "$2" | sed -n 's/^mean relative error over lit pixels: .*(\([0-9.]*\)%.*/\1/p'; }
-# within A B WHAT: A and B agree within the limit; apart A B WHAT: they do not.
-within() {
-  percent=$(error_of "$1" "$2")
-  verdict=$(awk -v p="$percent" -v l="$limit" 'BEGIN { print (p != "" && p + 0 <= l + 0) ? "ok" : "FAILED" }')
-  echo "$3: mean relative error over lit pixels $percent% (limit $limit%): $verdict"
-  [ "$verdict" = ok ] || status=1
-}
-apart() {
-  percent=$(error_of "$1" "$2")
-  verdict=$(awk -v p="$percent" -v l="$limit" 'BEGIN { print (p != "" && p + 0 > l + 0) ? "ok" : "FAILED" }')
-  echo "$3: mean relative error over lit pixels $percent% (must exceed $limit%): $verdict"
-  [ "$verdict" = ok ] || status=1
-}
+. "$here/compare_pictures.sh"
 
 # Phong's specular term switched off through run(), as --no-specular.
 s=$scratch/run_specular
@@ -38,16 +24,16 @@ node "$here/page_script.mjs" "$base?scene=phong_spheres&model=phong&size=$size" 
   picture "${s}_before.png" run "set specular off" picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/phong_spheres.gltf" --model phong --size $size --out "${s}_on.png" -q
 "$luz" render "$scenes/phong_spheres.gltf" --model phong --size $size --no-specular --out "${s}_off.png" -q
-within "${s}_before.png" "${s}_on.png" "phong_spheres, specular on, before run()"
-within "${s}_page.png" "${s}_off.png" "run(\"set specular off\") against --no-specular"
-apart "${s}_before.png" "${s}_off.png" "phong_spheres with the specular term against without"
+within "${s}_before.png" "${s}_on.png" "$limit" "phong_spheres, specular on, before run()"
+within "${s}_page.png" "${s}_off.png" "$limit" "run(\"set specular off\") against --no-specular"
+apart "${s}_before.png" "${s}_off.png" "$limit" "phong_spheres with the specular term against without"
 
 # The model changed through run(), as --model.
 s=$scratch/run_model
 node "$here/page_script.mjs" "$base?scene=cornell_box&model=phong&size=$size&lang=es" \
   run "model gouraud" picture "${s}_page.png" shot "${s}_shot_es.png" || status=1
 "$luz" render "$scenes/cornell_box.gltf" --model gouraud --size $size --out "${s}_render.png" -q
-within "${s}_page.png" "${s}_render.png" "run(\"model gouraud\") against --model gouraud"
+within "${s}_page.png" "${s}_render.png" "$limit" "run(\"model gouraud\") against --model gouraud"
 
 # Lines run() must refuse, with the script language's messages.
 node "$here/page_script.mjs" "$base?scene=cornell_box&size=$size" \
@@ -60,12 +46,12 @@ s=$scratch/no_panel
 node "$here/page_script.mjs" "$base?scene=whitted&model=phong&size=$size&panel=0" \
   width 320 picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model phong --size $size --out "${s}_render.png" -q
-within "${s}_page.png" "${s}_render.png" "panel=0 against luz render"
+within "${s}_page.png" "${s}_render.png" "$limit" "panel=0 against luz render"
 # A scene by its URL (run_page_tests.sh serves whitted.gltf and its .bin in test-scenes/): the
 # page fetches the .gltf and the buffer it names, and draws what luz render draws of the file.
 s=$scratch/by_url
 node "$here/page_script.mjs" "$base?scene=test-scenes/whitted.gltf&model=gouraud&size=$size" \
   picture "${s}_page.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model gouraud --size $size --out "${s}_render.png" -q
-within "${s}_page.png" "${s}_render.png" "scene=test-scenes/whitted.gltf against luz render"
+within "${s}_page.png" "${s}_render.png" "$limit" "scene=test-scenes/whitted.gltf against luz render"
 exit $status

@@ -33,21 +33,7 @@ size=160x120
 mkdir -p "$scratch"
 status=0
 
-# The mean relative error over lit pixels of A against B, in percent.
-error_of() { "$luz" compare "$1" "$2" | sed -n 's/^mean relative error over lit pixels: .*(\([0-9.]*\)%.*/\1/p'; }
-# within A B LIMIT WHAT: A and B agree within LIMIT percent; apart A B LIMIT WHAT: they do not.
-within() {
-  percent=$(error_of "$1" "$2")
-  verdict=$(awk -v p="$percent" -v l="$3" 'BEGIN { print (p != "" && p + 0 <= l + 0) ? "ok" : "FAILED" }')
-  echo "$4: mean relative error over lit pixels $percent% (limit $3%): $verdict"
-  [ "$verdict" = ok ] || status=1
-}
-apart() {
-  percent=$(error_of "$1" "$2")
-  verdict=$(awk -v p="$percent" -v l="$3" 'BEGIN { print (p != "" && p + 0 > l + 0) ? "ok" : "FAILED" }')
-  echo "$4: mean relative error over lit pixels $percent% (must exceed $3%): $verdict"
-  [ "$verdict" = ok ] || status=1
-}
+. "$here/compare_pictures.sh"
 
 # Whitted: the raster view; a trace cancelled while it runs (held: no tile lands before the
 # cancel), which the page must not wait for on its main thread; then the whole trace, which
