@@ -20,6 +20,7 @@ status=0
 
 # Phong's specular term switched off through run(), as --no-specular.
 s=$scratch/run_specular
+rm -f "$s"_*.png  # a page that fails to write one must not be judged by an older run's
 node "$here/page_script.mjs" "$base?scene=phong_spheres&model=phong&size=$size" \
   picture "${s}_before.png" run "set specular off" picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/phong_spheres.gltf" --model phong --size $size --out "${s}_on.png" -q
@@ -30,6 +31,7 @@ apart "${s}_before.png" "${s}_off.png" "$limit" "phong_spheres with the specular
 
 # The model changed through run(), as --model.
 s=$scratch/run_model
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=cornell_box&model=phong&size=$size&lang=es" \
   run "model gouraud" picture "${s}_page.png" shot "${s}_shot_es.png" || status=1
 "$luz" render "$scenes/cornell_box.gltf" --model gouraud --size $size --out "${s}_render.png" -q
@@ -43,6 +45,7 @@ node "$here/page_script.mjs" "$base?scene=cornell_box&size=$size" \
 
 # panel=0: the picture alone, as luz render draws it.
 s=$scratch/no_panel
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=whitted&model=phong&size=$size&panel=0" \
   width 320 picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model phong --size $size --out "${s}_render.png" -q
@@ -50,6 +53,7 @@ within "${s}_page.png" "${s}_render.png" "$limit" "panel=0 against luz render"
 # A scene by its URL (run_page_tests.sh serves whitted.gltf and its .bin in test-scenes/): the
 # page fetches the .gltf and the buffer it names, and draws what luz render draws of the file.
 s=$scratch/by_url
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=test-scenes/whitted.gltf&model=gouraud&size=$size" \
   picture "${s}_page.png" || status=1
 "$luz" render "$scenes/whitted.gltf" --model gouraud --size $size --out "${s}_render.png" -q

@@ -39,6 +39,7 @@ status=0
 # cancel), which the page must not wait for on its main thread; then the whole trace, which
 # starts once the cancelled one has ended.
 s=$scratch/whitted
+rm -f "$s"_*.png  # a page that fails to write one must not be judged by an older run's
 node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=$size&panel=0" \
   picture "${s}_raster.png" run "trace --held" run "cancel-trace" run "trace" \
   picture "${s}_page.png" shot "${s}_shot.png" || status=1
@@ -50,6 +51,7 @@ apart "${s}_raster.png" "${s}_render.png" 0.1 "whitted's raster view against the
 # at the rule, whichever comes first).
 radiosity_flags="--patch-size 0.15 --hemicube-res 128"
 s=$scratch/radiosity
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size&panel=0" \
   run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
   run "wait-shots 3" picture "${s}_early.png" \
@@ -62,6 +64,7 @@ apart "${s}_early.png" "${s}_render.png" 1 "radiosity after 3 shots against the 
 
 # The hybrid: its radiosity solved, then traced.
 s=$scratch/hybrid
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=cornell_spheres&model=hybrid&size=$size&panel=0" \
   run "radiosity patch-size 0.15" run "radiosity hemicube 128" run "radiosity budget 200" \
   run "wait-until radiosity-done 20000" picture "${s}_untraced.png" \
@@ -73,6 +76,7 @@ apart "${s}_untraced.png" "${s}_render.png" 1 "the hybrid's untraced radiosity a
 
 # The path tracer: within the noise of two seeds.
 s=$scratch/path
+rm -f "$s"_*.png
 node "$here/page_script.mjs" "$base?scene=cornell_box&model=path&size=$size&panel=0" \
   run "path spp 4" run "wait-path 4" picture "${s}_page.png" shot "${s}_shot.png" || status=1
 "$luz" render "$scenes/cornell_box.gltf" --model path --spp 4 --seed 0 --size $size --out "${s}_render.png" -q
