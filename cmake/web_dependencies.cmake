@@ -25,17 +25,28 @@ foreach(entry glm fmt nlohmann tiny_gltf.h stb libdeflate.h GL/glcorearb.h)
   file(CREATE_LINK /usr/include/${entry} ${luz_web_include}/${entry} SYMBOLIC)
 endforeach()
 
+# Threads or not (docs/web.md, "Threads"): the page is built twice from the same sources. With
+# threads (the default) it is luz.html's luz.js, which needs a cross-origin isolated page; without
+# (LUZ_WEB_THREADS=OFF, a second build tree that src/app/web makes of this one) it is
+# luz-1thread.js, which any page can start, every loop and job on the browser's main thread.
+option(LUZ_WEB_THREADS "Build the page with threads (-pthread); OFF: the one-thread page, luz-1thread.js" ON)
+
 # The flags every object of the page is compiled with, and the page linked with (every target of
 # the web build links this):
 # - C++ exceptions are off by default in Emscripten (a throw aborts); Luz reports bad input with
 #   them, and tinygltf's JSON reader uses them.
 # - -pthread: WebAssembly threads share one memory, and the linker refuses to make that memory
-#   shared when one object was compiled without atomics; Embree's build always uses -pthread.
-#   Growing a shared memory slows JavaScript's reads of it a little (the page's only ones are the
-#   picture it hands to WebGL): the linker's warning about that is silenced.
+#   shared when one object was compiled without atomics (and refuses objects with atomics in a
+#   memory that is not shared): every object of a build has it, or none. Growing a shared memory
+#   slows JavaScript's reads of it a little (the page's only ones are the picture it hands to
+#   WebGL): the linker's warning about that is silenced.
+set(luz_web_thread_flag)
+if(LUZ_WEB_THREADS)
+  set(luz_web_thread_flag -pthread)
+endif()
 add_library(luz_web_flags INTERFACE)
-target_compile_options(luz_web_flags INTERFACE -fexceptions -pthread)
-target_link_options(luz_web_flags INTERFACE -fexceptions -pthread -Wno-pthreads-mem-growth)
+target_compile_options(luz_web_flags INTERFACE -fexceptions ${luz_web_thread_flag})
+target_link_options(luz_web_flags INTERFACE -fexceptions ${luz_web_thread_flag} -Wno-pthreads-mem-growth)
 
 add_library(luz_web_headers INTERFACE)
 target_include_directories(luz_web_headers SYSTEM INTERFACE ${luz_web_include})

@@ -10,6 +10,16 @@ if(NOT luz_embree_source OR NOT EXISTS ${luz_embree_source}/include/embree3/rtco
   message(FATAL_ERROR "no Embree sources in ${LUZ_WEB_SOURCES}: ./setup.sh web unpacks them")
 endif()
 
+# Without threads (LUZ_WEB_THREADS=OFF), its build files' -pthread is dropped from every compile
+# line by a launcher in front of the compiler (web_without_pthread.sh), its sources unchanged;
+# Luz then asks its devices for one thread (raytracing/embree_scene.cpp), and its task scheduler
+# starts none.
+set(luz_embree_launchers ${CMAKE_CXX_COMPILER_LAUNCHER})
+if(NOT LUZ_WEB_THREADS)
+  list(PREPEND luz_embree_launchers ${CMAKE_CURRENT_LIST_DIR}/web_without_pthread.sh)
+endif()
+list(JOIN luz_embree_launchers "|" luz_embree_launchers)
+
 include(ExternalProject)
 set(luz_embree_build ${CMAKE_BINARY_DIR}/embree)
 # Its static libraries: the API and kernels, and the five it splits its common code into.
@@ -20,6 +30,7 @@ endforeach()
 ExternalProject_Add(luz_web_embree_build
   SOURCE_DIR ${luz_embree_source}
   BINARY_DIR ${luz_embree_build}
+  LIST_SEPARATOR |
   CMAKE_ARGS
     -DCMAKE_TOOLCHAIN_FILE=${CMAKE_TOOLCHAIN_FILE}
     -DCMAKE_BUILD_TYPE=Release
@@ -28,7 +39,7 @@ ExternalProject_Add(luz_web_embree_build
     # the page's build shows only Luz's.
     -DEMBREE_IGNORE_CMAKE_CXX_FLAGS=OFF -DCMAKE_CXX_FLAGS=-w
     -DCMAKE_C_COMPILER_LAUNCHER=${CMAKE_C_COMPILER_LAUNCHER}
-    -DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}
+    -DCMAKE_CXX_COMPILER_LAUNCHER=${luz_embree_launchers}
     -DEMBREE_STATIC_LIB=ON
     -DEMBREE_TASKING_SYSTEM=INTERNAL
     -DEMBREE_ISPC_SUPPORT=OFF

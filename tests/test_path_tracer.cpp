@@ -21,6 +21,7 @@
 #include "raytracing/path_bsdf.h"
 #include "raytracing/path_tracer.h"
 #include "raytracing/renderer.h"
+#include "raytracing/tiles.h"
 #include "raytracing/whitted.h"
 #include "whitted_fixtures.h"
 
@@ -365,6 +366,37 @@ TEST(PathRenderer, SameSeedSameFilmHoweverTheSamplesAreSplit) {
   options.seed = 6;
   tracer.add_samples(other, camera, options, 6);
   EXPECT_NE(once.mean().pixels, other.mean().pixels);
+}
+
+// A pass in steps of a few tiles (the page without threads, between its frames): the same film
+// as the whole pass, bit for bit; a range past the last tile adds nothing.
+TEST(PathRenderer, APassInStepsOfTilesIsTheWholePass) {
+  const Scene scene = direct_light_scene();
+  const Camera camera = test::look_at({0.0f, 3.0f, 4.0f}, {0.0f, 0.3f, 0.0f}, 0.9f);
+  PathOptions options;
+  options.tile_size = 8;
+  PathRenderer tracer(scene);
+  PathFilm whole(20, 15), stepped(20, 15);
+  tracer.add_samples(whole, camera, options, 2);
+  const size_t tiles = make_tiles(20, 15, options.tile_size).size();
+  ASSERT_EQ(tiles, 6u);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t first = 0; first < tiles; first += 4) {
+      int reported = 0;
+      tracer.add_samples(stepped, camera, options, 1, first, 4, [&](const Tile&, int, int total) {
+        ++reported;
+        EXPECT_EQ(total, int(std::min<size_t>(4, tiles - first)));
+      });
+      EXPECT_EQ(reported, int(std::min<size_t>(4, tiles - first)));
+      if (pass == 0 && first == 0) {
+        EXPECT_EQ(stepped.min_samples(), 0);  // two tiles still without
+      }
+    }
+  }
+  tracer.add_samples(stepped, camera, options, 1, tiles, 4);
+  EXPECT_EQ(whole.mean().pixels, stepped.mean().pixels);
+  EXPECT_EQ(whole.standard_error().pixels, stepped.standard_error().pixels);
+  EXPECT_EQ(stepped.min_samples(), 2);
 }
 
 }  // namespace

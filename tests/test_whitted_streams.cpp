@@ -7,6 +7,7 @@
 //   - the wavefront renderer (wavefront.h: every generation of rays as streams).
 // The same samples and, from each ray's place in its ray tree, the same random numbers.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -269,6 +270,48 @@ TEST(WavefrontEqualsRecursion, ShadowRaysInTheRecursionsOrder) {
   const auto recursive = shadow_rays(RendererKind::recursive);
   EXPECT_GT(recursive.size(), size_t(kWidth * kHeight));
   EXPECT_TRUE(shadow_rays(RendererKind::wavefront) == recursive);
+}
+
+// render() in steps (the page without threads traces a tile a step, between its frames): the
+// same picture bit for bit and the same counts of rays however the tiles are split, each tile
+// reported once with the count so far; a cancel between steps leaves the tiles after it black.
+TEST(WhittedSteps, TheSamePictureHoweverTheTilesAreSplit) {
+  const Scene scene = io::load_gltf(test::scene_dir() / "whitted.gltf").scene;
+  WhittedRenderer tracer(scene);
+  WhittedOptions options;
+  options.max_depth = 5;
+  options.tile_size = 16;
+  const Image whole = tracer.render(scene.cameras[0], kWidth, kHeight, options);
+  const Counters counted = tracer.counters();
+  for (const size_t per_step : {size_t(1), size_t(5)}) {
+    WhittedRenderer::Steps steps = tracer.begin(scene.cameras[0], kWidth, kHeight, options);
+    ASSERT_EQ(steps.tiles(), size_t((kWidth / 16) * (kHeight / 16)));
+    std::vector<int> reported;
+    size_t calls = 0;
+    while (!steps.done()) {
+      tracer.trace(steps, per_step, [&](const TileDone& tile) { reported.push_back(tile.done); });
+      ++calls;
+    }
+    EXPECT_EQ(calls, (steps.tiles() + per_step - 1) / per_step);
+    const Image stepped = tracer.finish(steps);
+    EXPECT_EQ(stepped.pixels, whole.pixels) << per_step << " tiles a step";
+    EXPECT_EQ(tracer.counters().rays, counted.rays);
+    EXPECT_EQ(tracer.counters().samples, counted.samples);
+    EXPECT_GT(tracer.counters().total_rays(), 0u);
+    ASSERT_EQ(reported.size(), steps.tiles());
+    for (size_t i = 0; i < reported.size(); ++i) EXPECT_EQ(reported[i], int(i + 1));
+  }
+  // Cancelled after two steps of one tile: the rest skipped, black, and not reported.
+  WhittedRenderer::Steps steps = tracer.begin(scene.cameras[0], kWidth, kHeight, options);
+  const std::atomic<bool> cancel{true};
+  tracer.trace(steps, 2);
+  int reported = 0;
+  tracer.trace(steps, steps.tiles(), [&](const TileDone&) { ++reported; }, &cancel);
+  EXPECT_TRUE(steps.done());
+  EXPECT_EQ(reported, 0);
+  const Image cancelled = tracer.finish(steps);
+  EXPECT_EQ(cancelled.at(kWidth - 1, kHeight - 1), Rgb(0.0f));
+  EXPECT_EQ(cancelled.at(0, 0), whole.at(0, 0));
 }
 
 // `luz bench whitted` traces the logged rays bare in the calls the renderer made, so the log must

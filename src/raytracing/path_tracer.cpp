@@ -258,12 +258,20 @@ void PathRenderer::scene_changed() { embree_ = std::make_unique<EmbreeIntersecto
 void PathRenderer::add_samples(PathFilm& film, const Camera& camera, const PathOptions& options,
                                int spp, const PathProgress& on_tile,
                                const std::atomic<bool>* cancel) {
+  add_samples(film, camera, options, spp, 0, make_tiles(film.width(), film.height(), options.tile_size).size(),
+              on_tile, cancel);
+}
+
+void PathRenderer::add_samples(PathFilm& film, const Camera& camera, const PathOptions& options, int spp,
+                               size_t first_tile, size_t count, const PathProgress& on_tile,
+                               const std::atomic<bool>* cancel) {
   const EmitterTable emitters(scene_);
   const PrimaryRays camera_rays(camera, film.width(), film.height());
   const std::vector<Tile> tiles = make_tiles(film.width(), film.height(), options.tile_size);
+  const size_t last_tile = std::min(tiles.size(), first_tile + count);
   std::mutex report;
   int done = 0;
-  parallel_for(size_t(0), tiles.size(), [&](size_t i) {
+  parallel_for(std::min(first_tile, last_tile), last_tile, [&](size_t i) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return;
     const Tile& tile = tiles[i];
     PathTracer tracer(scene_, *embree_, emitters, options);
@@ -284,7 +292,7 @@ void PathRenderer::add_samples(PathFilm& film, const Camera& camera, const PathO
       }
     std::lock_guard lock(report);
     ++done;
-    if (on_tile) on_tile(tile, done, int(tiles.size()));
+    if (on_tile) on_tile(tile, done, int(last_tile - std::min(first_tile, last_tile)));
   });
 }
 

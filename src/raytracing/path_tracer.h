@@ -111,6 +111,12 @@ public:
   // tiles not yet started are skipped (their pixels keep fewer samples).
   void add_samples(PathFilm& film, const Camera& camera, const PathOptions& options, int spp,
                    const PathProgress& on_tile = {}, const std::atomic<bool>* cancel = nullptr);
+  // The same for the film's tiles [first, first + count) alone (make_tiles of the film's size and
+  // options.tile_size), in parallel: a pass in steps, for a caller that traces a few tiles at a
+  // time (the page built without threads, between its frames). `on_tile` counts them within
+  // the call.
+  void add_samples(PathFilm& film, const Camera& camera, const PathOptions& options, int spp, size_t first,
+                   size_t count, const PathProgress& on_tile = {}, const std::atomic<bool>* cancel = nullptr);
 
   // The mean of options.spp samples per pixel.
   Image render(const Camera& camera, int width, int height, const PathOptions& options);

@@ -250,46 +250,86 @@ const Intersector& WhittedRenderer::intersector(const WhittedOptions& options) {
   return *brute_force_;
 }
 
+// What a render keeps between its steps: the view, the picture, and each tile's counters and ray
+// log until they are summed (integers, so the order does not matter) and concatenated in tile
+// order at the end.
+struct WhittedRenderer::Steps::State {
+  Camera camera;
+  int width = 0, height = 0;
+  WhittedOptions options;
+  std::chrono::steady_clock::time_point start;
+  Image image;
+  std::vector<Tile> tiles;
+  std::vector<LaneMesh> meshes;  // what the wavefront's lanes read of each mesh, once for every tile
+  std::vector<Counters> tile_counters;
+  std::vector<std::vector<RecordedRay>> tile_rays;
+  size_t next = 0;  // the first tile not traced yet
+  int done = 0;     // tiles finished
+  std::mutex report;
+};
+
+WhittedRenderer::Steps::Steps() = default;
+WhittedRenderer::Steps::~Steps() = default;
+WhittedRenderer::Steps::Steps(Steps&&) noexcept = default;
+WhittedRenderer::Steps& WhittedRenderer::Steps::operator=(Steps&&) noexcept = default;
+bool WhittedRenderer::Steps::done() const { return !state_ || state_->next >= state_->tiles.size(); }
+size_t WhittedRenderer::Steps::tiles() const { return state_ ? state_->tiles.size() : 0; }
+
 Image WhittedRenderer::render(const Camera& camera, int width, int height,
                               const WhittedOptions& options, const TileCallback& on_tile,
                               const std::atomic<bool>* cancel) {
-  const auto start = std::chrono::steady_clock::now();
+  Steps steps = begin(camera, width, height, options);
+  trace(steps, steps.tiles(), on_tile, cancel);
+  return finish(steps);
+}
+
+WhittedRenderer::Steps WhittedRenderer::begin(const Camera& camera, int width, int height,
+                                              const WhittedOptions& options) {
+  Steps steps;
+  steps.state_ = std::make_unique<Steps::State>();
+  Steps::State& s = *steps.state_;
+  s.start = std::chrono::steady_clock::now();
+  s.camera = camera, s.width = width, s.height = height, s.options = options;
   // Every tile writes all its pixels, so the picture is not cleared first (a serial pass over
   // 12 MB at 1024x1024); a tile skipped by a cancel clears its own.
-  Image image(width, height, Image::Uncleared{});
-  const std::vector<Tile> tiles = make_tiles(width, height, options.tile_size);
+  s.image = Image(width, height, Image::Uncleared{});
+  s.tiles = make_tiles(width, height, options.tile_size);
   intersector(options);  // build the brute-force triangles before the threads start
-  // What the wavefront's lanes read of each mesh, once for every tile.
-  const std::vector<LaneMesh> meshes =
-      options.renderer == RendererKind::wavefront
-          ? lane_meshes(scene_, Whitted(scene_, *embree_, options, counters_, diffuse_), options, corners_)
-          : std::vector<LaneMesh>{};
+  if (options.renderer == RendererKind::wavefront)
+    s.meshes = lane_meshes(scene_, Whitted(scene_, *embree_, options, counters_, diffuse_), options, corners_);
   counters_ = Counters{};
   rays_.clear();
+  s.tile_counters.resize(s.tiles.size());
+  s.tile_rays.resize(keep_rays_ ? s.tiles.size() : 0);
+  return steps;
+}
 
-  // Each tile writes only its own pixels and its own counters and ray log; they are summed
-  // (integers, so the order does not matter) and concatenated in tile order at the end.
-  std::vector<Counters> tile_counters(tiles.size());
-  std::vector<std::vector<RecordedRay>> tile_rays(keep_rays_ ? tiles.size() : 0);
-  std::mutex report;
-  int done = 0;
-  parallel_for(size_t(0), tiles.size(), [&](size_t i) {
+void WhittedRenderer::trace(Steps& steps, size_t tiles, const TileCallback& on_tile,
+                            const std::atomic<bool>* cancel) {
+  Steps::State& s = *steps.state_;
+  const size_t first = s.next, last = std::min(s.tiles.size(), s.next + tiles);
+  s.next = last;
+  // Each tile writes only its own pixels and its own counters and ray log.
+  parallel_for(first, last, [&](size_t i) {
+    const Tile& tile = s.tiles[i];
     if (cancel && cancel->load(std::memory_order_relaxed)) {
-      for (int y = tiles[i].y0; y < tiles[i].y1; ++y)
-        std::fill_n(&image.at(tiles[i].x0, y), tiles[i].width(), Rgb(0.0f));
+      for (int y = tile.y0; y < tile.y1; ++y) std::fill_n(&s.image.at(tile.x0, y), tile.width(), Rgb(0.0f));
       return;
     }
-    render_tile(tiles[i], camera, width, height, options, meshes, image, tile_counters[i],
-                keep_rays_ ? &tile_rays[i] : nullptr);
-    std::lock_guard lock(report);
-    ++done;
-    if (on_tile) on_tile(TileDone{tiles[i], done, int(tiles.size()), image});
+    render_tile(tile, s.camera, s.width, s.height, s.options, s.meshes, s.image, s.tile_counters[i],
+                keep_rays_ ? &s.tile_rays[i] : nullptr);
+    std::lock_guard lock(s.report);
+    ++s.done;
+    if (on_tile) on_tile(TileDone{tile, s.done, int(s.tiles.size()), s.image});
   });
+}
 
-  for (const Counters& c : tile_counters) counters_ += c;
-  for (auto& r : tile_rays) rays_.insert(rays_.end(), r.begin(), r.end());
-  counters_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return image;
+Image WhittedRenderer::finish(Steps& steps) {
+  Steps::State& s = *steps.state_;
+  for (const Counters& c : s.tile_counters) counters_ += c;
+  for (auto& r : s.tile_rays) rays_.insert(rays_.end(), r.begin(), r.end());
+  counters_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
+  return std::move(s.image);
 }
 
 // ---- [one tile] ---------------------------------------------------------------------------------

@@ -74,6 +74,29 @@ public:
   Image render(const Camera& camera, int width, int height, const WhittedOptions& options,
                const TileCallback& on_tile = {}, const std::atomic<bool>* cancel = nullptr);
 
+  // render() in steps, for a caller that traces a few tiles at a time between other work (the
+  // page built without threads traces between its frames): begin() takes render()'s view, each
+  // trace() renders the next `tiles` tiles in parallel (on_tile and cancel as render()'s), and
+  // finish() gives the image and the counters once done(). render() is begin(), one trace() of
+  // every tile, and finish(): the same image bit for bit, however the tiles are split.
+  class Steps {
+  public:
+    Steps();
+    ~Steps();
+    Steps(Steps&&) noexcept;
+    Steps& operator=(Steps&&) noexcept;
+    bool done() const;       // every tile traced (or skipped by a cancel)
+    size_t tiles() const;    // in the image
+  private:
+    friend class WhittedRenderer;
+    struct State;
+    std::unique_ptr<State> state_;
+  };
+  Steps begin(const Camera& camera, int width, int height, const WhittedOptions& options);
+  void trace(Steps& steps, size_t tiles, const TileCallback& on_tile = {},
+             const std::atomic<bool>* cancel = nullptr);
+  Image finish(Steps& steps);
+
   // Slide 26's loop over the whole picture, on the calling thread: each pixel's primary rays
   // traced one by one by the recursion, nothing traced ahead. The reference render() is held to
   // (to within 1e-6, see renderer.cpp); stratified sampling only.
@@ -87,7 +110,7 @@ public:
   Hit primary_hit(const Camera& camera, int width, int height, glm::vec2 image_point,
                   const WhittedOptions& options);
 
-  // The counters of the last render().
+  // The counters of the last render() (or finish()).
   const Counters& counters() const { return counters_; }
 
   // Benchmark support: while on, render() also keeps every ray it traces (in tile order).

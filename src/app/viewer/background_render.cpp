@@ -57,13 +57,39 @@ void BackgroundWorker::start(Job job) {
   stop();
   run_ = std::make_shared<Run>();
   began_ = std::chrono::steady_clock::now();
+  if constexpr (!threaded()) {
+    steps_ = std::move(job);  // settle() runs it, a few steps a frame
+    return;
+  }
   thread_ = std::thread([run = run_, job = std::move(job)] {
-    job(run->cancel);
+    while (job(run->cancel) && !run->cancel) {
+    }
     run->finished.store(true, std::memory_order_release);
   });
 }
 
+bool BackgroundWorker::running() const {
+  if constexpr (!threaded()) return static_cast<bool>(steps_);
+  return thread_.joinable();
+}
+
+void BackgroundWorker::run_steps() {
+  // A few milliseconds a frame, so that the page keeps drawing while a job runs (a step longer
+  // than that takes its frame).
+  constexpr auto budget = std::chrono::milliseconds(25);
+  const auto begin = std::chrono::steady_clock::now();
+  while (steps_ && !run_->finished) {
+    if (run_->cancel || !steps_(run_->cancel)) run_->finished = true;
+    if (std::chrono::steady_clock::now() - begin > budget) break;
+  }
+}
+
 void BackgroundWorker::stop() {
+  if constexpr (!threaded()) {
+    if (run_) run_->cancel = true, run_->finished = true;
+    steps_ = nullptr;
+    return;
+  }
   if (!thread_.joinable()) return;
   run_->cancel = true;
   thread_.join();
@@ -71,6 +97,7 @@ void BackgroundWorker::stop() {
 
 void BackgroundWorker::cancel() {
 #if defined(__EMSCRIPTEN__)
+  if constexpr (!threaded()) return stop();  // no step is running: it takes no more
   if (run_) run_->cancel = true;  // settle() joins it once it has ended
 #else
   stop();  // the window may wait for the tile in hand: what follows starts in the same frame
@@ -78,8 +105,9 @@ void BackgroundWorker::cancel() {
 }
 
 bool BackgroundWorker::settle() {
-  if (thread_.joinable() && finished()) join();
-  return !thread_.joinable();
+  if constexpr (!threaded()) run_steps();
+  if (running() && finished()) join();
+  return !running();
 }
 
 void BackgroundWorker::release() {
@@ -92,6 +120,10 @@ void BackgroundWorker::release() {
 }
 
 void BackgroundWorker::join() {
+  if constexpr (!threaded()) {
+    steps_ = nullptr;  // ended: its captures go
+    return;
+  }
   if (!thread_.joinable()) return;
 #if defined(__EMSCRIPTEN__)
   // The job has returned (finished(): its results are seen); its thread's exit is the browser's

@@ -45,19 +45,23 @@ void copy_editable(const Scene& from, Scene& copy);
 void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, int y0, int x1, int y1,
                    std::vector<float>& scratch);
 
-// One job at a time on a thread of its own. The job reads the cancel flag (the renderers'
-// `cancel` argument) and should return soon once it is set; whatever it publishes before it
-// returns is visible to the thread that sees finished().
+// One job at a time, in steps: on a thread of its own, which runs the job's steps one after
+// another, or, in the page built without threads (LUZ_WEB_THREADS=OFF), on the browser's main
+// thread between frames, as many steps each frame as fit in a few milliseconds (at least one).
+// A step reads the cancel flag (the renderers' `cancel` argument) and should return soon once it
+// is set; it returns true while steps remain. Whatever a job publishes before it ends is visible
+// to the thread that sees finished().
 //
 // The browser's main thread must never wait for another thread: a thread that starts threads
 // (the parallel loops, Embree's) asks the main thread for them, so a main thread waiting for it
 // would wait forever. So in the page a job is cancelled without waiting (cancel(), then settle()
 // once a frame until it has ended) and let go of (release(): it ends on its own, its captures
 // keeping what it reads alive). The window may wait for the tile in hand: there cancel() and
-// release() join, and what follows starts in the same frame. stop() and the destructor join.
+// release() join, and what follows starts in the same frame. Without threads a cancelled job
+// simply takes no more steps. stop() and the destructor join.
 class BackgroundWorker {
 public:
-  using Job = std::function<void(const std::atomic<bool>& cancel)>;
+  using Job = std::function<bool(const std::atomic<bool>& cancel)>;  // one step; true: more to come
 
   BackgroundWorker() = default;
   ~BackgroundWorker() { stop(); }
@@ -67,13 +71,23 @@ public:
   void start(Job job);  // a job still running is stopped first
   void stop();          // sets the cancel flag and joins; nothing when no job runs
   void cancel();        // sets the cancel flag; the page's job ends on its own, the window's is joined
-  bool settle();        // joins a job that has ended; true when no job is left
+  // Once a frame: joins a job that has ended; true when no job is left. Without threads, runs
+  // this frame's steps of the job first.
+  bool settle();
   void release();       // cancels; the page lets the job end on its own, the desktop joins it
   bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
-  bool idle() const { return !thread_.joinable() || finished(); }  // settle() would leave no job
+  bool idle() const { return !running() || finished(); }  // settle() would leave no job
   void join();          // once finished(): the job's results are all seen, its thread let go of
-  bool joinable() const { return thread_.joinable(); }
   double seconds() const;  // since the last start
+
+  // Whether jobs run on a thread of their own (false in the page built without threads).
+  static constexpr bool threaded() {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    return false;
+#else
+    return true;
+#endif
+  }
 
 private:
   // A job's flags, shared with its thread: a released job still reads and writes them.
@@ -81,9 +95,12 @@ private:
     std::atomic<bool> cancel{false};
     std::atomic<bool> finished{false};
   };
+  bool running() const;  // a job started and not yet joined
+  void run_steps();      // without threads: this frame's steps
   std::shared_ptr<Run> run_;
   std::chrono::steady_clock::time_point began_;
   std::thread thread_;
+  Job steps_;  // without threads: the job whose steps are left
 };
 
 }  // namespace luz::app

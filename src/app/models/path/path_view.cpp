@@ -19,6 +19,7 @@
 #include "core/image_compare.h"
 #include "gl/functions.h"
 #include "local/local_renderer.h"
+#include "raytracing/tiles.h"
 
 namespace luz::app {
 
@@ -101,25 +102,35 @@ void PathView::start(const Camera& camera, glm::ivec2 size) {
   running_ = true;
   const rt::PathOptions o = started_.options;  // spp unused: the worker goes one pass at a time
   s.target = std::max(1, options.spp);
+  // Passes until the target, a pause or a cancel: a pass a step on a thread of its own, a tile a
+  // step without threads (a few each frame).
+  s.next_tile = 0;
   worker_.start([shared = shared_, camera, o](const std::atomic<bool>& cancel) {
     Shared& t = *shared;
-    while (!cancel && !t.pause && t.film.min_samples() < t.target) {
-      t.tracer->add_samples(t.film, camera, o, 1, {}, &cancel);
-      if (cancel) break;  // an unfinished pass: the film is dropped
-      PathPicture pass;
-      pass.mean = t.film.mean();
-      pass.spp = t.film.min_samples();
-      pass.noise = relative_noise(pass.mean, t.film.standard_error());
-      pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t.began).count();
-      std::lock_guard lock(t.mutex);
-      if (cancel) break;  // cancelled meanwhile: the pass belongs to a dropped film
-      pass.version = t.published.version + 1;
-      t.published = std::move(pass);
-    }
+    const auto more = [&t, &cancel] { return !cancel && !t.pause && t.film.min_samples() < t.target; };
+    if (t.next_tile == 0 && !more()) return false;
+    const size_t tiles = rt::make_tiles(t.film.width(), t.film.height(), o.tile_size).size();
+    const size_t count = BackgroundWorker::threaded() ? tiles : 1;
+    t.tracer->add_samples(t.film, camera, o, 1, t.next_tile, count, {}, &cancel);
+    t.next_tile += count;
+    if (cancel) return false;  // an unfinished pass: the film is dropped
+    if (t.next_tile < tiles) return true;
+    t.next_tile = 0;
+    PathPicture pass;
+    pass.mean = t.film.mean();
+    pass.spp = t.film.min_samples();
+    pass.noise = relative_noise(pass.mean, t.film.standard_error());
+    pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t.began).count();
+    std::lock_guard lock(t.mutex);
+    if (cancel) return false;  // cancelled meanwhile: the pass belongs to a dropped film
+    pass.version = t.published.version + 1;
+    t.published = std::move(pass);
+    return more();
   });
 }
 
 void PathView::collect() {
+  worker_.settle();  // without threads, this frame's passes run here
   if (running_ && worker_.finished()) {
     worker_.join();
     running_ = false;

@@ -96,6 +96,7 @@ private:
     PathPicture published;          // under the mutex
     std::atomic<bool> pause{false};  // stop after this pass
     std::atomic<int> target{1};      // samples per pixel to stop at
+    size_t next_tile = 0;            // the pass's first tile not traced yet (the worker's)
     std::chrono::steady_clock::time_point began;  // of the film
   };
   std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();

@@ -43,21 +43,34 @@ void WhittedWorker::launch(const Request& request) {
   s.pixels = Image(request.width, request.height);
   s.pending.clear();
   s.done = 0;
+  s.tracing = false;  // a trace stopped between its steps is dropped
   launched_ = true;
   worker_.start([shared = shared_, request](const std::atomic<bool>& cancel) {
-    if (request.held) {  // no tile until cancelled: the tracer then skips them all
-      while (!cancel) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (request.held && !cancel) {  // no tile until cancelled: the tracer then skips them all
+      if (BackgroundWorker::threaded()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      return true;
     }
     Shared& t = *shared;
-    t.tracer.render(request.camera, request.width, request.height, request.options,
-                    [&t](const rt::TileDone& tile) {
-                      std::lock_guard lock(t.mutex);
-                      for (int y = tile.tile.y0; y < tile.tile.y1; ++y)
-                        for (int x = tile.tile.x0; x < tile.tile.x1; ++x) t.pixels.at(x, y) = tile.image.at(x, y);
-                      t.pending.push_back(tile.tile);
-                      t.done = tile.done;
-                    },
-                    &cancel);
+    if (!t.tracing) {
+      t.steps = t.tracer.begin(request.camera, request.width, request.height, request.options);
+      t.tracing = true;
+    }
+    // On a thread of its own every tile at once (in parallel); without threads a tile a step, a
+    // few each frame.
+    const size_t tiles = BackgroundWorker::threaded() ? t.steps.tiles() : 1;
+    t.tracer.trace(t.steps, tiles,
+                   [&t](const rt::TileDone& tile) {
+                     std::lock_guard lock(t.mutex);
+                     for (int y = tile.tile.y0; y < tile.tile.y1; ++y)
+                       for (int x = tile.tile.x0; x < tile.tile.x1; ++x) t.pixels.at(x, y) = tile.image.at(x, y);
+                     t.pending.push_back(tile.tile);
+                     t.done = tile.done;
+                   },
+                   &cancel);
+    if (!t.steps.done() && !cancel) return true;
+    t.tracer.finish(t.steps);  // the counters
+    t.tracing = false;
+    return false;
   });
 }
 
@@ -96,6 +109,7 @@ void WhittedWorker::update() {
     if (!worker_.settle()) return;  // the cancelled trace is still ending
     launch(*std::exchange(waiting_, std::nullopt));
   }
+  worker_.settle();  // without threads, this frame's share of the trace runs here
   // Read before the tiles: every tile of a finished render was queued before it finished.
   const bool finished = worker_.finished();
   {

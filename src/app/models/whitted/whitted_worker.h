@@ -2,8 +2,10 @@
 // The viewer's Whitted model: the view traced on demand, tile by tile, off the GL
 // thread, and shown as the tiles arrive.
 //
-//   start()   the trace runs on a worker thread (rt::WhittedRenderer::render, its tiles on TBB);
-//             each finished tile is copied, under a mutex, into a CPU image and queued;
+//   start()   the trace runs on a worker thread (rt::WhittedRenderer's steps, all its tiles in
+//             one, on TBB), or, in the page built without threads, a few tiles each frame
+//             (BackgroundWorker); each finished tile is copied, under a mutex, into a CPU image
+//             and queued;
 //   update()  on the GL thread, every frame: the queued tiles go up into a float texture
 //             (glTexSubImage2D, one call per tile), and a finished worker is joined;
 //   cancel()  sets the cancel flag and returns: tiles not started are skipped, and the worker
@@ -83,6 +85,8 @@ private:
     Scene copy;
     rt::WhittedRenderer tracer;
     std::shared_ptr<const rt::DiffuseSource> diffuse;  // the tracer's, kept while it reads it
+    rt::WhittedRenderer::Steps steps;  // the trace's, between its steps
+    bool tracing = false;              // steps begun and not finished
     // The tiles finished and not yet uploaded, and their pixels (under the mutex).
     std::mutex mutex;
     Image pixels;
