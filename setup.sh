@@ -4,7 +4,8 @@
 #   ./setup.sh [SCENE]   runs luz (the viewer; with no display, `luz render` makes a PNG instead)
 #   ./setup.sh test      runs the whole test suite with ctest, then builds the web page and runs
 #                        its tests (as ./setup.sh web test)
-#   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md): Debian's
+#   ./setup.sh web       builds the web page into build-web/ instead (docs/web.md; twice: with
+#                        threads, luz.html's luz.js, and without, luz-1thread.js): Debian's
 #                        emscripten and chromium, libdeflate's, imgui's and embree's source
 #                        packages, puppeteer-core and coi-serviceworker (npm)
 #   ./setup.sh web serve serves build-web/ on 127.0.0.1:8000, cross-origin isolated

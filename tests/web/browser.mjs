@@ -1,6 +1,8 @@
 // The browser every web test drives: Debian's chromium, headless, drawing WebGL 2 through
 // SwiftShader (the software path many students' machines and CI have), the page's console and
-// errors echoed. `onError` is called for an uncaught error in the page.
+// errors echoed. `onError` is called for an uncaught error in the page. With
+// LUZ_PAGE_NO_SERVICE_WORKERS=1 in the environment the browser has no service workers (as some
+// private windows): a page served without the isolation headers then runs the one-thread Luz.
 import { createRequire } from 'node:module';
 
 const require = createRequire(import.meta.url);
@@ -14,6 +16,8 @@ export async function openPage(onError) {
     args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
   });
   const page = await browser.newPage();
+  if (process.env.LUZ_PAGE_NO_SERVICE_WORKERS === '1')
+    await page.evaluateOnNewDocument(() => Object.defineProperty(navigator, 'serviceWorker', { value: undefined }));
   page.on('console', (message) => console.log(`page: ${message.text()}`));
   page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); onError(); });
   return { browser, page };

@@ -2,8 +2,9 @@
 # The page's tests in headless Chromium (./setup.sh web test runs them): build-web/ served from
 # 127.0.0.1 with the isolation headers (on LUZ_WEB_PORT), and the page's files alone served as a
 # static host would, without them (on the next port). The page draws (page_smoke), isolated by
-# the headers or by its service worker, and says why in words where it can be neither
-# (page_isolation); a bad scene is a sentence on the page in its language and so is an unknown
+# the headers or by its service worker, and, where it can be neither, runs on one thread and
+# says so (page_isolation), its pictures those of `luz render` and its frames coming while it
+# traces (page_one_thread_matches_render); a bad scene is a sentence on the page in its language and so is an unknown
 # effect (page_api --expect-error); each scene and model matches `luz render`
 # (page_matches_render), and so do the pictures after lines run through window.luz.run, which
 # rejects lines it cannot run (page_run_matches_render); the student's own .glb and .gltf given
@@ -27,12 +28,14 @@ cp "$(dirname "$(dirname "$here")")/scenes/whitted.gltf" "$(dirname "$(dirname "
 serve=$(dirname "$(dirname "$here")")/src/app/web/serve.py
 python3 "$serve" "$web" "$port" >"$scratch/server.log" 2>&1 &
 server=$!
-# The page as docs/web.md says to put it on a static host: its six files alone, in a folder of
+# The page as docs/web.md says to put it on a static host: its eight files alone, in a folder of
 # their own, served by a plain file server that sends no isolation headers (the page's service
-# worker adds them).
+# worker adds them; in a browser without service workers the one-thread Luz runs).
 site=$scratch/static-site
 rm -rf "$site" && mkdir -p "$site"
-for file in luz.html luz.js luz.wasm luz.worker.js luz.data coi-serviceworker.js; do cp "$web/$file" "$site/"; done
+for file in luz.html luz.js luz.wasm luz.worker.js luz.data luz-1thread.js luz-1thread.wasm coi-serviceworker.js; do
+  cp "$web/$file" "$site/"
+done
 python3 -m http.server "$((port + 1))" --bind 127.0.0.1 --directory "$site" >"$scratch/server_plain.log" 2>&1 &
 plain=$!
 trap 'kill $server $plain 2>/dev/null' EXIT INT TERM
@@ -43,7 +46,9 @@ status=0
 node "$here/page_smoke.mjs" "$url" "$scratch/page.png" "$scratch/canvas.png" || status=1
 node "$here/page_isolation.mjs" headers "$url" "$scratch/isolated_headers.png" || status=1
 node "$here/page_isolation.mjs" service-worker "$plain_url" "$scratch/isolated_service_worker.png" || status=1
-node "$here/page_isolation.mjs" refused "$plain_url" "$scratch/not_isolated.png" || status=1
+node "$here/page_isolation.mjs" one-thread "$plain_url" "$scratch/one_thread.png" || status=1
+node "$here/page_isolation.mjs" one-thread "$plain_url?lang=es" "$scratch/one_thread_es.png" || status=1
+sh "$here/page_one_thread_matches_render.sh" "$plain_url" "$luz" "$scratch/one-thread" || status=1
 node "$here/page_api.mjs" --expect-error "$url?scene=nope&lang=es" "$scratch/error_es.png" || status=1
 node "$here/page_api.mjs" --expect-error "$url?effects=shadows,sparkle&lang=en" "$scratch/error_effects.png" || status=1
 # Without size= the canvas follows the browser's window (the picture as wide as the canvas with

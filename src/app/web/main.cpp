@@ -116,6 +116,26 @@ EM_JS(void, offer_download, (const char* path), {
   setTimeout(() => URL.revokeObjectURL(link.href), 60000);
 });
 
+// The page's note under the canvas: shown once, with what it says in the page's language.
+EM_JS(void, show_note, (const char* text), {
+  const note = document.getElementById("note");
+  if (!note) return;
+  note.textContent = UTF8ToString(text);
+  note.classList.add("shown");
+});
+
+// Built without threads (luz-1thread.js, which luz.html starts where the page cannot be
+// cross-origin isolated), the page says so, and how to get every core.
+void note_one_thread() {
+#if !defined(__EMSCRIPTEN_PTHREADS__)
+  show_note(tr("Luz runs on one thread here: this page is not cross-origin isolated, so the ray tracers, "
+               "the path tracer and radiosity work on one core, between the page's frames. For every core, "
+               "serve the page with the headers Cross-Origin-Opener-Policy: same-origin and "
+               "Cross-Origin-Embedder-Policy: require-corp, or from https:// so that its service worker "
+               "adds them (docs/web.md, \"Threads\")."));
+#endif
+}
+
 void fail(const std::string& text) {
   set_status_text(text.c_str());
   report_failure(text.c_str());
@@ -555,6 +575,7 @@ int main() {
     web::choose_language();
     web::set_control_words(app::tr("Open a scene (.glb, or .gltf with its files):"), app::tr("Save the picture (P)"),
                            app::tr("Save with the panel (Shift+P)"));
+    web::note_one_thread();
     web::request = web::read_request();
   } catch (const std::exception& error) {
     web::fail(error.what());
