@@ -28,7 +28,7 @@ node "$here/page_api.mjs" "$base?scene=cornell_box&model=phong&size=320x240" "${
 within "${s}_page.png" "${s}_render.png" 1 "one thread: phong in the page against luz render --model phong"
 
 node "$here/page_script.mjs" "$base?scene=whitted&model=whitted&size=1024x1024&panel=0" \
-  run "set spp 4" run "trace --no-wait" live 2 1000 trace-state tracing run "cancel-trace" trace-state raster || status=1
+  run "set spp 4" live "trace --no-wait" 2 1000 trace-state tracing run "cancel-trace" trace-state raster || status=1
 
 sh "$here/page_tracers_match_render.sh" "$base" "$luz" "$scratch" || status=1
 exit $status

@@ -13,9 +13,10 @@
 //   note-has TEXT           the viewer's status-line note (dump-state's "note") contains TEXT
 //   note-lacks TEXT         ... does not contain TEXT
 //   trace-state STATE       the first pane's trace (dump-state's): raster, tracing or done
-//   live SECONDS MS         for SECONDS, the browser's frames keep coming: none more than MS
-//                           milliseconds after the one before (a page whose main thread works
-//                           through a whole trace in one frame fails)
+//   live LINE SECONDS MS    luz.run(LINE), not waited for, and for SECONDS from just before it
+//                           the browser's frames keep coming: none more than MS milliseconds
+//                           after the one before (a page whose main thread works through a
+//                           whole trace in one frame fails)
 // A run step that takes more than a minute fails (a page whose program ended never settles).
 // Usage: node tests/web/page_script.mjs URL STEP ARGS [STEP ARGS ...]
 //        (NODE_PATH=build-web/npm/node_modules)
@@ -91,20 +92,23 @@ try {
         JSON.parse(Module.FS.readFile('/tmp/luz-test-state.json', { encoding: 'utf8' })).panes[0].trace));
       check(state === steps[++i], `trace ${state}, expected ${steps[i]}`);
     } else if (step === 'live') {
-      const seconds = Number(steps[++i]), limit = Number(steps[++i]);
-      const frames = await page.evaluate((ms) => new Promise((resolve) => {
+      const line = steps[++i], seconds = Number(steps[++i]), limit = Number(steps[++i]);
+      const frames = await page.evaluate((l, ms) => new Promise((resolve) => {
         const times = [];
         const frame = (t) => {
           times.push(t);
           if (t - times[0] < ms) requestAnimationFrame(frame);
           else resolve(times);
         };
-        requestAnimationFrame(frame);
-      }), seconds * 1000);
+        requestAnimationFrame((t) => {
+          frame(t);
+          window.luz.run(l).catch(() => {});
+        });
+      }), line, seconds * 1000);
       const gaps = frames.slice(1).map((t, k) => t - frames[k]);
       const longest = Math.round(Math.max(...gaps));
       check(frames.length > 2 && longest <= limit,
-            `${frames.length} frames in ${seconds} s, the longest gap ${longest} ms (limit ${limit} ms)`);
+            `"${line}": ${frames.length} frames in ${seconds} s, the longest gap ${longest} ms (limit ${limit} ms)`);
     } else if (step === 'note-has' || step === 'note-lacks') {
       const text = await note(page), wanted = steps[++i];
       check(text.includes(wanted) === (step === 'note-has'), `note "${text}" ${step === 'note-has' ? 'has' : 'lacks'} "${wanted}"`);
