@@ -12,9 +12,9 @@
 #   rays and nowhere else (ray_tree_match.mjs); in the panel, its table of five columns and its
 #   "clear [X]" button, which clears it (the picture then the traced one without the tree).
 # - Brute force (whitted.gltf, 64x48: it tests every ray against all 12,106 triangles): the
-#   same rays as the BVH, its tests counted, and the same picture as `luz render --brute-force`
-#   (limit 0.1%, Whitted's; measured 0.00%), its ray tree `luz render --brute-force
-#   --ray-tree`'s. Whitted's adaptive supersampling at the same size: `luz render --adaptive`'s
+#   same rays as the BVH, its tests counted, and the same picture as the page's BVH and `luz
+#   render --brute-force` (limit 0.1%, Whitted's; measured 0.00%), its ray tree `luz render
+#   --brute-force --ray-tree`'s. Whitted's adaptive supersampling at the same size: `luz render --adaptive`'s
 #   picture (limit 0.1%; measured 0.00%; the stratified picture is 10% away).
 # - Radiosity (cornell_box.gltf, patches of 0.3 m, 60 shots): with rays for form factors and
 #   adaptive subdivision, the page's mesh after the shots is `luz render --shots 60`'s, element
@@ -74,13 +74,14 @@ match ray-tree-panel "${s}_windows.json" "${s}_widgets.json" "${s}_widgets_clear
 s=$scratch/views_brute
 rm -f "$s"_*
 script "$base?scene=whitted&model=whitted&size=64x48&panel=0" \
-  run "trace" run "dump-trace /tmp/bvh.json" file /tmp/bvh.json "${s}_bvh.json" \
+  run "trace" picture "${s}_bvh.png" run "dump-trace /tmp/bvh.json" file /tmp/bvh.json "${s}_bvh.json" \
   run "set brute-force on" run "trace" picture "${s}_page.png" run "dump-trace /tmp/brute.json" file /tmp/brute.json "${s}_brute.json" \
   run "click-picture 20 22" run "dump-ray-tree /tmp/tree.json" file /tmp/tree.json "${s}_tree.json" run "key X" \
   run "set brute-force off" run "set adaptive on" run "trace" picture "${s}_adaptive.png"
 "$luz" render "$scenes/whitted.gltf" --model whitted --size 64x48 --brute-force --ray-tree 20,22 --out "${s}_luz.png" -q
 "$luz" render "$scenes/whitted.gltf" --model whitted --size 64x48 --adaptive --out "${s}_luz_adaptive.png" -q
 match brute "${s}_bvh.json" "${s}_brute.json"
+within "${s}_page.png" "${s}_bvh.png" 0.1 "brute force in the page against the page's BVH"
 within "${s}_page.png" "${s}_luz.png" 0.1 "brute force in the page against luz render --brute-force"
 node "$here/ray_tree_match.mjs" "${s}_tree.json" "${s}_luz.ray-tree.json" 1e-5 || status=1
 within "${s}_adaptive.png" "${s}_luz_adaptive.png" 0.1 "adaptive supersampling in the page against luz render --adaptive"
