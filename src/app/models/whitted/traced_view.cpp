@@ -94,7 +94,7 @@ void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
     picture.bind();
   }
   if (ray_tree_ && tree_drawing_)
-    tree_drawing_->draw(camera, size.x, size.y, picture_far_plane(camera, *state.scene), std::exp2(state.exposure),
+    tree_drawing_->draw(camera, *state.scene, size.x, size.y, std::exp2(state.exposure),
                         viewport.scale.y);
 
   TraceProgress& t = progress_;
