@@ -33,6 +33,7 @@
 #include "app/common/model_registry.h"
 #include "app/viewer/viewer.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/resources.h"
 #include "io/gltf_uris.h"
 
@@ -551,6 +552,9 @@ extern "C" EMSCRIPTEN_KEEPALIVE void luz_picture(int id) {
 
 int main() {
   using namespace luz;
+  // The parallel loops' threads, started while the page loads: started later, from the worker
+  // that runs a trace, they would wait for the main thread's next frame.
+  parallel::start_threads();
   try {
     web::choose_language();
     web::set_control_words(app::tr("Open a scene (.glb, or .gltf with its files):"), app::tr("Save the picture (P)"),
