@@ -360,6 +360,9 @@ void start() {
   if (request.follows_window) settings.width = room_width(), settings.height = room_height();
   settings.started = viewer_started;
   settings.screenshot_saved = [](const std::filesystem::path& file) { offer_download(file.c_str()); };
+  // Five frames a second while a trace's threads work: each frame the browser draws on the CPU
+  // (SwiftShader) is time the tracer's threads lose, and its end is drawn at the next frame.
+  settings.paced_frames = std::chrono::milliseconds(200);
   try {
     app::start_viewer(settings);
   } catch (const std::exception& error) {
