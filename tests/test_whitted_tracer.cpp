@@ -41,7 +41,9 @@ TEST(WhittedTiles, JoinedTilesCoverTheSamePixelsOnce) {
   std::vector<rt::Tile> some;
   for (size_t i = 0; i < all.size(); ++i)
     if (i % 5 != 2 && i != 13) some.push_back(all[all.size() - 1 - i]);  // out of order, with holes
-  for (const std::vector<rt::Tile>* tiles : std::vector<const std::vector<rt::Tile>*>{&all, &some}) {
+  std::vector<rt::Tile> one_missing = all;  // whole rows of the picture above and below a partial one
+  one_missing.erase(one_missing.begin() + 10);
+  for (const std::vector<rt::Tile>* tiles : std::vector<const std::vector<rt::Tile>*>{&all, &some, &one_missing}) {
     std::vector<int> wanted(size_t(width * height), 0), covered(size_t(width * height), 0);
     for (const rt::Tile& t : *tiles)
       for (int y = t.y0; y < t.y1; ++y)
