@@ -11,9 +11,10 @@
 // for is the first figure); and the Cornell box in radiosity at the viewer's defaults, timing
 // `wait-shots 1000000` (the solver run to its stopping rule, 0.5% unshot). --whitted-only leaves
 // the radiosity out. With --luz (run from the repository's root), each round also runs that
-// `luz render` of the same scene, model and size, right after the page's trace, and prints the tracer's seconds and the model's picture
-// with its set-up as it reports them. Prints every round, the best and the median, with the load
-// average before and after.
+// `luz render` of the same scene, model and size right after the page's trace, and prints the
+// tracer's seconds and the model's picture with its set-up as it reports them, and the page's
+// figure over the latter. Prints every round, the best and the median, with the load average
+// before and after.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
