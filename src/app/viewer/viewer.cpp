@@ -99,7 +99,8 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
     : window_(settings.width > 0 ? settings.width : default_width,
               settings.height > 0 ? settings.height : default_height,
               "Luz - " + path.filename().string()),
-      screenshot_saved_(settings.screenshot_saved) {
+      screenshot_saved_(settings.screenshot_saved),
+      paced_frames_(settings.paced_frames) {
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) {
     script_.emplace(*settings.script);
@@ -1054,6 +1055,23 @@ bool Viewer::needs_frames() const {
   return working();
 }
 
+// A pass draws no frame while the only thing changing is the paced views' work (ModelView::paced)
+// and the last frame is younger than paced_frames_: no event, no line to step, no other work.
+bool Viewer::frame_held() const {
+  if (paced_frames_.count() == 0 || FrameClock::now() - last_pass_ >= paced_frames_) return false;
+  if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty() || idle_until_) return false;
+  if (script_ && !script_->finished()) return false;
+  if (!queued_lines_.empty() && !queued_lines_.front().runner.finished()) return false;
+  if (classroom_.moving() || ImGui::GetIO().WantTextInput || solvers_.working() || difference_.refining()) return false;
+  bool paced = false;
+  for (const ModelEntry* m : panes_)
+    if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) {
+      if (!found->second->paced()) return false;
+      paced = true;
+    }
+  return paced;
+}
+
 // Work that changes what the window shows from frame to frame: a model running (a trace, the
 // solver), its reference refining, slide 36's methods stepping.
 bool Viewer::working() const {
@@ -1076,6 +1094,7 @@ std::optional<int> Viewer::pass() {
   } else if (!window_.wait(wake)) {
     return std::nullopt;
   }
+  if (frame_held()) return std::nullopt;
   if (idle_until_ && std::chrono::steady_clock::now() >= *idle_until_) {
     idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
     idle_until_.reset();

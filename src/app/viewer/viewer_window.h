@@ -171,6 +171,7 @@ private:
   void read_exposure(bool check);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
+  bool frame_held() const;
   bool working() const;
 
   gl::WindowContext window_;
@@ -251,6 +252,7 @@ private:
   std::string status_shown_;                // the status line's text as it stands
   FrameClock::time_point status_refreshed_;  // when its figures were last brought up to date
   FrameClock::time_point last_pass_ = FrameClock::now();  // the frame loop's last pass
+  std::chrono::milliseconds paced_frames_{0};              // ViewerSettings::paced_frames
 };
 
 }  // namespace luz::app
