@@ -66,8 +66,11 @@ public:
   TracePhase phase() const { return phase_; }
   bool cancelled() const { return cancelled_; }  // the last trace was cancelled before its end
   bool showing() const { return phase_ != TracePhase::raster; }
-  // A trace runs on its thread and has not ended: a frame only uploads its tiles.
-  bool tracing_on_its_thread() const { return phase_ == TracePhase::tracing && launched_ && !worker_.finished(); }
+  // A trace runs on its thread and has not ended: a frame only uploads its tiles. Never without
+  // threads, where the trace runs in the frames themselves.
+  bool tracing_on_its_thread() const {
+    return BackgroundWorker::threaded() && phase_ == TracePhase::tracing && launched_ && !worker_.finished();
+  }
   const Fingerprint& fingerprint() const { return started_; }
   const gl::Framebuffer& picture() const { return *picture_; }  // while showing()
   int tiles_done() const { return uploaded_done_; }
