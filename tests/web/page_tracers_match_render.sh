@@ -62,6 +62,21 @@ node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size
 within "${s}_page.png" "${s}_render.png" 1 "radiosity solved in the page against luz render --model radiosity"
 apart "${s}_early.png" "${s}_render.png" 1 "radiosity after 3 shots against the solved render"
 
+# Radiosity one shot a frame (a budget shorter than any shot), so that the shot meeting the
+# stopping rule is always its frame's last: `wait-shots` past the rule ends on it, and the picture
+# is luz render's at the same settings. Large patches (32, some 90 shots) keep it short.
+rule_flags="--patch-size 2 --meshing uniform --hemicube-res 64"
+s=$scratch/radiosity_rule
+rm -f "$s"_*.png
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size&panel=0" \
+  run "radiosity patch-size 2" run "radiosity meshing uniform" run "radiosity hemicube 64" \
+  run "radiosity budget 0.001" run "wait-shots 100000" note-has "radiosity: done after" \
+  picture "${s}_page.png" || status=1
+# shellcheck disable=SC2086
+"$luz" render "$scenes/cornell_box.gltf" --model radiosity $rule_flags --pixel-samples 1 --size $size \
+  --out "${s}_render.png" -q
+within "${s}_page.png" "${s}_render.png" 1 "radiosity solved one shot a frame against luz render --model radiosity"
+
 # The hybrid: its radiosity solved, then traced.
 s=$scratch/hybrid
 rm -f "$s"_*.png
