@@ -61,12 +61,20 @@ void BackgroundWorker::start(Job job) {
     job(run->cancel);
     run->finished.store(true, std::memory_order_release);
   });
+#if defined(__EMSCRIPTEN__)
+  thread_.detach();  // still running (or not yet started): no join, now or later
+  held_ = true;
+#endif
 }
 
 void BackgroundWorker::stop() {
-  if (!thread_.joinable()) return;
+  if (!joinable()) return;
   run_->cancel = true;
+#if defined(__EMSCRIPTEN__)
+  held_ = false;  // the main thread never waits: the job ends on its own, as a released one
+#else
   thread_.join();
+#endif
 }
 
 void BackgroundWorker::cancel() {
@@ -78,25 +86,25 @@ void BackgroundWorker::cancel() {
 }
 
 bool BackgroundWorker::settle() {
-  if (thread_.joinable() && finished()) join();
-  return !thread_.joinable();
+  if (joinable() && finished()) join();
+  return !joinable();
 }
 
 void BackgroundWorker::release() {
 #if defined(__EMSCRIPTEN__)
   cancel();
-  if (thread_.joinable()) thread_.detach();
+  held_ = false;
 #else
   stop();
 #endif
 }
 
 void BackgroundWorker::join() {
-  if (!thread_.joinable()) return;
+  if (!joinable()) return;
 #if defined(__EMSCRIPTEN__)
-  // The job has returned (finished(): its results are seen); its thread's exit is the browser's
-  // business, which the main thread does not wait for.
-  thread_.detach();
+  // The job has returned (finished(): its results are seen); its detached thread ends and frees
+  // itself, which the main thread does not wait for.
+  held_ = false;
 #else
   thread_.join();
 #endif

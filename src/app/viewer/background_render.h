@@ -53,8 +53,12 @@ void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, in
 // (the parallel loops, Embree's) asks the main thread for them, so a main thread waiting for it
 // would wait forever. So in the page a job is cancelled without waiting (cancel(), then settle()
 // once a frame until it has ended) and let go of (release(): it ends on its own, its captures
-// keeping what it reads alive). The window may wait for the tile in hand: there cancel() and
-// release() join, and what follows starts in the same frame. stop() and the destructor join.
+// keeping what it reads alive). Its thread is detached as it starts: the job's end is its
+// `finished` flag, and the thread frees itself. Detached later, a thread already ending would be
+// joined (musl's pthread_detach does so), a short wait on the main thread all the same. The
+// window may wait for the tile in hand: there cancel() and release() join, and what follows
+// starts in the same frame. stop() and the destructor join in the window; in the page they
+// cancel and let go, as release() does.
 class BackgroundWorker {
 public:
   using Job = std::function<void(const std::atomic<bool>& cancel)>;
@@ -70,9 +74,9 @@ public:
   bool settle();        // joins a job that has ended; true when no job is left
   void release();       // cancels; the page lets the job end on its own, the desktop joins it
   bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
-  bool idle() const { return !thread_.joinable() || finished(); }  // settle() would leave no job
+  bool idle() const { return !joinable() || finished(); }  // settle() would leave no job
   void join();          // once finished(): the job's results are all seen, its thread let go of
-  bool joinable() const { return thread_.joinable(); }
+  bool joinable() const;  // a job started and not yet joined or let go of
   double seconds() const;  // since the last start
 
 private:
@@ -84,6 +88,17 @@ private:
   std::shared_ptr<Run> run_;
   std::chrono::steady_clock::time_point began_;
   std::thread thread_;
+#if defined(__EMSCRIPTEN__)
+  bool held_ = false;  // joinable(): the page's thread is detached as it starts
+#endif
 };
+
+inline bool BackgroundWorker::joinable() const {
+#if defined(__EMSCRIPTEN__)
+  return held_;
+#else
+  return thread_.joinable();
+#endif
+}
 
 }  // namespace luz::app
