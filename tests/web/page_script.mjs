@@ -12,6 +12,8 @@
 //   picture-width W         luz.picture()'s PNG is W pixels wide
 //   note-has TEXT           the viewer's status-line note (dump-state's "note") contains TEXT
 //   note-lacks TEXT         ... does not contain TEXT
+//   file PAGE_PATH FILE     copies a file the page wrote into its own files (a `dump-...` line's
+//                           JSON, a `screenshot` verb's PNG) to FILE
 // A run step that takes more than a minute fails (a page whose program ended never settles), and
 // says whether the page still answers at all; the steps after it are not taken.
 // Usage: node tests/web/page_script.mjs URL STEP ARGS [STEP ARGS ...]
@@ -96,6 +98,17 @@ try {
     } else if (step === 'note-has' || step === 'note-lacks') {
       const text = await note(page), wanted = steps[++i];
       check(text.includes(wanted) === (step === 'note-has'), `note "${text}" ${step === 'note-has' ? 'has' : 'lacks'} "${wanted}"`);
+    } else if (step === 'file') {
+      const from = steps[++i], to = steps[++i];
+      const base64 = await page.evaluate((f) => {
+        let bytes;
+        try { bytes = Module.FS.readFile(f); } catch (e) { return null; }
+        let text = '';
+        for (let at = 0; at < bytes.length; at += 0x8000) text += String.fromCharCode(...bytes.subarray(at, at + 0x8000));
+        return btoa(text);
+      }, from);
+      check(base64 !== null, `file ${from} in the page`);
+      if (base64 !== null) writeFileSync(to, Buffer.from(base64, 'base64'));
     } else {
       check(false, `unknown step "${step}"`);
       break;

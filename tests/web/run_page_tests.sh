@@ -12,8 +12,10 @@
 # the canvas follows the browser's window, luz.picture() leaves no note, Esc ends nothing and
 # radiosity's outlines are the window's (page_script, outlines_match); Whitted, radiosity, the
 # hybrid and the path tracer match `luz render` once their work is done
-# (page_tracers_match_render), and the lesson walks to its end in Spanish from its first step
-# and in English from step 54 (page_lesson). Pictures and screenshots are left in SCRATCH_DIR.
+# (page_tracers_match_render); the clicked pixel's ray tree, brute force, adaptive sampling and
+# meshing, the item buffer, slide 36's solvers, the lesson's panes and the difference view are
+# what the `luz` commands compute (page_views_match_cli), and the lesson walks to its end in
+# Spanish from its first step and in English from step 54 (page_lesson). Pictures and screenshots are left in SCRATCH_DIR.
 #   tests/web/run_page_tests.sh BUILD_WEB LUZ SCRATCH_DIR
 set -eu
 web=$1 luz=$2 scratch=$3
@@ -69,6 +71,7 @@ sh "$here/page_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_run_matches_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_files_match_render.sh" "$url" "$luz" "$scratch" || status=1
 sh "$here/page_tracers_match_render.sh" "$url" "$luz" "$scratch" || status=1
+sh "$here/page_views_match_cli.sh" "$url" "$luz" "$scratch" || status=1
 lesson="$(dirname "$(dirname "$here")")/lessons/sintesis.json"
 node "$here/page_lesson.mjs" "$url?lesson=1&lang=es&size=240x180" "$lesson" "$scratch/lesson_es" || status=1
 node "$here/page_lesson.mjs" "$url?lesson=54&lang=en&size=240x180" "$lesson" "$scratch/lesson_en" || status=1
