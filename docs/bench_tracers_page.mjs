@@ -1,26 +1,39 @@
-// The page's Whitted trace and radiosity solve in headless Chromium, to set beside `luz render`
-// on the same machine in the same minutes. A measurement, never part of the build or the tests:
+// The page's Whitted trace and radiosity solve in headless Chromium, set beside `luz render` on
+// the same machine in the same minutes. A measurement, never part of the build or the tests:
 //
 //   python3 src/app/web/serve.py build-web 8000 &
-//   NODE_PATH=build-web/npm/node_modules node docs/bench_tracers_page.mjs http://127.0.0.1:8000/luz.html [ROUNDS]
+//   NODE_PATH=build-web/npm/node_modules node docs/bench_tracers_page.mjs http://127.0.0.1:8000/luz.html \
+//       [ROUNDS] [--whitted-only] [--luz build/luz]
 //
 // Each round opens the page twice: Whitted's scene in Whitted's model at 1024x1024 (depth 5, the
 // default), timing `trace` through luz.run from the request to its last tile drawn (the tracer's
-// own seconds are in the status line: what the page's user waits for is the figure here); and
-// the Cornell box in radiosity at the viewer's defaults, timing `wait-shots 1000000` (the solver
-// run to its stopping rule, 0.5% unshot). Prints every round, the best and the median, with the
-// load average before and after.
-import { readFileSync } from 'node:fs';
+// own seconds, which the status line shows, are printed beside it: what the page's user waits
+// for is the first figure); and the Cornell box in radiosity at the viewer's defaults, timing
+// `wait-shots 1000000` (the solver run to its stopping rule, 0.5% unshot). --whitted-only leaves
+// the radiosity out. With --luz (run from the repository's root), each round also runs that
+// `luz render` of the same scene, model and size right after the page's trace, and prints the
+// tracer's seconds and the model's picture with its set-up as it reports them, and the page's
+// figure over the latter. Prints every round, the best and the median, with the load average
+// before and after.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { openLuz, openPage } from '../tests/web/browser.mjs';
 
-const [base, roundsText = '3'] = process.argv.slice(2);
-if (!base) {
-  console.error('usage: bench_tracers_page.mjs BASE_URL [ROUNDS]');
+const args = process.argv.slice(2);
+const whittedOnly = args.includes('--whitted-only');
+const luzAt = args.indexOf('--luz');
+const luz = luzAt >= 0 ? args[luzAt + 1] : null;
+const [base, roundsText = '3'] = args.filter((a, i) => !a.startsWith('--') && (luzAt < 0 || i !== luzAt + 1));
+if (!base || (luzAt >= 0 && !luz)) {
+  console.error('usage: bench_tracers_page.mjs BASE_URL [ROUNDS] [--whitted-only] [--luz PATH_TO_LUZ]');
   process.exit(2);
 }
 const load = () => readFileSync('/proc/loadavg', 'utf8').split(' ')[0];
 const loadBefore = load();
 
+// The seconds of the timed line, and what `dump-trace` says after it (the tracer's own seconds).
 async function timed(query, lines, timed_line) {
   const { browser, page } = await openPage(() => {});
   try {
@@ -36,7 +49,13 @@ async function timed(query, lines, timed_line) {
     }, timed_line);
     for (;;) {
       const seconds = await page.evaluate(() => window.benchSeconds);
-      if (typeof seconds === 'number') return seconds;
+      if (typeof seconds === 'number') {
+        const tracer = await page.evaluate(async () => {
+          await window.luz.run('dump-trace /tmp/bench-trace.json');
+          return JSON.parse(new TextDecoder().decode(window.FS.readFile('/tmp/bench-trace.json'))).seconds;
+        });
+        return { seconds, tracer };
+      }
       if (seconds !== null) throw new Error(seconds);
       await new Promise((resolve) => setTimeout(resolve, 500));
     }
@@ -45,18 +64,47 @@ async function timed(query, lines, timed_line) {
   }
 }
 
-const figures = { whitted: [], radiosity: [] };
+// `luz render`'s own figures for the same trace: "time: S s" (the tracer) and "the model's
+// picture (its set-up included) S s".
+const scratch = mkdtempSync(join(tmpdir(), 'luz-bench-'));
+function native() {
+  const text = execFileSync(luz, ['render', 'scenes/whitted.gltf', '--model', 'whitted', '--size', '1024x1024',
+                                  '--out', join(scratch, 'whitted.png')], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const number = (pattern) => Number(text.match(pattern)[1]);
+  return { tracer: number(/time: ([0-9.]+) s/), picture: number(/its set-up included\) ([0-9.]+) s/) };
+}
+
+const figures = { whitted: [], tracer: [], radiosity: [], luz: [], luzTracer: [], ratio: [] };
 for (let round = 0; round < Number(roundsText); ++round) {
   const w = await timed('scene=whitted&model=whitted&size=1024x1024&panel=0', ['wait 2'], 'trace');
-  figures.whitted.push(w);
-  const r = await timed('scene=cornell_box&model=radiosity&panel=0', ['wait 2'], 'wait-shots 1000000');
-  figures.radiosity.push(r);
-  console.log(`round ${round + 1}: Whitted 1024x1024 ${w.toFixed(2)} s, radiosity to its stopping rule ${r.toFixed(2)} s`);
+  figures.whitted.push(w.seconds);
+  figures.tracer.push(w.tracer);
+  let line = `round ${round + 1}: Whitted 1024x1024 ${w.seconds.toFixed(2)} s (its tracer ${w.tracer.toFixed(2)} s)`;
+  if (luz) {
+    const n = native();
+    figures.luz.push(n.picture);
+    figures.luzTracer.push(n.tracer);
+    figures.ratio.push(w.seconds / n.picture);
+    line += `, luz render ${n.picture.toFixed(3)} s (its tracer ${n.tracer.toFixed(3)} s): ${(w.seconds / n.picture).toFixed(1)}x`;
+  }
+  if (!whittedOnly) {
+    const r = await timed('scene=cornell_box&model=radiosity&panel=0', ['wait 2'], 'wait-shots 1000000');
+    figures.radiosity.push(r.seconds);
+    line += `, radiosity to its stopping rule ${r.seconds.toFixed(2)} s`;
+  }
+  console.log(`${line}; load ${load()}`);
 }
-const summary = (list) => {
+rmSync(scratch, { recursive: true, force: true });
+const summary = (list, digits = 2, unit = ' s') => {
   const sorted = [...list].sort((a, b) => a - b);
-  return `best ${sorted[0].toFixed(2)} s, median ${sorted[Math.floor(sorted.length / 2)].toFixed(2)} s`;
+  return `best ${sorted[0].toFixed(digits)}${unit}, median ${sorted[Math.floor(sorted.length / 2)].toFixed(digits)}${unit}`;
 };
-console.log(`Whitted: ${summary(figures.whitted)}; radiosity: ${summary(figures.radiosity)}`);
+let text = `Whitted: ${summary(figures.whitted)} (its tracer ${summary(figures.tracer)})`;
+if (luz) {
+  text += `; luz render: ${summary(figures.luz, 3)} (its tracer ${summary(figures.luzTracer, 3)}); ` +
+          `page / luz render, round by round: ${summary(figures.ratio, 1, 'x')}`;
+}
+if (!whittedOnly) text += `; radiosity: ${summary(figures.radiosity)}`;
+console.log(text);
 console.log(`load average ${loadBefore} before, ${load()} after; ${navigatorCores()} cores`);
 function navigatorCores() { return readFileSync('/proc/cpuinfo', 'utf8').split('\n').filter((l) => l.startsWith('processor')).length; }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/classroom/classroom_ui.h"
 #include "app/common/label_text.h"
@@ -29,7 +30,10 @@ protected:
     app::CaptionResult result;
     for (int frame = 0; frame < 3; ++frame) {
       ImGui::NewFrame();
-      result = app::draw_lesson_caption(player, language, ImVec2(440.0f, 8.0f), width, max_height, scale, collapsed);
+      app::CaptionText text;
+      text.scale = text.least_scale = scale;
+      text.collapsed = collapsed;
+      result = app::draw_lesson_caption(player, language, ImVec2(440.0f, 8.0f), width, max_height, text);
       ImGui::Render();
     }
     return result;
@@ -80,6 +84,44 @@ TEST_F(Caption, AsksForItsWholeTextAndFoldsToOneLine) {
     EXPECT_LT(folded.size.y, 2.5f * ImGui::GetFontSize()) << "step " << i + 1;
     EXPECT_FALSE(folded.toggle_collapsed);
   }
+}
+
+// The smallest box the presenter layout gives the caption at 1280x720 (the panel shown at UI
+// scale 2: a row below the 512-unit picture, half of it beside a docked window, less the
+// margins: 224 x 296 units), the interface doubled as --ui-scale 2 doubles it: every step's
+// whole text, in both languages, fits the box, smaller than asked but at least 0.35 of it (the
+// viewer's least, 11 pixels). Kept at the scale asked, the longest texts would be cut.
+TEST_F(Caption, EveryStepIsWholeInTheSmallestBoxSmallerIfNeeded) {
+  app::LessonPlayer player(app::parse_lesson(std::filesystem::path(LUZ_LESSON_DIR) / "sintesis.json"));
+  ImGui::GetStyle().ScaleAllSizes(2.0f);
+  constexpr float width = 224.0f, max_height = 296.0f;
+  int shrunk = 0;
+  for (size_t i = 0; i < player.size(); ++i) {
+    player.go_to(i);
+    for (i18n::Language language : {i18n::Language::es, i18n::Language::en}) {
+      SCOPED_TRACE(testing::Message() << "step " << i + 1 << " (" << i18n::language_name(language) << ")");
+      app::CaptionText text;
+      text.scale = 2.0f;  // the 16-pixel font doubled
+      text.least_scale = 0.7f;
+      app::CaptionResult r;
+      for (int frame = 0; frame < 3; ++frame) {
+        ImGui::NewFrame();
+        r = app::draw_lesson_caption(player, language, ImVec2(784.0f, 344.0f), width, max_height, text);
+        ImGui::Render();
+      }
+      const ImGuiWindow* box = ImGui::FindWindowByName("##lesson caption");
+      ASSERT_NE(box, nullptr);
+      EXPECT_LE(box->ContentSize.y, box->ContentRegionRect.GetHeight() + 1.0f);
+      EXPECT_LE(box->ContentSize.x, box->ContentRegionRect.GetWidth() + 1.0f);
+      EXPECT_LE(r.size.y, max_height + 0.5f);
+      EXPECT_GE(r.text_scale, text.least_scale);
+      EXPECT_LE(r.text_scale, text.scale);
+      // Shrunk only when the whole text at the scale asked would not fit.
+      EXPECT_EQ(r.text_scale < text.scale, r.wanted_height > max_height) << r.wanted_height;
+      shrunk += r.text_scale < text.scale;
+    }
+  }
+  EXPECT_GT(shrunk, 0);  // the box is small enough for the fitting to matter
 }
 
 // The glyph's coverage in the font atlas (alpha, row by row) and its size.

@@ -109,7 +109,7 @@ TEST(Camera, FramingSeesTheWholeBoundingBox) {
   bounds.grow({-1, -1, -1});
   bounds.grow({1, 1, 1});
   const Camera camera = Camera::framing(bounds);
-  const glm::mat4 clip = camera.projection(1.0f, 100.0f) * camera.view();
+  const glm::mat4 clip = camera.projection(1.0f, bounds) * camera.view();
   for (float x : {-1.0f, 1.0f})
     for (float y : {-1.0f, 1.0f})
       for (float z : {-1.0f, 1.0f}) {
@@ -130,7 +130,7 @@ TEST(Camera, FramingSeesAFlatWideSceneFromAbove) {
   const Camera camera = Camera::framing(ground);
   EXPECT_NEAR(camera.forward().y, -std::sin(glm::radians(44.1f)), 1e-4f);
   EXPECT_NEAR(camera.forward().x, 0.0f, 1e-6f);
-  const glm::mat4 clip = camera.projection(1.0f, 100.0f) * camera.view();
+  const glm::mat4 clip = camera.projection(1.0f, ground) * camera.view();
   for (float x : {-5.0f, 5.0f})
     for (float y : {0.0f, 0.1f})
       for (float z : {-5.0f, 5.0f}) {

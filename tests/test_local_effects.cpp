@@ -514,7 +514,7 @@ protected:
     LocalRenderer renderer(scene);
     const Image image = renderer.render(camera, width, height, LocalOptions{});
     const Material& floor = scene.materials[size_t(scene.meshes[0].material)];
-    const glm::mat4 to_world = glm::inverse(camera.projection(float(width) / float(height), 100.0f) * camera.view());
+    const glm::mat4 to_world = glm::inverse(camera.projection(float(width) / float(height), scene.bounds()) * camera.view());
     const glm::vec3 foot(only->position.x, 0.0f, only->position.z);
     int checked = 0, failed = 0;
     std::string first;

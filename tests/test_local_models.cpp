@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
+#include "distant_scene.h"
 #include "local/local_renderer.h"
 
 namespace luz {
@@ -153,7 +154,7 @@ TEST(LocalModels, PhongFindsTheHighlightGouraudMissesIt) {
 // Pixel-space projection of a world point, pixel centres at integers, row 0 at the top.
 glm::dvec2 to_pixel(const Scene& scene, const glm::vec3& p) {
   const Camera& camera = scene.cameras[0];
-  const glm::mat4 clip_from_world = camera.projection(1.0f, 100.0f) * camera.view();
+  const glm::mat4 clip_from_world = camera.projection(1.0f, scene.bounds()) * camera.view();
   const glm::vec4 clip = clip_from_world * glm::vec4(p, 1.0f);
   const double x = clip.x / clip.w, y = clip.y / clip.w;
   return {(x + 1.0) / 2.0 * size - 0.5, (1.0 - y) / 2.0 * size - 0.5};
@@ -301,6 +302,25 @@ TEST(LocalModels, RenderKeepsTheCamerasVerticalFieldOfView) {
   const double expected = steepest / std::tan(0.3) * size;
   EXPECT_NEAR(covered_rows(square), expected, 2.0);
   EXPECT_NEAR(covered_rows(wide), expected, 2.0);
+}
+
+// Test::distant_faces_scene: with the file's 5 cm near plane the dark plate a metre behind the
+// lit face wins pixels in depth-fighting stripes. Every local model draws every pixel of the
+// face with its emission, for a far plane from the file and one chosen from the scene.
+TEST(LocalModels, ADistantSceneKeepsItsDepthOrder) {
+  for (float zfar : {0.0f, 1e6f}) {
+    const Scene scene = test::distant_faces_scene(zfar);
+    LocalRenderer renderer(scene);
+    for (Shading shading : {Shading::flat, Shading::gouraud, Shading::phong}) {
+      LocalOptions options;
+      options.shading = shading;
+      const Image image = renderer.render(scene.cameras[0], 64, 64, options);
+      int wrong = 0;
+      for (const Rgb& p : image.pixels) wrong += std::abs(p.g - 1.0f) > 1e-3f;
+      EXPECT_EQ(wrong, 0) << "pixels of 64 x 64 showing the plate behind the face, " << to_string(shading)
+                          << ", zfar " << zfar;
+    }
+  }
 }
 
 }  // namespace

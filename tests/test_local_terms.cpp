@@ -15,6 +15,7 @@
 
 #include "app/viewer/inspector.h"
 #include "app/viewer/picking.h"
+#include "distant_scene.h"
 #include "gltf_fixture.h"
 #include "io/gltf_loader.h"
 #include "local/local_renderer.h"
@@ -188,6 +189,23 @@ TEST(LocalTerms, SwitchedOffTermsAreZero) {
   const TermValues none = evaluate_terms(scene, material, P, N, V, off);
   EXPECT_EQ(radiance(none, material, off, Rgb(1.0f), true), Rgb(0.0f));
   EXPECT_NEAR(none.lights[0].theta, 0.0f, 1e-3f);  // the angles are still shown
+}
+
+// The inspector's pick on test::distant_faces_scene: the id buffer orders depths as the pictures
+// do, so a click anywhere on the lit face inspects the face, never the plate a metre behind it.
+TEST(LocalTerms, APickOnADistantSceneFindsTheFrontFace) {
+  const Scene scene = test::distant_faces_scene(0.0f);
+  app::Picker picker(scene);
+  constexpr int width = 64, height = 64;
+  int picked = 0, behind = 0;
+  for (int y = 0; y < height; y += 3)
+    for (int x = 0; x < width; x += 3) {
+      const auto pick = picker.pick(scene.cameras[0], width, height, x, y);
+      ASSERT_TRUE(pick.has_value()) << x << ", " << y;
+      ++picked;
+      behind += pick->mesh != test::distant_lit_face;
+    }
+  EXPECT_EQ(behind, 0) << "of " << picked << " picks found the plate";
 }
 
 }  // namespace

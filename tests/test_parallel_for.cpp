@@ -47,6 +47,42 @@ TEST(ParallelFor, ThreadsForRunsOnSeveralThreads) {
   EXPECT_GT(std::unique(ids.begin(), ids.end()) - ids.begin(), 1);
 }
 
+// The threads that help a loop are kept for the next ones (in the page, a thread started per loop
+// came a frame late), and the loop returns only once each of them has finished its chunk.
+TEST(ParallelFor, ThreadsForKeepsItsThreadsAndWaitsForThem) {
+  thread_local int loops_helped = 0;
+  std::atomic<int> most_loops_helped{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  for (int loop = 0; loop < 20; ++loop) {
+    std::atomic<int> chunks_done{0};
+    parallel::threads_for(0, 8, 1, 2, [&](size_t, size_t) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      if (std::this_thread::get_id() != caller) {
+        static thread_local int last_loop = -1;
+        if (last_loop != loop) last_loop = loop, ++loops_helped;
+        int seen = most_loops_helped;
+        while (seen < loops_helped && !most_loops_helped.compare_exchange_weak(seen, loops_helped)) {
+        }
+      }
+      ++chunks_done;
+    });
+    EXPECT_EQ(chunks_done.load(), 8) << "loop " << loop << " returned before its chunks were done";
+  }
+  EXPECT_GT(most_loops_helped.load(), 1) << "a helping thread helps one loop only: threads are started per loop";
+}
+
+// A loop inside a loop's body (each a caller of its own) visits its indices once, the kept
+// threads helping whichever loop they find.
+TEST(ParallelFor, ThreadsForInsideThreadsFor) {
+  std::vector<std::atomic<int>> seen(40 * 30);
+  parallel::threads_for(0, 40, 1, 4, [&](size_t lo, size_t) {
+    parallel::threads_for(0, 30, 4, 4, [&](size_t a, size_t b) {
+      for (size_t i = a; i < b; ++i) ++seen[lo * 30 + i];
+    });
+  });
+  expect_each_once(seen, 0, seen.size());
+}
+
 TEST(ParallelFor, ThreadsForOnOneThreadRunsInOrderOnTheCaller) {
   std::vector<size_t> order;
   const std::thread::id caller = std::this_thread::get_id();

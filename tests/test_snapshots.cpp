@@ -340,7 +340,7 @@ struct PlatePixels {
   Scene scene = io::load_gltf(test::scene_dir() / "local_effects.gltf").scene;
   glm::ivec2 pixel(const Image& image, glm::vec3 P) const {
     const Camera& camera = scene.cameras.front();
-    const glm::vec4 clip = camera.projection(float(image.width) / float(image.height), 100.0f) * camera.view() *
+    const glm::vec4 clip = camera.projection(float(image.width) / float(image.height), scene.bounds()) * camera.view() *
                            glm::vec4(P, 1.0f);
     const int x = int((clip.x / clip.w * 0.5f + 0.5f) * float(image.width));
     const int y = int((0.5f - clip.y / clip.w * 0.5f) * float(image.height));

@@ -66,7 +66,7 @@ fs::path scene() { return test::scene_dir() / "cornell_box.gltf"; }
 double ceiling_piece(const Codes& c, float x0, float x1, float z0, float z1) {
   const Scene s = io::load_gltf(scene()).scene;
   const Camera& camera = s.cameras[0];
-  const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), 100.0f) * camera.view();
+  const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), s.bounds()) * camera.view();
   const float y = s.bounds().max.y;
   glm::vec2 low(1e9f), high(-1e9f);
   for (const float x : {x0, x1})
@@ -119,9 +119,10 @@ protected:
 TEST_F(ViewerRadiosity, TSwitchesTheTextureOffAndStartsTheSolutionOver) {
   EXPECT_EQ(json_of(file("textured.json"))["shots"], 20);
   EXPECT_EQ(json_of(file("untextured.json"))["shots"], 10) << "the solution started over";
-  const Camera camera = io::load_gltf(file("textured.gltf")).scene.cameras.at(0);
+  const Scene square = io::load_gltf(file("textured.gltf")).scene;
+  const Camera& camera = square.cameras.at(0);
   const auto at = [&](const Codes& c, float x) {  // the mean code about (x, 0, 0)
-    const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), 100.0f) * camera.view();
+    const glm::mat4 clip = camera.projection(float(c.width) / float(c.height), square.bounds()) * camera.view();
     const glm::vec4 p = clip * glm::vec4(x, 0.0f, 0.0f, 1.0f);
     const int px = int((p.x / p.w * 0.5f + 0.5f) * float(c.width)), py = int((0.5f - p.y / p.w * 0.5f) * float(c.height));
     return mean_code(c, px - 3, py - 3, px + 4, py + 4);

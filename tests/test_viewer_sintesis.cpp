@@ -233,6 +233,27 @@ TEST_F(ViewerSintesis, FNineFoldsTheCaptionToOneLine) {
   EXPECT_GT(rect_of(window_named(unfolded, "##lesson caption")["rect"]).height(), 4.0 * unfolded["font_size"].get<double>());
 }
 
+// The caption's text is never cut at those sizes and scales, with the panel shown: in the room
+// left it is drawn smaller rather than scrolled (folded to one line, a long title is cut on purpose).
+TEST_F(ViewerSintesis, TheCaptionsTextIsWhole) {
+  for (const char* name : presenter_dumps) {
+    if (std::string(name).find("folded") != std::string::npos) continue;
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const nlohmann::json& caption = window_named(dump, "##lesson caption");
+    EXPECT_LE(caption["content_height"].get<double>(), caption["visible_height"].get<double>() + 1.0) << caption.dump(2);
+    EXPECT_LE(caption["content_width"].get<double>(), caption["visible_width"].get<double>() + 1.0) << caption.dump(2);
+  }
+}
+
+// At the UI's own scale the panel takes a third of the 1280-unit window: a lesson opens with it
+// shown, and no hint (tests/test_viewer_presenter_start.cpp: at scale 2 it starts hidden).
+TEST_F(ViewerSintesis, ANarrowPanelStartsShown) {
+  const nlohmann::json start = json_of(file("quit-asked.json"));
+  EXPECT_TRUE(start["show_panel"].get<bool>()) << start.dump(2);
+  EXPECT_TRUE(start["panel_hint"].is_null()) << start.dump(2);
+}
+
 // The status line never runs past the window's edge, at any of those sizes and scales: it leaves
 // out its figures that matter least (the triangles, the camera, ...) instead, the model and the
 // latest message staying.

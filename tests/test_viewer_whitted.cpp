@@ -153,7 +153,7 @@ TEST_F(ViewerWhitted, TheRayTreeIsDrawnAlongItsRays) {
   const nlohmann::json tree = json_of(file("tree.json"));
   const Scene s = io::load_gltf(scene()).scene;
   const Camera& camera = s.cameras[0];  // the script clicked from the scene camera
-  const glm::mat4 clip = camera.projection(float(with.width) / float(with.height), 100.0f) * camera.view();
+  const glm::mat4 clip = camera.projection(float(with.width) / float(with.height), s.bounds()) * camera.view();
   const float size = glm::length(s.bounds().extent());
 
   auto differs = [&](int x, int y, int tolerance) {

@@ -33,6 +33,37 @@ Scene shipped(const std::string& name) {
 // Wall z = 0 (kd 0.5, facing +z), mirror z = 2 (kr = k, nothing else, facing -z), point light at
 // (0.3, 0.2, 1.5), camera at (0, 0, 1) looking at the mirror. A pixel's ray reflects off the
 // mirror onto the wall at w; the closed form there is kd/pi * I cos(theta) / d^2, times k.
+// The viewer uploads finished tiles as joined rectangles: every pixel of the tiles given, once,
+// and none other; a whole picture's tiles are one rectangle, a row's run one per row of tiles.
+TEST(WhittedTiles, JoinedTilesCoverTheSamePixelsOnce) {
+  const int width = 100, height = 70;
+  const std::vector<rt::Tile> all = rt::make_tiles(width, height, 16);
+  std::vector<rt::Tile> some;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (i % 5 != 2 && i != 13) some.push_back(all[all.size() - 1 - i]);  // out of order, with holes
+  std::vector<rt::Tile> one_missing = all;  // whole rows of the picture above and below a partial one
+  one_missing.erase(one_missing.begin() + 10);
+  for (const std::vector<rt::Tile>* tiles : std::vector<const std::vector<rt::Tile>*>{&all, &some, &one_missing}) {
+    std::vector<int> wanted(size_t(width * height), 0), covered(size_t(width * height), 0);
+    for (const rt::Tile& t : *tiles)
+      for (int y = t.y0; y < t.y1; ++y)
+        for (int x = t.x0; x < t.x1; ++x) ++wanted[size_t(y * width + x)];
+    for (const rt::Tile& r : rt::joined_tiles(*tiles, width))
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) ++covered[size_t(y * width + x)];
+    EXPECT_EQ(covered, wanted);
+  }
+  const std::vector<rt::Tile> whole = rt::joined_tiles(all, width);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_EQ(whole[0].x1, width);
+  EXPECT_EQ(whole[0].y1, height);
+  const std::vector<rt::Tile> run = rt::joined_tiles({all[10], all[9], all[8]}, width);  // row 1: x 16 to 64
+  ASSERT_EQ(run.size(), 1u);
+  EXPECT_EQ(run[0].x0, 16);
+  EXPECT_EQ(run[0].x1, 64);
+  EXPECT_EQ(run[0].y0, 16);
+}
+
 TEST(WhittedTracer, MirrorShowsTheWallTimesKr) {
   const double k = 0.6, kd = 0.5, I = 10.0;
   const dvec3 light(0.3, 0.2, 1.5);

@@ -21,13 +21,9 @@ glm::vec3 Camera::forward() const { return glm::normalize(-glm::vec3(to_world[2]
 
 glm::mat4 Camera::view() const { return glm::inverse(to_world); }
 
-glm::mat4 Camera::projection(float image_aspect, float fallback_far) const {
-  return projection(image_aspect, fallback_far, znear);
-}
-
-glm::mat4 Camera::projection(float image_aspect, float fallback_far, float near) const {
-  const float far = zfar > near ? zfar : std::max(fallback_far, 2.0f * near);
-  return glm::perspective(yfov, image_aspect, near, far);
+glm::mat4 Camera::projection(float image_aspect, const Bounds& scene) const {
+  const float near = near_plane(scene, image_aspect);
+  return glm::perspective(yfov, image_aspect, near, std::max(far_plane(scene), 2.0f * near));
 }
 
 float Camera::near_plane(const Bounds& bounds, float image_aspect) const {
@@ -39,6 +35,19 @@ float Camera::near_plane(const Bounds& bounds, float image_aspect) const {
   const float tan_y = std::tan(0.5f * yfov), tan_x = image_aspect * tan_y;
   const float cos_corner = 1.0f / std::sqrt(1.0f + tan_x * tan_x + tan_y * tan_y);
   return std::max(znear, 0.99f * distance * cos_corner);
+}
+
+float Camera::far_plane(const Bounds& bounds) const {
+  if (zfar > 0.0f) return zfar;
+  if (bounds.empty()) return 1000.0f;
+  const glm::vec3 eye = position();
+  float farthest = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+                      corner & 4 ? bounds.max.z : bounds.min.z);
+    farthest = std::max(farthest, glm::length(p - eye));
+  }
+  return std::max(1.1f * farthest, 1e-3f);
 }
 
 std::string Camera::to_string() const {

@@ -20,16 +20,19 @@ struct Camera {
   glm::vec3 position() const;
   glm::vec3 forward() const;  // unit -Z of the node
   glm::mat4 view() const;     // world -> camera
-  // OpenGL clip matrix for an image of the given aspect (width / height); zfar 0 becomes
-  // `fallback_far` so that depth buffers keep their precision.
-  glm::mat4 projection(float image_aspect, float fallback_far) const;
-  // The same with the near plane at `near` instead of znear.
-  glm::mat4 projection(float image_aspect, float fallback_far, float near) const;
+  // OpenGL clip matrix for an image of the given aspect (width / height) of a scene within
+  // `scene`, its near plane at near_plane and its far plane at far_plane. Every rasterised
+  // picture (the local models, radiosity, picking, the ray tree drawn over a picture's depth)
+  // takes this one, so that their depth buffers agree and none keeps a file's tiny znear.
+  glm::mat4 projection(float image_aspect, const Bounds& scene) const;
   // A near plane for a scene within `bounds`: znear, or just short of the nearest point of the
   // scene the image can show when that is farther. A depth buffer's steps grow as depth^2 / near:
   // a file's znear of centimetres on an engine a kilometre away leaves steps of metres, and a
   // fin's face and the dark body a metre behind it fight over the pixels.
   float near_plane(const Bounds& bounds, float image_aspect) const;
+  // zfar, or for zfar 0 (infinite) just past the farthest corner of `bounds`: a finite far plane
+  // keeps the depth buffer's precision and cuts nothing of the scene.
+  float far_plane(const Bounds& bounds) const;
   std::string to_string() const;
 
   // SCENES.md: a scene without a camera gets one framing its bounding box from +Z, raised by

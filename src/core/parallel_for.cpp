@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -13,6 +14,81 @@
 
 namespace luz::parallel {
 
+namespace {
+
+// The cores of this machine (the browser's, in the page), at least one.
+unsigned cores() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+// A loop offered to the kept threads: its work, how many more of them may join it, and how many
+// work on it now.
+struct Offer {
+  const std::function<void()>* work = nullptr;
+  size_t seats = 0;
+  size_t inside = 0;
+};
+
+// The threads the loops share, started once and kept: a loop that started its own would pay for
+// their start every time, and in the page a thread started from a worker is started by the
+// browser's main thread, between two of its frames, so a loop's helpers came a frame late.
+// Never destroyed: its threads wait for work until the program ends.
+class KeptThreads {
+public:
+  static KeptThreads& get() {
+    static KeptThreads* threads = new KeptThreads;
+    return *threads;
+  }
+
+  // Starts threads until `count` are kept (without a lock: the browser's main thread may call it).
+  void start(size_t count) {
+    for (size_t have = started_.load(); have < count;)
+      if (started_.compare_exchange_weak(have, have + 1)) std::thread([this] { serve(); }).detach();
+  }
+
+  // Runs `work` on the calling thread and on up to `seats` kept threads that are free meanwhile;
+  // returns once every one of them has returned from it.
+  void run(const std::function<void()>& work, size_t seats) {
+    Offer offer{&work, seats};
+    {
+      const std::lock_guard lock(mutex_);
+      offers_.push_back(&offer);
+    }
+    offered_.notify_all();
+    work();
+    std::unique_lock lock(mutex_);
+    offers_.erase(std::find(offers_.begin(), offers_.end(), &offer));  // no thread joins it now
+    left_.wait(lock, [&offer] { return offer.inside == 0; });
+  }
+
+private:
+  KeptThreads() = default;
+
+  Offer* open_offer() {
+    const auto open = std::find_if(offers_.begin(), offers_.end(), [](const Offer* o) { return o->seats > 0; });
+    return open == offers_.end() ? nullptr : *open;
+  }
+
+  void serve() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      offered_.wait(lock, [this] { return open_offer() != nullptr; });
+      Offer& offer = *open_offer();
+      --offer.seats;
+      ++offer.inside;
+      lock.unlock();
+      (*offer.work)();
+      lock.lock();
+      if (--offer.inside == 0) left_.notify_all();
+    }
+  }
+
+  std::atomic<size_t> started_{0};
+  std::mutex mutex_;
+  std::condition_variable offered_, left_;
+  std::vector<Offer*> offers_;  // the loops running, oldest first
+};
+
+}  // namespace
+
 void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
                  const std::function<void(size_t lo, size_t hi)>& body) {
   if (begin >= end) return;
@@ -22,7 +98,7 @@ void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
   std::atomic<bool> failed{false};
   std::exception_ptr first_error;
   std::mutex error_mutex;
-  const auto work = [&] {
+  const std::function<void()> work = [&] {
     for (size_t c = next++; c < chunks && !failed.load(std::memory_order_relaxed); c = next++) {
       const size_t lo = begin + c * grain;
       try {
@@ -38,11 +114,12 @@ void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
   threads = 1;  // a page built without threads cannot start one
 #endif
   const size_t helpers = std::min<size_t>(threads > 1 ? threads - 1 : 0, chunks - 1);
-  std::vector<std::thread> started;
-  started.reserve(helpers);
-  for (size_t t = 0; t < helpers; ++t) started.emplace_back(work);
-  work();
-  for (std::thread& t : started) t.join();
+  if (helpers == 0) {
+    work();
+  } else {
+    KeptThreads::get().start(helpers);
+    KeptThreads::get().run(work, helpers);
+  }
   if (first_error) std::rethrow_exception(first_error);
 }
 
@@ -53,7 +130,13 @@ unsigned thread_count() {
 #if defined(__EMSCRIPTEN__)
   if (emscripten_is_main_browser_thread()) return 1;
 #endif
-  return std::max(1u, std::thread::hardware_concurrency());
+  return cores();
+#endif
+}
+
+void start_threads() {
+#if !(defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__))
+  KeptThreads::get().start(cores() - 1);
 #endif
 }
 

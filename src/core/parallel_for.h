@@ -4,8 +4,9 @@
 // built (LUZ_PARALLEL in src/core/CMakeLists.txt):
 // - tbb: oneTBB's work-stealing scheduler (the desktop). The calls below are exactly the
 //   tbb::parallel_for calls the code would make itself, so the desktop build is unchanged.
-// - threads: threads_for below, plain std::threads sharing a counter of chunks (the web page,
-//   where oneTBB does not build; on one thread where the page cannot have threads).
+// - threads: threads_for below, plain std::threads, kept from loop to loop, sharing a counter of
+//   chunks (the web page, where oneTBB does not build; on one thread where the page cannot have
+//   threads).
 // The loop returns when every call of `body` has; an exception thrown by `body` comes out of the
 // loop (the first one thrown; the chunks not yet started are skipped).
 #include <cstddef>
@@ -21,11 +22,16 @@ namespace luz {
 namespace parallel {
 
 // Calls body(lo, hi) for consecutive chunks [lo, hi) of [begin, end), `grain` indices long (the
-// last one shorter), on up to `threads` threads: the calling thread and threads - 1 started
-// for this loop, each taking the next chunk not yet taken. threads <= 1 runs them in order on
-// the calling thread.
+// last one shorter), on up to `threads` threads: the calling thread and up to threads - 1 of the
+// threads the loops keep (started by the first loop that wants them, or by start_threads), each
+// taking the next chunk not yet taken. threads <= 1 runs them in order on the calling thread.
 void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
                  const std::function<void(size_t lo, size_t hi)>& body);
+
+// Starts the threads threads_for keeps, one fewer than the cores, before a loop asks for them:
+// the page calls it as it opens, because a thread a worker starts is started by the browser's
+// main thread between two frames, a frame late for the loop that asked.
+void start_threads();
 
 // The threads threads_for uses on this thread: every core natively; in the page every core the
 // browser offers on a worker, one on the browser's main thread (which must never wait for

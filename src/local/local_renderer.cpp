@@ -421,7 +421,7 @@ static float farthest_corner(const Bounds& bounds, const glm::vec3& eye) {
   return farthest;
 }
 
-// A finite far plane for cameras with zfar = 0: just past the farthest corner of the scene.
+// A finite far plane for a reflection map's cube around `eye`: just past the farthest corner of the scene.
 float LocalRenderer::Impl::far_plane(const glm::vec3& eye) const {
   const Bounds box = scene.bounds();
   if (box.empty()) return 1000.0f;
@@ -738,8 +738,7 @@ void LocalRenderer::Impl::draw(const Camera& camera, glm::ivec2 origin, glm::ive
     glEnable(GL_SCISSOR_TEST);
   }
   // Vertical field of view is the camera's yfov whatever the output's aspect.
-  pass.view_projection = camera.projection(float(size.x) / float(size.y), s.far_plane(camera.position())) *
-                         camera.view();
+  pass.view_projection = camera.projection(float(size.x) / float(size.y), s.scene.bounds()) * camera.view();
   pass.eye = camera.position();
   s.draw_scene(pass, options);
   glDisable(GL_SCISSOR_TEST);

@@ -36,7 +36,6 @@ struct RadiosityRenderer::Impl {
   std::vector<GLuint> textures;  // per scene texture, uploaded when a run shows it (else 0)
   bool texture_detail = true;    // the last update's colours are B/pi, which the texture modulates
   int revision = 0;  // of the mesh uploaded
-  float far = 1.0f;
   Bounds bounds;  // of the elements' vertices
   std::unique_ptr<gl::Framebuffer> target;
   std::vector<Rgb> corner_colours;
@@ -154,7 +153,6 @@ void RadiosityRenderer::upload_elements() {
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(sides.size() * sizeof(uint32_t)), sides.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  s.far = bounds.empty() ? 1.0f : glm::length(bounds.extent());
   s.bounds = bounds;
 }
 
@@ -192,16 +190,13 @@ void RadiosityRenderer::draw(const Camera& camera, int width, int height,
   glClearBufferfv(GL_COLOR, 0, background);
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
-  // A finite far plane past the farthest patch from the camera, and the near plane as far out
-  // as the scene allows, for the depth buffer's precision (Camera::near_plane).
-  const float far = glm::length(camera.position() - s.mesh.vertices.front()) + 2.0f * s.far;
   const float aspect = float(width) / float(height);
   s.program.use();
   // A shift of (dx, dy) pixels is 2 dx / width in normalised device coordinates.
   const glm::mat4 shifted = glm::translate(
       glm::mat4(1.0f), glm::vec3(2.0f * shift.x / float(width), 2.0f * shift.y / float(height), 0.0f));
   s.program.set("u_view_projection",
-                shifted * camera.projection(aspect, far, camera.near_plane(s.bounds, aspect)) * camera.view());
+                shifted * camera.projection(aspect, s.bounds) * camera.view());
   s.program.set("u_outline", false);
   const bool lit = highlight >= 0 && size_t(highlight) < s.mesh.shooters.size();
   s.program.set("u_highlight_first", lit ? int(s.mesh.shooters[size_t(highlight)].first) : -1);

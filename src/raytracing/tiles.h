@@ -14,4 +14,9 @@ struct Tile {
 // Row by row from the top left; the last row and column may be narrower.
 std::vector<Tile> make_tiles(int width, int height, int size);
 
+// The same pixels as `tiles` (tiles of make_tiles, each once, in any order) in fewer rectangles:
+// tiles side by side in a row of tiles joined, then rows of the picture's whole `width` one above
+// the other. The viewer uploads a rectangle a call, and a call costs more than its pixels.
+std::vector<Tile> joined_tiles(std::vector<Tile> tiles, int width);
+
 }  // namespace luz::rt

@@ -63,16 +63,21 @@ bool Classroom::step(ScriptTarget& viewer, std::string& error) {
   return ok;
 }
 
-float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale) {
+float Classroom::draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale, const char* hint) {
   if (!player_) return 0.0f;
   const float width = std::max(size.x - 2.0f * margin, 1.0f);
   const ImVec2 top_left(origin.x + margin, origin.y + margin);
   // 1.25 times the panel's text at a UI scale of 1; an interface already enlarged for the back
-  // row (--ui-scale 1.25 and up) is read there as it is, and leaves the picture its room.
-  const float enlarged = std::max(1.25f / ui_scale, 1.0f);
+  // row (--ui-scale 1.25 and up) is read there as it is, and leaves the picture its room. A
+  // dock too small for the whole text (a large interface beside the panel) gets it smaller
+  // rather than cut, down to 0.7 times the panel's text at a UI scale of 1 (11 pixels).
+  CaptionText text;
+  text.scale = std::max(1.25f / ui_scale, 1.0f);
+  text.least_scale = std::min(0.7f / ui_scale, text.scale);
+  text.collapsed = caption_collapsed_;
+  text.hint = hint;
   const CaptionResult result =
-      draw_lesson_caption(*player_, i18n::language(), top_left, width, size.y - 2.0f * margin, enlarged,
-                          caption_collapsed_);
+      draw_lesson_caption(*player_, i18n::language(), top_left, width, size.y - 2.0f * margin, text);
   move(result.move);
   if (result.toggle_collapsed) toggle_caption();
   return result.wanted_height + 2.0f * margin;

@@ -52,7 +52,8 @@ public:
   // it, and it covers nothing of the picture. Moves asked by its buttons are queued. Returns the
   // height the whole caption asks for (window units, margins included, however much of it the
   // dock shows), 0 without a lesson: the next frame's dock below the picture is made that high.
-  float draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale);
+  // `hint`, when given, is draw_lesson_caption's.
+  float draw_caption(glm::vec2 origin, glm::vec2 size, float margin, float ui_scale, const char* hint = nullptr);
 
 private:
   void queue(std::vector<ScriptCommand> commands);

@@ -68,20 +68,9 @@ void Picker::draw_ids(const Camera& camera, int width, int height) {
   glClearBufferfv(GL_COLOR, 0, nothing);
   glClearBufferfv(GL_DEPTH, 0, &far_depth);
 
-  // The far plane only sets depth precision; the local renderer's rule (just past the scene).
-  float far = camera.zfar;
-  if (!(far > camera.znear)) {
-    const Bounds bounds = scene_.bounds();
-    far = 2.0f * camera.znear;
-    for (int corner = 0; corner < 8; ++corner)
-      far = std::max(far, 1.1f * glm::length(glm::vec3(corner & 1 ? bounds.max.x : bounds.min.x,
-                                                        corner & 2 ? bounds.max.y : bounds.min.y,
-                                                        corner & 4 ? bounds.max.z : bounds.min.z) -
-                                              camera.position()));
-  }
+  // The pictures' own near and far planes: a pick resolves the depth order as they drew it.
   program_.use();
-  program_.set("u_view_projection",
-               camera.projection(float(width) / float(height), far) * camera.view());
+  program_.set("u_view_projection", camera.projection(float(width) / float(height), scene_.bounds()) * camera.view());
   for (size_t m = 0; m < meshes_.size(); ++m) {
     program_.set("u_mesh", float(m + 1));
     meshes_[m].draw();

@@ -256,6 +256,9 @@ bool run_dump_state(Viewer& v, const ScriptCommand& c, std::string& error) {
   j["solvers_open"] = v.solvers().state().open;
   const LessonPlayer* lesson = v.classroom().player();
   j["lesson_step"] = lesson ? nlohmann::json(lesson->index() + 1) : nlohmann::json(nullptr);
+  j["show_panel"] = s.show_panel;
+  const char* hint = v.panel_hint();
+  j["panel_hint"] = hint ? nlohmann::json(hint) : nlohmann::json(nullptr);
   return write_json(c.args[0], j, "the viewer's state", error);
 }
 

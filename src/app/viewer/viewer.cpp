@@ -47,6 +47,7 @@ namespace {
 constexpr int default_width = 1280;
 constexpr int default_height = 760;
 constexpr float panel_width = 440.0f;   // window units at a UI scale of 1
+constexpr float lesson_panel_share = 0.4f;  // of the window's width, the most a lesson's panel opens with
 constexpr float dock_share = 0.3f;      // of the picture's room, a lesson's dock at the least
 constexpr float dock_ems = 20.0f;       // and at least this many font heights: the caption's lines
 constexpr float below_caption_share = 0.6f;  // of a dock below the picture, the caption's; its windows the rest
@@ -98,7 +99,8 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
     : window_(settings.width > 0 ? settings.width : default_width,
               settings.height > 0 ? settings.height : default_height,
               "Luz - " + path.filename().string()),
-      screenshot_saved_(settings.screenshot_saved) {
+      screenshot_saved_(settings.screenshot_saved),
+      paced_frames_(settings.paced_frames) {
   glGenVertexArrays(1, &empty_vertex_array_);
   if (settings.script) {
     script_.emplace(*settings.script);
@@ -158,6 +160,13 @@ Viewer::Viewer(io::LoadedScene loaded, const std::filesystem::path& path, const 
   ImGui_ImplGlfw_InitForOpenGL(w, true);
   ImGui_ImplOpenGL3_Init(gl::WindowContext::glsl_version());
   rebuild_fonts();
+  // A lesson on a projector, its interface enlarged: a panel wider than 40 % of the window
+  // would leave the picture and the caption a strip. It starts hidden, and the caption says
+  // which key shows it.
+  if (classroom_.has_lesson() && panel_width * ui_scale_ > lesson_panel_share * float(window_w)) {
+    state_.show_panel = false;
+    panel_hint_ = true;
+  }
 
   // ImGui 1.86 samples the keys once a frame and, within a frame, takes the typed characters
   // before the keys and one editing key only: while a frame took 100-600 ms, a key pressed and
@@ -211,6 +220,8 @@ void Viewer::rebuild_fonts() {
   ImGui::GetStyle() = style;
   fonts_stale_ = false;
 }
+
+const char* Viewer::panel_hint() const { return panel_hint_ && !state_.show_panel ? tr("Tab: panel") : nullptr; }
 
 void Viewer::set_ui_scale(float scale) {
   user_scale_ = std::clamp(scale, kMinUiScale, kMaxUiScale);
@@ -805,7 +816,8 @@ void Viewer::draw_windows(const Layout& l) {
   if (!l.dock.empty()) {
     const auto [caption, column] = split_dock(l.dock, dock_wanted_);
     corners.dock_in(column);
-    const float wanted = classroom_.draw_caption(caption.origin, caption.size, margin, ui_scale_);
+    if (state_.show_panel) panel_hint_ = false;  // found: the hint has done its work
+    const float wanted = classroom_.draw_caption(caption.origin, caption.size, margin, ui_scale_, panel_hint());
     if (std::abs(wanted - caption_wanted_) > 0.5f) {
       caption_wanted_ = wanted;  // the next frame's dock below the picture
       frames_to_draw_ = std::max(frames_to_draw_, 2);
@@ -1043,6 +1055,23 @@ bool Viewer::needs_frames() const {
   return working();
 }
 
+// A pass draws no frame while the only thing changing is the paced views' work (ModelView::paced)
+// and the last frame is younger than paced_frames_: no event, no line to step, no other work.
+bool Viewer::frame_held() const {
+  if (paced_frames_.count() == 0 || FrameClock::now() - last_pass_ >= paced_frames_) return false;
+  if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty() || idle_until_) return false;
+  if (script_ && !script_->finished()) return false;
+  if (!queued_lines_.empty() && !queued_lines_.front().runner.finished()) return false;
+  if (classroom_.moving() || ImGui::GetIO().WantTextInput || solvers_.working() || difference_.refining()) return false;
+  bool paced = false;
+  for (const ModelEntry* m : panes_)
+    if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) {
+      if (!found->second->paced()) return false;
+      paced = true;
+    }
+  return paced;
+}
+
 // Work that changes what the window shows from frame to frame: a model running (a trace, the
 // solver), its reference refining, slide 36's methods stepping.
 bool Viewer::working() const {
@@ -1065,6 +1094,7 @@ std::optional<int> Viewer::pass() {
   } else if (!window_.wait(wake)) {
     return std::nullopt;
   }
+  if (frame_held()) return std::nullopt;
   if (idle_until_ && std::chrono::steady_clock::now() >= *idle_until_) {
     idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
     idle_until_.reset();

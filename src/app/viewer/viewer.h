@@ -2,6 +2,7 @@
 // The classroom viewer: the scene in a local model in a resizable window, the panel, the
 // inspector, the shortcuts and the scripted runs. Returns the exit code (0; 1 when the scene
 // cannot be loaded, there is no window, or a script command fails).
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -35,6 +36,10 @@ struct ViewerSettings {
   // Told of each screenshot a key or `screenshot` without a file saved (P, Shift+P), once written:
   // the page hands it to the browser as a download.
   std::function<void(const std::filesystem::path&)> screenshot_saved;
+  // While the only change from frame to frame is a view's work on threads of its own (paced()),
+  // a frame at most this often; zero: every frame. The page's: its WebGL draws on the CPU
+  // (SwiftShader, often), taking from the tracer's threads what a frame costs.
+  std::chrono::milliseconds paced_frames{0};
 };
 
 // On the desktop it returns when the window closes; in the page (WindowContext::drive_frames) as

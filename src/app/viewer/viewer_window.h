@@ -126,6 +126,8 @@ public:
   DifferenceView& difference() override { return difference_; }
   Layout layout() const;
   Classroom& classroom() { return classroom_; }
+  // "Tab: panel" while a lesson's panel is hidden since the start (too wide for the window), else null.
+  const char* panel_hint() const;
   PanelCache& panel_cache() { return panel_cache_; }
   bool window_keeps_back_buffer() const { return window_.keeps_back_buffer(); }
   int copied_panes() const { return copied_panes_; }  // last frame's panes shown by a copy
@@ -169,6 +171,7 @@ private:
   void read_exposure(bool check);
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
+  bool frame_held() const;
   bool working() const;
 
   gl::WindowContext window_;
@@ -231,6 +234,7 @@ private:
   float dock_wanted_ = 0.0f;  // the dock's width its windows asked for on the last frame (window units)
   float caption_wanted_ = 0.0f;  // the caption's height with all its text on the last frame (window units)
   int docked_windows_ = 0;       // windows besides the caption docked on the last frame
+  bool panel_hint_ = false;      // the panel started hidden for the picture's room; the caption says "Tab: panel" until it is shown
 
   // Keys and typed characters in the order they came, handed to ImGui up to one key press a
   // frame (the key callback in viewer.cpp says why).
@@ -248,6 +252,7 @@ private:
   std::string status_shown_;                // the status line's text as it stands
   FrameClock::time_point status_refreshed_;  // when its figures were last brought up to date
   FrameClock::time_point last_pass_ = FrameClock::now();  // the frame loop's last pass
+  std::chrono::milliseconds paced_frames_{0};              // ViewerSettings::paced_frames
 };
 
 }  // namespace luz::app

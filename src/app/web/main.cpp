@@ -33,6 +33,7 @@
 #include "app/common/model_registry.h"
 #include "app/viewer/viewer.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/resources.h"
 #include "io/gltf_uris.h"
 
@@ -359,6 +360,9 @@ void start() {
   if (request.follows_window) settings.width = room_width(), settings.height = room_height();
   settings.started = viewer_started;
   settings.screenshot_saved = [](const std::filesystem::path& file) { offer_download(file.c_str()); };
+  // Five frames a second while a trace's threads work: each frame the browser draws on the CPU
+  // (SwiftShader) is time the tracer's threads lose, and its end is drawn at the next frame.
+  settings.paced_frames = std::chrono::milliseconds(200);
   try {
     app::start_viewer(settings);
   } catch (const std::exception& error) {
@@ -551,6 +555,9 @@ extern "C" EMSCRIPTEN_KEEPALIVE void luz_picture(int id) {
 
 int main() {
   using namespace luz;
+  // The parallel loops' threads, started while the page loads: started later, from the worker
+  // that runs a trace, they would wait for the main thread's next frame.
+  parallel::start_threads();
   try {
     web::choose_language();
     web::set_control_words(app::tr("Open a scene (.glb, or .gltf with its files):"), app::tr("Save the picture (P)"),

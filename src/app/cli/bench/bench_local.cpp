@@ -103,8 +103,6 @@ Timing time_bare(const Scene& scene, const Camera& camera, const glm::vec3& cent
   gl::Program bare({"bare.vert", "bare.frag"});
   const float aspect = float(target.width()) / float(target.height());
   const Bounds bounds = scene.bounds();
-  const float far = bounds.empty() ? 1000.0f : 2.0f * glm::length(bounds.extent()) +
-                                                   glm::length(camera.position() - bounds.centre());
   return time_frames(frames, [&](int frame) {
     const Camera c = orbited(camera, centre, frame);
     target.bind();
@@ -118,7 +116,7 @@ Timing time_bare(const Scene& scene, const Camera& camera, const glm::vec3& cent
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     bare.use();
-    bare.set("u_view_projection", c.projection(aspect, far) * c.view());
+    bare.set("u_view_projection", c.projection(aspect, bounds) * c.view());
     for (const gl::MeshBuffers& mesh : meshes) mesh.draw();
     glUseProgram(0);
   });

@@ -21,6 +21,7 @@ public:
   std::string status() const override;
   bool hybrid() const override { return true; }
   bool animating() const override { return TracedView::animating() || radiosity_.animating(); }
+  bool paced() const override { return TracedView::paced() && !radiosity_.animating(); }
   bool busy() const override { return TracedView::busy() || radiosity_.busy(); }
   bool shows_the_light() const override { return radiosity_.shows_the_light(); }
 

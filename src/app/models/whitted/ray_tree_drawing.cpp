@@ -32,19 +32,6 @@ glm::vec3 ray_colour(rt::RayKind kind, bool blocked_shadow) {
   return {1.0f, 0.0f, 0.0f};
 }
 
-float picture_far_plane(const Camera& camera, const Scene& scene) {
-  if (camera.zfar > 0.0f) return camera.zfar;
-  const Bounds bounds = scene.bounds();
-  if (bounds.empty()) return 1000.0f;
-  float farthest = 0.0f;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p(corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
-                      corner & 4 ? bounds.max.z : bounds.min.z);
-    farthest = std::max(farthest, glm::length(p - camera.position()));
-  }
-  return std::max(1.1f * farthest, 1e-3f);
-}
-
 RayTreeDrawing::RayTreeDrawing() {
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(1, &buffer_);
@@ -94,11 +81,11 @@ void RayTreeDrawing::set(const rt::RayTree& tree, const Scene& scene) {
 
 void RayTreeDrawing::clear() { vertex_count_ = 0; }
 
-void RayTreeDrawing::draw(const Camera& camera, int width, int height, float far, float scale,
+void RayTreeDrawing::draw(const Camera& camera, const Scene& scene, int width, int height, float scale,
                           float pixels_per_unit) {
   if (vertex_count_ == 0 || width <= 0 || height <= 0) return;
   program_.use();
-  program_.set("u_view_projection", camera.projection(float(width) / float(height), far) * camera.view());
+  program_.set("u_view_projection", camera.projection(float(width) / float(height), scene.bounds()) * camera.view());
   program_.set("u_viewport", glm::vec2(float(width), float(height)));
   program_.set("u_half_width", 1.5f * pixels_per_unit);
   program_.set("u_scale", scale);

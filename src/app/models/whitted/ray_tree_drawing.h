@@ -30,10 +30,10 @@ public:
   void clear();
   bool empty() const { return vertex_count_ == 0; }
 
-  // Into the bound framebuffer of width x height pixels, whose depth buffer holds the scene as
-  // the local models drew it from `camera` (`far` must be the far plane they used).
+  // Into the bound framebuffer of width x height pixels, whose depth buffer holds `scene` as
+  // the local models drew it from `camera` (with Camera::projection, as this draws).
   // `scale` = 2^exposure: the display pass multiplies by it, this divides it out.
-  void draw(const Camera& camera, int width, int height, float far, float scale, float pixels_per_unit);
+  void draw(const Camera& camera, const Scene& scene, int width, int height, float scale, float pixels_per_unit);
 
 private:
   gl::Program program_{{"ray_tree.vert", "ray_tree.frag"}};
@@ -41,9 +41,5 @@ private:
   int vertex_count_ = 0;
   float dash_ = 0.05f;  // metres, from the scene's size
 };
-
-// The far plane the local models use for `camera` (LocalRenderer's: its zfar, or 1.1 x the
-// distance to the farthest corner of the scene's bounds when the camera has none).
-float picture_far_plane(const Camera& camera, const Scene& scene);
 
 }  // namespace luz::app

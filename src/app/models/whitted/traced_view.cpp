@@ -37,6 +37,11 @@ void TracedView::scene_changed() {
 
 bool TracedView::cancel_trace() { return tracer_ && tracer_->cancel(); }
 
+// Its tiles can wait for the next paced frame; a request, or the trace's end, cannot.
+bool TracedView::paced() const {
+  return !requests.trace && !requests.cancel && !requests.clear_tree && tracer_ && tracer_->tracing_on_its_thread();
+}
+
 Fingerprint TracedView::fingerprint(const Camera& camera, glm::ivec2 size) const {
   return {camera.to_world, camera.yfov, size.x, size.y, current_options(), editable_values(*viewer_.state().scene)};
 }
@@ -94,7 +99,7 @@ void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
     picture.bind();
   }
   if (ray_tree_ && tree_drawing_)
-    tree_drawing_->draw(camera, size.x, size.y, picture_far_plane(camera, *state.scene), std::exp2(state.exposure),
+    tree_drawing_->draw(camera, *state.scene, size.x, size.y, std::exp2(state.exposure),
                         viewport.scale.y);
 
   TraceProgress& t = progress_;

@@ -43,6 +43,7 @@ public:
   std::string status() const override;
   bool busy() const override { return waiting_ && (requests.trace || progress_.phase == TracePhase::tracing); }
   bool animating() const override { return requests.trace || progress_.phase == TracePhase::tracing; }
+  bool paced() const override;
 
   // The script's `trace` (wait: until the last tile; held: no tile lands until it is
   // cancelled, so a test's cancel always finds it running) and `wait-trace`.

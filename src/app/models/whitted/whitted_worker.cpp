@@ -100,7 +100,7 @@ void WhittedWorker::update() {
   const bool finished = worker_.finished();
   {
     std::lock_guard lock(shared_->mutex);
-    for (const rt::Tile& t : shared_->pending)
+    for (const rt::Tile& t : rt::joined_tiles(shared_->pending, shared_->pixels.width))
       upload_pixels(*picture_, shared_->pixels, t.x0, t.y0, t.x1, t.y1, upload_);
     shared_->pending.clear();
     uploaded_done_ = shared_->done;

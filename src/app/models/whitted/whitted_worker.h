@@ -5,7 +5,8 @@
 //   start()   the trace runs on a worker thread (rt::WhittedRenderer::render, its tiles on TBB);
 //             each finished tile is copied, under a mutex, into a CPU image and queued;
 //   update()  on the GL thread, every frame: the queued tiles go up into a float texture
-//             (glTexSubImage2D, one call per tile), and a finished worker is joined;
+//             (glTexSubImage2D, one call per rectangle of adjacent tiles), and a finished worker
+//             is joined;
 //   cancel()  sets the cancel flag and returns: tiles not started are skipped, and the worker
 //             ends on its own (the browser's main thread never waits for it, background_render.h).
 //             A trace started meanwhile starts once it has ended: one trace at a time reads the
@@ -63,6 +64,8 @@ public:
   TracePhase phase() const { return phase_; }
   bool cancelled() const { return cancelled_; }  // the last trace was cancelled before its end
   bool showing() const { return phase_ != TracePhase::raster; }
+  // A trace runs on its thread and has not ended: a frame only uploads its tiles.
+  bool tracing_on_its_thread() const { return phase_ == TracePhase::tracing && launched_ && !worker_.finished(); }
   const Fingerprint& fingerprint() const { return started_; }
   const gl::Framebuffer& picture() const { return *picture_; }  // while showing()
   int tiles_done() const { return uploaded_done_; }
@@ -111,7 +114,7 @@ private:
   int uploaded_done_ = 0, total_ = 0;
   double seconds_ = 0.0;
   rt::Counters counters_;
-  std::vector<float> upload_;  // one tile's rows, for upload_pixels
+  std::vector<float> upload_;  // one rectangle's rows, for upload_pixels
   BackgroundWorker worker_;
 };
 
