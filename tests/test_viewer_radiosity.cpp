@@ -133,6 +133,18 @@ TEST_F(ViewerRadiosity, TSwitchesTheTextureOffAndStartsTheSolutionOver) {
   EXPECT_GT(at(untextured, -0.5f), at(textured, -0.5f) + 50.0) << "kd 1 where the texture was dark";
 }
 
+// `wait-shots` past the stopping rule, one shot a frame: the shot that meets the rule is its
+// frame's last, and the wait ends on it (the script went on to dump it), the solver done and
+// paused where the untextured solution stood at 10 shots.
+TEST_F(ViewerRadiosity, WaitShotsPastTheRuleEndsOnAFramesLastShot) {
+  const nlohmann::json met = json_of(file("rule-met.json"));
+  EXPECT_TRUE(met["done"].get<bool>());
+  EXPECT_FALSE(met["running"].get<bool>());
+  EXPECT_LT(met["unshot_fraction"].get<double>(), 0.005);
+  EXPECT_GT(met["shots"].get<int>(), 10);
+  EXPECT_LT(met["shots"].get<int>(), 100000);
+}
+
 // Before its first shot radiosity shows the emitters alone, white against black: a scene opened in
 // radiosity has its exposure checked once a shot has brought light, so the Cornell box's lamp
 // alone does not make it look over-exposed. bright.gltf (a Blender-style lamp in candela) does

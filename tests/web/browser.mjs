@@ -1,6 +1,8 @@
 // The browser every web test drives: Debian's chromium, headless, drawing WebGL 2 through
 // SwiftShader (the software path many students' machines and CI have), the page's console and
-// errors echoed. `onError` is called for an uncaught error in the page. With
+// errors echoed. `onError` is called for an uncaught error in the page, and for Emscripten's
+// warning that the browser's main thread joined a thread or waited on a condition variable: the
+// page's main thread never waits for another thread (docs/web.md, "Threads"). With
 // LUZ_PAGE_NO_SERVICE_WORKERS=1 in the environment the browser has no service workers (as some
 // private windows): a page served without the isolation headers then runs the one-thread Luz.
 import { createRequire } from 'node:module';
@@ -18,7 +20,13 @@ export async function openPage(onError) {
   const page = await browser.newPage();
   if (process.env.LUZ_PAGE_NO_SERVICE_WORKERS === '1')
     await page.evaluateOnNewDocument(() => Object.defineProperty(navigator, 'serviceWorker', { value: undefined }));
-  page.on('console', (message) => console.log(`page: ${message.text()}`));
+  page.on('console', (message) => {
+    console.log(`page: ${message.text()}`);
+    if (message.text().startsWith('Blocking on the main thread')) {
+      console.log('page error: its main thread waited for another thread');
+      onError();
+    }
+  });
   page.on('pageerror', (error) => { console.log(`page error: ${error.message}`); onError(); });
   return { browser, page };
 }

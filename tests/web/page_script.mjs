@@ -19,7 +19,8 @@
 //                           whole trace in one frame fails)
 //   file PAGE_PATH FILE     copies a file the page wrote into its own files (a `dump-...` line's
 //                           JSON, a `screenshot` verb's PNG) to FILE
-// A run step that takes more than a minute fails (a page whose program ended never settles).
+// A run step that takes more than a minute fails (a page whose program ended never settles), and
+// says whether the page still answers at all; the steps after it are not taken.
 // Usage: node tests/web/page_script.mjs URL STEP ARGS [STEP ARGS ...]
 //        (NODE_PATH=build-web/npm/node_modules)
 import { writeFileSync } from 'node:fs';
@@ -57,6 +58,16 @@ try {
     } else if (step === 'run') {
       const line = steps[++i];
       const result = await within(page.evaluate((l) => window.luz.run(l).then(() => 'done', (e) => 'rejected: ' + e.message), line), 60000, line);
+      if (result.startsWith('no answer')) {
+        // Two different failures: a page whose main thread is stuck answers nothing, while one
+        // whose line never settles (a wait never met, a program that ended) answers at once.
+        // The steps after it would wait behind it (lines run in order): they are not taken.
+        const alive = await within(page.evaluate(() => 'answers'), 10000, 'a plain evaluate');
+        check(false, `run("${line}"): ${result}; the page ${alive === 'answers'
+          ? 'still answers: the line never settled (a wait never met, or the program ended)'
+          : 'answers nothing: its main thread is stuck'}`);
+        break;
+      }
       check(result === 'done', `run("${line}"): ${result}`);
     } else if (step === 'reject') {
       const line = steps[++i], text = steps[++i];

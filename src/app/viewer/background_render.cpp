@@ -66,11 +66,10 @@ void BackgroundWorker::start(Job job) {
     }
     run->finished.store(true, std::memory_order_release);
   });
-}
-
-bool BackgroundWorker::running() const {
-  if constexpr (!threaded()) return static_cast<bool>(steps_);
-  return thread_.joinable();
+#if defined(__EMSCRIPTEN__)
+  thread_.detach();  // still running (or not yet started): no join, now or later
+  held_ = true;
+#endif
 }
 
 void BackgroundWorker::run_steps() {
@@ -90,9 +89,13 @@ void BackgroundWorker::stop() {
     steps_ = nullptr;
     return;
   }
-  if (!thread_.joinable()) return;
+  if (!joinable()) return;
   run_->cancel = true;
+#if defined(__EMSCRIPTEN__)
+  held_ = false;  // the main thread never waits: the job ends on its own, as a released one
+#else
   thread_.join();
+#endif
 }
 
 void BackgroundWorker::cancel() {
@@ -106,14 +109,14 @@ void BackgroundWorker::cancel() {
 
 bool BackgroundWorker::settle() {
   if constexpr (!threaded()) run_steps();
-  if (running() && finished()) join();
-  return !running();
+  if (joinable() && finished()) join();
+  return !joinable();
 }
 
 void BackgroundWorker::release() {
 #if defined(__EMSCRIPTEN__)
   cancel();
-  if (thread_.joinable()) thread_.detach();
+  held_ = false;
 #else
   stop();
 #endif
@@ -124,11 +127,11 @@ void BackgroundWorker::join() {
     steps_ = nullptr;  // ended: its captures go
     return;
   }
-  if (!thread_.joinable()) return;
+  if (!joinable()) return;
 #if defined(__EMSCRIPTEN__)
-  // The job has returned (finished(): its results are seen); its thread's exit is the browser's
-  // business, which the main thread does not wait for.
-  thread_.detach();
+  // The job has returned (finished(): its results are seen); its detached thread ends and frees
+  // itself, which the main thread does not wait for.
+  held_ = false;
 #else
   thread_.join();
 #endif

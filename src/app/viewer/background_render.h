@@ -56,9 +56,13 @@ void upload_pixels(const gl::Framebuffer& target, const Image& image, int x0, in
 // (the parallel loops, Embree's) asks the main thread for them, so a main thread waiting for it
 // would wait forever. So in the page a job is cancelled without waiting (cancel(), then settle()
 // once a frame until it has ended) and let go of (release(): it ends on its own, its captures
-// keeping what it reads alive). The window may wait for the tile in hand: there cancel() and
-// release() join, and what follows starts in the same frame. Without threads a cancelled job
-// simply takes no more steps. stop() and the destructor join.
+// keeping what it reads alive). Its thread is detached as it starts: the job's end is its
+// `finished` flag, and the thread frees itself. Detached later, a thread already ending would be
+// joined (musl's pthread_detach does so), a short wait on the main thread all the same. The
+// window may wait for the tile in hand: there cancel() and release() join, and what follows
+// starts in the same frame. stop() and the destructor join in the window; in the page they
+// cancel and let go, as release() does. Without threads a job has no thread: settle() takes its
+// steps, and a cancelled one takes no more.
 class BackgroundWorker {
 public:
   using Job = std::function<bool(const std::atomic<bool>& cancel)>;  // one step; true: more to come
@@ -76,8 +80,9 @@ public:
   bool settle();
   void release();       // cancels; the page lets the job end on its own, the desktop joins it
   bool finished() const { return run_ && run_->finished.load(std::memory_order_acquire); }
-  bool idle() const { return !running() || finished(); }  // settle() would leave no job
+  bool idle() const { return !joinable() || finished(); }  // settle() would leave no job
   void join();          // once finished(): the job's results are all seen, its thread let go of
+  bool joinable() const;  // a job started and not yet joined or let go of
   double seconds() const;  // since the last start
 
   // Whether jobs run on a thread of their own (false in the page built without threads).
@@ -95,12 +100,23 @@ private:
     std::atomic<bool> cancel{false};
     std::atomic<bool> finished{false};
   };
-  bool running() const;  // a job started and not yet joined
   void run_steps();      // without threads: this frame's steps
   std::shared_ptr<Run> run_;
   std::chrono::steady_clock::time_point began_;
   std::thread thread_;
   Job steps_;  // without threads: the job whose steps are left
+#if defined(__EMSCRIPTEN__)
+  bool held_ = false;  // joinable(): the page's thread is detached as it starts
+#endif
 };
+
+inline bool BackgroundWorker::joinable() const {
+#if defined(__EMSCRIPTEN__)
+  if constexpr (!threaded()) return static_cast<bool>(steps_);
+  return held_;
+#else
+  return thread_.joinable();
+#endif
+}
 
 }  // namespace luz::app

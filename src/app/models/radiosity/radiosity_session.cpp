@@ -83,9 +83,16 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
     state.stop_at = 0;
     drive.running = false;
   }
-  // This frame's last shot may have met the stopping rule: the solver stops now, not a frame
-  // later, so that "done" and "not running" are seen together.
-  if (drive.running && solver_.done()) drive.running = false;
+  // This frame's last shot may have met the stopping rule: everything asked of the solver ends
+  // now, as the next step() would end it, not a frame later. So "done" and "not running" are
+  // seen together, and a `wait-shots N` past the rule is answered: the loop above runs only
+  // while shots are asked for (steps, running), so no later frame would clear its stop_at, and
+  // the script would wait for it forever.
+  if (solver_.done()) {
+    drive.running = false;
+    state.steps = 0;
+    state.stop_at = 0;
+  }
 
   const auto now = clock::now();
   const double seconds = std::chrono::duration<double>(now - last_advance_).count();
