@@ -79,13 +79,13 @@ bool inside(const nlohmann::json& rect, const nlohmann::json& room) {
 
 // Whitted's hint at step 12 lies in the dock's column beside the caption, at scales 2, 1.5 and 1:
 // while the step's trace runs (when the first dump still sees it) and, after the camera moves,
-// the untraced view's longer hint. Its text wraps to the column and is drawn smaller when the room
+// the untraced view's longer hint, in English and in Spanish. Its text wraps to the column and is drawn smaller when the room
 // below the column's top is short: never taller or wider than its box, the box inside the dock.
 TEST_F(ViewerPresenterStart, TheTraceHintsTextIsWholeAtEveryScale) {
   const nlohmann::json moved = json_of(file("shown-12-moved-state.json"));
   ASSERT_EQ(moved["panes"][0]["trace"], "raster") << moved.dump(2);
-  for (const char* name : {"shown-12.json", "shown-12-moved.json", "shown-12-1.5.json", "shown-12-moved-1.5.json",
-                           "shown-12-1.json", "shown-12-moved-1.json"}) {
+  for (const char* name : {"shown-12.json", "shown-12-moved.json", "shown-12-moved-es.json", "shown-12-1.5.json",
+                           "shown-12-moved-1.5.json", "shown-12-1.json", "shown-12-moved-1.json"}) {
     SCOPED_TRACE(name);
     const nlohmann::json dump = json_of(file(name));
     const nlohmann::json* hint = window_named(dump, "trace hint");
