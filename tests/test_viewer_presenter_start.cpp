@@ -72,5 +72,33 @@ TEST_F(ViewerPresenterStart, WithThePanelShownTheCaptionsTextIsWhole) {
   }
 }
 
+bool inside(const nlohmann::json& rect, const nlohmann::json& room) {
+  return rect[0].get<double>() >= room[0].get<double>() && rect[1].get<double>() >= room[1].get<double>() &&
+         rect[2].get<double>() <= room[2].get<double>() && rect[3].get<double>() <= room[3].get<double>();
+}
+
+// Whitted's hint at step 12 lies in the dock's column beside the caption, at scales 2, 1.5 and 1:
+// while the step's trace runs (when the first dump still sees it) and, after the camera moves,
+// the untraced view's longer hint, in English and in Spanish. Its text wraps to the column and is drawn smaller when the room
+// below the column's top is short: never taller or wider than its box, the box inside the dock.
+TEST_F(ViewerPresenterStart, TheTraceHintsTextIsWholeAtEveryScale) {
+  const nlohmann::json moved = json_of(file("shown-12-moved-state.json"));
+  ASSERT_EQ(moved["panes"][0]["trace"], "raster") << moved.dump(2);
+  for (const char* name : {"shown-12.json", "shown-12-moved.json", "shown-12-moved-es.json", "shown-12-1.5.json",
+                           "shown-12-moved-1.5.json", "shown-12-1.json", "shown-12-moved-1.json"}) {
+    SCOPED_TRACE(name);
+    const nlohmann::json dump = json_of(file(name));
+    const nlohmann::json* hint = window_named(dump, "trace hint");
+    const bool untraced = std::string(name).find("moved") != std::string::npos;
+    if (untraced) {
+      ASSERT_NE(hint, nullptr) << dump.dump(2);
+    }
+    if (hint == nullptr) continue;  // the trace was done before the dump
+    EXPECT_LE((*hint)["content_height"].get<double>(), (*hint)["visible_height"].get<double>() + 1.0) << hint->dump(2);
+    EXPECT_LE((*hint)["content_width"].get<double>(), (*hint)["visible_width"].get<double>() + 1.0) << hint->dump(2);
+    EXPECT_TRUE(inside((*hint)["rect"], dump["dock"])) << dump.dump(2);
+  }
+}
+
 }  // namespace
 }  // namespace luz

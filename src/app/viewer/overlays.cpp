@@ -1,7 +1,9 @@
 #include "app/viewer/overlays.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -91,26 +93,78 @@ glm::vec4 WindowCorners::take_left_half() {
   return {o.x + margin_, top, 0.5f * s.x - 1.5f * margin_, o.y + s.y - margin_ - top};
 }
 
-void begin_hint(const char* name, const Viewport& picture, const WindowCorners& corners, float margin) {
+namespace {
+
+constexpr float hint_bar_ems = 5.0f;  // a hint's progress bar, in font heights
+
+float hint_bar_width(float wrap) { return std::min(hint_bar_ems * ImGui::GetFontSize(), wrap); }
+
+// Whether the bar's label fits on the bar's line, `wrap` wide, at the window's font.
+bool label_beside_bar(const HintText& text, float wrap) {
+  if (!text.progress || text.lines.empty()) return false;
+  const float label = ImGui::CalcTextSize(text.lines.front().c_str()).x;
+  return hint_bar_width(wrap) + ImGui::GetStyle().ItemSpacing.x + label <= wrap;
+}
+
+// The hint's content height at the window's font, its lines wrapped `wrap` wide, as
+// draw_hint_content lays it out: each row moves the cursor down its height and the item spacing,
+// to a whole unit (a label beside the bar is within the bar's frame height).
+float hint_height(const HintText& text, float wrap) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.y;
+  float y = 0.0f;
+  const auto row = [&](float height) { y = std::floor(y + height + spacing); };
+  if (text.progress) row(ImGui::GetFrameHeight());
+  for (size_t i = label_beside_bar(text, wrap) ? 1 : 0; i < text.lines.size(); ++i)
+    row(ImGui::CalcTextSize(text.lines[i].c_str(), nullptr, false, wrap).y);
+  return y - spacing;
+}
+
+// The largest font scale, from 1 down to `least`, at which the hint's content fits `room` high;
+// the window's font is left at it.
+float fit_hint_font(const HintText& text, float wrap, float room, float least) {
+  float scale = 1.0f;
+  ImGui::SetWindowFontScale(scale);
+  while (scale > least && hint_height(text, wrap) > room) {
+    scale = std::max(0.95f * scale, least);
+    ImGui::SetWindowFontScale(scale);
+  }
+  return scale;
+}
+
+void draw_hint_content(const HintText& text, float wrap) {
+  const bool beside = label_beside_bar(text, wrap);
+  if (text.progress) ImGui::ProgressBar(*text.progress, ImVec2(hint_bar_width(wrap), 0.0f), "");
+  if (beside) ImGui::SameLine();
+  for (const std::string& line : text.lines) ImGui::TextUnformatted(line.c_str());
+}
+
+}  // namespace
+
+void draw_hint(const char* name, const Viewport& picture, WindowCorners& corners, float ui_scale, const HintText& text) {
+  const float margin = 8.0f * ui_scale;
+  const ImGuiStyle& style = ImGui::GetStyle();
   const Viewport& viewport = corners.docked() ? corners.dock() : picture;
+  float room = std::numeric_limits<float>::max();
   if (corners.docked()) {
     const float top = corners.docked_top() + margin;
+    const float height = std::max(viewport.origin.y + viewport.size.y - margin - top, 1.0f);
     ImGui::SetNextWindowPos(ImVec2(viewport.origin.x + margin, top), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(
-        ImVec2(0.0f, 0.0f),
-        ImVec2(std::max(viewport.size.x - 2.0f * margin, 1.0f), std::max(viewport.origin.y + viewport.size.y - margin - top, 1.0f)));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(std::max(viewport.size.x - 2.0f * margin, 1.0f), height));
+    room = height - 2.0f * style.WindowPadding.y;
   } else
     ImGui::SetNextWindowPos(ImVec2(viewport.centre().x, corners.top() + margin), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin(name, nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  const float text_width = viewport.size.x - 2.0f * (margin + ImGui::GetStyle().WindowPadding.x);
-  ImGui::PushTextWrapPos(std::max(text_width, 4.0f * ImGui::GetFontSize()));
-}
-
-void end_hint(WindowCorners& corners) {
+  // The text's width: the window's content at its widest (the wrap position is measured from the
+  // window's left edge, the text starts after its padding).
+  const float wrap = std::max(viewport.size.x - 2.0f * (margin + style.WindowPadding.x), 4.0f * ImGui::GetFontSize());
+  fit_hint_font(text, wrap, room, std::min(0.7f / ui_scale, 1.0f));
+  ImGui::PushTextWrapPos(style.WindowPadding.x + wrap);
+  draw_hint_content(text, wrap);
   ImGui::PopTextWrapPos();
+  ImGui::SetWindowFontScale(1.0f);
   corners.reserve_top(ImGui::GetWindowPos().y + ImGui::GetWindowSize().y);
   ImGui::End();
 }

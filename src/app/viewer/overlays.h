@@ -2,6 +2,7 @@
 // The small windows of the viewer besides the panel and the inspector: the status line, the
 // list of keys (F1), Whitted's hint and progress, and the error of a scene that did not load.
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,12 +56,19 @@ private:
   bool taken_[4] = {false, false, false, false};
 };
 
+// A hint's content: a progress bar when `progress` is given (its fraction done), then the lines,
+// each wrapped to the hint's width; the bar's label (the first line) beside it when it fits.
+struct HintText {
+  std::optional<float> progress;
+  std::vector<std::string> lines;
+};
+
 // A hint over the picture: a window without decoration or input at the top centre of
 // `viewport`, from `corners.top()` down, sized to its text, which wraps to the viewport's width
-// (a pane of the side-by-side view is narrow); in the dock when `corners` is docked. end_hint
-// reserves the top for it and ends it.
-void begin_hint(const char* name, const Viewport& viewport, const WindowCorners& corners, float margin);
-void end_hint(WindowCorners& corners);
+// (a pane of the side-by-side view is narrow); in the dock when `corners` is docked, as wide as
+// the dock, its text drawn smaller when the room below the windows already there is short, so
+// that it is read whole (down to 0.7 of the unscaled font). The top is reserved for it.
+void draw_hint(const char* name, const Viewport& viewport, WindowCorners& corners, float ui_scale, const HintText& text);
 
 // The panel and the status line frame the picture: fixed windows without ImGui's own border,
 // whose anti-aliased edge reaches a pixel past the window, onto the picture (and into the

@@ -203,15 +203,11 @@ std::string PathView::status() const {
 }
 
 void PathView::windows(const Viewport& viewport, WindowCorners& corners) {
-  begin_hint("path hint", viewport, corners, 8.0f * viewer_.ui_scale());
   const int target = std::max(1, options.spp);
-  ImGui::ProgressBar(float(shown_.spp) / float(target), ImVec2(5.0f * ImGui::GetFontSize(), 0.0f), "");
-  ImGui::SameLine();
-  const std::string text = shown_.spp == 0 ? std::string(tr("(first pass)"))
-                           : running_      ? trf("{} / {} spp, noise {:.2f}%", shown_.spp, target, 100.0 * shown_.noise)
-                                           : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
-  ImGui::TextUnformatted(text.c_str());
-  end_hint(corners);
+  std::string line = shown_.spp == 0 ? std::string(tr("(first pass)"))
+                     : running_      ? trf("{} / {} spp, noise {:.2f}%", shown_.spp, target, 100.0 * shown_.noise)
+                                     : trf("{} spp, noise {:.2f}%: done", shown_.spp, 100.0 * shown_.noise);
+  draw_hint("path hint", viewport, corners, viewer_.ui_scale(), {float(shown_.spp) / float(target), {std::move(line)}});
 }
 
 // ---- [panel] -------------------------------------------------------------------------------------

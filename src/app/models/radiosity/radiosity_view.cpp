@@ -103,10 +103,10 @@ void RadiosityView::windows(const Viewport& viewport, WindowCorners& corners) {
   ViewerState& state = viewer_.state();
   RadiosityState& r = state_;
   if (r.status.built && r.status.shots == 0 && !r.drive.running && r.steps == 0) {
-    begin_hint("radiosity hint", viewport, corners, 8.0f * viewer_.ui_scale());
-    ImGui::TextUnformatted(tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."));
-    ImGui::TextUnformatted(tr("Press Space to run the shooting, '.' for one shot."));
-    end_hint(corners);
+    draw_hint("radiosity hint", viewport, corners, viewer_.ui_scale(),
+              {std::nullopt,
+               {tr("radiosity at shot 0: only the emitters have light (slide 39 step 1)."),
+                tr("Press Space to run the shooting, '.' for one shot.")}});
   }
   const Inspection& in = viewer_.inspection();
   if (in.pick && r.patch && state.show_inspector) {

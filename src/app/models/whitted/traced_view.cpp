@@ -158,17 +158,14 @@ std::string TracedView::status() const {
 void TracedView::windows(const Viewport& viewport, WindowCorners& corners) {
   const TraceProgress& t = progress_;
   if (t.phase == TracePhase::done) return;
-  begin_hint("trace hint", viewport, corners, 8.0f * viewer_.ui_scale());
+  HintText text;
   if (t.phase == TracePhase::tracing) {
-    const std::string label = trf("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)",
-                                          t.done, t.total, t.seconds);
-    ImGui::ProgressBar(t.total > 0 ? float(t.done) / float(t.total) : 0.0f, ImVec2(0.0f, 0.0f), "");
-    ImGui::SameLine();
-    ImGui::TextUnformatted(label.c_str());
+    text.progress = t.total > 0 ? float(t.done) / float(t.total) : 0.0f;
+    text.lines.push_back(trf("tracing {}/{} tiles, {:.1f} s  (Backspace or moving cancels)", t.done, t.total, t.seconds));
   } else {
-    ImGui::TextUnformatted(hint().c_str());
+    text.lines.push_back(hint());
   }
-  end_hint(corners);
+  draw_hint("trace hint", viewport, corners, viewer_.ui_scale(), text);
 }
 
 }  // namespace luz::app
