@@ -18,6 +18,10 @@ struct RadiosityDrive {
   bool running = false;
   bool by_time = true;        // a time budget per frame (else a number of shots per frame)
   float budget_ms = 15.0f;    // shooting time per frame while running
+  // The budget was chosen (`radiosity budget MS`, the panel's slider): each frame shoots it and
+  // no more, so a lesson or a test sees as many shots a frame as it asked for. Left at its
+  // default, a viewer that paces its frames (the page's) shoots between them too.
+  bool budget_chosen = false;
   int shots_per_frame = 10;
   bool heat_map = false;      // show the unshot power per patch instead of B/pi
   bool show_shooter = true;   // the last shooter in magenta

@@ -144,9 +144,13 @@ public:
   virtual bool busy() const { return false; }
   // Something is running (a trace, the solver): the viewer keeps drawing frames for it.
   virtual bool animating() const { return false; }
-  // Animating only by work on threads of its own that has nothing to show at once but its
-  // progress (a trace's tiles): its frames may be paced (ViewerSettings::paced_frames).
+  // Animating only by work that has nothing to show at once but its progress, on threads of its
+  // own (a trace's tiles) or between frames (radiosity's shots): its frames may be paced
+  // (ViewerSettings::paced_frames).
   virtual bool paced() const { return false; }
+  // A pass whose frame is held for pacing: a paced view's work on the GL thread (radiosity's
+  // shots) goes on here, nothing drawn.
+  virtual void between_frames() {}
   // Whether the picture holds the scene's light: radiosity's does not before its first shot, when
   // only the emitters show. A scene's exposure is checked against the first picture that does.
   virtual bool shows_the_light() const { return true; }

@@ -1072,6 +1072,13 @@ bool Viewer::frame_held() const {
   return paced;
 }
 
+// A held pass: the paced views' work on the GL thread.
+void Viewer::work_between_frames() {
+  for (const ModelEntry* m : panes_)
+    if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating())
+      found->second->between_frames();
+}
+
 // Work that changes what the window shows from frame to frame: a model running (a trace, the
 // solver), its reference refining, slide 36's methods stepping.
 bool Viewer::working() const {
@@ -1094,7 +1101,10 @@ std::optional<int> Viewer::pass() {
   } else if (!window_.wait(wake)) {
     return std::nullopt;
   }
-  if (frame_held()) return std::nullopt;
+  if (frame_held()) {
+    work_between_frames();
+    return std::nullopt;
+  }
   if (idle_until_ && std::chrono::steady_clock::now() >= *idle_until_) {
     idle_cpu_fraction_ = (cpu_seconds() - idle_cpu_start_) / idle_wall_;
     idle_until_.reset();

@@ -36,9 +36,11 @@ struct ViewerSettings {
   // Told of each screenshot a key or `screenshot` without a file saved (P, Shift+P), once written:
   // the page hands it to the browser as a download.
   std::function<void(const std::filesystem::path&)> screenshot_saved;
-  // While the only change from frame to frame is a view's work on threads of its own (paced()),
-  // a frame at most this often; zero: every frame. The page's: its WebGL draws on the CPU
-  // (SwiftShader, often), taking from the tracer's threads what a frame costs.
+  // While the only change from frame to frame is a view's work on threads of its own or between
+  // frames (paced(): a trace's tiles, the radiosity loop at its default budget), a frame at most
+  // this often, the passes in between given to that work; zero: every frame. The page's: its
+  // WebGL draws on the CPU (SwiftShader, often), taking from the tracer's threads and from the
+  // solver's shots on the main thread what a frame costs.
   std::chrono::milliseconds paced_frames{0};
 };
 

@@ -172,6 +172,7 @@ private:
   std::vector<const gl::Framebuffer*> pane_pictures() const;
   bool needs_frames() const;
   bool frame_held() const;
+  void work_between_frames();
   bool working() const;
 
   gl::WindowContext window_;

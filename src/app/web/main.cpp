@@ -380,8 +380,10 @@ void start() {
   if (request.follows_window) settings.width = room_width(), settings.height = room_height();
   settings.started = viewer_started;
   settings.screenshot_saved = [](const std::filesystem::path& file) { offer_download(file.c_str()); };
-  // Five frames a second while a trace's threads work: each frame the browser draws on the CPU
-  // (SwiftShader) is time the tracer's threads lose, and its end is drawn at the next frame.
+  // Five frames a second while a trace's threads or the radiosity loop work: each frame the
+  // browser draws on the CPU (SwiftShader) is time the tracer's threads lose, and the solver
+  // shoots on this thread in the passes between (the light still seen spreading); the end is
+  // drawn at the next frame, an event or a `luz.run` line at once.
   settings.paced_frames = std::chrono::milliseconds(200);
   try {
     app::start_viewer(settings);

@@ -112,7 +112,9 @@ void drive_settings(RadiosityState& r, RadiosityOptions& o) {
   name_widget("shots");
   d.by_time = by_time == 1;
   if (d.by_time) {
-    ImGui::SliderFloat(tr("ms of shooting / frame"), &d.budget_ms, 1.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::SliderFloat(tr("ms of shooting / frame"), &d.budget_ms, 1.0f, 200.0f, "%.0f ms",
+                           ImGuiSliderFlags_Logarithmic))
+      d.budget_chosen = true;
     name_widget("ms of shooting / frame");
   } else {
     ImGui::SliderInt(tr("shots / frame"), &d.shots_per_frame, 1, 500, "%d", ImGuiSliderFlags_Logarithmic);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -97,6 +98,7 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
   const auto now = clock::now();
   const double seconds = std::chrono::duration<double>(now - last_advance_).count();
   last_advance_ = now;
+  shot += std::exchange(shots_between_frames_, 0);
   if (shot > 0 && seconds > 0.0) {  // per second of the viewer's time, frames included
     const double rate = shot / seconds;
     shots_per_second_ = shots_per_second_ > 0.0 ? 0.8 * shots_per_second_ + 0.2 * rate : rate;
@@ -105,11 +107,7 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
   }
   if (shot > 0) colours_stale_ = true;
 
-  // The hemicube drew through its own state; put back what the viewer's drawing expects.
-  glDisable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
+  restore_gl_state();
 
   // Step 3: what every patch shows, uploaded again after the shots (or a change of display).
   const bool display_changed = heat_map != heat_map_shown_ ||
@@ -149,6 +147,31 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
     item_view_due_ = drawn + 4 * (drawn - began);
   }
   refresh_status(state, options);
+}
+
+bool RadiositySession::shoots_between_frames(const RadiosityState& state) const {
+  return state.drive.running && !solver_.done() && (state.stop_at == 0 || solver_.shots() < state.stop_at);
+}
+
+void RadiositySession::shoot_between_frames(const RadiosityState& state) {
+  using clock = std::chrono::steady_clock;
+  const auto until = clock::now() + std::chrono::duration<double, std::milli>(std::max(state.drive.budget_ms, 0.0f));
+  int shot = 0;
+  while (shoots_between_frames(state) && solver_.step()) {
+    ++shot;
+    if (clock::now() >= until) break;
+  }
+  shots_between_frames_ += shot;
+  if (shot > 0) colours_stale_ = true;
+  restore_gl_state();
+}
+
+// The hemicube drew through its own state; put back what the viewer's drawing expects.
+void RadiositySession::restore_gl_state() {
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 }
 
 std::string RadiositySession::shooter_name(int shooter, int shots) const {

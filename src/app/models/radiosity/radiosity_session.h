@@ -42,6 +42,13 @@ public:
   // `heat_map`: the vertex colours show the unshot power instead of B/pi.
   void advance(RadiosityState& state, const RadiosityOptions& options, float exposure, bool heat_map);
 
+  // Shots in a pass that draws no frame, where the viewer paces its frames (the page's, see
+  // ViewerSettings::paced_frames): while the loop runs, within the drive's budget, and never the
+  // shot past what ends the run (the stopping rule, a `wait-shots` count), which the next frame's
+  // advance() ends and shows. The requests, the status and the colours wait for that frame.
+  bool shoots_between_frames(const RadiosityState& state) const;
+  void shoot_between_frames(const RadiosityState& state);
+
   // The picture into the bound framebuffer, width x height pixels; the last shooter in magenta
   // when `show_shooter`.
   void draw(const Camera& camera, int width, int height, bool show_shooter);
@@ -54,6 +61,8 @@ public:
 
 private:
   void refresh_status(RadiosityState& state, const RadiosityOptions& options) const;
+  // After the hemicube's drawing: the GL state the viewer's drawing expects.
+  static void restore_gl_state();
   // "patch 12 (floor)" for shooter 12, "light 0 (key)" for -1 - 0 once shot, "" before any shot.
   std::string shooter_name(int shooter, int shots) const;
 
@@ -73,6 +82,7 @@ private:
   std::chrono::steady_clock::time_point item_view_due_;  // the overlay's next redraw while running
 
   std::chrono::steady_clock::time_point last_advance_ = std::chrono::steady_clock::now();
+  int shots_between_frames_ = 0;  // since the last advance(), counted in its rate
   double shots_per_second_ = 0.0;
 };
 

@@ -144,6 +144,18 @@ bool RadiosityView::animating() const {
   return r.drive.running || busy() || r.reset;
 }
 
+// Its frames may be paced while the loop runs at the default budget (a chosen budget or a
+// number of shots a frame is what each frame shoots), with no single shots or rebuild asked for.
+bool RadiosityView::paced() const {
+  const RadiosityState& r = state_;
+  return solution_ && r.drive.by_time && !r.drive.budget_chosen && r.steps == 0 && !r.reset && !r.remesh &&
+         solution_->shoots_between_frames(r);
+}
+
+void RadiosityView::between_frames() {
+  if (paced()) solution_->shoot_between_frames(state_);
+}
+
 // Left with no pane showing the solution, the loop pauses and its requests go: it shoots only
 // when drawn, so it would say "running" while nothing shoots, and run on when shown again.
 void RadiosityView::hidden() {
@@ -243,6 +255,7 @@ bool run_radiosity(ViewerServices& viewer, const ScriptCommand& c, std::string&)
   } else if (a[0] == "budget") {
     r.drive.by_time = true;
     r.drive.budget_ms = std::stof(a[1]);
+    r.drive.budget_chosen = true;
   } else if (a[0] == "patches") {  // L: flat patches with their outlines, or Gouraud
     RadiosityOptions& o = options;
     o.flat_patches = o.outlines = a[1] == "toggle" ? !(o.flat_patches && o.outlines) : a[1] == "outlined";

@@ -31,6 +31,8 @@ public:
   std::string status() const override;
   bool busy() const override;
   bool animating() const override;
+  bool paced() const override;
+  void between_frames() override;  // the running loop's shots
   bool shows_the_light() const override { return solution_ && solution_->solver().shots() > 0; }
   bool holds(std::string_view condition) const override;  // radiosity-done
   void dump_state(nlohmann::json& out) const override;    // radiosity_drive: running, heat_map
