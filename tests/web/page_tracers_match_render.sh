@@ -23,6 +23,9 @@
 #   last, and `wait-shots` past the rule must end there all the same (a page that missed the
 #   rule there never answered the line). The same 1% limit; measured 0.26% (92 shots, as luz
 #   render's).
+# - Radiosity at the viewer's default budget, its frames paced (five a second, shots between):
+#   `wait-shots 300` pauses at 300 shots exactly, the picture within the same 1% of `luz render
+#   --shots 300`.
 # - The path tracer (cornell_box.gltf, 4 samples a pixel, seed 0): a pixel's samples depend only
 #   on the pixel, the seed and the sample's number, so the page's picture is `luz render`'s with
 #   the same seed up to where a path's last bits (another Embree ISA, another libm) send it
@@ -81,6 +84,24 @@ node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size
 "$luz" render "$scenes/cornell_box.gltf" --model radiosity $rule_flags --pixel-samples 1 --size $size \
   --out "${s}_render.png" -q
 within "${s}_page.png" "${s}_render.png" 1 "radiosity solved one shot a frame against luz render --model radiosity"
+
+# Radiosity at the viewer's default budget, where the page draws five frames a second while the
+# solver runs and shoots in the passes between them: the browser's frames keep coming while it
+# solves, `wait-shots 300` pauses at exactly 300 shots whichever pass makes the 300th, and the
+# picture is luz render's after 300 shots.
+s=$scratch/radiosity_paced
+rm -f "$s"_*.png "$s".json
+node "$here/page_script.mjs" "$base?scene=cornell_box&model=radiosity&size=$size&panel=0" \
+  live "wait-shots 300" 2 1000 run "wait-shots 300" run "dump-radiosity /tmp/paced.json" \
+  file /tmp/paced.json "$s.json" picture "${s}_page.png" || status=1
+"$luz" render "$scenes/cornell_box.gltf" --model radiosity --shots 300 --pixel-samples 1 --size $size \
+  --out "${s}_render.png" -q
+shots=$(node -e 'console.log(JSON.parse(require("fs").readFileSync(process.argv[1], "utf8")).shots)' "$s.json" 2>/dev/null || true)
+verdict=FAILED
+[ "$shots" = 300 ] && verdict=ok
+echo "radiosity paced in the page: wait-shots 300 paused at ${shots:-?} shots: $verdict"
+[ "$verdict" = ok ] || status=1
+within "${s}_page.png" "${s}_render.png" 1 "radiosity paced in the page, 300 shots, against luz render --shots 300"
 
 # The hybrid: its radiosity solved, then traced.
 s=$scratch/hybrid
