@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -21,6 +22,18 @@ namespace luz::rt {
 
 // Some channel above zero. (A bitwise or: no branches in the lanes' loops.)
 inline bool positive(const Rgb& c) { return (c.x > 0.0f) | (c.y > 0.0f) | (c.z > 0.0f); }
+
+// Whether a light's term I_D + I_S is worth its shadow ray: some channel at least the smallest
+// normal float. A smaller term cannot show in any picture, and whether it is zero depends on the
+// floating-point mode of the thread that computed it: natively oneTBB's tasks ran with subnormals
+// flushed to zero (x86's FTZ and DAZ, the mode Embree sets while it builds a scene), while other
+// threads and WebAssembly keep them. A glass highlight far from its peak (cos^200, which cos_power
+// stops at 2^-126) is such a term: counted by positive(), the same picture cast a fifth more
+// shadow rays in the viewer's thread and in the page than in `luz render`.
+inline bool casts_shadow(const Rgb& term) {
+  constexpr float smallest = std::numeric_limits<float>::min();
+  return (term.x >= smallest) | (term.y >= smallest) | (term.z >= smallest);
+}
 
 // "calcular la normal": where a ray of direction d meets triangle (p0, p1, p2), whose vertex
 // normals are (n0, n1, n2), at barycentrics (u, v).
