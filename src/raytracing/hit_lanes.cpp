@@ -384,7 +384,7 @@ void HitLanes::add_light(LaneLights& out, const uint32_t* hit_ids) {
   else
     for (size_t k = 0; k < n; ++k) terms(k, std::false_type{});
   for (size_t k = 0; k < n; ++k) {
-    lit_[k] = lit_[k] & positive(term_[k]);
+    lit_[k] = lit_[k] & lights_the_hit(term_[k]);
     const Ray shadow = shadow_ray(position_[k], geometric_[k], L_[k], distance_[k]);
     origin_.set(k, shadow.origin);
     tfar_[k] = shadow.tfar;

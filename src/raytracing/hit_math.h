@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -21,6 +22,19 @@ namespace luz::rt {
 
 // Some channel above zero. (A bitwise or: no branches in the lanes' loops.)
 inline bool positive(const Rgb& c) { return (c.x > 0.0f) | (c.y > 0.0f) | (c.z > 0.0f); }
+
+// A light's term at a hit that lights it, and so gets its shadow ray: some channel at least the
+// smallest normal float, 1.2e-38. A smaller one is subnormal, which lights nothing a picture can
+// show and is zero or not by how the FPU treats subnormals: `luz render`'s tiles run with x86's
+// flush-to-zero on (Embree turns it on while it builds its BVH, and oneTBB's threads keep it),
+// the viewer's trace thread with it off, and WebAssembly keeps subnormals. On a glass sphere
+// (kd = 0) every point facing the light has such a term, the highlight's floor of 2^-126 times
+// IL ks (cos_power): taken as light, they are a sixth of whitted.gltf's shadow rays in the viewer
+// and none in `luz render`, for the same picture.
+inline bool lights_the_hit(const Rgb& term) {
+  constexpr float least = std::numeric_limits<float>::min();
+  return (term.x >= least) | (term.y >= least) | (term.z >= least);
+}
 
 // "calcular la normal": where a ray of direction d meets triangle (p0, p1, p2), whose vertex
 // normals are (n0, n1, n2), at barycentrics (u, v).

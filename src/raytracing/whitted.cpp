@@ -165,7 +165,7 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
   if (options_.terms.specular && positive(o.ks))
     term += IL * o.ks * cos_power(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
-  if (!positive(term)) return;
+  if (!lights_the_hit(term)) return;
   LightSample& sample = out.emplace_back();  // written in place: see surface_reader.h
   sample.term = term;
   sample.shadow = shadow_ray(p.position, p.geometric, L, distance);
