@@ -81,8 +81,8 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   EXPECT_EQ(traced["tiles"][0], traced["tiles"][1]);
   EXPECT_EQ(traced["rays"]["primary"].get<long>(), long(viewer.width) * viewer.height);
   for (const char* kind : {"shadow", "reflected", "transmitted"}) EXPECT_GT(traced["rays"][kind].get<long>(), 0) << kind;
-  // The same rays as `luz render`'s, every kind: a ray traced in one and not in the other would
-  // be work that changes nothing (a light's term too small to show still given its shadow ray).
+  // The same rays as `luz render`'s, every kind: which lights get a shadow ray does not depend on
+  // the thread that traces (its flush-to-zero mode, hit_math.h's lights_the_hit).
   test::expect_rays_of_render(traced, result.output);
 }
 

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -23,17 +22,16 @@ namespace luz::rt {
 // Some channel above zero. (A bitwise or: no branches in the lanes' loops.)
 inline bool positive(const Rgb& c) { return (c.x > 0.0f) | (c.y > 0.0f) | (c.z > 0.0f); }
 
-// A light's term at a hit that lights it, and so gets its shadow ray: some channel at least the
-// smallest normal float, 1.2e-38. A smaller one is subnormal, which lights nothing a picture can
-// show and is zero or not by how the FPU treats subnormals: `luz render`'s tiles run with x86's
-// flush-to-zero on (Embree turns it on while it builds its BVH, and oneTBB's threads keep it),
-// the viewer's trace thread with it off, and WebAssembly keeps subnormals. On a glass sphere
-// (kd = 0) every point facing the light has such a term, the highlight's floor of 2^-126 times
-// IL ks (cos_power): taken as light, they are a sixth of whitted.gltf's shadow rays in the viewer
-// and none in `luz render`, for the same picture.
-inline bool lights_the_hit(const Rgb& term) {
-  constexpr float least = std::numeric_limits<float>::min();
-  return (term.x >= least) | (term.y >= least) | (term.z >= least);
+// Whether a light's term at a hit, I_D + I_S, is above zero, told from its factors (cos(theta)
+// and IL above zero already): kd for I_D (zero where the diffuse term is off), the highlight
+// cos^n(alpha) of a shiny material for I_S. Their product falls below float's normal range far
+// from a highlight (IL ks 2^-126 on a glass sphere, kd = 0), a subnormal that x86's flush-to-zero
+// mode turns into 0: `luz render`'s tiles run with it on (Embree sets it while it builds its BVH,
+// and oneTBB's threads keep it), the viewer's trace thread with it off, and WebAssembly keeps
+// subnormals. Told from the factors, every light in front of a hit that its term can show gets
+// the lecture's shadow ray, in the window, the page and `luz render` alike.
+inline bool lights_the_hit(const Rgb& kd, bool shiny, float highlight) {
+  return positive(kd) | (shiny & (highlight > 0.0f));
 }
 
 // "calcular la normal": where a ray of direction d meets triangle (p0, p1, p2), whose vertex
