@@ -12,14 +12,9 @@
 #   tests/web/page_one_thread_matches_render.sh BASE_URL LUZ SCRATCH_DIR
 #   (BASE_URL: .../luz.html served without the headers; NODE_PATH=build-web/npm/node_modules)
 set -eu
-base=$1 luz=$2 scratch=$3
 here=$(cd "$(dirname "$0")" && pwd)
-scenes="$(dirname "$here")/../scenes"
-mkdir -p "$scratch"
-status=0
-export LUZ_PAGE_NO_SERVICE_WORKERS=1
-
 . "$here/compare_pictures.sh"
+export LUZ_PAGE_NO_SERVICE_WORKERS=1
 
 s=$scratch/phong
 rm -f "$s"_*.png  # a page that fails to write one must not be judged by an older run's

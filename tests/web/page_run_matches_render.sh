@@ -8,15 +8,10 @@
 # draws as the file does.
 #   tests/web/page_run_matches_render.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
 set -eu
-base=$1 luz=$2 scratch=$3
 here=$(cd "$(dirname "$0")" && pwd)
-scenes="$(dirname "$here")/../scenes"
+. "$here/compare_pictures.sh"
 size=320x240
 limit=1
-mkdir -p "$scratch"
-status=0
-
-. "$here/compare_pictures.sh"
 
 # Phong's specular term switched off through run(), as --no-specular.
 s=$scratch/run_specular

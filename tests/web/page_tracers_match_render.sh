@@ -31,14 +31,9 @@
 #   picture is 57% away and the radiosity picture of the same scene 46%: both fail.
 #   tests/web/page_tracers_match_render.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
 set -eu
-base=$1 luz=$2 scratch=$3
 here=$(cd "$(dirname "$0")" && pwd)
-scenes="$(dirname "$here")/../scenes"
-size=160x120
-mkdir -p "$scratch"
-status=0
-
 . "$here/compare_pictures.sh"
+size=160x120
 
 # Whitted: the raster view; a trace cancelled while it runs (held: no tile lands before the
 # cancel), which the page must not wait for on its main thread; then the whole trace, which

@@ -56,12 +56,7 @@
 # (2131 shadow rays against the page's 2507).
 #   tests/web/page_views_match_cli.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
 set -eu
-base=$1 luz=$2 scratch=$3
 here=$(cd "$(dirname "$0")" && pwd)
-scenes="$(dirname "$here")/../scenes"
-mkdir -p "$scratch"
-status=0
-
 . "$here/compare_pictures.sh"
 script() { node "$here/page_script.mjs" "$@" || status=1; }
 match() { node "$here/views_match.mjs" "$@" || status=1; }

@@ -85,7 +85,10 @@ void BackgroundWorker::run_steps() {
 
 void BackgroundWorker::stop() {
   if constexpr (!threaded()) {
-    if (run_) run_->cancel = true, run_->finished = true;
+    if (run_) {
+      run_->cancel = true;
+      run_->finished = true;
+    }
     steps_ = nullptr;
     return;
   }

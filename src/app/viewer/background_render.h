@@ -79,7 +79,7 @@ public:
   BackgroundWorker& operator=(const BackgroundWorker&) = delete;
 
   void start(Job job);  // a job still running is stopped first
-  void stop();          // sets the cancel flag and joins; nothing when no job runs
+  void stop();          // sets the cancel flag; the window joins, the page lets the job end on its own
   void cancel();        // sets the cancel flag; the page's job ends on its own, the window's is joined
   // Once a frame: joins a job that has ended; true when no job is left. Without threads, runs
   // this frame's steps of the job first.
