@@ -1134,6 +1134,7 @@ std::optional<int> Viewer::pass() {
     script_watch::frame_begins();
   }
   step_queued_line();
+  const bool line_waits = !queued_lines_.empty() && queued_lines_.front().runner.finished() && busy();
   fly(float(std::min(seconds, 0.1)));
   const bool worked = working();
   frame();
@@ -1143,6 +1144,10 @@ std::optional<int> Viewer::pass() {
   // end, else the window would keep "tracing 98%" until the next event. Two: ImGui sizes a
   // window's scrollbar from the frame before's contents.
   if (worked && !working()) frames_to_draw_ = std::max(frames_to_draw_, 2);
+  // A line that waited for work which ended in this frame (a trace's last tiles, the solver's
+  // rule) is answered now, its picture drawn, rather than at the next frame's start: in the page
+  // a frame can take tens of milliseconds. The next line starts at the next frame, as always.
+  if (line_waits) answer_finished_line();
   if (failure_.empty()) return std::nullopt;
   if (script_ || queued_lines_.empty()) return 1;
   const LineDone done = std::move(queued_lines_.front().done);  // the failure is the running line's
@@ -1164,20 +1169,23 @@ void Viewer::run_later(const std::string& line, LineDone done) {
 // what they started is over (busy()) and drawn: the frame after its last command.
 void Viewer::step_queued_line() {
   if (queued_lines_.empty()) return;
+  if (answer_finished_line()) return step_queued_line();
   QueuedLine& line = queued_lines_.front();
   std::string error;
-  if (line.runner.finished() && !busy()) {
-    const LineDone done = std::move(line.done);
-    queued_lines_.pop_front();
-    done("");
-    step_queued_line();
-    return;
-  }
   if (!line.runner.step(*this, error)) {
     const LineDone done = std::move(line.done);
     queued_lines_.pop_front();
     done(error);
   }
+}
+
+// The front line, once it has run and the work it asked for is done: its promise is kept.
+bool Viewer::answer_finished_line() {
+  if (queued_lines_.empty() || !queued_lines_.front().runner.finished() || busy()) return false;
+  const LineDone done = std::move(queued_lines_.front().done);
+  queued_lines_.pop_front();
+  done("");
+  return true;
 }
 
 // ---- [run_viewer] ------------------------------------------------------------------------------

@@ -214,6 +214,7 @@ private:
   };
   std::deque<QueuedLine> queued_lines_;  // run_later's
   void step_queued_line();
+  bool answer_finished_line();
   Classroom classroom_;            // the lesson, when one is open
   glm::vec2 scripted_click_at_{0.0f};
   int scripted_click_frames_ = 0;  // 2: press this frame, 1: release, 0: none
