@@ -96,6 +96,7 @@ TEST_F(ViewerHybrid, TracedItIsWhatLuzRenderMakes) {
   EXPECT_EQ(json_of(file("solved.json"))["shots"].get<int>(), std::stoi(shots[1])) << result.output;
 
   expect_same_picture(codes(out), viewer);
+  test::expect_rays_of_render(traced, result.output);
 }
 
 TEST_F(ViewerHybrid, AClickGivesTheHybridsRayTree) {

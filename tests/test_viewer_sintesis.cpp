@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support.h"
 #include "viewer_support.h"
 
 namespace luz {
@@ -125,6 +126,42 @@ TEST_F(ViewerSintesis, SidebySideStepsShowWhatTheirTextSays) {
   const nlohmann::json step59 = json_of(file("panes-59.json"));
   EXPECT_EQ(models_of(step59), (std::set<std::string>{"radiosity", "hybrid"}));
   expect_traced(step59, "hybrid");
+}
+
+// Step 58 entered and the window resized at once: the Whitted pane is traced at its new size,
+// its pixels (but for its label) `luz render --model whitted`'s at that size, code for code (the
+// tracer is deterministic, test_viewer_panes.cpp). Cancelled by the resize, it would show its
+// raster view.
+TEST_F(ViewerSintesis, AStepsTraceFollowsTheWindowResizedAsTheStepStarts) {
+  const nlohmann::json panes = json_of(file("panes-58-resized.json"));
+  expect_traced(panes, "whitted");
+  const test::Codes shot = test::codes(file("panes-58-resized.png"));
+  for (const auto& pane : panes["panes"]) {
+    if (pane["model"] != "whitted") continue;
+    const nlohmann::json& at = pane["screenshot"];
+    const nlohmann::json& label = pane["screenshot_label"];
+    const int x0 = at[0], y0 = at[1], width = at[2], height = at[3];
+    test::ScratchDir dir;
+    const fs::path out = dir / "whitted.png";
+    const auto result = test::run_luz({"render", (test::scene_dir() / "whitted.gltf").string(), "--model", "whitted",
+                                       "--size", std::to_string(width) + "x" + std::to_string(height), "-q",
+                                       "--out", out.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const test::Codes render = test::codes(out);
+    const auto in_label = [&](int x, int y) {
+      return x >= label[0].get<int>() && y >= label[1].get<int>() && x < label[0].get<int>() + label[2].get<int>() &&
+             y < label[1].get<int>() + label[3].get<int>();
+    };
+    int largest = 0, compared = 0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        if (in_label(x, y)) continue;
+        ++compared;
+        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(shot.at(x0 + x, y0 + y, c) - render.at(x, y, c)));
+      }
+    EXPECT_GT(compared, width * height / 2);
+    EXPECT_EQ(largest, 0) << "the Whitted pane, " << width << "x" << height;
+  }
 }
 
 // ---- presenter mode -----------------------------------------------------------------------------

@@ -70,7 +70,7 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   test::ScratchDir dir;
   const fs::path out = dir / "render.png";
   const auto result = test::run_luz({"render", scene().string(), "--model", "whitted", "--size", viewer.size(),
-                                     "-q", "--out", out.string()});
+                                     "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_EQ(largest_difference(viewer, codes(out)), 0);
   // And it is not the raster view: the spheres reflect and refract.
@@ -81,6 +81,9 @@ TEST_F(ViewerWhitted, AFinishedTraceIsWhatLuzRenderMakes) {
   EXPECT_EQ(traced["tiles"][0], traced["tiles"][1]);
   EXPECT_EQ(traced["rays"]["primary"].get<long>(), long(viewer.width) * viewer.height);
   for (const char* kind : {"shadow", "reflected", "transmitted"}) EXPECT_GT(traced["rays"][kind].get<long>(), 0) << kind;
+  // The same rays as `luz render`'s, every kind: which lights get a shadow ray does not depend on
+  // the thread that traces (its flush-to-zero mode, hit_math.h's lights_the_hit).
+  test::expect_rays_of_render(traced, result.output);
 }
 
 // A trace that ends with no input is drawn whole: the counters it adds lengthen the panel, and

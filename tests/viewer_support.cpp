@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 
 #include <gtest/gtest.h>
 
@@ -45,6 +46,16 @@ void expect_same_picture(const Codes& a, const Codes& b) {
   const double n = double(a.values.size());
   EXPECT_LE(total / n, 0.5) << "mean difference in 8-bit codes";
   EXPECT_GE(double(within) / n, 0.995) << "share of values within 2 codes";
+}
+
+void expect_rays_of_render(const nlohmann::json& trace, const std::string& render_output) {
+  std::smatch rays;
+  ASSERT_TRUE(std::regex_search(render_output, rays,
+                                std::regex(R"(rays: (\d+) primary, (\d+) shadow, (\d+) reflected, (\d+) transmitted)")))
+      << render_output;
+  const char* kinds[] = {"primary", "shadow", "reflected", "transmitted"};
+  for (size_t k = 0; k < 4; ++k)
+    EXPECT_EQ(trace["rays"][kinds[k]].get<long>(), std::stol(rays[k + 1])) << kinds[k] << " rays; " << render_output;
 }
 
 void require_scripted_run(const std::filesystem::path& run_dir, const std::string& script_test) {

@@ -27,6 +27,10 @@ double share_moved(const Codes& a, const Codes& b, int by);
 // code and 99.5% of the values within 2 codes.
 void expect_same_picture(const Codes& a, const Codes& b);
 
+// A trace's rays as the viewer dumped them (`dump-trace`) against those `luz render` printed for
+// the same picture ("rays: N primary, N shadow, N reflected, N transmitted"): equal, kind for kind.
+void expect_rays_of_render(const nlohmann::json& trace, const std::string& render_output);
+
 // For a fixture's SetUp: skips the test when xvfb-run is missing (setup.sh installs it), fails
 // it when the scripted run in `run_dir` did not finish (see the CTest test `script_test`).
 void require_scripted_run(const std::filesystem::path& run_dir, const std::string& script_test);

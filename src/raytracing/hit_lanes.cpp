@@ -366,16 +366,21 @@ void HitLanes::add_light(LaneLights& out, const uint32_t* hit_ids) {
     out.term.resize(out.shadow.size());
   }
   // A lane's term: its diffuse part, then its specular one where some lane is shiny (else load()
-  // left ks and the highlight unset: a matte chunk adds no zeros).
+  // left ks and the highlight unset: a matte chunk adds no zeros); and whether the term lights
+  // the lane's hit, from its factors (lights_the_hit).
   const auto terms = [&](size_t k, auto specular) __attribute__((always_inline)) {
     const float cos_theta = glm::dot(N_[k], L_[k]);
     const Rgb IL = IL_[k];
     const Rgb I_D = IL * kd_[k] * cos_theta;  // in the hybrid radiosity has it already
     Rgb t(0.0f);
     t += select(diffuse, I_D, Rgb(0.0f));
+    const Rgb kd = select(diffuse, kd_[k], Rgb(0.0f));
     if constexpr (specular) {
       const Rgb I_S = IL * ks_[k] * highlight_[k];
       t += select(shiny_[k] != 0, I_S, Rgb(0.0f));
+      lit_[k] = lit_[k] & lights_the_hit(kd, shiny_[k] != 0, highlight_[k]);
+    } else {
+      lit_[k] = lit_[k] & lights_the_hit(kd, false, 0.0f);
     }
     term_.set(k, t);
   };
@@ -384,7 +389,6 @@ void HitLanes::add_light(LaneLights& out, const uint32_t* hit_ids) {
   else
     for (size_t k = 0; k < n; ++k) terms(k, std::false_type{});
   for (size_t k = 0; k < n; ++k) {
-    lit_[k] = lit_[k] & casts_shadow(term_[k]);
     const Ray shadow = shadow_ray(position_[k], geometric_[k], L_[k], distance_[k]);
     origin_.set(k, shadow.origin);
     tfar_[k] = shadow.tfar;

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -23,16 +22,16 @@ namespace luz::rt {
 // Some channel above zero. (A bitwise or: no branches in the lanes' loops.)
 inline bool positive(const Rgb& c) { return (c.x > 0.0f) | (c.y > 0.0f) | (c.z > 0.0f); }
 
-// Whether a light's term I_D + I_S is worth its shadow ray: some channel at least the smallest
-// normal float. A smaller term cannot show in any picture, and whether it is zero depends on the
-// floating-point mode of the thread that computed it: natively oneTBB's tasks ran with subnormals
-// flushed to zero (x86's FTZ and DAZ, the mode Embree sets while it builds a scene), while other
-// threads and WebAssembly keep them. A glass highlight far from its peak (cos^200, which cos_power
-// stops at 2^-126) is such a term: counted by positive(), the same picture cast a fifth more
-// shadow rays in the viewer's thread and in the page than in `luz render`.
-inline bool casts_shadow(const Rgb& term) {
-  constexpr float smallest = std::numeric_limits<float>::min();
-  return (term.x >= smallest) | (term.y >= smallest) | (term.z >= smallest);
+// Whether a light's term at a hit, I_D + I_S, is above zero, told from its factors (cos(theta)
+// and IL above zero already): kd for I_D (zero where the diffuse term is off), the highlight
+// cos^n(alpha) of a shiny material for I_S. Their product falls below float's normal range far
+// from a highlight (IL ks 2^-126 on a glass sphere, kd = 0), a subnormal that x86's flush-to-zero
+// mode turns into 0: `luz render`'s tiles run with it on (Embree sets it while it builds its BVH,
+// and oneTBB's threads keep it), the viewer's trace thread with it off, and WebAssembly keeps
+// subnormals. Told from the factors, every light in front of a hit that its term can show gets
+// the lecture's shadow ray, in the window, the page and `luz render` alike.
+inline bool lights_the_hit(const Rgb& kd, bool shiny, float highlight) {
+  return positive(kd) | (shiny & (highlight > 0.0f));
 }
 
 // "calcular la normal": where a ray of direction d meets triangle (p0, p1, p2), whose vertex

@@ -163,9 +163,10 @@ void Whitted::add_light(const SurfacePoint& p, const glm::vec3& V, const glm::ve
   Rgb term(0.0f);
   // I_D = IL kd cos(theta); in the hybrid radiosity has it already (see local_color()).
   if (options_.terms.diffuse && !diffuse_) term += IL * kd * cos_theta;
-  if (options_.terms.specular && positive(o.ks))
-    term += IL * o.ks * cos_power(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess);  // I_S
-  if (!casts_shadow(term)) return;
+  const bool shiny = options_.terms.specular && positive(o.ks);
+  const float highlight = shiny ? cos_power(cos_alpha(p.N, L, V, options_.terms.blinn), o.shininess) : 0.0f;
+  if (shiny) term += IL * o.ks * highlight;  // I_S
+  if (!lights_the_hit(kd, shiny, highlight)) return;
   LightSample& sample = out.emplace_back();  // written in place: see surface_reader.h
   sample.term = term;
   sample.shadow = shadow_ray(p.position, p.geometric, L, distance);

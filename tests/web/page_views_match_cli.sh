@@ -14,7 +14,9 @@
 # - Brute force (whitted.gltf, 64x48: it tests every ray against all 12,106 triangles): the
 #   same rays as the BVH, its tests counted, and the same picture as the page's BVH and `luz
 #   render --brute-force` (limit 0.1%, Whitted's; measured 0.00%), its ray tree `luz render
-#   --brute-force --ray-tree`'s. Whitted's adaptive supersampling at the same size: `luz render --adaptive`'s
+#   --brute-force --ray-tree`'s. The BVH's trace traced `luz render`'s rays, kind for kind
+#   (WebAssembly keeps the subnormal light terms that `luz render`'s threads flush to zero:
+#   which lights get a shadow ray is told from the terms' factors). Whitted's adaptive supersampling at the same size: `luz render --adaptive`'s
 #   picture (limit 0.1%; measured 0.00%; the stratified picture is 10% away).
 # - Radiosity (cornell_box.gltf, patches of 0.3 m, 60 shots): with rays for form factors and
 #   adaptive subdivision, the page's mesh after the shots is `luz render --shots 60`'s, element
@@ -31,9 +33,11 @@
 #   rasterized by SwiftShader in the page and by OSMesa's llvmpipe in the command; at these rows
 #   Jacobi's curve is twice Gauss-Seidel's); its plots drawn as the rows go from 0 to 30.
 # - The lesson's side-by-side panes (step 58: flat, Gouraud, Phong and Whitted on whitted.gltf,
-#   traced): `luz render --model flat,gouraud,phong,whitted`'s grid with its labels, within 1%
-#   (the local models' limit; measured 0.23%; with Whitted's pane untraced, or traced with 4
-#   samples a pixel, 1.5%); one drag moves every pane's camera.
+#   traced), the page opened at the step (`lesson=58`), with size=320x240 and without (the
+#   canvas the browser's window): `luz render --model flat,gouraud,phong,whitted`'s grid with
+#   its labels, within 1% (the local models' limit; measured 0.20%); the Whitted pane below its
+#   label within 0.1% (Whitted's limit; measured 0.00%; untraced, 68% and 78%); one drag moves
+#   every pane's camera.
 # - The difference view (Whitted against 4 path-traced samples a pixel, seed 7, whitted.gltf at
 #   160x120): its figures are `luz compare`'s of `luz render`'s two pictures within what the
 #   page's paths change (a path's last bits, another Embree ISA and libm, send it elsewhere:
@@ -46,7 +50,10 @@
 # other rays), adaptive supersampling's threshold 4x (0.67%), adaptive subdivision's 1.5x (3307
 # elements), the item buffer naming the next patch (181%), Jacobi gathering from the sweep it
 # writes (the page stops), the panes' pictures shifted by one (34%), the difference taken the
-# other way round (its signs and its map).
+# other way round (its signs and its map); the page before its traces followed a resize (the
+# step's trace cancelled as the page fitted its canvas: its Whitted pane 68% and 78% away, the
+# note "trace cancelled"); `luz render` telling a light's shadow ray from its term's product
+# (2131 shadow rays against the page's 2507).
 #   tests/web/page_views_match_cli.sh BASE_URL LUZ SCRATCH_DIR   (NODE_PATH=build-web/npm/node_modules)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -82,6 +89,8 @@ script "$base?scene=whitted&model=whitted&size=64x48&panel=0" \
 "$luz" render "$scenes/whitted.gltf" --model whitted --size 64x48 --brute-force --ray-tree 20,22 --out "${s}_luz.png" -q
 "$luz" render "$scenes/whitted.gltf" --model whitted --size 64x48 --adaptive --out "${s}_luz_adaptive.png" -q
 match brute "${s}_bvh.json" "${s}_brute.json"
+"$luz" render "$scenes/whitted.gltf" --model whitted --size 64x48 --out "${s}_luz_bvh.png" >"${s}_luz_bvh.txt" || status=1
+match rays "${s}_bvh.json" "${s}_luz_bvh.txt"
 within "${s}_page.png" "${s}_bvh.png" 0.1 "brute force in the page against the page's BVH"
 within "${s}_page.png" "${s}_luz.png" 0.1 "brute force in the page against luz render --brute-force"
 node "$here/ray_tree_match.mjs" "${s}_tree.json" "${s}_luz.ray-tree.json" 1e-5 || status=1
@@ -127,19 +136,35 @@ script "$base?scene=cornell_box&size=320x240" run "solvers budget 100" \
 match solvers "${s}_page.json" "${s}_luz.csv" "${s}_luz.txt" 0.05
 match solver-plots "${s}_plots.json" "${s}_early.png" "${s}_later.png"
 
-# The lesson's side-by-side panes at step 58, traced (the step entered again once the page is
-# up: see docs/web.md's list of what is left), at the size the lesson's caption leaves the
-# picture; then one drag over the picture.
+# The lesson's side-by-side panes at step 58, traced: the page opened at the step, whose trace
+# starts while the page fits its canvas to the picture's size (the trace follows it), at the
+# size the lesson's caption leaves the picture; then one drag over the picture. The Whitted
+# pane alone, below its label, is `luz render --model whitted`'s picture at the pane's size.
 s=$scratch/views_panes
 rm -f "$s"_*
-script "$base?lesson=58&lang=en&size=320x240" run "lesson goto 58" run "wait-until trace-done 3000" picture "${s}_page.png" \
+script "$base?lesson=58&lang=en&size=320x240" run "wait-until trace-done 3000" picture "${s}_page.png" \
   run "dump-panes /tmp/before.json" file /tmp/before.json "${s}_before.json" \
   run "drag 500 100 540 120" run "dump-panes /tmp/after.json" file /tmp/after.json "${s}_after.json"
-size=$(node -e "const b = require('fs').readFileSync(process.argv[1]); console.log(b.readUInt32BE(16) + 'x' + b.readUInt32BE(20))" \
-  "${s}_page.png" 2>/dev/null || echo 320x240)
+size_of() { node -e "const b = require('fs').readFileSync(process.argv[1]); console.log(b.readUInt32BE(16) + 'x' + b.readUInt32BE(20))" "$1"; }
+size=$(size_of "${s}_page.png" 2>/dev/null || echo 320x240)
 "$luz" render "$scenes/whitted.gltf" --model flat,gouraud,phong,whitted --lang en --size "$size" --out "${s}_luz.png" -q
 within "${s}_page.png" "${s}_luz.png" 1 "the lesson's four panes in the page against luz render --model flat,gouraud,phong,whitted"
 match panes "${s}_before.json" "${s}_after.json"
+node "$here/cut_pane.mjs" "${s}_before.json" whitted "${s}_page.png" "${s}_page_whitted.png" &&
+  node "$here/cut_pane.mjs" "${s}_before.json" whitted "${s}_luz.png" "${s}_luz_whitted.png" || status=1
+within "${s}_page_whitted.png" "${s}_luz_whitted.png" 0.1 "the lesson's Whitted pane in the page against luz render's"
+
+# The same step from a link with no size= (the canvas takes the browser's window): the Whitted
+# pane traced at the size the page settles on.
+s=$scratch/views_panes_window
+rm -f "$s"_*
+script "$base?lesson=58&lang=en" run "wait-until trace-done 3000" picture "${s}_page.png" \
+  run "dump-panes /tmp/panes.json" file /tmp/panes.json "${s}_panes.json" note-lacks "trace cancelled"
+size=$(size_of "${s}_page.png" 2>/dev/null || echo 800x600)
+"$luz" render "$scenes/whitted.gltf" --model flat,gouraud,phong,whitted --lang en --size "$size" --out "${s}_luz.png" -q
+node "$here/cut_pane.mjs" "${s}_panes.json" whitted "${s}_page.png" "${s}_page_whitted.png" &&
+  node "$here/cut_pane.mjs" "${s}_panes.json" whitted "${s}_luz.png" "${s}_luz_whitted.png" || status=1
+within "${s}_page_whitted.png" "${s}_luz_whitted.png" 0.1 "the lesson's Whitted pane, opened by a link without size=, against luz render's"
 
 # The difference view: Whitted traced, against 4 samples of the path tracer of seed 7.
 s=$scratch/views_difference

@@ -1,6 +1,6 @@
-// Reads the PNGs Luz writes, for the page's tests that look at pixels.
-import { readFileSync } from 'node:fs';
-import { inflateSync } from 'node:zlib';
+// Reads the PNGs Luz writes, for the page's tests that look at pixels, and writes a cut of one.
+import { readFileSync, writeFileSync } from 'node:fs';
+import { deflateSync, inflateSync } from 'node:zlib';
 
 // An 8-bit RGB or RGBA, non-interlaced PNG (what Luz writes): { width, height, rgb(x, y) }.
 export function readPng(file) {
@@ -35,3 +35,35 @@ export function readPng(file) {
   return { width, height, rgb: (x, y) => [0, 1, 2].map((k) => pixels[(y * width + x) * channels + k]) };
 }
 
+
+// Writes an 8-bit RGB PNG of width x height from `rgb` (3 bytes a pixel, row 0 at the top).
+export function writePng(file, width, height, rgb) {
+  const chunk = (type, data) => {
+    const head = Buffer.alloc(8);
+    head.writeUInt32BE(data.length, 0);
+    head.write(type, 4, 'latin1');
+    const crc = Buffer.alloc(4);
+    crc.writeUInt32BE(crc32(Buffer.concat([head.subarray(4), data])), 0);
+    return Buffer.concat([head, data, crc]);
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(width, 0);
+  header.writeUInt32BE(height, 4);
+  header[8] = 8;  // bits per channel
+  header[9] = 2;  // RGB
+  const raw = Buffer.alloc((width * 3 + 1) * height);  // each row: filter 0, then its bytes
+  for (let y = 0; y < height; ++y) rgb.copy(raw, y * (width * 3 + 1) + 1, y * width * 3, (y + 1) * width * 3);
+  const signature = Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]);
+  writeFileSync(file, Buffer.concat([signature, chunk('IHDR', header), chunk('IDAT', deflateSync(raw)),
+                                     chunk('IEND', Buffer.alloc(0))]));
+}
+
+// PNG's CRC-32 (ISO 3309), bit by bit.
+function crc32(bytes) {
+  let c = 0xffffffff;
+  for (const byte of bytes) {
+    c ^= byte;
+    for (let k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+  }
+  return (c ^ 0xffffffff) >>> 0;
+}

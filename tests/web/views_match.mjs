@@ -9,6 +9,8 @@
 //   brute BVH_TRACE.json BRUTE_TRACE.json
 //       brute force traced the same rays as the BVH (every kind, the same count) and counted its
 //       ray-triangle tests; the BVH counts none
+//   rays TRACE.json LUZ_RENDER_OUTPUT.txt
+//       the page's trace (dump-trace) traced the rays `luz render` printed, kind for kind
 //   radiosity DUMP.json LUZ_RENDER_OUTPUT.txt MESHING UNSHOT_LIMIT
 //       the page's solution (dump-radiosity) has the mesh `luz render` printed (its patches and
 //       its elements, adaptive subdivision's included), after the same shots, its unshot power
@@ -59,6 +61,15 @@ function brute([bvhFile, bruteFile]) {
   const rays = Object.values(bruteForce.rays).reduce((a, b) => a + b, 0);
   check(bvh.intersection_tests === 0 && bruteForce.intersection_tests > rays,
         `brute force counted ${bruteForce.intersection_tests} ray-triangle tests for ${rays} rays; the BVH ${bvh.intersection_tests}`);
+}
+
+function rays([traceFile, outputFile]) {
+  const trace = json(traceFile), printed = readFileSync(outputFile, 'utf8');
+  const m = printed.match(/rays: (\d+) primary, (\d+) shadow, (\d+) reflected, (\d+) transmitted/);
+  check(m !== null, `luz render printed its rays: ${printed.split('\n')[1] ?? printed}`);
+  if (!m) return;
+  ['primary', 'shadow', 'reflected', 'transmitted'].forEach((kind, k) =>
+    check(trace.rays[kind] === Number(m[k + 1]), `${kind} rays: the page ${trace.rays[kind]}, luz render ${m[k + 1]}`));
 }
 
 function radiosity([dumpFile, outputFile, meshing, limitText]) {
@@ -184,7 +195,7 @@ function panes([beforeFile, afterFile]) {
   check(cameras(before)[0] !== cameras(after)[0], 'the drag moved the camera');
 }
 
-const checks = { 'ray-tree-panel': rayTreePanel, brute, radiosity, 'item-buffer': itemBuffer, solvers, 'solver-plots': solverPlots, difference, panes };
+const checks = { 'ray-tree-panel': rayTreePanel, brute, rays, radiosity, 'item-buffer': itemBuffer, solvers, 'solver-plots': solverPlots, difference, panes };
 if (!checks[kind]) {
   console.error(`usage: views_match.mjs (${Object.keys(checks).join('|')}) ARGS...`);
   process.exit(2);

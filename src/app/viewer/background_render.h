@@ -29,6 +29,12 @@ struct ViewFingerprint {
   Options options;
   std::vector<float> scene;  // editable_values()
   bool operator==(const ViewFingerprint&) const = default;
+  // The same view at another size: only the picture's room changed (the window resized, the
+  // panel shown or hidden, a lesson's caption settling beside or below the picture).
+  bool resized_from(const ViewFingerprint& before) const {
+    return (width != before.width || height != before.height) && to_world == before.to_world &&
+           yfov == before.yfov && options == before.options && scene == before.scene;
+  }
 };
 
 // What the panel can change of a scene (its Lights, Material and Scene sections), flattened:

@@ -81,11 +81,15 @@ std::string url_parameter(const char* name) {
   return text_from([name](char* buffer, int size) { return url_parameter_text(name, buffer, size); });
 }
 
+// The page as it stays once Luz runs: the loading line emptied, the controls under the canvas
+// shown (the room they take is the canvas's no longer).
+EM_JS(void, show_controls, (), {
+  document.getElementById('status').textContent = "";
+  document.getElementById('controls').classList.add('shown');
+});
 // window.luz.ready: resolved once the first picture is on the canvas, rejected with the error
 // the page shows when there will be none (the shell defines both callbacks).
 EM_JS(void, report_ready, (), {
-  document.getElementById('status').textContent = "";
-  document.getElementById('controls').classList.add('shown');
   if (window.luzReady) window.luzReady.resolve();
 });
 EM_JS(void, report_failure, (const char* text), {
@@ -292,6 +296,7 @@ void fit_picture(int tries_left) {
     const int shown_w = int(std::lround(view[2].get<double>() - view[0].get<double>()));
     const int shown_h = int(std::lround(view[3].get<double>() - view[1].get<double>()));
     if ((shown_w == request.width && shown_h == request.height) || tries_left == 0) {
+      show_controls();
       ready = true;
       report_ready();
       return;
@@ -349,8 +354,30 @@ EM_BOOL window_resized(int, const EmscriptenUiEvent*, void*) {
   return EM_FALSE;
 }
 
+// Without size=, before ready: the canvas brought to the room the page leaves it with its
+// controls shown, one `resize` line at a time until it has it (a line under the canvas may wrap
+// anew at another width: a few tries), so that the first picture, and a trace a lesson's step
+// starts, are of the size the canvas keeps; then ready, and the canvas follows the window.
+void fill_room(int tries_left) {
+  const int width = room_width(), height = room_height();
+  int canvas_w = 0, canvas_h = 0;
+  emscripten_get_canvas_element_size("#canvas", &canvas_w, &canvas_h);
+  if ((width == canvas_w && height == canvas_h) || tries_left == 0) {
+    ready = true;
+    report_ready();
+    emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_FALSE, window_resized);
+    follow_window();  // the window may have changed meanwhile
+    return;
+  }
+  viewer->run_later(fmt::format("resize {} {}", width, height), [tries_left](const std::string& error) {
+    if (!error.empty()) return fail(error);
+    fill_room(tries_left - 1);
+  });
+}
+
 // Once the viewer runs: the URL's switches on and the panel hidden when it says so, then, on the
-// frame drawn after them, the picture brought to its size, then ready.
+// frame drawn after them, the picture brought to its size (or the canvas to its room), then
+// ready.
 void viewer_started(app::LineQueue& queue) {
   viewer = &queue;
   std::vector<std::string> lines = request.settings;
@@ -362,10 +389,8 @@ void viewer_started(app::LineQueue& queue) {
       if (!error.empty()) return fail(error);
       if (!last) return;
       if (!request.follows_window) return fit_picture(3);
-      ready = true;
-      report_ready();
-      emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_FALSE, window_resized);
-      follow_window();  // the window may have changed while the scene loaded
+      show_controls();
+      fill_room(3);
     });
 }
 

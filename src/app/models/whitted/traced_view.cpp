@@ -46,6 +46,26 @@ Fingerprint TracedView::fingerprint(const Camera& camera, glm::ivec2 size) const
   return {camera.to_world, camera.yfov, size.x, size.y, current_options(), editable_values(*viewer_.state().scene)};
 }
 
+// A trace asked for (Enter, `trace`, a lesson's step) is of the view, whatever the room the
+// window gives its picture: a resize, the panel shown or hidden, or a lesson's caption settling
+// over the first frames of a step (in the page, the canvas fitted to the page too) traces it
+// again at the new size, as a path tracer's passes start again. Anything else the picture
+// depends on (the camera, an option, the scene) is the user's move: back to the untraced view.
+bool TracedView::drop_stale_trace(const Camera& camera, glm::ivec2 size) {
+  if (!tracer_ || !tracer_->showing()) return false;
+  const Fingerprint now = fingerprint(camera, size);
+  if (tracer_->fingerprint() == now) return false;
+  ViewerState& state = viewer_.state();
+  const bool running = tracer_->cancel();
+  if (now.resized_from(tracer_->fingerprint())) {
+    requests.trace = true;  // started by this frame's draw, over the untraced picture at the new size
+  } else {
+    state.note = running ? tr("the view changed: trace cancelled, back to the untraced view")
+                         : tr("the view changed: back to the untraced view (Enter traces it)");
+  }
+  return true;
+}
+
 void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Framebuffer& picture) {
   ViewerState& state = viewer_.state();
   const glm::ivec2 size = viewport.pixels;
@@ -61,10 +81,7 @@ void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
   }
   if (requests.trace) cancel_trace();  // a fresh untraced picture under the new trace
   if (must_cancel()) cancel_trace();
-  if (tracer_ && tracer_->showing() && tracer_->fingerprint() != fingerprint(camera, size)) {
-    if (tracer_->cancel()) state.note = tr("the view changed: trace cancelled, back to the untraced view");
-    else state.note = tr("the view changed: back to the untraced view (Enter traces it)");
-  }
+  drop_stale_trace(camera, size);
 
   if (!tracer_ || !tracer_->showing()) draw_untraced(camera, viewport, picture);
   if (requests.trace) {
@@ -119,9 +136,8 @@ void TracedView::draw(const Camera& camera, const Viewport& viewport, gl::Frameb
 // in the panel and drawn over the picture until another click, X, or a new scene.
 void TracedView::click(const Camera& camera, const Viewport& viewport, glm::ivec2 pixel) {
   viewer_.inspection().pick.reset();  // the local model's inspector is not Whitted's
-  WhittedWorker& t = tracer();
-  if (t.showing() && t.fingerprint() != fingerprint(camera, viewport.pixels))
-    t.cancel();  // an edit not seen yet by the frame: the trace must not read the old scene
+  // An edit not seen yet by the frame: the trace must not read the old scene.
+  drop_stale_trace(camera, viewport.pixels);
   ViewerState& state = viewer_.state();
   std::string why;
   if (!pick_tree(camera, viewport.pixels, pixel, why)) {

@@ -89,6 +89,9 @@ protected:
 
 private:
   Fingerprint fingerprint(const Camera& camera, glm::ivec2 size) const;
+  // The traced picture shown is no longer this view's: back to the untraced one, traced again
+  // at once when only the picture's size changed. False when it still is.
+  bool drop_stale_trace(const Camera& camera, glm::ivec2 size);
   WhittedWorker& tracer();
   // The pixel's ray tree, traced with the options and the scene as they are now; false (`why`
   // saying why, or empty while the hybrid's solver runs) when no trace can start yet.
