@@ -7,8 +7,7 @@
 // themselves: they miss nothing, and its text stays crisp.
 //   node docs/png_palette.mjs PICTURE.png
 import { writeFileSync } from 'node:fs';
-import { deflateSync } from 'node:zlib';
-import { readPng } from '../tests/web/png.mjs';
+import { encodePng, readPng } from '../tests/web/png.mjs';
 
 const file = process.argv[2];
 if (!file) {
@@ -95,33 +94,4 @@ for (let y = 0; y < height; ++y) {
   below.fill(0);
 }
 
-// PNG: signature, IHDR (8-bit, colour type 3: indexed), PLTE, IDAT, IEND, each chunk with its CRC.
-const crcTable = Array.from({ length: 256 }, (_, n) => {
-  let c = n;
-  for (let k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
-  return c >>> 0;
-});
-const crc = (bytes) => {
-  let c = 0xffffffff;
-  for (const b of bytes) c = crcTable[(c ^ b) & 255] ^ (c >>> 8);
-  return (c ^ 0xffffffff) >>> 0;
-};
-const chunk = (type, data) => {
-  const body = Buffer.concat([Buffer.from(type, 'latin1'), data]);
-  const length = Buffer.alloc(4), sum = Buffer.alloc(4);
-  length.writeUInt32BE(data.length);
-  sum.writeUInt32BE(crc(body));
-  return Buffer.concat([length, body, sum]);
-};
-const header = Buffer.alloc(13);
-header.writeUInt32BE(width, 0);
-header.writeUInt32BE(height, 4);
-header[8] = 8;  // bits per index
-header[9] = 3;  // indexed colour
-writeFileSync(file, Buffer.concat([
-  Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]),
-  chunk('IHDR', header),
-  chunk('PLTE', Buffer.from(palette.flat())),
-  chunk('IDAT', deflateSync(rows, { level: 9 })),
-  chunk('IEND', Buffer.alloc(0)),
-]));
+writeFileSync(file, encodePng(width, height, 3, rows, [['PLTE', Buffer.from(palette.flat())]]));

@@ -35,27 +35,33 @@ export function readPng(file) {
   return { width, height, rgb: (x, y) => [0, 1, 2].map((k) => pixels[(y * width + x) * channels + k]) };
 }
 
-
 // Writes an 8-bit RGB PNG of width x height from `rgb` (3 bytes a pixel, row 0 at the top).
 export function writePng(file, width, height, rgb) {
-  const chunk = (type, data) => {
-    const head = Buffer.alloc(8);
-    head.writeUInt32BE(data.length, 0);
-    head.write(type, 4, 'latin1');
-    const crc = Buffer.alloc(4);
-    crc.writeUInt32BE(crc32(Buffer.concat([head.subarray(4), data])), 0);
-    return Buffer.concat([head, data, crc]);
-  };
+  const rows = Buffer.alloc((width * 3 + 1) * height);  // each row: filter 0, then its bytes
+  for (let y = 0; y < height; ++y) rgb.copy(rows, y * (width * 3 + 1) + 1, y * width * 3, (y + 1) * width * 3);
+  writeFileSync(file, encodePng(width, height, 2, rows));
+}
+
+// A PNG's bytes: signature, IHDR (8 bits a channel or an index, `colourType` 2 for RGB, 3 for
+// indexed), the chunks `before` the image ([type, data], a palette's PLTE), IDAT of `rows` (each
+// row its filter byte, then its bytes), IEND; each chunk with its CRC.
+export function encodePng(width, height, colourType, rows, before = []) {
   const header = Buffer.alloc(13);
   header.writeUInt32BE(width, 0);
   header.writeUInt32BE(height, 4);
-  header[8] = 8;  // bits per channel
-  header[9] = 2;  // RGB
-  const raw = Buffer.alloc((width * 3 + 1) * height);  // each row: filter 0, then its bytes
-  for (let y = 0; y < height; ++y) rgb.copy(raw, y * (width * 3 + 1) + 1, y * width * 3, (y + 1) * width * 3);
+  header[8] = 8;
+  header[9] = colourType;
   const signature = Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]);
-  writeFileSync(file, Buffer.concat([signature, chunk('IHDR', header), chunk('IDAT', deflateSync(raw)),
-                                     chunk('IEND', Buffer.alloc(0))]));
+  return Buffer.concat([signature, chunk('IHDR', header), ...before.map(([type, data]) => chunk(type, data)),
+                        chunk('IDAT', deflateSync(rows, { level: 9 })), chunk('IEND', Buffer.alloc(0))]);
+}
+
+function chunk(type, data) {
+  const body = Buffer.concat([Buffer.from(type, 'latin1'), data]);
+  const length = Buffer.alloc(4), sum = Buffer.alloc(4);
+  length.writeUInt32BE(data.length);
+  sum.writeUInt32BE(crc32(body));
+  return Buffer.concat([length, body, sum]);
 }
 
 // PNG's CRC-32 (ISO 3309), bit by bit.
