@@ -110,6 +110,77 @@ TEST(ParallelFor, ThreadsForPassesTheBodysExceptionOn) {
   }
 }
 
+// On a thread that must never block (the browser's main thread in the page, as SpinningThread
+// marks one here) the loop is the same loop: each index once, on several threads, the body's
+// exception passed on, loops inside its body; and its caller spins for the kept threads' last
+// chunks (the next test).
+TEST(ParallelFor, ThreadsForOnASpinningThread) {
+  const parallel::SpinningThread spinning([] {});
+  for (const unsigned threads : {1u, 2u, 7u})
+    for (const size_t grain : {size_t(1), size_t(3), size_t(1000)}) {
+      std::vector<std::atomic<int>> seen(200);
+      parallel::threads_for(5, 190, grain, threads, [&](size_t lo, size_t hi) {
+        for (size_t i = lo; i < hi; ++i) ++seen[i];
+      });
+      expect_each_once(seen, 5, 190);
+    }
+
+  std::vector<std::thread::id> ids(64);
+  parallel::threads_for(0, ids.size(), 1, 4, [&](size_t lo, size_t) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    ids[lo] = std::this_thread::get_id();
+  });
+  std::sort(ids.begin(), ids.end());
+  EXPECT_GT(std::unique(ids.begin(), ids.end()) - ids.begin(), 1);
+
+  EXPECT_THROW(parallel::threads_for(0, 1000, 1, 4,
+                                     [&](size_t lo, size_t) {
+                                       if (lo == 3) throw std::runtime_error("index 3");
+                                       if (lo > 3) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                                     }),
+               std::runtime_error);
+
+  std::vector<std::atomic<int>> nested(40 * 30);
+  parallel::threads_for(0, 40, 1, 4, [&](size_t lo, size_t) {
+    parallel::threads_for(0, 30, 4, 4, [&](size_t a, size_t b) {
+      for (size_t i = a; i < b; ++i) ++nested[lo * 30 + i];
+    });
+  });
+  expect_each_once(nested, 0, nested.size());
+}
+
+// A kept thread whose chunk waits for the spinning caller (in the page, a worker's call proxied to
+// the main thread) gets its answer: the caller serves it while it spins for that chunk, where a
+// caller waiting on a condition would never answer (here the chunk gives up after 5 s, not served).
+TEST(ParallelFor, ASpinningCallerServesWhatItsHelpersWaitFor) {
+  std::atomic<bool> asked{false}, answered{false};
+  std::atomic<int> waits{0}, unanswered{0};
+  const parallel::SpinningThread spinning([&] {
+    if (asked.exchange(false)) answered = true;
+  });
+  const std::thread::id caller = std::this_thread::get_id();
+  parallel::threads_for(0, 200, 1, 2, [&](size_t, size_t) {
+    if (std::this_thread::get_id() == caller) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      return;
+    }
+    ++waits;
+    answered = false;
+    asked = true;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (!answered && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+    if (!answered) ++unanswered;
+  });
+  EXPECT_GT(waits.load(), 0) << "no chunk of the kept thread's: nothing was checked";
+  EXPECT_EQ(unanswered.load(), 0) << "the caller did not serve while a helper waited on it";
+}
+
+// The page's Embree is told one thread on the browser's main thread (its builds block on their
+// threads); elsewhere it gets the loops' count.
+TEST(ParallelFor, BlockingThreadsAreTheLoopsOffTheBrowsersMainThread) {
+  EXPECT_EQ(parallel::blocking_thread_count(), parallel::thread_count());
+}
+
 TEST(ParallelFor, EmptyAndSingleRanges) {
   int calls = 0;
   parallel::threads_for(4, 4, 1, 4, [&](size_t, size_t) { ++calls; });

@@ -6,6 +6,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #if defined(__EMSCRIPTEN__)
@@ -18,6 +19,37 @@ namespace {
 
 // The cores of this machine (the browser's, in the page), at least one.
 unsigned cores() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+bool on_browser_main_thread() {
+#if defined(__EMSCRIPTEN__) && defined(__EMSCRIPTEN_PTHREADS__)
+  return emscripten_is_main_browser_thread();
+#else
+  return false;
+#endif
+}
+
+thread_local const std::function<void()>* spinning_serve = nullptr;  // the innermost SpinningThread's
+
+// Whether this thread must never wait on a lock or a condition variable: on the browser's main
+// thread a wait freezes the page (Emscripten warns of each), and the calls a worker proxies to
+// it would never run.
+bool spins_here() { return spinning_serve != nullptr || on_browser_main_thread(); }
+
+// A spinning thread's turn between two looks at what it waits for.
+void serve_while_spinning() {
+#if defined(__EMSCRIPTEN__) && defined(__EMSCRIPTEN_PTHREADS__)
+  if (on_browser_main_thread()) emscripten_main_thread_process_queued_calls();
+#endif
+  if (spinning_serve) (*spinning_serve)();
+  std::this_thread::yield();
+}
+
+// Takes `lock`'s mutex: by waiting where this thread may wait, by trying again and again where
+// it must not.
+void take(std::unique_lock<std::mutex>& lock) {
+  if (!spins_here()) return lock.lock();
+  while (!lock.try_lock()) serve_while_spinning();
+}
 
 // A loop offered to the kept threads: its work, how many more of them may join it, and how many
 // work on it now.
@@ -48,19 +80,30 @@ public:
   // returns once every one of them has returned from it.
   void run(const std::function<void()>& work, size_t seats) {
     Offer offer{&work, seats};
-    {
-      const std::lock_guard lock(mutex_);
-      offers_.push_back(&offer);
-    }
+    std::unique_lock lock(mutex_, std::defer_lock);
+    take(lock);
+    offers_.push_back(&offer);
+    lock.unlock();
     offered_.notify_all();
     work();
-    std::unique_lock lock(mutex_);
+    take(lock);
     offers_.erase(std::find(offers_.begin(), offers_.end(), &offer));  // no thread joins it now
+    if (spins_here()) return spin_until_left(lock, offer);
     left_.wait(lock, [&offer] { return offer.inside == 0; });
   }
 
 private:
   KeptThreads() = default;
+
+  // run()'s end on a thread that must not block: the kept threads inside `offer` awaited by
+  // looking again and again, the lock let go in between.
+  static void spin_until_left(std::unique_lock<std::mutex>& lock, const Offer& offer) {
+    while (offer.inside != 0) {
+      lock.unlock();
+      serve_while_spinning();
+      take(lock);
+    }
+  }
 
   Offer* open_offer() {
     const auto open = std::find_if(offers_.begin(), offers_.end(), [](const Offer* o) { return o->seats > 0; });
@@ -127,12 +170,17 @@ unsigned thread_count() {
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
   return 1;
 #else
-#if defined(__EMSCRIPTEN__)
-  if (emscripten_is_main_browser_thread()) return 1;
-#endif
   return cores();
 #endif
 }
+
+unsigned blocking_thread_count() { return on_browser_main_thread() ? 1 : thread_count(); }
+
+SpinningThread::SpinningThread(std::function<void()> serve) : serve_(std::move(serve)), outer_(spinning_serve) {
+  spinning_serve = &serve_;
+}
+
+SpinningThread::~SpinningThread() { spinning_serve = outer_; }
 
 void start_threads() {
 #if !(defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__))

@@ -25,8 +25,28 @@ namespace parallel {
 // last one shorter), on up to `threads` threads: the calling thread and up to threads - 1 of the
 // threads the loops keep (started by the first loop that wants them, or by start_threads), each
 // taking the next chunk not yet taken. threads <= 1 runs them in order on the calling thread.
+// On a thread that must never block (the browser's main thread, a SpinningThread) the caller
+// never waits on a lock or a condition: it spins until the kept threads' chunks are done,
+// serving meanwhile what it is asked to serve.
 void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
                  const std::function<void(size_t lo, size_t hi)>& body);
+
+// While one lives, the calling thread is one that must never block, as the browser's main thread
+// is in the page (where it always is): its loops take chunks themselves, the kept threads the
+// others, and it spins for theirs, calling `serve` while it spins (the page's main thread runs
+// the calls that workers proxied to it: a worker waiting on one would otherwise never return).
+// Off the browser, for the tests of that path.
+class SpinningThread {
+public:
+  explicit SpinningThread(std::function<void()> serve);
+  ~SpinningThread();
+  SpinningThread(const SpinningThread&) = delete;
+  SpinningThread& operator=(const SpinningThread&) = delete;
+
+private:
+  std::function<void()> serve_;
+  const std::function<void()>* outer_;
+};
 
 // Starts the threads threads_for keeps, one fewer than the cores, before a loop asks for them:
 // the page calls it as it opens, because a thread a worker starts is started by the browser's
@@ -34,9 +54,14 @@ void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
 void start_threads();
 
 // The threads threads_for uses on this thread: every core natively; in the page every core the
-// browser offers on a worker, one on the browser's main thread (which must never wait for
-// another) and one in a build without threads.
+// browser offers, on its main thread too (which spins for the others' chunks), and one in a build
+// without threads.
 unsigned thread_count();
+
+// The threads a scheduler of its own that blocks while its threads work (Embree's BVH builds)
+// may use from this thread: thread_count(), but one on the browser's main thread, which must never
+// wait for another.
+unsigned blocking_thread_count();
 
 }  // namespace parallel
 

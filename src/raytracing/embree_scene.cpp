@@ -74,8 +74,8 @@ Hit from_embree(const RTCRayHit& rh) {
 // A device for this intersector. With oneTBB (the desktop), one of its own, scheduled by the
 // parallel loops' scheduler. Built with its own scheduler (the web page's Embree), a device would
 // start a thread per core wherever it is first used: it is given the parallel loops' count
-// instead, which on the browser's main thread is one (that thread must never wait for a thread
-// to start). Those devices are kept for the program's life, one per count: releasing one deletes
+// instead, one on the browser's main thread (its builds wait for their threads, and that thread
+// must never wait). Those devices are kept for the program's life, one per count: releasing one deletes
 // its thread-local error slot, and Emscripten's pthread_key_delete leaves the slot's value behind
 // for the next key of the same number, so that the next device would read its errors from freed
 // memory.
@@ -85,7 +85,7 @@ RTCDevice new_device() {
 #else
   static std::mutex mutex;
   static std::map<unsigned, RTCDevice> devices;
-  const unsigned threads = parallel::thread_count();
+  const unsigned threads = parallel::blocking_thread_count();
   const std::lock_guard lock(mutex);
   RTCDevice& device = devices[threads];
   if (!device) device = rtcNewDevice(fmt::format("threads={}", threads).c_str());
