@@ -175,12 +175,6 @@ TEST(ParallelFor, ASpinningCallerServesWhatItsHelpersWaitFor) {
   EXPECT_EQ(unanswered.load(), 0) << "the caller did not serve while a helper waited on it";
 }
 
-// The page's Embree is told one thread on the browser's main thread (its builds block on their
-// threads); elsewhere it gets the loops' count.
-TEST(ParallelFor, BlockingThreadsAreTheLoopsOffTheBrowsersMainThread) {
-  EXPECT_EQ(parallel::blocking_thread_count(), parallel::thread_count());
-}
-
 TEST(ParallelFor, EmptyAndSingleRanges) {
   int calls = 0;
   parallel::threads_for(4, 4, 1, 4, [&](size_t, size_t) { ++calls; });

@@ -166,15 +166,14 @@ void threads_for(size_t begin, size_t end, size_t grain, unsigned threads,
   if (first_error) std::rethrow_exception(first_error);
 }
 
-unsigned thread_count() {
+unsigned thread_count([[maybe_unused]] MainThread main) {
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
   return 1;
 #else
+  if (main == MainThread::alone && on_browser_main_thread()) return 1;
   return cores();
 #endif
 }
-
-unsigned blocking_thread_count() { return on_browser_main_thread() ? 1 : thread_count(); }
 
 SpinningThread::SpinningThread(std::function<void()> serve) : serve_(std::move(serve)), outer_(spinning_serve) {
   spinning_serve = &serve_;

@@ -53,15 +53,20 @@ private:
 // main thread between two frames, a frame late for the loop that asked.
 void start_threads();
 
-// The threads threads_for uses on this thread: every core natively; in the page every core the
-// browser offers, on its main thread too (which spins for the others' chunks), and one in a build
-// without threads.
-unsigned thread_count();
+// Whether a loop's body may run on the browser's main thread while the kept threads run it too.
+// There, a thread that first meets a function-local static with a dynamic initialiser (`static
+// T t = f();`, in Luz, a library or the C++ runtime) while another thread initialises it waits on
+// a condition variable (libc++abi's guard), and so does the first thread-local object with a
+// destructor of a thread that meets the runtime's list of those being set up: a wait the page's
+// main thread must never make. So the main thread keeps a loop to itself (`alone`) unless the
+// loop's body reaches neither (`joins`: the radiosity's rays, whose bodies are written so).
+enum class MainThread { alone, joins };
 
-// The threads a scheduler of its own that blocks while its threads work (Embree's BVH builds)
-// may use from this thread: thread_count(), but one on the browser's main thread, which must never
-// wait for another.
-unsigned blocking_thread_count();
+// The threads threads_for uses on this thread for a loop whose body is `main`: every core
+// natively; in the page every core the browser offers, on its main thread only for a body that
+// `joins` (the main thread then spins for the others' chunks) and one for the rest, and one in a
+// build without threads.
+unsigned thread_count(MainThread main = MainThread::alone);
 
 }  // namespace parallel
 
@@ -80,15 +85,17 @@ void parallel_for(Index begin, Index end, const Body& body) {
 
 // body(lo, hi) for subranges [lo, hi) that cover [begin, end) once, each at most about `grain`
 // long (oneTBB may split a range down to grain / 2): for loops whose body is cheap, so that
-// each thread takes work in pieces worth their overhead.
+// each thread takes work in pieces worth their overhead. `main`: whether the page's main thread
+// may run the body beside the kept threads (MainThread above); oneTBB has no such thread.
 template <class Index, class Body>
-void parallel_for_ranges(Index begin, Index end, Index grain, const Body& body) {
+void parallel_for_ranges(Index begin, Index end, Index grain, const Body& body,
+                         [[maybe_unused]] parallel::MainThread main = parallel::MainThread::alone) {
 #if LUZ_PARALLEL_TBB
   tbb::parallel_for(tbb::blocked_range<Index>(begin, end, size_t(grain)),
                     [&](const tbb::blocked_range<Index>& range) { body(range.begin(), range.end()); });
 #else
   if (!(begin < end)) return;
-  parallel::threads_for(0, size_t(end - begin), size_t(grain), parallel::thread_count(),
+  parallel::threads_for(0, size_t(end - begin), size_t(grain), parallel::thread_count(main),
                         [&](size_t lo, size_t hi) { body(Index(begin + Index(lo)), Index(begin + Index(hi))); });
 #endif
 }

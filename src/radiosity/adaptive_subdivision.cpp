@@ -157,9 +157,13 @@ size_t ProgressiveSolver::refine() {
     }
 
     std::vector<Rgb> gathered(changed.size());
-    parallel_for_ranges(size_t(0), changed.size(), size_t(16), [&](size_t first, size_t end) {
-      for (size_t k = first; k != end; ++k) gathered[k] = gather(changed[k], senders, sent, emissions, parts);
-    });
+    // gather's rays and contour integrals let the page's main thread take its share (core/parallel_for.h).
+    parallel_for_ranges(
+        size_t(0), changed.size(), size_t(16),
+        [&](size_t first, size_t end) {
+          for (size_t k = first; k != end; ++k) gathered[k] = gather(changed[k], senders, sent, emissions, parts);
+        },
+        parallel::MainThread::joins);
     for (size_t k = 0; k < changed.size(); ++k) {
       const uint32_t e = changed[k];
       const Patch& p = mesh_.patches[e];

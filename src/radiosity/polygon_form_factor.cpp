@@ -2,8 +2,10 @@
 #include "radiosity/polygon_form_factor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -11,20 +13,21 @@
 namespace luz {
 namespace {
 
-// Sutherland-Hodgman against one plane: the part with dot(n, v - x) >= 0, into `out`. The
-// solver evaluates the integral millions of times a second: `out` is a buffer kept per thread,
-// so no call allocates once it has grown.
+// Sutherland-Hodgman against one plane: the part with dot(n, v - x) >= 0, into `out` (room for
+// two corners per edge: each edge gives its start, the crossing, both or neither). Returns the
+// corners written.
 template <typename T>
-void clip_above(const glm::vec<3, T>& x, const glm::vec<3, T>& n, std::span<const glm::vec3> polygon,
-                std::vector<glm::vec<3, T>>& out) {
-  out.clear();
+std::span<const glm::vec<3, T>> clip_above(const glm::vec<3, T>& x, const glm::vec<3, T>& n,
+                                           std::span<const glm::vec3> polygon, std::span<glm::vec<3, T>> out) {
+  size_t written = 0;
   const size_t count = polygon.size();
   for (size_t k = 0; k < count; ++k) {
     const glm::vec<3, T> p(polygon[k]), q(polygon[(k + 1) % count]);
     const T hp = glm::dot(n, p - x), hq = glm::dot(n, q - x);
-    if (hp >= T(0)) out.push_back(p);
-    if ((hp >= T(0)) != (hq >= T(0))) out.push_back(p + (hp / (hp - hq)) * (q - p));
+    if (hp >= T(0)) out[written++] = p;
+    if ((hp >= T(0)) != (hq >= T(0))) out[written++] = p + (hp / (hp - hq)) * (q - p);
   }
+  return out.first(written);
 }
 
 // The angle atan2(y, x) for y >= 0, in [0, pi]. In double, the library's; in float, which the
@@ -55,8 +58,14 @@ double contour_integral(const glm::vec3& x, const glm::vec3& n, std::span<const 
   // The polygon's front must face x: its vertices run counter-clockwise seen from x.
   const V face = glm::cross(V(polygon[1]) - V(polygon[0]), V(polygon[2]) - V(polygon[0]));
   if (glm::dot(face, xd - V(polygon[0])) <= T(0)) return 0.0;
-  thread_local std::vector<V> visible;
-  clip_above(xd, nd, polygon, visible);
+  // The clipped polygon on the stack for the solver's triangles: the solver evaluates the
+  // integral millions of times a second, on the page's main thread too, where the first use of a
+  // thread-local buffer on a thread could wait for another (core/parallel_for.h, MainThread).
+  constexpr size_t kCornersOnStack = 8;
+  std::array<V, 2 * kCornersOnStack> on_stack;
+  std::vector<V> on_heap(polygon.size() > kCornersOnStack ? 2 * polygon.size() : 0);
+  const std::span<const V> visible =
+      clip_above(xd, nd, polygon, on_heap.empty() ? std::span<V>(on_stack) : std::span<V>(on_heap));
   if (visible.size() < 3) return 0.0;
   T sum = 0;
   for (size_t k = 0; k < visible.size(); ++k) {

@@ -94,15 +94,21 @@ RayFormFactors::RayFormFactors(const Scene& scene, const PatchMesh& mesh)
 RayFormFactors::~RayFormFactors() = default;
 
 // Every element's value on parallel threads (core/parallel_for.h), then the elements with a positive one, in order.
+// The page's main thread, which shoots, takes its share: the values (element_factor,
+// element_solid_angle, element_sunlit_area) reach no function-local static with a dynamic
+// initialiser and no thread-local object with a destructor, and allocate nothing.
 template <typename Value>
 const std::vector<FormFactor>& RayFormFactors::for_each_element(const Value& value) {
   std::atomic<uint64_t> traced{0};
   values_.resize(mesh_.size());  // adaptive subdivision adds elements between rows
-  parallel_for_ranges(size_t(0), mesh_.size(), size_t(256), [&](size_t first, size_t end) {
-    uint64_t rays = 0;  // summed per range: one atomic add, not one per element
-    for (size_t j = first; j != end; ++j) values_[j] = float(value(j, rays));
-    traced.fetch_add(rays, std::memory_order_relaxed);
-  });
+  parallel_for_ranges(
+      size_t(0), mesh_.size(), size_t(256),
+      [&](size_t first, size_t end) {
+        uint64_t rays = 0;  // summed per range: one atomic add, not one per element
+        for (size_t j = first; j != end; ++j) values_[j] = float(value(j, rays));
+        traced.fetch_add(rays, std::memory_order_relaxed);
+      },
+      parallel::MainThread::joins);
   row_.clear();
   for (size_t j = 0; j < values_.size(); ++j)
     if (values_[j] > 0.0f) row_.push_back({uint32_t(j), values_[j]});

@@ -198,17 +198,22 @@ Rgb ProgressiveSolver::take_unshot(size_t i) {
 
 // The power arriving at each j of the row, F_ij A_i x what i sends, into arriving_ (on TBB's
 // threads: the analytic factors are most of a shot's work). By reciprocity, F_ji = F_ij A_i / A_j,
-// j's unshot radiosity then grows by rho_j F_ji x what i sends = rho_j x arriving_ / A_j.
+// j's unshot radiosity then grows by rho_j F_ji x what i sends = rho_j x arriving_ / A_j. The
+// page's main thread takes its share: form_factor_to and seen_from reach no function-local static
+// with a dynamic initialiser and no thread-local object with a destructor (core/parallel_for.h).
 void ProgressiveSolver::arriving_from(const ShootingPatch& shooter, const std::vector<FormFactor>& row,
                                       const Rgb& shot) {
   arriving_.resize(row.size());
-  parallel_for_ranges(size_t(0), row.size(), size_t(128), [&](size_t first, size_t end) {
-    for (size_t k = first; k != end; ++k) {
-      const Patch& receiver = mesh_.patches[row[k].patch];
-      const double F_ij = form_factor_to(shooter, row[k]);
-      arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot, sent_);
-    }
-  });
+  parallel_for_ranges(
+      size_t(0), row.size(), size_t(128),
+      [&](size_t first, size_t end) {
+        for (size_t k = first; k != end; ++k) {
+          const Patch& receiver = mesh_.patches[row[k].patch];
+          const double F_ij = form_factor_to(shooter, row[k]);
+          arriving_[k] = float(F_ij * double(shooter.area)) * seen_from(shooter, receiver, shot, sent_);
+        }
+      },
+      parallel::MainThread::joins);
 }
 
 // The energy balance of a shot that sent `sent` watts: of the power arriving_ at each receiver of

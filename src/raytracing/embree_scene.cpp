@@ -4,6 +4,8 @@
 // ("Embree API: Performance Recommendations": use stream or packet queries, mark them coherent).
 #include "raytracing/embree_scene.h"
 
+#include <algorithm>
+#include <array>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -74,8 +76,8 @@ Hit from_embree(const RTCRayHit& rh) {
 // A device for this intersector. With oneTBB (the desktop), one of its own, scheduled by the
 // parallel loops' scheduler. Built with its own scheduler (the web page's Embree), a device would
 // start a thread per core wherever it is first used: it is given the parallel loops' count
-// instead, one on the browser's main thread (its builds wait for their threads, and that thread
-// must never wait). Those devices are kept for the program's life, one per count: releasing one deletes
+// instead, which on the browser's main thread is one (that thread must never wait for a thread
+// to start). Those devices are kept for the program's life, one per count: releasing one deletes
 // its thread-local error slot, and Emscripten's pthread_key_delete leaves the slot's value behind
 // for the next key of the same number, so that the next device would read its errors from freed
 // memory.
@@ -85,7 +87,7 @@ RTCDevice new_device() {
 #else
   static std::mutex mutex;
   static std::map<unsigned, RTCDevice> devices;
-  const unsigned threads = parallel::blocking_thread_count();
+  const unsigned threads = parallel::thread_count();
   const std::lock_guard lock(mutex);
   RTCDevice& device = devices[threads];
   if (!device) device = rtcNewDevice(fmt::format("threads={}", threads).c_str());
@@ -163,16 +165,22 @@ void EmbreeIntersector::intersect(std::span<const Ray> rays, std::span<Hit> hits
   for (size_t i = 0; i < rays.size(); ++i) hits[i] = from_embree(stream[i]);
 }
 
+// In batches on the stack: no allocation, and no thread-local buffer, whose first use on a thread
+// could wait for another on the page's main thread (core/parallel_for.h, MainThread), where the
+// radiosity's rays call this.
 void EmbreeIntersector::occluded(std::span<const Ray> rays, std::span<bool> blocked,
                                  uint64_t&) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  thread_local std::vector<RTCRay> stream;
-  stream.resize(rays.size());
-  for (size_t i = 0; i < rays.size(); ++i) fill(stream[i], rays[i]);
-  rtcOccluded1M(impl_->scene, &context, stream.data(), unsigned(stream.size()), sizeof(RTCRay));
-  for (size_t i = 0; i < rays.size(); ++i) blocked[i] = stream[i].tfar < 0.0f;
+  constexpr size_t kBatch = 64;
+  std::array<RTCRay, kBatch> batch;
+  for (size_t first = 0; first < rays.size(); first += kBatch) {
+    const size_t count = std::min(kBatch, rays.size() - first);
+    for (size_t i = 0; i < count; ++i) fill(batch[i], rays[first + i]);
+    rtcOccluded1M(impl_->scene, &context, batch.data(), unsigned(count), sizeof(RTCRay));
+    for (size_t i = 0; i < count; ++i) blocked[first + i] = batch[i].tfar < 0.0f;
+  }
 }
 
 }  // namespace luz::rt
