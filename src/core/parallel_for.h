@@ -59,7 +59,8 @@ void start_threads();
 // a condition variable (libc++abi's guard), and so does the first thread-local object with a
 // destructor of a thread that meets the runtime's list of those being set up: a wait the page's
 // main thread must never make. So the main thread keeps a loop to itself (`alone`) unless the
-// loop's body reaches neither (`joins`: the radiosity's rays, whose bodies are written so).
+// loop's body reaches neither, nor allocates (the page's allocator has one lock): `joins`, the
+// radiosity's loops, whose bodies tests/test_main_thread_bodies.cpp holds to that.
 enum class MainThread { alone, joins };
 
 // The threads threads_for uses on this thread for a loop whose body is `main`: every core
