@@ -12,7 +12,9 @@
 // Each round opens the page twice: Whitted's scene in Whitted's model at 1024x1024 (depth 5, the
 // default), timing `trace` through luz.run from the request to its last tile drawn (the tracer's
 // own seconds, which the status line shows, are printed beside it: what the page's user waits
-// for is the first figure); and the Cornell box in radiosity at the viewer's defaults, timing
+// for is the first figure), then `trace` again in the same page (the first trace also runs the
+// tracer's WebAssembly as the browser first compiles it, before it optimises what runs most);
+// and the Cornell box in radiosity at the viewer's defaults, timing
 // `wait-shots 1000000` (the solver run to its stopping rule, 0.5% unshot). --whitted-only leaves
 // the radiosity out, --radiosity-only the trace. With --luz (run from the repository's root),
 // each round also runs that `luz render` of the same scene, model and size right after the
@@ -40,32 +42,38 @@ if (!base || (luzAt >= 0 && !luz)) {
 const load = () => readFileSync('/proc/loadavg', 'utf8').split(' ')[0];
 const loadBefore = load();
 
-// The seconds of the timed line, and what `dump-trace` says after it (the tracer's own seconds).
-async function timed(query, lines, timed_line) {
+// The seconds of the timed line, and what `dump-trace` says after it (the tracer's own seconds),
+// for each of `times` runs of it in the same page.
+async function timed(query, lines, timed_line, times = 1) {
   const { browser, page } = await openPage(() => {});
   try {
     const outcome = await openLuz(page, `${base}?${query}`);
     if (!outcome.ok) throw new Error(outcome.message);
     for (const line of lines) await page.evaluate((l) => window.luz.run(l), line);
-    // Started in the page and polled: a solve may outlast one call's protocol timeout.
-    await page.evaluate((l) => {
-      const start = performance.now();
-      window.benchSeconds = null;
-      window.luz.run(l).then(() => { window.benchSeconds = (performance.now() - start) / 1000; },
-                             (error) => { window.benchSeconds = 'failed: ' + error.message; });
-    }, timed_line);
-    for (;;) {
-      const seconds = await page.evaluate(() => window.benchSeconds);
-      if (typeof seconds === 'number') {
-        const tracer = await page.evaluate(async () => {
-          await window.luz.run('dump-trace /tmp/bench-trace.json');
-          return JSON.parse(new TextDecoder().decode(window.FS.readFile('/tmp/bench-trace.json'))).seconds;
-        });
-        return { seconds, tracer };
+    const runs = [];
+    while (runs.length < times) {
+      // Started in the page and polled: a solve may outlast one call's protocol timeout.
+      await page.evaluate((l) => {
+        const start = performance.now();
+        window.benchSeconds = null;
+        window.luz.run(l).then(() => { window.benchSeconds = (performance.now() - start) / 1000; },
+                               (error) => { window.benchSeconds = 'failed: ' + error.message; });
+      }, timed_line);
+      for (;;) {
+        const seconds = await page.evaluate(() => window.benchSeconds);
+        if (typeof seconds === 'number') {
+          const tracer = await page.evaluate(async () => {
+            await window.luz.run('dump-trace /tmp/bench-trace.json');
+            return JSON.parse(new TextDecoder().decode(window.FS.readFile('/tmp/bench-trace.json'))).seconds;
+          });
+          runs.push({ seconds, tracer });
+          break;
+        }
+        if (seconds !== null) throw new Error(seconds);
+        await new Promise((resolve) => setTimeout(resolve, 500));
       }
-      if (seconds !== null) throw new Error(seconds);
-      await new Promise((resolve) => setTimeout(resolve, 500));
     }
+    return runs;
   } finally {
     await browser.close();
   }
@@ -88,26 +96,30 @@ function nativeRadiosity() {
   return { shots: Number(text.match(/([0-9]+) shots/)[1]), solving: Number(text.match(/([0-9.]+) s solving/)[1]) };
 }
 
-const figures = { whitted: [], tracer: [], radiosity: [], luz: [], luzTracer: [], ratio: [], luzRadiosity: [],
-                  radiosityRatio: [] };
+const figures = { whitted: [], tracer: [], again: [], radiosity: [], luz: [], luzTracer: [], ratio: [], againRatio: [],
+                  luzRadiosity: [], radiosityRatio: [] };
 for (let round = 0; round < Number(roundsText); ++round) {
   let line = `round ${round + 1}: `;
   if (!radiosityOnly) {
-    const w = await timed('scene=whitted&model=whitted&size=1024x1024&panel=0', ['wait 2'], 'trace');
+    const [w, again] = await timed('scene=whitted&model=whitted&size=1024x1024&panel=0', ['wait 2'], 'trace', 2);
     figures.whitted.push(w.seconds);
     figures.tracer.push(w.tracer);
-    line += `Whitted 1024x1024 ${w.seconds.toFixed(2)} s (its tracer ${w.tracer.toFixed(2)} s)`;
+    figures.again.push(again.seconds);
+    line += `Whitted 1024x1024 ${w.seconds.toFixed(2)} s (its tracer ${w.tracer.toFixed(2)} s), ` +
+            `again ${again.seconds.toFixed(2)} s (${again.tracer.toFixed(2)} s)`;
     if (luz) {
       const n = native();
       figures.luz.push(n.picture);
       figures.luzTracer.push(n.tracer);
       figures.ratio.push(w.seconds / n.picture);
-      line += `, luz render ${n.picture.toFixed(3)} s (its tracer ${n.tracer.toFixed(3)} s): ${(w.seconds / n.picture).toFixed(1)}x`;
+      figures.againRatio.push(again.seconds / n.picture);
+      line += `, luz render ${n.picture.toFixed(3)} s (its tracer ${n.tracer.toFixed(3)} s): ` +
+              `${(w.seconds / n.picture).toFixed(1)}x, again ${(again.seconds / n.picture).toFixed(1)}x`;
     }
     if (!whittedOnly) line += ', ';
   }
   if (!whittedOnly) {
-    const r = await timed('scene=cornell_box&model=radiosity&panel=0', ['wait 2'], 'wait-shots 1000000');
+    const [r] = await timed('scene=cornell_box&model=radiosity&panel=0', ['wait 2'], 'wait-shots 1000000');
     figures.radiosity.push(r.seconds);
     line += `radiosity to its stopping rule ${r.seconds.toFixed(2)} s`;
     if (luz) {
@@ -124,10 +136,10 @@ const summary = (list, digits = 2, unit = ' s') => {
   const sorted = [...list].sort((a, b) => a - b);
   return `best ${sorted[0].toFixed(digits)}${unit}, median ${sorted[Math.floor(sorted.length / 2)].toFixed(digits)}${unit}`;
 };
-let text = radiosityOnly ? '' : `Whitted: ${summary(figures.whitted)} (its tracer ${summary(figures.tracer)})`;
+let text = radiosityOnly ? '' : `Whitted: ${summary(figures.whitted)} (its tracer ${summary(figures.tracer)}), again ${summary(figures.again)}`;
 if (luz && !radiosityOnly) {
   text += `; luz render: ${summary(figures.luz, 3)} (its tracer ${summary(figures.luzTracer, 3)}); ` +
-          `page / luz render, round by round: ${summary(figures.ratio, 1, 'x')}`;
+          `page / luz render, round by round: ${summary(figures.ratio, 1, 'x')}, again ${summary(figures.againRatio, 1, 'x')}`;
 }
 if (!whittedOnly) {
   text += `${radiosityOnly ? '' : '; '}radiosity: ${summary(figures.radiosity)}`;

@@ -52,9 +52,12 @@ double error_at(const nlohmann::json& curve, size_t rows) {
 }
 
 TEST_F(ViewerSolvers, AllFourMethodsRunSideBySide) {
-  const nlohmann::json start = json_of(file("start.json")), later = json_of(file("later.json"));
+  const nlohmann::json start = json_of(file("start.json")), early = json_of(file("early.json")),
+                       later = json_of(file("later.json"));
   EXPECT_EQ(start["phase"], "ready");
   EXPECT_EQ(start["rows"], 0);  // opened paused: nothing stepped before `wait-solver-rows`
+  EXPECT_EQ(early["rows"], 20);  // `wait-solver-rows 20` pauses at exactly 20, never a step past
+  EXPECT_FALSE(early["running"].get<bool>());
   EXPECT_EQ(later["phase"], "ready");
   EXPECT_FALSE(later["running"].get<bool>());
   EXPECT_GT(later["patches"].get<int>(), 300);

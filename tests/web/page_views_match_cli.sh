@@ -121,12 +121,12 @@ match radiosity "${s}_hemicube.json" "${s}_luz_hemicube.txt" uniform 0.01
 within "${s}_hemicube.png" "${s}_luz_hemicube.png" 3 "radiosity's hemicube form factors in the page against luz render --form-factors hemicube"
 match item-buffer "${s}_hemicube.json" "${s}_panel.png"
 
-# Slide 36's solvers window: its plots before any row and at 30 rows on a canvas where they show; then,
-# on a small one, its curves to 1200 rows (on a large canvas the page's shooting takes a frame a
-# shot, about 3 rows a second: docs/web.md's list of what is left).
+# Slide 36's solvers window: its plots before any row and at 30 rows on a canvas where they show, at
+# the default budget (the page steps between its paced frames); then, on a small one and with a
+# budget chosen (every step in a drawn frame), its curves to 1200 rows.
 s=$scratch/views_solvers
 rm -f "$s"_*
-script "$base?scene=cornell_box&size=640x600" run "solvers budget 100" \
+script "$base?scene=cornell_box&size=640x600" \
   run "solvers open" run "wait 2s" run "screenshot /tmp/early.png --with-panel" file /tmp/early.png "${s}_early.png" \
   run "wait-solver-rows 30" run "dump-solvers /tmp/plots.json" file /tmp/plots.json "${s}_plots.json" \
   run "screenshot /tmp/later.png --with-panel" file /tmp/later.png "${s}_later.png"
@@ -134,7 +134,7 @@ script "$base?scene=cornell_box&size=320x240" run "solvers budget 100" \
   run "wait-solver-rows 1200" run "dump-solvers /tmp/solvers.json" file /tmp/solvers.json "${s}_page.json"
 "$luz" solvers "$scenes/cornell_box.gltf" --iterations 4 --csv "${s}_luz.csv" >"${s}_luz.txt" || status=1
 match solvers "${s}_page.json" "${s}_luz.csv" "${s}_luz.txt" 0.05
-match solver-plots "${s}_plots.json" "${s}_early.png" "${s}_later.png"
+match solver-plots "${s}_plots.json" "${s}_early.png" "${s}_later.png" 30
 
 # The lesson's side-by-side panes at step 58, traced: the page opened at the step, whose trace
 # starts while the page fits its canvas to the picture's size (the trace follows it), at the

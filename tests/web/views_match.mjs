@@ -22,9 +22,10 @@
 //       slide 36's window (dump-solvers) has `luz solvers`'s patches, and every sample of each
 //       method's curve up to the CSV's last row count is the CSV's sample at the same rows,
 //       residual and error within LIMIT relative
-//   solver-plots DUMP.json EARLY.png LATER.png
+//   solver-plots DUMP.json EARLY.png LATER.png ROWS
 //       its plots (their rectangle dumped with LATER) changed between two pictures of the canvas,
-//       more than 1% of their pixels by more than 8 codes: the curves drawn on
+//       more than 1% of their pixels by more than 8 codes: the curves drawn on; and the window
+//       paused at exactly the ROWS that `wait-solver-rows ROWS` asked for
 //   difference DUMP.json LUZ_COMPARE_OUTPUT.txt PAGE_HEATMAP.png LUZ_HEATMAP.png
 //       the difference view's figures (dump-difference) are `luz compare`'s of the same model
 //       and reference renders, within the noise of the reference's paths (below); its picture is
@@ -130,8 +131,9 @@ function solvers([dumpFile, csvFile, outputFile, limitText]) {
   }
 }
 
-function solverPlots([dumpFile, earlyFile, laterFile]) {
+function solverPlots([dumpFile, earlyFile, laterFile, rowsText]) {
   const d = json(dumpFile), early = readPng(earlyFile), later = readPng(laterFile);
+  check(d.rows === Number(rowsText) && !d.running, `the window paused at ${d.rows} rows (asked for ${rowsText}), running: ${d.running}`);
   const [x0, y0, x1, y1] = d.plot.map(Math.round);
   check(x1 - x0 > 40 && y1 - y0 > 100 && x1 <= later.width && y1 <= later.height, `the plots' rectangle ${d.plot} inside the canvas`);
   let moved = 0, total = 0;

@@ -38,6 +38,14 @@ bool all_done(const SolverComparison& race) {
   return std::all_of(kMethods.begin(), kMethods.end(), [&race](Method m) { return race.done(m); });
 }
 
+// The hemicubes drew through their own state; put back what the viewer's drawing expects.
+void restore_gl_state() {
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
+}
+
 }  // namespace
 
 // ---- [stepping] --------------------------------------------------------------------------------
@@ -118,36 +126,37 @@ void SolversWindow::advance() {
     return;
   }
 
-  // Steps until the frame's budget is spent, at least one a frame (a sweep or a shot may be
-  // longer than the budget); the four curves advance together (step() takes the method behind).
-  using clock = std::chrono::steady_clock;
-  const auto until = clock::now() + std::chrono::duration<double, std::milli>(std::max(state.budget_ms, 0.0f));
-  const bool stepping = state.running || state.run_to_rows > 0;
-  while (stepping) {
-    if (state.run_to_rows > 0 && fewest_rows(*race_) >= state.run_to_rows) {
-      state.run_to_rows = 0;
-      state.running = false;
-      break;
-    }
-    if (!race_->step()) {
-      state.run_to_rows = 0;
-      state.running = false;
-      break;
-    }
-    if (clock::now() >= until) break;
-  }
-  if (state.run_to_rows > 0 && fewest_rows(*race_) >= state.run_to_rows) {  // reached on the last step
+  // The four curves advance together (step() takes the method behind).
+  if ((state.running || state.run_to_rows > 0) && !step_for(state.budget_ms)) {
     state.run_to_rows = 0;
     state.running = false;
   }
-  // The hemicubes drew through their own state; put back what the viewer's drawing expects.
-  glDisable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
-
+  restore_gl_state();
   s.rows = fewest_rows(*race_);
   s.done = all_done(*race_);
+}
+
+bool SolversWindow::step_for(float ms) {
+  using clock = std::chrono::steady_clock;
+  const auto until = clock::now() + std::chrono::duration<double, std::milli>(std::max(ms, 0.0f));
+  for (;;) {
+    if (state_.run_to_rows > 0 && fewest_rows(*race_) >= state_.run_to_rows) return false;
+    if (!race_->step()) return false;
+    if (clock::now() >= until) return true;
+  }
+}
+
+bool SolversWindow::paced() const {
+  const SolversState& s = state_;
+  const bool stepping = s.running || s.run_to_rows > 0;
+  return race_ && stepping && !s.budget_chosen && !s.reset && (s.open || s.run_to_rows > 0) &&
+         !all_done(*race_) && (s.run_to_rows == 0 || fewest_rows(*race_) < s.run_to_rows);
+}
+
+void SolversWindow::step_between_frames() {
+  if (!paced()) return;
+  step_for(state_.budget_ms);
+  restore_gl_state();
 }
 
 // ---- [the plots] -------------------------------------------------------------------------------

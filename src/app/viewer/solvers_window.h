@@ -36,6 +36,9 @@ struct SolversState {
   bool open = false;          // the window is shown (J, the panel's button, `solvers open`)
   bool running = false;
   float budget_ms = 20.0f;    // stepping time per frame while running (GL thread)
+  // The budget was chosen (`solvers budget MS`): each frame steps it and no more. Left at its
+  // default, a viewer that paces its frames (the page's) steps between them too.
+  bool budget_chosen = false;
   // Its own coarse mesh, whatever model 5 uses: the matrix has one hemicube per patch and up to
   // N^2 entries, and the class should see the curves within seconds.
   int target_patches = 400;
@@ -72,7 +75,10 @@ public:
   void set_open(bool open) { state_.open = open; }
   void set_running(bool running) { state_.running = running; }
   void reset() { state_.reset = true; }
-  void set_budget(float ms) { state_.budget_ms = ms; }
+  void set_budget(float ms) {
+    state_.budget_ms = ms;
+    state_.budget_chosen = true;
+  }
   void set_patches(int target) {  // on a new mesh: built again
     state_.target_patches = target;
     state_.reset = true;
@@ -96,11 +102,21 @@ public:
   bool busy() const;
   // Work that changes what it shows from frame to frame (the methods stepping, or busy()).
   bool working() const;
+  // Its steps may wait for the next paced frame (ViewerSettings::paced_frames): running at the
+  // default budget, built, with rows left to step. Each read-back of a shot's hemicube waits for
+  // the browser's drawing, so the page steps in the passes between its frames as well.
+  bool paced() const;
+  // A pass that draws no frame: a budget of steps, never the step past the rows asked for, which
+  // the next frame's advance() ends and shows.
+  void step_between_frames();
 
   const SolverComparison* comparison() const { return race_.get(); }
 
 private:
   void build();
+  // Steps until `ms` is spent, at least one (a sweep or a shot may take longer): false once
+  // there is nothing left to step (the rows asked for reached, or every method done).
+  bool step_for(float ms);
 
   SolversState state_;
   const Scene* scene_ = nullptr;

@@ -1055,15 +1055,17 @@ bool Viewer::needs_frames() const {
   return working();
 }
 
-// A pass draws no frame while the only thing changing is the paced views' work (ModelView::paced)
-// and the last frame is younger than paced_frames_: no event, no line to step, no other work.
+// A pass draws no frame while the only thing changing is the paced work (ModelView::paced,
+// SolversWindow::paced) and the last frame is younger than paced_frames_: no event, no line to
+// step, no other work.
 bool Viewer::frame_held() const {
   if (paced_frames_.count() == 0 || FrameClock::now() - last_pass_ >= paced_frames_) return false;
   if (frames_to_draw_ > 0 || fonts_stale_ || flying() || !screenshots_.empty() || !input_.empty() || idle_until_) return false;
   if (script_ && !script_->finished()) return false;
   if (!queued_lines_.empty() && !queued_lines_.front().runner.finished()) return false;
-  if (classroom_.moving() || ImGui::GetIO().WantTextInput || solvers_.working() || difference_.refining()) return false;
-  bool paced = false;
+  if (classroom_.moving() || ImGui::GetIO().WantTextInput || difference_.refining()) return false;
+  if (solvers_.working() && !solvers_.paced()) return false;
+  bool paced = solvers_.paced();
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating()) {
       if (!found->second->paced()) return false;
@@ -1072,8 +1074,9 @@ bool Viewer::frame_held() const {
   return paced;
 }
 
-// A held pass: the paced views' work on the GL thread.
+// A held pass: the paced work (the views', slide 36's window's) on the GL thread.
 void Viewer::work_between_frames() {
+  solvers_.step_between_frames();
   for (const ModelEntry* m : panes_)
     if (const auto found = views_.find(m->name); found != views_.end() && found->second->animating())
       found->second->between_frames();
