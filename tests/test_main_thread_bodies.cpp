@@ -107,9 +107,9 @@ TEST(MainThreadBodies, TheCountingSeesEachOfTheThree) {
   EXPECT_GE(counts.allocations, 2);
 }
 
-class CornellBox : public ::testing::Test {
+class BodiesOnTheCornellBox : public ::testing::Test {
 protected:
-  CornellBox() : loaded_(io::load_gltf(test::scene_dir() / "cornell_box.gltf")) {
+  BodiesOnTheCornellBox() : loaded_(io::load_gltf(test::scene_dir() / "cornell_box.gltf")) {
     RadiosityOptions options;
     options.patch_size = 0.3f;
     mesh_ = PatchMesh::build(loaded_.scene, options);
@@ -120,7 +120,7 @@ protected:
 
 // The rays' bodies (ray_form_factors.cpp): every element's factor from every patch, and the
 // solid angles and sunlit areas of a point light, a spot and a sun.
-TEST_F(CornellBox, TheRaysBodiesAllocateNothingAndInitialiseNothing) {
+TEST_F(BodiesOnTheCornellBox, TheRaysBodiesAllocateNothingAndInitialiseNothing) {
   const RayFormFactors rays(loaded_.scene, mesh_);
   std::vector<ShooterEmission> emissions;
   for (size_t i = 0; i < mesh_.shooters.size(); ++i) emissions.emplace_back(mesh_, i, std::span<const Rgb>{});
@@ -147,7 +147,7 @@ TEST_F(CornellBox, TheRaysBodiesAllocateNothingAndInitialiseNothing) {
 
 // The contour integrals of the arriving power and the gather (shooting.cpp's form_factor_to and
 // seen_from, element_form_factor.cpp): every element to every patch, in both precisions.
-TEST_F(CornellBox, TheContourIntegralsAllocateNothingAndInitialiseNothing) {
+TEST_F(BodiesOnTheCornellBox, TheContourIntegralsAllocateNothingAndInitialiseNothing) {
   double sum = 0.0;
   const Counts counts = on_a_new_thread([&] {
     for (const ShootingPatch& shooter : mesh_.shooters)
