@@ -20,6 +20,17 @@ void expect_each_once(const std::vector<std::atomic<int>>& seen, size_t begin, s
   for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].load(), i >= begin && i < end ? 1 : 0) << "index " << i;
 }
 
+// A loop inside a loop's body (each a caller of its own): every index of both once.
+void expect_nested_loops_visit_each_once() {
+  std::vector<std::atomic<int>> seen(40 * 30);
+  parallel::threads_for(0, 40, 1, 4, [&](size_t lo, size_t) {
+    parallel::threads_for(0, 30, 4, 4, [&](size_t a, size_t b) {
+      for (size_t i = a; i < b; ++i) ++seen[lo * 30 + i];
+    });
+  });
+  expect_each_once(seen, 0, seen.size());
+}
+
 TEST(ParallelFor, ThreadsForVisitsEachIndexOnceInChunksOfTheGrain) {
   for (const unsigned threads : {1u, 2u, 7u})
     for (const size_t grain : {size_t(1), size_t(3), size_t(64), size_t(1000)}) {
@@ -74,13 +85,7 @@ TEST(ParallelFor, ThreadsForKeepsItsThreadsAndWaitsForThem) {
 // A loop inside a loop's body (each a caller of its own) visits its indices once, the kept
 // threads helping whichever loop they find.
 TEST(ParallelFor, ThreadsForInsideThreadsFor) {
-  std::vector<std::atomic<int>> seen(40 * 30);
-  parallel::threads_for(0, 40, 1, 4, [&](size_t lo, size_t) {
-    parallel::threads_for(0, 30, 4, 4, [&](size_t a, size_t b) {
-      for (size_t i = a; i < b; ++i) ++seen[lo * 30 + i];
-    });
-  });
-  expect_each_once(seen, 0, seen.size());
+  expect_nested_loops_visit_each_once();
 }
 
 TEST(ParallelFor, ThreadsForOnOneThreadRunsInOrderOnTheCaller) {
@@ -140,13 +145,7 @@ TEST(ParallelFor, ThreadsForOnASpinningThread) {
                                      }),
                std::runtime_error);
 
-  std::vector<std::atomic<int>> nested(40 * 30);
-  parallel::threads_for(0, 40, 1, 4, [&](size_t lo, size_t) {
-    parallel::threads_for(0, 30, 4, 4, [&](size_t a, size_t b) {
-      for (size_t i = a; i < b; ++i) ++nested[lo * 30 + i];
-    });
-  });
-  expect_each_once(nested, 0, nested.size());
+  expect_nested_loops_visit_each_once();
 }
 
 // A kept thread whose chunk waits for the spinning caller (in the page, a worker's call proxied to
