@@ -20,6 +20,17 @@ void expect_each_once(const std::vector<std::atomic<int>>& seen, size_t begin, s
   for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].load(), i >= begin && i < end ? 1 : 0) << "index " << i;
 }
 
+// How many threads ran a loop of 64 chunks of 2 ms each on up to 4 threads.
+long threads_in_a_slow_loop() {
+  std::vector<std::thread::id> ids(64);
+  parallel::threads_for(0, ids.size(), 1, 4, [&](size_t lo, size_t) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    ids[lo] = std::this_thread::get_id();
+  });
+  std::sort(ids.begin(), ids.end());
+  return std::unique(ids.begin(), ids.end()) - ids.begin();
+}
+
 // A loop inside a loop's body (each a caller of its own): every index of both once.
 void expect_nested_loops_visit_each_once() {
   std::vector<std::atomic<int>> seen(40 * 30);
@@ -49,13 +60,7 @@ TEST(ParallelFor, ThreadsForVisitsEachIndexOnceInChunksOfTheGrain) {
 }
 
 TEST(ParallelFor, ThreadsForRunsOnSeveralThreads) {
-  std::vector<std::thread::id> ids(64);
-  parallel::threads_for(0, ids.size(), 1, 4, [&](size_t lo, size_t) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    ids[lo] = std::this_thread::get_id();
-  });
-  std::sort(ids.begin(), ids.end());
-  EXPECT_GT(std::unique(ids.begin(), ids.end()) - ids.begin(), 1);
+  EXPECT_GT(threads_in_a_slow_loop(), 1);
 }
 
 // The threads that help a loop are kept for the next ones (in the page, a thread started per loop
@@ -130,13 +135,7 @@ TEST(ParallelFor, ThreadsForOnASpinningThread) {
       expect_each_once(seen, 5, 190);
     }
 
-  std::vector<std::thread::id> ids(64);
-  parallel::threads_for(0, ids.size(), 1, 4, [&](size_t lo, size_t) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    ids[lo] = std::this_thread::get_id();
-  });
-  std::sort(ids.begin(), ids.end());
-  EXPECT_GT(std::unique(ids.begin(), ids.end()) - ids.begin(), 1);
+  EXPECT_GT(threads_in_a_slow_loop(), 1);
 
   EXPECT_THROW(parallel::threads_for(0, 1000, 1, 4,
                                      [&](size_t lo, size_t) {
