@@ -115,6 +115,7 @@ void PatchItems::draw_atlas(std::span<const AtlasFace> faces, int atlas_width, i
 }
 
 void PatchItems::end() const {
+  glDisable(GL_DEPTH_TEST);  // GL's default again; begin()'s other settings are GL's defaults
   glBindVertexArray(0);
   glUseProgram(0);
 }

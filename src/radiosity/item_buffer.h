@@ -35,6 +35,8 @@ public:
   // Every face at once (at most kMaxAtlasFaces), one instance per face, into the bound atlas
   // of atlas_width x atlas_height pixels: the same pixels as one draw() per face in its viewport.
   void draw_atlas(std::span<const AtlasFace> faces, int atlas_width, int atlas_height) const;
+  // Puts back GL's defaults for what begin() set (the depth test off), so that whoever draws
+  // next finds the state it found before begin().
   void end() const;
 
   static constexpr int kMaxAtlasFaces = 5;  // the hemicube's

@@ -12,7 +12,6 @@
 #include "app/viewer/overlays.h"
 #include "app/cli/solvers_command.h"
 #include "core/error.h"
-#include "gl/functions.h"
 
 namespace luz::app {
 
@@ -36,14 +35,6 @@ size_t fewest_rows(const SolverComparison& race) {
 
 bool all_done(const SolverComparison& race) {
   return std::all_of(kMethods.begin(), kMethods.end(), [&race](Method m) { return race.done(m); });
-}
-
-// The hemicubes drew through their own state; put back what the viewer's drawing expects.
-void restore_gl_state() {
-  glDisable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 }
 
 }  // namespace
@@ -131,7 +122,6 @@ void SolversWindow::advance() {
     state.run_to_rows = 0;
     state.running = false;
   }
-  restore_gl_state();
   s.rows = fewest_rows(*race_);
   s.done = all_done(*race_);
 }
@@ -156,7 +146,6 @@ bool SolversWindow::paced() const {
 void SolversWindow::step_between_frames() {
   if (!paced()) return;
   step_for(state_.budget_ms);
-  restore_gl_state();
 }
 
 // ---- [the plots] -------------------------------------------------------------------------------

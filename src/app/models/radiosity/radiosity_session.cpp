@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 
 #include "app/common/i18n.h"
-#include "gl/functions.h"
 #include "radiosity/vertex_colours.h"
 
 namespace luz::app {
@@ -107,8 +106,6 @@ void RadiositySession::advance(RadiosityState& state, const RadiosityOptions& op
   }
   if (shot > 0) colours_stale_ = true;
 
-  restore_gl_state();
-
   // Step 3: what every patch shows, uploaded again after the shots (or a change of display).
   const bool display_changed = heat_map != heat_map_shown_ ||
                                o.flat_patches != shown_with_.flat_patches ||
@@ -163,15 +160,6 @@ void RadiositySession::shoot_between_frames(const RadiosityState& state) {
   }
   shots_between_frames_ += shot;
   if (shot > 0) colours_stale_ = true;
-  restore_gl_state();
-}
-
-// The hemicube drew through its own state; put back what the viewer's drawing expects.
-void RadiositySession::restore_gl_state() {
-  glDisable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  if (glPolygonMode) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);  // GL ES has only filled polygons
 }
 
 std::string RadiositySession::shooter_name(int shooter, int shots) const {

@@ -61,8 +61,6 @@ public:
 
 private:
   void refresh_status(RadiosityState& state, const RadiosityOptions& options) const;
-  // After the hemicube's drawing: the GL state the viewer's drawing expects.
-  static void restore_gl_state();
   // "patch 12 (floor)" for shooter 12, "light 0 (key)" for -1 - 0 once shot, "" before any shot.
   std::string shooter_name(int shooter, int shots) const;
 
