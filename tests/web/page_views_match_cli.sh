@@ -99,7 +99,8 @@ within "${s}_adaptive.png" "${s}_luz_adaptive.png" 0.1 "adaptive supersampling i
 # Radiosity: adaptive subdivision with the rays' form factors; the hemicube's, uniform, and its
 # item-buffer window. The dump comes after the screenshot, as in tests/viewer/radiosity.txt: a frame
 # draws its panel before the solver shoots, so the window's rectangle is that of the last frame
-# drawn, and the screenshot's frame is the one drawn with the last shot's hemicube.
+# drawn, the screenshot's. Two frames before it let the window, which sizes itself to what it held
+# a frame before, grow around the last shot's hemicube where that was its first.
 s=$scratch/views_radiosity
 rm -f "$s"_*
 script "$base?scene=cornell_box&model=radiosity&size=480x360" \
@@ -107,7 +108,7 @@ script "$base?scene=cornell_box&model=radiosity&size=480x360" \
   run "radiosity form-factors rays" run "radiosity meshing adaptive" run "wait-shots 60" run "radiosity shooter off" \
   run "dump-radiosity /tmp/adaptive.json" file /tmp/adaptive.json "${s}_adaptive.json" picture "${s}_adaptive.png" \
   run "radiosity shooter on" run "radiosity form-factors hemicube" run "radiosity meshing uniform" run "wait-shots 60" \
-  run "screenshot /tmp/panel.png --with-panel" file /tmp/panel.png "${s}_panel.png" \
+  run "wait 2" run "screenshot /tmp/panel.png --with-panel" file /tmp/panel.png "${s}_panel.png" \
   run "dump-radiosity /tmp/hemicube.json" file /tmp/hemicube.json "${s}_hemicube.json" \
   run "radiosity shooter off" picture "${s}_hemicube.png"
 flags="--model radiosity --patch-size 0.3 --hemicube-res 128 --shots 60 --pixel-samples 1 --size 480x360"
