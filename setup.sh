@@ -14,6 +14,9 @@
 #                        Chromium against `luz render` (tests/web/run_page_tests.sh)
 set -euo pipefail
 cd "$(dirname "$0")"
+# Each long step says when it starts, in seconds since setup began: the test run takes most of an
+# hour on a fresh 2-core machine, and this is where its time goes.
+step() { echo "setup: $1 ($SECONDS s)"; }
 
 if [ "${1:-}" = web ] && [ "${2:-}" = serve ]; then
   exec python3 src/app/web/serve.py build-web
@@ -91,6 +94,7 @@ build_web() {
   # Emscripten's JavaScript tools find their modules in Debian's folder whatever node runs them.
   export NODE_PATH=/usr/share/nodejs
   # The node tests are built on request only (test_web); ON also for a build-web/ configured without them.
+  step "building the web page into build-web/"
   emcmake cmake -S . -B build-web -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUZ_BUILD_TESTS=ON
   cmake --build build-web --parallel "$(nproc)"
 }
@@ -100,7 +104,9 @@ build_web() {
 test_web() {
   local status=0
   cmake --build build-web --parallel "$(nproc)" --target luz_node_tests
+  step "the CPU libraries' tests in node"
   sh tests/web/run_node_tests.sh build-web || status=1
+  step "the page's tests in headless Chromium"
   sh tests/web/run_page_tests.sh build-web build/luz build-web/test-output || status=1
   return $status
 }
@@ -115,6 +121,7 @@ if [ "${1:-}" = web ]; then
   exit
 fi
 
+step "building luz into build/"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel "$(nproc)"
 
@@ -122,6 +129,7 @@ if [ "${1:-}" = test ]; then
   # Both suites run even when the first fails, so one run reports everything.
   status=0
   rm -f build/tests/viewer_timeouts.log
+  step "the desktop's tests"
   ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600 || status=1
   build_web
   test_web || status=1
@@ -129,6 +137,7 @@ if [ "${1:-}" = test ]; then
     echo "setup: a viewer script hung once and passed when tried again; where it stood:"
     cat build/tests/viewer_timeouts.log
   fi
+  step "tests done"
   exit $status
 elif [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
   # The viewer needs a window; on a headless machine show that the build works with a picture.
